@@ -1,0 +1,100 @@
+//! The crate's one error type.
+//!
+//! Every public function that takes user data returns [`Result`]. Messages name the offending
+//! index or value so that a user can find the bad record in their own input.
+
+/// Everything that can be wrong with the data handed to a compgeo algorithm.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A point has a NaN or infinite coordinate. Every finite `f64` is valid input.
+    #[error("point {index} has a non-finite coordinate ({value})")]
+    NonFinite {
+        /// Index of the point in the caller's input.
+        index: usize,
+        /// The offending coordinate value (NaN, `inf` or `-inf`).
+        value: f64,
+    },
+    /// The input is empty but the answer needs at least one element.
+    #[error("{what} is empty")]
+    Empty {
+        /// What was empty, e.g. "point set" or "graph".
+        what: &'static str,
+    },
+    /// The input has fewer elements than the problem needs.
+    #[error("{what} needs at least {needed} elements, got {got}")]
+    TooFew {
+        /// What was too small, e.g. "point set".
+        what: &'static str,
+        /// The minimum number of elements.
+        needed: usize,
+        /// How many elements were given.
+        got: usize,
+    },
+    /// An edge names a vertex that the graph does not have.
+    #[error("edge {edge} names vertex {vertex}, but the graph has only {vertices} vertices")]
+    VertexOutOfRange {
+        /// Index of the edge in the caller's edge list.
+        edge: usize,
+        /// The vertex id that is out of range.
+        vertex: usize,
+        /// Number of vertices of the graph.
+        vertices: usize,
+    },
+    /// A vertex given as an argument (a start vertex, say) does not exist.
+    #[error("vertex {vertex} does not exist: the graph has {vertices} vertices")]
+    NoSuchVertex {
+        /// The vertex id that was asked for.
+        vertex: usize,
+        /// Number of vertices of the graph.
+        vertices: usize,
+    },
+    /// An edge weight is NaN or infinite.
+    #[error("edge {edge} has a non-finite weight ({value})")]
+    NonFiniteWeight {
+        /// Index of the edge in the caller's edge list.
+        edge: usize,
+        /// The offending weight.
+        value: f64,
+    },
+    /// A parameter is outside its valid domain (a knot vector that decreases, a size of zero,
+    /// a Beta-spline parameter that makes the basis degenerate, ...).
+    #[error("invalid {name}: {reason}")]
+    InvalidParameter {
+        /// The parameter's name as the caller knows it.
+        name: &'static str,
+        /// Why it is invalid, with the value.
+        reason: String,
+    },
+}
+
+/// `Result` with the crate's [`enum@Error`].
+pub type Result<T> = std::result::Result<T, Error>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_name_index_and_value() {
+        let e = Error::NonFinite {
+            index: 3,
+            value: f64::NAN,
+        };
+        assert_eq!(e.to_string(), "point 3 has a non-finite coordinate (NaN)");
+        let e = Error::NonFinite {
+            index: 0,
+            value: f64::NEG_INFINITY,
+        };
+        assert_eq!(e.to_string(), "point 0 has a non-finite coordinate (-inf)");
+        let e = Error::VertexOutOfRange {
+            edge: 2,
+            vertex: 9,
+            vertices: 5,
+        };
+        assert_eq!(
+            e.to_string(),
+            "edge 2 names vertex 9, but the graph has only 5 vertices"
+        );
+    }
+}

@@ -1,0 +1,28 @@
+//! The geometric kernel: the point type, exact predicates, validation and ordering helpers.
+//!
+//! Every geometric decision in compgeo goes through the predicates of this module, and every
+//! predicate is exact for every finite `f64` input: the answer is the sign of the exact real
+//! expression, never of a rounded one. The plane is oriented with y up, so a counter-clockwise
+//! turn is positive.
+//!
+//! | predicate | question | degree |
+//! |---|---|---|
+//! | [`orient2d`] | is `c` left of, right of, or on the line `a -> b`? | 2 |
+//! | [`incircle`] | is `d` inside, on, or outside the circle through `a, b, c`? | 4 |
+//! | [`cmp_dist`] | is `|ab|` shorter than, equal to, or longer than `|cd|`? | 2 |
+//! | [`cross_sign`] | does the direction `d - c` turn left or right of `b - a`? | 2 |
+//! | [`cmp_lex`] | lexicographic (x, then y) order | 1 |
+//!
+//! How exactness is achieved for inputs of any magnitude is described in `docs/design.md`.
+//! [`CountedPredicates`] gives every predicate a counted form for use with a
+//! [`Counter`](crate::count::Counter).
+
+mod counted;
+mod point;
+mod predicates;
+mod validate;
+
+pub use counted::CountedPredicates;
+pub use point::Point2;
+pub use predicates::{cmp_dist, cmp_lex, cross_sign, incircle, orient2d, InCircle, Orientation};
+pub use validate::validate;

@@ -1,0 +1,66 @@
+//! The point type every geometric algorithm takes.
+
+/// A point (or vector) in the plane with `f64` coordinates.
+///
+/// The plane is oriented with y up, so counter-clockwise turns are positive. Any finite
+/// coordinates are valid, however large or small; NaN and infinities are rejected by
+/// [`validate`](crate::geometry::validate) before an algorithm sees them.
+///
+/// ```
+/// use compgeo::geometry::Point2;
+///
+/// let p = Point2::new(1.0, 2.0);
+/// assert_eq!(p, Point2::from([1.0, 2.0]));
+/// assert_eq!(p, Point2::from((1.0, 2.0)));
+/// assert_eq!(<[f64; 2]>::from(p), [1.0, 2.0]);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Point2 {
+    /// The x coordinate.
+    pub x: f64,
+    /// The y coordinate.
+    pub y: f64,
+}
+
+impl Point2 {
+    /// The point `(x, y)`.
+    #[inline]
+    pub const fn new(x: f64, y: f64) -> Self {
+        Point2 { x, y }
+    }
+
+    /// Whether both coordinates are finite (neither NaN nor infinite).
+    #[inline]
+    pub fn is_finite(self) -> bool {
+        self.x.is_finite() && self.y.is_finite()
+    }
+}
+
+impl From<[f64; 2]> for Point2 {
+    #[inline]
+    fn from([x, y]: [f64; 2]) -> Self {
+        Point2 { x, y }
+    }
+}
+
+impl From<(f64, f64)> for Point2 {
+    #[inline]
+    fn from((x, y): (f64, f64)) -> Self {
+        Point2 { x, y }
+    }
+}
+
+impl From<Point2> for [f64; 2] {
+    #[inline]
+    fn from(p: Point2) -> Self {
+        [p.x, p.y]
+    }
+}
+
+impl From<Point2> for (f64, f64) {
+    #[inline]
+    fn from(p: Point2) -> Self {
+        (p.x, p.y)
+    }
+}
