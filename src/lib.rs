@@ -10,6 +10,7 @@
 //! | [`geometry`] | [`Point2`](geometry::Point2), exact predicates, validation |
 //! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) |
 //! | [`error`] | the crate's [`Error`] and [`Result`] |
+//! | [`gen`] | seeded workload generators: point sets, graphs, number sequences |
 //!
 //! ## Conventions
 //!
@@ -18,6 +19,7 @@
 
 pub mod count;
 pub mod error;
+pub mod gen;
 pub mod geometry;
 
 #[cfg(feature = "cli")]
