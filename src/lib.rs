@@ -10,6 +10,23 @@
 //! | [`geometry`] | [`Point2`](geometry::Point2), exact predicates, validation |
 //! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) |
 //! | [`error`] | the crate's [`Error`] and [`Result`] |
+//! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
+//!
+//! ## Algorithms and their bounds
+//!
+//! n is the input size. Bounds are worst case unless marked otherwise; the counted operation
+//! is the one each algorithm's `# Counts` section names.
+//!
+//! | algorithm | bound |
+//! |---|---|
+//! | [`sort::bubble_sort`] | Θ(n²) time, exactly n(n−1)/2 comparisons |
+//! | [`sort::selection_sort`] | Θ(n²) time, exactly n(n−1)/2 comparisons |
+//! | [`sort::insertion_sort`] | Θ(n²) time, at most n(n−1)/2 comparisons |
+//! | [`sort::binary_insertion_sort`] | O(n log n) comparisons, O(n²) time (moves) |
+//! | [`sort::merge_sort`] | Θ(n log n) time, at most n⌈log₂ n⌉ comparisons |
+//! | [`sort::heap_sort`] | O(n log n) time, at most 2n log₂ n comparisons |
+//! | [`sort::quick_sort`] | O(n log n) time (introsort), about 1.19 n log₂ n comparisons expected |
+//! | [`sort::radix_sort_f64`] | Θ(n) time, 8 passes, no comparisons |
 //!
 //! ## Conventions
 //!
@@ -19,6 +36,7 @@
 pub mod count;
 pub mod error;
 pub mod geometry;
+pub mod sort;
 
 #[cfg(feature = "cli")]
 pub mod cli;
