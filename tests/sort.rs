@@ -128,7 +128,7 @@ fn any_float() -> impl Strategy<Value = f64> {
             f64::NAN,
             -f64::NAN,
             f64::from_bits(0x7FF0_0000_0000_0001),
-            f64::from_bits(0xFFF0_0000_dead_beef),
+            f64::from_bits(0xFFF0_0000_DEAD_BEEF),
             f64::MIN_POSITIVE,
             -f64::MIN_POSITIVE,
             5e-324,

@@ -47,7 +47,7 @@ pub fn quick_sort<T: Ord>(v: &mut [T]) {
 /// let mut v = [f64::NAN, -f64::NAN, 0.0, -0.0];
 /// compgeo::sort::quick_sort_by(&mut v, f64::total_cmp);
 /// assert!(v[0].is_nan() && v[0].is_sign_negative() && v[3].is_nan());
-/// assert_eq!([v[1].to_bits(), v[2].to_bits()], [(-0.0f64).to_bits(), 0});
+/// assert_eq!([v[1].to_bits(), v[2].to_bits()], [(-0.0f64).to_bits(), 0]);
 /// ```
 pub fn quick_sort_by<T, F>(v: &mut [T], cmp: F)
 where

@@ -89,7 +89,7 @@ pub fn radix_sort_f64_with<C: Counter>(v: &mut [f64], counter: &mut C) {
     let mut buffer = vec![0.0; n];
     let mut in_buffer = false;
     for (pass, histogram) in histograms.iter().enumerate() {
-        if histogram.iter().any(|&c| c == n) {
+        if histogram.contains(&n) {
             continue;
         }
         let mut next = [0usize; BUCKETS];

@@ -133,7 +133,6 @@ pub fn trace(algorithm: Algorithm, input: &[i64]) -> Result<String> {
             rows.render(&mut out);
         }
     }
-    drop(ops);
     // Writing to a String cannot fail.
     let _ = writeln!(
         out,
