@@ -25,7 +25,7 @@
 //! | [`sort::binary_insertion_sort`] | O(n log n) comparisons, O(n²) time (moves) |
 //! | [`sort::merge_sort`] | Θ(n log n) time, at most n⌈log₂ n⌉ comparisons |
 //! | [`sort::heap_sort`] | O(n log n) time, at most 2n log₂ n comparisons |
-//! | [`sort::quick_sort`] | O(n log n) time (introsort), about 1.19 n log₂ n comparisons expected |
+//! | [`sort::quick_sort`] | O(n log n) time (introsort), at most 6n log₂ n + n comparisons |
 //! | [`sort::radix_sort_f64`] | Θ(n) time, 8 passes, no comparisons |
 //!
 //! ## Conventions

@@ -14,7 +14,7 @@
 //! | [`binary_insertion_sort`] | Σ_{k=1}^{n−1} (⌈log₂ k⌉ + 1) | yes | `binary_insertion.rs` |
 //! | [`merge_sort`] | n⌈log₂ n⌉ − 2^⌈log₂ n⌉ + 1 | yes | `merge.rs` |
 //! | [`heap_sort`] | 2n log₂ n | no | `heap.rs` |
-//! | [`quick_sort`] | O(n log n) (introsort) | no | `quick.rs` |
+//! | [`quick_sort`] | 6n log₂ n + n (introsort) | no | `quick.rs` |
 //! | [`radix_sort_f64`] | none: 8 passes of 8-bit digits | — | `radix.rs` |
 //!
 //! # Three entry points per comparison sort
@@ -29,8 +29,8 @@
 //!
 //! Comparisons are counted at the boundary: every call of the caller's comparator is one
 //! [`Counter::comparison`], nothing else is. Exchanges of two elements are
-//! [`Counter::swap`]; single elements displaced one place (insertion sort's shifts) are
-//! [`Counter::element_move`]. Each algorithm's docs say which of these it records and which
+//! [`Counter::swap`]; single-element moves (insertion sort's shifts, merge sort's placements,
+//! radix sort's distributions) are [`Counter::element_move`]. Each algorithm's docs say which of these it records and which
 //! numbers the seed states for it.
 //!
 //! # Sorting floats

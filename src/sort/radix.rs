@@ -6,9 +6,8 @@
 //! bytes, least significant first, with a stable counting sort per byte sorts the floats.
 //! One pass over the input builds all eight byte histograms; a byte on which every key agrees
 //! (the sign and high exponent bits of data of one sign and magnitude, say) is skipped.
-//! Not in the seed; it is compgeo's fast path for sorting coordinates
-//! (`/work/shared/SCOPE.md` §1), measured against `sort_unstable_by(f64::total_cmp)` in
-//! `benches/sort.rs`.
+//! Not in the seed; it is compgeo's candidate fast path for sorting coordinates, measured
+//! against `sort_unstable_by(f64::total_cmp)` in `benches/sort.rs` (group `radix-f64`).
 //!
 //! Invariants the tests check: the output equals `sort_unstable_by(f64::total_cmp)` bit for
 //! bit (signed zeros, subnormals, infinities, NaNs of both signs and any payload); moves are

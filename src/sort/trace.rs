@@ -51,9 +51,9 @@ pub const TRACE_MAX_LEN: usize = 1000;
 ///
 /// # Complexity
 ///
-/// With n = `input.len()`: the algorithm's time plus the table's size, O(n³) characters for
-/// bubble sort (n(n−1)/2 rows of up to n values) and O(n²) rows·values for the others; space
-/// the same as the text.
+/// With n = `input.len()`: the algorithm's time plus the size of the table, which holds O(n²)
+/// values for every algorithm (bubble sort's n(n−1)/2 comparison rows, or about n rows of up
+/// to n values); space the same as the text.
 ///
 /// ```
 /// use compgeo::sort::{trace, Algorithm};
