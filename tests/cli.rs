@@ -473,6 +473,18 @@ fn unknown_kinds_and_bad_arguments_are_usage_errors() {
     let err = assert_rejected(&["gen", "graph", "--kind", "petersen", "--n", "12"], None);
     assert!(err.contains("10"), "{err}");
     let err = assert_rejected(
+        &[
+            "gen",
+            "sequence",
+            "--kind",
+            "random",
+            "--n",
+            "10000000000000",
+        ],
+        None,
+    );
+    assert!(err.contains(&gen::MAX_POINTS.to_string()), "{err}");
+    let err = assert_rejected(
         &["gen", "points", "--kind", "cocircular", "--n", "400000"],
         None,
     );

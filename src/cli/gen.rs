@@ -62,7 +62,7 @@ struct SequenceArgs {
     /// Order of the keys
     #[arg(long)]
     kind: SequenceKind,
-    /// Number of keys
+    /// Number of keys (at most 2^27)
     #[arg(long)]
     n: usize,
     /// Seed: the same seed gives the same keys on every machine
@@ -99,7 +99,17 @@ pub(super) fn run(args: GenArgs) -> Result<(), CliError> {
             }
             print_json(&graph_json(g))
         }
-        What::Sequence(a) => print_json(&gen::sequence(a.kind, a.n, a.seed)),
+        What::Sequence(a) => {
+            // The library cannot fail, but an absurd n would abort on allocation.
+            if a.n > gen::MAX_POINTS {
+                return Err(CliError::Usage(format!(
+                    "--n {} is more than the {} keys gen sequence prints",
+                    a.n,
+                    gen::MAX_POINTS
+                )));
+            }
+            print_json(&gen::sequence(a.kind, a.n, a.seed))
+        }
     }
 }
 
