@@ -10,12 +10,14 @@
 //! | [`geometry`] | [`Point2`](geometry::Point2), exact predicates, validation |
 //! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) |
 //! | [`error`] | the crate's [`Error`] and [`Result`] |
+//! | [`complexity`] | stated bounds, the catalog of algorithms, measurement, fits and verdicts |
 //!
 //! ## Conventions
 //!
 //! The plane is oriented with y up: a counter-clockwise turn is positive. Every finite `f64`
 //! is valid input; NaN and infinities are rejected with [`Error::NonFinite`].
 
+pub mod complexity;
 pub mod count;
 pub mod error;
 pub mod geometry;
