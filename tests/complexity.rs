@@ -416,3 +416,235 @@ fn measure_rejects_too_few_sizes() {
         "{err}"
     );
 }
+
+/// A fresh empty directory under the system temp dir, removed when dropped.
+#[cfg(feature = "cli")]
+struct TempDir(std::path::PathBuf);
+
+#[cfg(feature = "cli")]
+impl TempDir {
+    fn new(tag: &str) -> TempDir {
+        let nanos = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .unwrap()
+            .as_nanos();
+        let dir =
+            std::env::temp_dir().join(format!("compgeo-{tag}-{}-{nanos}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        TempDir(dir)
+    }
+}
+
+#[cfg(feature = "cli")]
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+#[cfg(feature = "cli")]
+mod report {
+    use super::*;
+    use compgeo::complexity::report::{
+        read_criterion, write_criterion_report, write_report, UserBound,
+    };
+    use compgeo::complexity::{Machine, Profile};
+    use serde_json::Value;
+
+    fn read_json(path: &std::path::Path) -> Value {
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+    }
+
+    #[test]
+    fn results_json_has_the_contract_shape() {
+        let dir = TempDir::new("report");
+        let ns = [8, 16, 32, 64, 128];
+        let entries = [
+            Entry::new("scan/prefix", Bound::NH, Operation::Comparisons, PrefixScan),
+            Entry::new(
+                "scan/prefix",
+                Bound::Linear,
+                Operation::Comparisons,
+                PrefixScan,
+            )
+            .input("liar"),
+        ];
+        let measured: Vec<_> = entries
+            .iter()
+            .map(|e| measure(e, &ns, &tiny_settings(), &mut |_| {}).unwrap())
+            .collect();
+        let machine = Machine::current();
+        let index = write_report(&dir.0, &machine, Profile::Quick, &measured).unwrap();
+        assert_eq!(index, dir.0.join("index.html"));
+
+        let json = read_json(&dir.0.join("results.json"));
+        let m = &json["machine"];
+        assert_eq!(m["cores"].as_u64(), Some(machine.cores as u64));
+        for key in ["os", "arch", "compgeo_version"] {
+            assert!(m[key].is_string(), "machine.{key}");
+        }
+        assert!(m.get("cpu").is_some());
+        assert_eq!(json["profile"], "quick");
+        let algorithms = json["algorithms"].as_array().unwrap();
+        assert_eq!(algorithms.len(), 2);
+        for (a, want) in algorithms.iter().zip(["consistent", "exceeds"]) {
+            assert_eq!(a["id"], "scan/prefix");
+            assert_eq!(a["problem"], "scan");
+            assert_eq!(a["operation"], "comparisons");
+            assert!(a["exponent_counts"].as_f64().unwrap() > 1.4);
+            assert!(a["exponent_time"].as_f64().unwrap().is_finite());
+            assert_eq!(a["verdict"], want);
+            let samples = a["samples"].as_array().unwrap();
+            assert_eq!(samples.len(), ns.len());
+            for (s, &n) in samples.iter().zip(&ns) {
+                assert_eq!(s["n"].as_u64(), Some(n as u64));
+                assert!(s["m"].is_null());
+                let h = (n as f64).sqrt() as u64;
+                assert_eq!(s["h"].as_u64(), Some(h));
+                assert!(s["time_ns"].as_f64().unwrap() > 0.0);
+                let counts = s["counts"].as_object().unwrap();
+                for op in Operation::ALL {
+                    assert!(counts.contains_key(op.name()), "counts.{}", op.name());
+                }
+                assert_eq!(counts["comparisons"].as_u64(), Some(n as u64 * h));
+            }
+        }
+        assert_eq!(algorithms[0]["bound"], "O(nh)");
+        assert_eq!(algorithms[0]["input"], "random");
+        assert_eq!(algorithms[1]["bound"], "O(n)");
+        assert_eq!(algorithms[1]["input"], "liar");
+
+        let html = std::fs::read_to_string(&index).unwrap();
+        for file in [
+            "scan-prefix-random.svg",
+            "scan-prefix-liar.svg",
+            "problem-scan.svg",
+        ] {
+            assert!(html.contains(&format!("src=\"{file}\"")), "{file} embedded");
+            let svg = std::fs::read_to_string(dir.0.join(file)).unwrap();
+            assert!(svg.starts_with("<svg") && svg.contains("<text"), "{file}");
+        }
+        let svg = std::fs::read_to_string(dir.0.join("scan-prefix-random.svg")).unwrap();
+        for label in [
+            "O(nh)",
+            "comparisons",
+            "time per run (ns)",
+            "n (input size)",
+        ] {
+            assert!(svg.contains(label), "{label} on the growth chart");
+        }
+        assert!(html.contains("<td>exceeds</td>"));
+    }
+
+    /// Writes a criterion-0.8-style measurement: `group/function/n/new/{benchmark,estimates}.json`.
+    fn fixture(root: &std::path::Path, group: &str, function: &str, n: usize, median: f64) {
+        let dir = root
+            .join(group.replace('/', "_"))
+            .join(function)
+            .join(n.to_string())
+            .join("new");
+        std::fs::create_dir_all(&dir).unwrap();
+        let bench = serde_json::json!({
+            "group_id": group, "function_id": function, "value_str": n.to_string(),
+            "throughput": {"Elements": n},
+            "full_id": format!("{group}/{function}/{n}"),
+            "directory_name": format!("{}/{function}/{n}", group.replace('/', "_")),
+            "title": format!("{group}/{function}/{n}"),
+        });
+        std::fs::write(dir.join("benchmark.json"), bench.to_string()).unwrap();
+        let est = |v: f64| {
+            serde_json::json!({
+                "confidence_interval": {"confidence_level": 0.95, "lower_bound": v * 0.9, "upper_bound": v * 1.1},
+                "point_estimate": v, "standard_error": v * 0.01,
+            })
+        };
+        let estimates = serde_json::json!({
+            "mean": est(median * 1.05), "median": est(median),
+            "median_abs_dev": est(median * 0.01), "slope": null, "std_dev": est(median * 0.02),
+        });
+        std::fs::write(dir.join("estimates.json"), estimates.to_string()).unwrap();
+    }
+
+    #[test]
+    fn criterion_import_groups_sizes_and_matches_the_catalog() {
+        let root = TempDir::new("criterion");
+        let ns = [64, 128, 256, 512, 1024, 2048];
+        for &n in &ns {
+            let x = n as f64;
+            fixture(&root.0, "scan", "prefix", n, 3.0 * x * x.sqrt());
+            fixture(&root.0, "scan", "other", n, 2.0 * x * x);
+            fixture(&root.0, "scan/liar", "prefix", n, x * x);
+        }
+        // Criterion's HTML report directory and a non-numeric size are not measurements.
+        std::fs::create_dir_all(root.0.join("scan/prefix/report/new")).unwrap();
+        std::fs::write(root.0.join("scan/prefix/report/new/estimates.json"), "{}").unwrap();
+        fixture(&root.0, "scan", "odd", 1, 5.0);
+        let odd = root.0.join("scan/odd/1/new/benchmark.json");
+        let text = std::fs::read_to_string(&odd)
+            .unwrap()
+            .replace("\"1\"", "\"tiny\"");
+        std::fs::write(&odd, text.replace("{\"Elements\":1}", "null")).unwrap();
+        std::fs::rename(root.0.join("scan/odd/1"), root.0.join("scan/odd/tiny")).unwrap();
+
+        let import = read_criterion(&root.0).unwrap();
+        let ids: Vec<String> = import.benchmarks.iter().map(|b| b.id()).collect();
+        assert_eq!(ids, ["scan/liar/prefix", "scan/other", "scan/prefix"]);
+        assert_eq!(import.skipped.len(), 1, "{:?}", import.skipped);
+        assert!(import.skipped[0].0.ends_with("scan/odd/tiny/new"));
+        let prefix = &import.benchmarks[2];
+        assert_eq!(
+            prefix.samples.iter().map(|s| s.0).collect::<Vec<_>>(),
+            ns.to_vec()
+        );
+        assert_eq!(prefix.samples[0].1, 3.0 * 64.0 * 8.0, "median, not mean");
+
+        let catalog = [
+            Entry::new(
+                "scan/prefix",
+                Bound::NLogN,
+                Operation::Comparisons,
+                PrefixScan,
+            )
+            .input("random")
+            .info,
+            Entry::new(
+                "scan/prefix",
+                Bound::Linear,
+                Operation::Comparisons,
+                PrefixScan,
+            )
+            .input("liar")
+            .info,
+        ];
+        let user: Vec<UserBound> = vec!["scan/other=O(n^2)".parse().unwrap()];
+        let out = TempDir::new("criterion-out");
+        let index =
+            write_criterion_report(&out.0, &Machine::current(), &import, &catalog, &user).unwrap();
+        assert!(index.is_file());
+        let json = read_json(&out.0.join("results.json"));
+        assert_eq!(json["profile"], "criterion");
+        let algs = json["algorithms"].as_array().unwrap();
+        let by_id = |id: &str| algs.iter().find(|a| a["id"] == id).unwrap();
+        // x^1.5 against O(n log n) (matched via the catalog): within the time tolerance.
+        let p = by_id("scan/prefix");
+        assert_eq!(p["bound"], "O(n log n)");
+        assert_eq!(p["input"], "random");
+        assert!((p["exponent_time"].as_f64().unwrap() - 1.5).abs() < 1e-9);
+        assert_eq!(p["verdict_time"], "consistent");
+        assert!(p["verdict"].is_null() && p["exponent_counts"].is_null());
+        assert!(p["samples"][0]["counts"].is_null());
+        // The group names the input: matched to the "liar" entry, O(n) against x^2.
+        let l = by_id("scan/liar/prefix");
+        assert_eq!(l["input"], "liar");
+        assert_eq!(l["verdict_time"], "exceeds");
+        // No catalog entry: the user's bound.
+        let o = by_id("scan/other");
+        assert_eq!(o["bound"], "O(n^2)");
+        assert!((o["exponent_time"].as_f64().unwrap() - 2.0).abs() < 1e-9);
+        assert_eq!(o["verdict_time"], "consistent");
+        for file in ["scan-prefix.svg", "scan-other.svg", "scan-liar-prefix.svg"] {
+            assert!(out.0.join(file).is_file(), "{file}");
+        }
+        assert!(read_criterion(&root.0.join("missing")).is_err());
+    }
+}

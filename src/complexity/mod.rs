@@ -12,8 +12,8 @@
 //! | how it is judged | [`fit`]: log-log slopes, cost / f(n), [`Verdict`] |
 //! | where it was measured | [`Machine`] |
 //!
-//! The HTML/SVG/JSON report built on top of this lives in the command line (`compgeo report`,
-//! feature `cli`); the engine itself needs no optional dependency. `docs/complexity.md`
+//! The HTML/SVG/JSON report built on top of this is [`report`] (feature `cli`, used by
+//! `compgeo report`); the engine itself needs no optional dependency. `docs/complexity.md`
 //! explains the method, the tolerances and the report.
 
 mod bound;
@@ -21,6 +21,8 @@ mod catalog;
 mod fit;
 mod machine;
 mod measure;
+#[cfg(feature = "cli")]
+pub mod report;
 
 pub use bound::{Bound, SecondSize};
 pub use catalog::{Entry, Info, Profile, SizeRange, Workload};
