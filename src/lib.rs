@@ -10,6 +10,7 @@
 //! | [`geometry`] | [`Point2`](geometry::Point2), exact predicates, validation |
 //! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) |
 //! | [`error`] | the crate's [`Error`] and [`Result`] |
+//! | [`gen`] | seeded workload generators: point sets, graphs, number sequences |
 //! | [`complexity`] | stated bounds, the catalog of algorithms, measurement, fits and verdicts |
 //!
 //! ## Conventions
@@ -20,6 +21,7 @@
 pub mod complexity;
 pub mod count;
 pub mod error;
+pub mod gen;
 pub mod geometry;
 
 #[cfg(feature = "cli")]

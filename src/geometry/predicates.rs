@@ -1,17 +1,58 @@
-//! Exact geometric predicates (fast path; the exact slow path for extreme magnitudes follows).
+//! Exact geometric predicates for every finite `f64` input.
+//!
+//! Each predicate first checks that its operands lie in a *safe exponent window* (every
+//! nonzero coordinate has magnitude in `[2^min, 2^(max+1))`). Inside it, floating-point
+//! expansion arithmetic is exact: no product can overflow and no rounding error can fall
+//! below the smallest normal double. That path is a fast filter (the rounded determinant
+//! with a forward error bound) followed, only when the filter cannot decide, by an exact
+//! expansion. `orient2d` and `incircle` use the `robust` crate there; `cmp_dist` and
+//! `cross_sign` use this crate's own expansions.
+//!
+//! Outside the window the operands go to [`super::extended`], which rescales them by an
+//! exact power of two when their exponents span less than the window's width, and otherwise
+//! evaluates the predicate's polynomial in big-integer arithmetic on the exact binary values
+//! of the doubles. The window check is a handful of comparisons, so in-window inputs pay
+//! nearly nothing for it (the `predicates` benchmark compares with bare `robust`).
 
+use super::expansion::{two_diff, Expansion};
+use super::extended::{self, Predicate};
 use super::Point2;
 use std::cmp::Ordering;
 
-/// Where a point lies relative to a directed line, or the turn of a point triple.
+/// The turn made by three points, or the side of a directed line a point is on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Orientation {
-    /// A left turn: positive signed area.
+    /// A left turn (positive signed area): the third point is left of the directed line.
     CounterClockwise,
-    /// A right turn: negative signed area.
+    /// A right turn (negative signed area): the third point is right of the directed line.
     Clockwise,
-    /// Zero signed area.
+    /// Zero signed area: the points are on one line (or coincide).
     Collinear,
+}
+
+impl Orientation {
+    /// The orientation of the same points in reverse order.
+    ///
+    /// ```
+    /// use compgeo::geometry::Orientation;
+    /// assert_eq!(Orientation::Clockwise.reversed(), Orientation::CounterClockwise);
+    /// assert_eq!(Orientation::Collinear.reversed(), Orientation::Collinear);
+    /// ```
+    pub fn reversed(self) -> Orientation {
+        match self {
+            Orientation::CounterClockwise => Orientation::Clockwise,
+            Orientation::Clockwise => Orientation::CounterClockwise,
+            Orientation::Collinear => Orientation::Collinear,
+        }
+    }
+
+    pub(crate) fn from_sign(sign: i32) -> Orientation {
+        match sign.cmp(&0) {
+            Ordering::Greater => Orientation::CounterClockwise,
+            Ordering::Less => Orientation::Clockwise,
+            Ordering::Equal => Orientation::Collinear,
+        }
+    }
 }
 
 /// Where a point lies relative to a circle.
@@ -25,55 +66,219 @@ pub enum InCircle {
     Outside,
 }
 
-fn orientation_of(det: f64) -> Orientation {
-    if det > 0.0 {
-        Orientation::CounterClockwise
-    } else if det < 0.0 {
-        Orientation::Clockwise
-    } else {
-        Orientation::Collinear
+impl InCircle {
+    fn from_sign(sign: i32) -> InCircle {
+        match sign.cmp(&0) {
+            Ordering::Greater => InCircle::Inside,
+            Ordering::Less => InCircle::Outside,
+            Ordering::Equal => InCircle::On,
+        }
     }
 }
+
+/// A safe exponent window: every nonzero operand has magnitude in `[2^min, 2^(max+1))`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Window {
+    pub(crate) min_exp: i32,
+    pub(crate) max_exp: i32,
+    low: f64,
+    high: f64,
+}
+
+impl Window {
+    const fn new(min_exp: i32, max_exp: i32) -> Window {
+        Window {
+            min_exp,
+            max_exp,
+            low: pow2(min_exp),
+            high: pow2(max_exp + 1),
+        }
+    }
+
+    #[inline(always)]
+    fn contains_all(&self, coords: &[f64]) -> bool {
+        // A fold with `&` keeps the check branch-free; it is a few comparisons per call.
+        coords.iter().fold(true, |ok, &v| {
+            let m = v.abs();
+            ok & ((m >= self.low) & (m < self.high) | (m == 0.0))
+        })
+    }
+}
+
+/// `2^e` for `-1022 <= e <= 1023`.
+pub(crate) const fn pow2(e: i32) -> f64 {
+    f64::from_bits(((e + 1023) as u64) << 52)
+}
+
+/// Window of the degree-2 predicates (`orient2d`, `cmp_dist`, `cross_sign`): products of two
+/// differences stay below 2^804, and their rounding errors, multiples of 2^-704, stay normal.
+pub(crate) const DEGREE_2: Window = Window::new(-300, 400);
+
+/// Window of `incircle` (degree 4): the lifted terms stay below 2^812 and the smallest
+/// rounding errors of the exact stage, multiples of 2^-776, stay normal.
+pub(crate) const DEGREE_4: Window = Window::new(-142, 200);
+
+/// Shewchuk's bound for the rounded value of `p*q - r*s` with `p, q, r, s` rounded
+/// differences: `(3 + 16 eps) eps` with `eps = 2^-53`.
+const CROSS_ERRBOUND: f64 = (3.0 + 16.0 * (f64::EPSILON / 2.0)) * (f64::EPSILON / 2.0);
+
+/// Bound for the rounded `(p^2 + q^2) - (r^2 + s^2)` with rounded differences: each sum of
+/// squares carries at most about `4 eps` relative error, the final subtraction one more `eps`;
+/// `6 eps` leaves room for the rounding of the bound itself.
+const DIST_ERRBOUND: f64 = 6.0 * (f64::EPSILON / 2.0);
 
 fn coord(p: Point2) -> robust::Coord<f64> {
     robust::Coord { x: p.x, y: p.y }
 }
 
-/// Orientation of the triple `(a, b, c)`.
-pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
-    orientation_of(robust::orient2d(coord(a), coord(b), coord(c)))
+fn sign_of(x: f64) -> i32 {
+    (x > 0.0) as i32 - (x < 0.0) as i32
 }
 
-/// Position of `d` relative to the circle through the counter-clockwise triangle `a, b, c`.
-pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> InCircle {
-    let det = robust::incircle(coord(a), coord(b), coord(c), coord(d));
-    if det > 0.0 {
-        InCircle::Inside
-    } else if det < 0.0 {
-        InCircle::Outside
+/// The orientation of the triple `(a, b, c)`: the sign of the signed area
+/// `(b - a) x (c - a)`, exact for every finite input.
+///
+/// [`Orientation::CounterClockwise`] means `c` is strictly left of the directed line from `a`
+/// to `b` (y up), [`Orientation::Clockwise`] strictly right, [`Orientation::Collinear`] on it.
+///
+/// # Complexity
+/// O(1): a floating-point filter; near-degenerate input takes an exact adaptive stage, and
+/// operands outside the safe window a rescaled or big-integer path.
+///
+/// ```
+/// use compgeo::geometry::{orient2d, Orientation, Point2};
+///
+/// let a = Point2::new(0.0, 0.0);
+/// let b = Point2::new(1.0, 1.0);
+/// assert_eq!(orient2d(a, b, Point2::new(0.0, 1.0)), Orientation::CounterClockwise);
+/// assert_eq!(orient2d(a, b, Point2::new(1.0, 0.0)), Orientation::Clockwise);
+/// // Exact for every finite input, however large or small:
+/// assert_eq!(orient2d(a, b, Point2::new(1e300, 1e300)), Orientation::Collinear);
+/// assert_eq!(orient2d(a, b, Point2::new(5e-324, 0.0)), Orientation::Clockwise);
+/// ```
+#[inline]
+pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
+    let coords = [a.x, a.y, b.x, b.y, c.x, c.y];
+    if DEGREE_2.contains_all(&coords) {
+        Orientation::from_sign(sign_of(robust::orient2d(coord(a), coord(b), coord(c))))
     } else {
-        InCircle::On
+        Orientation::from_sign(extended::sign(Predicate::Orient2d, &coords))
     }
 }
 
-/// Compares `|ab|^2` with `|cd|^2`.
+/// Where `d` lies relative to the circle through `a`, `b`, `c`, exact for every finite input.
+///
+/// The answer is for a counter-clockwise triangle `a, b, c`; for a clockwise one
+/// [`InCircle::Inside`] and [`InCircle::Outside`] swap (the predicate is the sign of the
+/// lifted determinant). If `a, b, c` are collinear the "circle" is their line, and the
+/// answer tells the side of the line `d` is on ([`InCircle::On`] if `d` is on it too).
+///
+/// # Complexity
+/// O(1), as for [`orient2d`].
+///
+/// ```
+/// use compgeo::geometry::{incircle, InCircle, Point2};
+///
+/// let (a, b, c) = (Point2::new(0.0, 0.0), Point2::new(2.0, 0.0), Point2::new(0.0, 2.0));
+/// assert_eq!(incircle(a, b, c, Point2::new(1.0, 1.0)), InCircle::Inside);
+/// assert_eq!(incircle(a, b, c, Point2::new(2.0, 2.0)), InCircle::On);
+/// assert_eq!(incircle(a, b, c, Point2::new(3.0, 3.0)), InCircle::Outside);
+/// ```
+#[inline]
+pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> InCircle {
+    let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
+    if DEGREE_4.contains_all(&coords) {
+        InCircle::from_sign(sign_of(robust::incircle(
+            coord(a),
+            coord(b),
+            coord(c),
+            coord(d),
+        )))
+    } else {
+        InCircle::from_sign(extended::sign(Predicate::Incircle, &coords))
+    }
+}
+
+/// Compares the squared distances `|ab|^2` and `|cd|^2`, exact for every finite input.
+///
+/// `Ordering::Less` means `a` and `b` are strictly closer to each other than `c` and `d`.
+/// No distance is ever rounded, so ties are detected exactly.
+///
+/// # Complexity
+/// O(1): a floating-point filter, then an exact expansion of at most 32 terms.
+///
+/// ```
+/// use compgeo::geometry::{cmp_dist, Point2};
+/// use std::cmp::Ordering;
+///
+/// let o = Point2::new(0.0, 0.0);
+/// // 3-4-5: |(0,0)-(3,4)| = |(0,0)-(5,0)| exactly.
+/// assert_eq!(cmp_dist(o, Point2::new(3.0, 4.0), o, Point2::new(5.0, 0.0)), Ordering::Equal);
+/// assert_eq!(cmp_dist(o, Point2::new(3.0, 4.0), o, Point2::new(0.0, 6.0)), Ordering::Less);
+/// ```
+#[inline]
 pub fn cmp_dist(a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
-    let ab = (b.x - a.x).powi(2) + (b.y - a.y).powi(2);
-    let cd = (d.x - c.x).powi(2) + (d.y - c.y).powi(2);
-    ab.total_cmp(&cd)
+    let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
+    let sign = if DEGREE_2.contains_all(&coords) {
+        cmp_dist_in_window(&coords)
+    } else {
+        extended::sign(Predicate::CmpDist, &coords)
+    };
+    sign.cmp(&0)
 }
 
-/// Sign of the cross product `(b - a) x (d - c)`.
+/// The sign of the cross product `(b - a) x (d - c)` of two edge vectors, exact for every
+/// finite input.
+///
+/// [`Orientation::CounterClockwise`] means the direction `d - c` is obtained from `b - a` by a
+/// counter-clockwise turn of less than half a revolution; [`Orientation::Collinear`] means the
+/// edges are parallel (or one is a single point). Rotating calipers compare edge directions
+/// with it, without forming the rounded point `a + (d - c)`.
+///
+/// # Complexity
+/// O(1): a floating-point filter, then an exact expansion of at most 16 terms.
+///
+/// ```
+/// use compgeo::geometry::{cross_sign, Orientation, Point2};
+///
+/// let p = |x, y| Point2::new(x, y);
+/// assert_eq!(cross_sign(p(0.0, 0.0), p(1.0, 0.0), p(5.0, 5.0), p(5.0, 6.0)), Orientation::CounterClockwise);
+/// assert_eq!(cross_sign(p(0.0, 0.0), p(2.0, 2.0), p(7.0, 1.0), p(8.0, 2.0)), Orientation::Collinear);
+/// ```
+#[inline]
 pub fn cross_sign(a: Point2, b: Point2, c: Point2, d: Point2) -> Orientation {
-    orientation_of((b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x))
+    let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
+    let sign = if DEGREE_2.contains_all(&coords) {
+        cross_sign_in_window(&coords)
+    } else {
+        extended::sign(Predicate::CrossSign, &coords)
+    };
+    Orientation::from_sign(sign)
 }
 
-/// Lexicographic order: by x, then by y.
+/// Lexicographic order of points: by x, then by y. `-0.0` and `0.0` compare equal.
+///
+/// The comparison is exact (it compares coordinates, it computes nothing). For NaN
+/// coordinates, which [`validate`](super::validate) rejects, the order is unspecified.
+///
+/// # Complexity
+/// O(1).
+///
+/// ```
+/// use compgeo::geometry::{cmp_lex, Point2};
+/// use std::cmp::Ordering;
+///
+/// assert_eq!(cmp_lex(Point2::new(0.0, 5.0), Point2::new(1.0, 0.0)), Ordering::Less);
+/// assert_eq!(cmp_lex(Point2::new(1.0, 0.0), Point2::new(1.0, -1.0)), Ordering::Greater);
+/// assert_eq!(cmp_lex(Point2::new(-0.0, 0.0), Point2::new(0.0, -0.0)), Ordering::Equal);
+/// ```
+#[inline]
 pub fn cmp_lex(a: Point2, b: Point2) -> Ordering {
-    cmp_f64(a.x, b.x).then_with(|| cmp_f64(a.y, b.y))
+    cmp_coordinate(a.x, b.x).then_with(|| cmp_coordinate(a.y, b.y))
 }
 
-fn cmp_f64(a: f64, b: f64) -> Ordering {
+#[inline]
+fn cmp_coordinate(a: f64, b: f64) -> Ordering {
     if a < b {
         Ordering::Less
     } else if a > b {
@@ -81,4 +286,64 @@ fn cmp_f64(a: f64, b: f64) -> Ordering {
     } else {
         Ordering::Equal
     }
+}
+
+/// Dispatch for operands already inside the predicate's window (also used after rescaling).
+pub(crate) fn sign_in_window(predicate: Predicate, coords: &[f64]) -> i32 {
+    let p = |i: usize| robust::Coord {
+        x: coords[2 * i],
+        y: coords[2 * i + 1],
+    };
+    match predicate {
+        Predicate::Orient2d => sign_of(robust::orient2d(p(0), p(1), p(2))),
+        Predicate::Incircle => sign_of(robust::incircle(p(0), p(1), p(2), p(3))),
+        Predicate::CmpDist => cmp_dist_in_window(coords),
+        Predicate::CrossSign => cross_sign_in_window(coords),
+    }
+}
+
+fn cmp_dist_in_window(coords: &[f64]) -> i32 {
+    let &[ax, ay, bx, by, cx, cy, dx, dy] = coords else {
+        unreachable!("cmp_dist takes four points")
+    };
+    let (abx, aby, cdx, cdy) = (bx - ax, by - ay, dx - cx, dy - cy);
+    let ab = abx * abx + aby * aby;
+    let cd = cdx * cdx + cdy * cdy;
+    let diff = ab - cd;
+    let bound = DIST_ERRBOUND * (ab + cd);
+    if diff > bound {
+        return 1;
+    }
+    if -diff > bound {
+        return -1;
+    }
+    let neg = |(hi, lo): (f64, f64)| (-hi, -lo);
+    let (abx, aby) = (two_diff(bx, ax), two_diff(by, ay));
+    let (cdx, cdy) = (two_diff(dx, cx), two_diff(dy, cy));
+    let mut sum = Expansion::new();
+    sum.add_product2(abx, abx);
+    sum.add_product2(aby, aby);
+    sum.add_product2(cdx, neg(cdx));
+    sum.add_product2(cdy, neg(cdy));
+    sum.signum()
+}
+
+fn cross_sign_in_window(coords: &[f64]) -> i32 {
+    let &[ax, ay, bx, by, cx, cy, dx, dy] = coords else {
+        unreachable!("cross_sign takes four points")
+    };
+    let (abx, aby, cdx, cdy) = (bx - ax, by - ay, dx - cx, dy - cy);
+    let left = abx * cdy;
+    let right = aby * cdx;
+    let det = left - right;
+    let bound = CROSS_ERRBOUND * (left.abs() + right.abs());
+    if det > bound || -det > bound {
+        return sign_of(det);
+    }
+    let (abx, aby) = (two_diff(bx, ax), two_diff(by, ay));
+    let (cdx, cdy) = (two_diff(dx, cx), two_diff(dy, cy));
+    let mut sum = Expansion::new();
+    sum.add_product2(abx, cdy);
+    sum.add_product2((-aby.0, -aby.1), cdx);
+    sum.signum()
 }
