@@ -667,6 +667,14 @@ fn random_weights_are_seeded_and_in_the_unit_interval() {
         b.weights, a.weights,
         "weights are replaced by the new seed's"
     );
+    // Weights use their own stream: they are not the first unit draws of the seed's main
+    // stream, which is exactly what `uniform-square` coordinates are.
+    let square: Vec<f64> = points(PointKind::UniformSquare, 150, 5)
+        .unwrap()
+        .iter()
+        .flat_map(|p| [p.x, p.y])
+        .collect();
+    assert!(w.iter().zip(&square).all(|(a, b)| a != b));
 }
 
 // ---------------------------------------------------------------- sequences

@@ -141,7 +141,8 @@ pub fn graph(kind: GraphKind, n: usize, m: usize, seed: u64) -> Result<EdgeList>
 /// Weights are independent and uniform in `[0, 1)`, multiples of 2^-53 (53 random bits
 /// each), so they are exact, non-negative, and distinct with overwhelming probability (a
 /// minimum spanning tree is then unique). The same `seed` gives the same weights on every
-/// machine.
+/// machine. The weights come from a different ChaCha8 stream than [`graph`] uses, so
+/// passing the graph's own seed gives weights independent of its structure.
 ///
 /// # Complexity
 /// O(E) time and space for E edges.
@@ -156,7 +157,7 @@ pub fn graph(kind: GraphKind, n: usize, m: usize, seed: u64) -> Result<EdgeList>
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn with_random_weights(g: EdgeList, seed: u64) -> EdgeList {
-    let mut rng = Rng::new(seed);
+    let mut rng = Rng::with_stream(seed, WEIGHT_STREAM);
     let weights = g.edges.iter().map(|_| rng.unit()).collect();
     EdgeList {
         weights: Some(weights),
@@ -208,6 +209,9 @@ impl FromStr for GraphKind {
         parse_kind(s, "graph kind", &Self::ALL, |k| k.name())
     }
 }
+
+/// The ChaCha8 stream the weights are drawn from (the structure uses stream 0).
+const WEIGHT_STREAM: u64 = 1;
 
 fn invalid(name: &'static str, reason: String) -> Error {
     Error::InvalidParameter { name, reason }

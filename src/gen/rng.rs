@@ -15,9 +15,17 @@ const TWO_POW_MINUS_53: f64 = 1.0 / 9_007_199_254_740_992.0;
 pub(crate) struct Rng(ChaCha8Rng);
 
 impl Rng {
-    /// The stream for `seed` (ChaCha8 keyed by `seed_from_u64`).
+    /// The stream for `seed` (ChaCha8 keyed by `seed_from_u64`, stream 0).
     pub(crate) fn new(seed: u64) -> Self {
         Rng(ChaCha8Rng::seed_from_u64(seed))
+    }
+
+    /// Like [`Rng::new`] but on ChaCha's independent stream number `stream`, so that two
+    /// consumers of the same seed (a graph and its weights) do not see the same bits.
+    pub(crate) fn with_stream(seed: u64, stream: u64) -> Self {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        rng.set_stream(stream);
+        Rng(rng)
     }
 
     /// 64 uniformly random bits.
@@ -150,6 +158,30 @@ mod tests {
             let s = rng.symmetric_unit();
             assert!((-1.0..1.0).contains(&s));
         }
+    }
+
+    #[test]
+    fn streams_of_one_seed_differ() {
+        let a: Vec<u64> = (0..4)
+            .map({
+                let mut r = Rng::new(8);
+                move |_| r.next_u64()
+            })
+            .collect();
+        let b: Vec<u64> = (0..4)
+            .map({
+                let mut r = Rng::with_stream(8, 1);
+                move |_| r.next_u64()
+            })
+            .collect();
+        let c: Vec<u64> = (0..4)
+            .map({
+                let mut r = Rng::with_stream(8, 0);
+                move |_| r.next_u64()
+            })
+            .collect();
+        assert_ne!(a, b);
+        assert_eq!(a, c);
     }
 
     #[test]

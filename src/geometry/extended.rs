@@ -25,7 +25,8 @@ pub(crate) enum Predicate {
 }
 
 impl Predicate {
-    fn window(self) -> Window {
+    /// The safe exponent window of the predicate's exact floating-point stage.
+    pub(crate) fn window(self) -> Window {
         match self {
             Predicate::Incircle => DEGREE_4,
             Predicate::Orient2d | Predicate::CmpDist | Predicate::CrossSign => DEGREE_2,

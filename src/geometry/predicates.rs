@@ -1,18 +1,20 @@
 //! Exact geometric predicates for every finite `f64` input.
 //!
-//! Each predicate first checks that its operands lie in a *safe exponent window* (every
-//! nonzero coordinate has magnitude in `[2^min, 2^(max+1))`). Inside it, floating-point
-//! expansion arithmetic is exact: no product can overflow and no rounding error can fall
-//! below the smallest normal double. That path is a fast filter (the rounded determinant
-//! with a forward error bound) followed, only when the filter cannot decide, by an exact
-//! expansion. `orient2d` and `incircle` use the `robust` crate there; `cmp_dist` and
-//! `cross_sign` use this crate's own expansions.
+//! Each predicate runs in up to three stages:
 //!
-//! Outside the window the operands go to [`super::extended`], which rescales them by an
-//! exact power of two when their exponents span less than the window's width, and otherwise
-//! evaluates the predicate's polynomial in big-integer arithmetic on the exact binary values
-//! of the doubles. The window check is a handful of comparisons, so in-window inputs pay
-//! nearly nothing for it (the `predicates` benchmark compares with bare `robust`).
+//! 1. **Filter.** The determinant in plain floating point with a forward error bound
+//!    (Shewchuk's, plus an absolute slack for products that underflow). If the rounded value
+//!    clears the bound its sign is exact. Overflow gives `inf` or NaN, which never clears the
+//!    bound. Almost every call on ordinary input ends here, at the cost of the bare formula.
+//! 2. **Exact stage in the safe window.** If every nonzero operand has magnitude in the
+//!    predicate's safe exponent window (see [`DEGREE_2`], [`DEGREE_4`]), floating-point
+//!    expansion arithmetic is exact: `robust`'s adaptive stages for `orient2d` and
+//!    `incircle`, this crate's expansions for `cmp_dist` and `cross_sign`.
+//! 3. **Outside the window**, [`super::extended`] rescales the operands by an exact power of
+//!    two when their exponents allow, and otherwise evaluates the polynomial in big integers
+//!    on the exact binary values of the doubles.
+//!
+//! Stages 2 and 3 live in `#[cold]` functions so the filter inlines into callers' loops.
 
 use super::expansion::{two_diff, Expansion};
 use super::extended::{self, Predicate};
@@ -95,7 +97,6 @@ impl Window {
         }
     }
 
-    #[inline(always)]
     fn contains_all(&self, coords: &[f64]) -> bool {
         // A fold with `&` keeps the check branch-free; it is a few comparisons per call.
         coords.iter().fold(true, |ok, &v| {
@@ -107,6 +108,7 @@ impl Window {
 
 /// `2^e` for `-1022 <= e <= 1023`.
 pub(crate) const fn pow2(e: i32) -> f64 {
+    assert!(-1022 <= e && e <= 1023, "pow2 takes a normal exponent");
     f64::from_bits(((e + 1023) as u64) << 52)
 }
 
@@ -122,14 +124,19 @@ pub(crate) const DEGREE_4: Window = Window::new(-142, 200);
 /// differences: `(3 + 16 eps) eps` with `eps = 2^-53`.
 const CROSS_ERRBOUND: f64 = (3.0 + 16.0 * (f64::EPSILON / 2.0)) * (f64::EPSILON / 2.0);
 
+/// Absolute slack for rounding errors of operations that underflow: each is at most 2^-1075,
+/// and no filter adds more than a few of them. 2^-1000 is far more than needed, but it is a
+/// normal double: arithmetic on subnormals is slow on common hardware, and ordinary inputs
+/// never come near it.
+const UNDERFLOW_SLACK: f64 = pow2(-1000);
+
+/// `incircle`'s filter bound `(10 + 96 eps) eps` (Shewchuk's `iccerrboundA`).
+const INCIRCLE_ERRBOUND: f64 = (10.0 + 96.0 * (f64::EPSILON / 2.0)) * (f64::EPSILON / 2.0);
+
 /// Bound for the rounded `(p^2 + q^2) - (r^2 + s^2)` with rounded differences: each sum of
 /// squares carries at most about `4 eps` relative error, the final subtraction one more `eps`;
 /// `6 eps` leaves room for the rounding of the bound itself.
 const DIST_ERRBOUND: f64 = 6.0 * (f64::EPSILON / 2.0);
-
-fn coord(p: Point2) -> robust::Coord<f64> {
-    robust::Coord { x: p.x, y: p.y }
-}
 
 fn sign_of(x: f64) -> i32 {
     (x > 0.0) as i32 - (x < 0.0) as i32
@@ -158,11 +165,19 @@ fn sign_of(x: f64) -> i32 {
 /// ```
 #[inline]
 pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
-    let coords = [a.x, a.y, b.x, b.y, c.x, c.y];
-    if DEGREE_2.contains_all(&coords) {
-        Orientation::from_sign(sign_of(robust::orient2d(coord(a), coord(b), coord(c))))
+    let left = (a.x - c.x) * (b.y - c.y);
+    let right = (a.y - c.y) * (b.x - c.x);
+    let det = left - right;
+    let bound = CROSS_ERRBOUND * (left.abs() + right.abs()) + UNDERFLOW_SLACK;
+    if det > bound {
+        Orientation::CounterClockwise
+    } else if -det > bound {
+        Orientation::Clockwise
     } else {
-        Orientation::from_sign(extended::sign(Predicate::Orient2d, &coords))
+        Orientation::from_sign(exact_sign(
+            Predicate::Orient2d,
+            &[a.x, a.y, b.x, b.y, c.x, c.y],
+        ))
     }
 }
 
@@ -186,17 +201,36 @@ pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
 /// ```
 #[inline]
 pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> InCircle {
-    let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
-    if DEGREE_4.contains_all(&coords) {
-        InCircle::from_sign(sign_of(robust::incircle(
-            coord(a),
-            coord(b),
-            coord(c),
-            coord(d),
-        )))
-    } else {
-        InCircle::from_sign(extended::sign(Predicate::Incircle, &coords))
+    let (adx, ady, bdx, bdy) = (a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y);
+    let (cdx, cdy) = (c.x - d.x, c.y - d.y);
+    let (bc, cb) = (bdx * cdy, cdx * bdy);
+    let (ca, ac) = (cdx * ady, adx * cdy);
+    let (ab, ba) = (adx * bdy, bdx * ady);
+    let alift = adx * adx + ady * ady;
+    let blift = bdx * bdx + bdy * bdy;
+    let clift = cdx * cdx + cdy * cdy;
+    let det = alift * (bc - cb) + blift * (ca - ac) + clift * (ab - ba);
+    let (pa, pb, pc) = (
+        bc.abs() + cb.abs(),
+        ca.abs() + ac.abs(),
+        ab.abs() + ba.abs(),
+    );
+    let permanent = pa * alift + pb * blift + pc * clift;
+    // An underflowed degree-2 term is later multiplied by a lift or a minor, and every minor
+    // is at most the sum of two lifts (|xy| <= (x^2 + y^2) / 2), so the slack scales with the
+    // lifts; the 1 covers underflow in the final products and sums.
+    let slack = UNDERFLOW_SLACK * (alift + blift + clift + 1.0);
+    let bound = INCIRCLE_ERRBOUND * permanent + slack;
+    if det > bound {
+        return InCircle::Inside;
     }
+    if -det > bound {
+        return InCircle::Outside;
+    }
+    InCircle::from_sign(exact_sign(
+        Predicate::Incircle,
+        &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y],
+    ))
 }
 
 /// Compares the squared distances `|ab|^2` and `|cd|^2`, exact for every finite input.
@@ -218,13 +252,22 @@ pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> InCircle {
 /// ```
 #[inline]
 pub fn cmp_dist(a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
-    let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
-    let sign = if DEGREE_2.contains_all(&coords) {
-        cmp_dist_in_window(&coords)
+    let (abx, aby, cdx, cdy) = (b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
+    let ab = abx * abx + aby * aby;
+    let cd = cdx * cdx + cdy * cdy;
+    let diff = ab - cd;
+    let bound = DIST_ERRBOUND * (ab + cd) + UNDERFLOW_SLACK;
+    if diff > bound {
+        Ordering::Greater
+    } else if -diff > bound {
+        Ordering::Less
     } else {
-        extended::sign(Predicate::CmpDist, &coords)
-    };
-    sign.cmp(&0)
+        exact_sign(
+            Predicate::CmpDist,
+            &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y],
+        )
+        .cmp(&0)
+    }
 }
 
 /// The sign of the cross product `(b - a) x (d - c)` of two edge vectors, exact for every
@@ -247,13 +290,20 @@ pub fn cmp_dist(a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
 /// ```
 #[inline]
 pub fn cross_sign(a: Point2, b: Point2, c: Point2, d: Point2) -> Orientation {
-    let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
-    let sign = if DEGREE_2.contains_all(&coords) {
-        cross_sign_in_window(&coords)
+    let left = (b.x - a.x) * (d.y - c.y);
+    let right = (b.y - a.y) * (d.x - c.x);
+    let det = left - right;
+    let bound = CROSS_ERRBOUND * (left.abs() + right.abs()) + UNDERFLOW_SLACK;
+    if det > bound {
+        Orientation::CounterClockwise
+    } else if -det > bound {
+        Orientation::Clockwise
     } else {
-        extended::sign(Predicate::CrossSign, &coords)
-    };
-    Orientation::from_sign(sign)
+        Orientation::from_sign(exact_sign(
+            Predicate::CrossSign,
+            &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y],
+        ))
+    }
 }
 
 /// Lexicographic order of points: by x, then by y. `-0.0` and `0.0` compare equal.
@@ -288,7 +338,18 @@ fn cmp_coordinate(a: f64, b: f64) -> Ordering {
     }
 }
 
-/// Dispatch for operands already inside the predicate's window (also used after rescaling).
+/// Stages 2 and 3: the exact sign when the filter could not decide.
+#[cold]
+#[inline(never)]
+fn exact_sign(predicate: Predicate, coords: &[f64]) -> i32 {
+    if predicate.window().contains_all(coords) {
+        sign_in_window(predicate, coords)
+    } else {
+        extended::sign(predicate, coords)
+    }
+}
+
+/// The exact sign for operands inside the predicate's window (also used after rescaling).
 pub(crate) fn sign_in_window(predicate: Predicate, coords: &[f64]) -> i32 {
     let p = |i: usize| robust::Coord {
         x: coords[2 * i],
@@ -306,17 +367,6 @@ fn cmp_dist_in_window(coords: &[f64]) -> i32 {
     let &[ax, ay, bx, by, cx, cy, dx, dy] = coords else {
         unreachable!("cmp_dist takes four points")
     };
-    let (abx, aby, cdx, cdy) = (bx - ax, by - ay, dx - cx, dy - cy);
-    let ab = abx * abx + aby * aby;
-    let cd = cdx * cdx + cdy * cdy;
-    let diff = ab - cd;
-    let bound = DIST_ERRBOUND * (ab + cd);
-    if diff > bound {
-        return 1;
-    }
-    if -diff > bound {
-        return -1;
-    }
     let neg = |(hi, lo): (f64, f64)| (-hi, -lo);
     let (abx, aby) = (two_diff(bx, ax), two_diff(by, ay));
     let (cdx, cdy) = (two_diff(dx, cx), two_diff(dy, cy));
@@ -332,14 +382,6 @@ fn cross_sign_in_window(coords: &[f64]) -> i32 {
     let &[ax, ay, bx, by, cx, cy, dx, dy] = coords else {
         unreachable!("cross_sign takes four points")
     };
-    let (abx, aby, cdx, cdy) = (bx - ax, by - ay, dx - cx, dy - cy);
-    let left = abx * cdy;
-    let right = aby * cdx;
-    let det = left - right;
-    let bound = CROSS_ERRBOUND * (left.abs() + right.abs());
-    if det > bound || -det > bound {
-        return sign_of(det);
-    }
     let (abx, aby) = (two_diff(bx, ax), two_diff(by, ay));
     let (cdx, cdy) = (two_diff(dx, cx), two_diff(dy, cy));
     let mut sum = Expansion::new();

@@ -1,0 +1,339 @@
+//! Sorting: the course's quadratic sorts, the O(n log n) references, and a radix sort for `f64`.
+//!
+//! The seed (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de ordenación" and "Complejidad de
+//! los algoritmos de ordenación") teaches bubble sort, selection sort and insertion sort
+//! (sequential and by bisection) and measures them by counting comparisons and exchanges.
+//! Merge sort, heap sort and quicksort are here so that growth plots can contrast O(n²) with
+//! O(n log n); [`radix_sort_f64`] sorts `f64` keys without comparing them.
+//!
+//! | algorithm | comparisons (worst) | stable | file |
+//! |---|---|---|---|
+//! | [`bubble_sort`] | n(n−1)/2, always | yes | `bubble.rs` |
+//! | [`selection_sort`] | n(n−1)/2, always | no | `selection.rs` |
+//! | [`insertion_sort`] | n(n−1)/2 | yes | `insertion.rs` |
+//! | [`binary_insertion_sort`] | Σ_{k=1}^{n−1} (⌈log₂ k⌉ + 1) | yes | `binary_insertion.rs` |
+//! | [`merge_sort`] | n⌈log₂ n⌉ − 2^⌈log₂ n⌉ + 1 | yes | `merge.rs` |
+//! | [`heap_sort`] | 2n log₂ n | no | `heap.rs` |
+//! | [`quick_sort`] | 6n log₂ n + n (introsort) | no | `quick.rs` |
+//! | [`radix_sort_f64`] | none: 8 passes of 8-bit digits | — | `radix.rs` |
+//!
+//! # Three entry points per comparison sort
+//!
+//! Each comparison sort `X` comes as `X_sort(v)` (by [`Ord`]), `X_sort_by(v, cmp)` and
+//! `X_sort_with(v, cmp, counter)`. The algorithm is written once, behind `X_sort_with`; the
+//! other two call it with [`NoCount`](crate::count::NoCount), which compiles the counting
+//! away. [`Algorithm`] names the seven comparison sorts for callers that pick one at run time
+//! (the command line, the complexity report).
+//!
+//! # Counting conventions
+//!
+//! Comparisons are counted at the boundary: every call of the caller's comparator is one
+//! [`Counter::comparison`], nothing else is. Exchanges of two elements are
+//! [`Counter::swap`]; single-element moves (insertion sort's shifts, merge sort's placements,
+//! radix sort's distributions) are [`Counter::element_move`]. Each algorithm's docs say which of these it records and which
+//! numbers the seed states for it.
+//!
+//! # Sorting floats
+//!
+//! `f64` is not [`Ord`] (NaN), so the float path is `X_sort_by(v, f64::total_cmp)`: the IEEE 754
+//! total order, −NaN < −∞ < … < −0.0 < +0.0 < … < +∞ < +NaN. It never panics and agrees with
+//! `v.sort_by(f64::total_cmp)`. [`radix_sort_f64`] sorts in the same order.
+//!
+//! ```
+//! use compgeo::sort::{insertion_sort_by, merge_sort};
+//!
+//! let mut v = vec![7, 3, 5, 1, 4, 6];
+//! merge_sort(&mut v);
+//! assert_eq!(v, [1, 3, 4, 5, 6, 7]);
+//!
+//! let mut x = [0.5, -0.0, f64::NAN, 0.0, -1.5];
+//! insertion_sort_by(&mut x, f64::total_cmp);
+//! assert_eq!(x[..2], [-1.5, -0.0]);
+//! assert!(x[1].is_sign_negative() && x[2].is_sign_positive() && x[4].is_nan());
+//! ```
+//!
+//! [`trace`] prints the seed's step tables from the real algorithms.
+
+use crate::count::Counter;
+use crate::Error;
+use std::cmp::Ordering;
+use std::fmt;
+use std::str::FromStr;
+
+mod binary_insertion;
+mod bubble;
+mod heap;
+mod insertion;
+mod merge;
+mod quick;
+mod radix;
+mod selection;
+mod trace;
+
+pub use binary_insertion::{
+    binary_insertion_sort, binary_insertion_sort_by, binary_insertion_sort_with,
+};
+pub use bubble::{bubble_sort, bubble_sort_by, bubble_sort_with};
+pub use heap::{heap_sort, heap_sort_by, heap_sort_with};
+pub use insertion::{insertion_sort, insertion_sort_by, insertion_sort_with};
+pub use merge::{merge_sort, merge_sort_by, merge_sort_with};
+pub use quick::{quick_sort, quick_sort_by, quick_sort_with};
+pub use radix::{radix_sort_f64, radix_sort_f64_with};
+pub use selection::{selection_sort, selection_sort_by, selection_sort_with};
+pub use trace::{trace, TRACE_MAX_LEN};
+
+/// The comparison sorts of this module, for callers that choose one at run time.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::sort::Algorithm;
+///
+/// let algorithm: Algorithm = "binary-insertion".parse()?;
+/// let mut v = [5, 2, 4, 1];
+/// let mut counts = Counts::default();
+/// algorithm.sort_with(&mut v, i32::cmp, &mut counts);
+/// assert_eq!(v, [1, 2, 4, 5]);
+/// assert!(counts.comparisons > 0);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Algorithm {
+    /// [`bubble_sort`]: the seed's bubble sort, n(n−1)/2 comparisons.
+    Bubble,
+    /// [`selection_sort`]: the seed's selection sort, n(n−1)/2 comparisons.
+    Selection,
+    /// [`insertion_sort`]: the seed's sequential insertion sort.
+    Insertion,
+    /// [`binary_insertion_sort`]: the seed's insertion sort by bisection.
+    BinaryInsertion,
+    /// [`merge_sort`]: top-down merge sort.
+    Merge,
+    /// [`heap_sort`]: heap sort on a binary max-heap.
+    Heap,
+    /// [`quick_sort`]: median-of-three quicksort with a heap-sort guard (introsort).
+    Quick,
+}
+
+impl Algorithm {
+    /// Every algorithm, the course's four first.
+    pub const ALL: [Algorithm; 7] = [
+        Algorithm::Bubble,
+        Algorithm::Selection,
+        Algorithm::Insertion,
+        Algorithm::BinaryInsertion,
+        Algorithm::Merge,
+        Algorithm::Heap,
+        Algorithm::Quick,
+    ];
+
+    /// The kebab-case name used on the command line: `"bubble"`, `"selection"`, `"insertion"`,
+    /// `"binary-insertion"`, `"merge"`, `"heap"`, `"quick"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Algorithm::Bubble => "bubble",
+            Algorithm::Selection => "selection",
+            Algorithm::Insertion => "insertion",
+            Algorithm::BinaryInsertion => "binary-insertion",
+            Algorithm::Merge => "merge",
+            Algorithm::Heap => "heap",
+            Algorithm::Quick => "quick",
+        }
+    }
+
+    /// Whether the algorithm keeps equal elements in their input order.
+    pub fn is_stable(self) -> bool {
+        matches!(
+            self,
+            Algorithm::Bubble
+                | Algorithm::Insertion
+                | Algorithm::BinaryInsertion
+                | Algorithm::Merge
+        )
+    }
+
+    /// Sorts `v` by `cmp` with this algorithm, recording operations in `counter`: the same as
+    /// calling the algorithm's `X_sort_with`.
+    pub fn sort_with<T, F, C>(self, v: &mut [T], cmp: F, counter: &mut C)
+    where
+        F: FnMut(&T, &T) -> Ordering,
+        C: Counter,
+    {
+        match self {
+            Algorithm::Bubble => bubble_sort_with(v, cmp, counter),
+            Algorithm::Selection => selection_sort_with(v, cmp, counter),
+            Algorithm::Insertion => insertion_sort_with(v, cmp, counter),
+            Algorithm::BinaryInsertion => binary_insertion_sort_with(v, cmp, counter),
+            Algorithm::Merge => merge_sort_with(v, cmp, counter),
+            Algorithm::Heap => heap_sort_with(v, cmp, counter),
+            Algorithm::Quick => quick_sort_with(v, cmp, counter),
+        }
+    }
+}
+
+impl fmt::Display for Algorithm {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Algorithm {
+    type Err = Error;
+
+    /// Parses a kebab-case name; an unknown name gives [`Error::InvalidParameter`] listing the
+    /// valid ones.
+    fn from_str(s: &str) -> Result<Self, Error> {
+        Algorithm::ALL
+            .into_iter()
+            .find(|a| a.name() == s)
+            .ok_or_else(|| Error::InvalidParameter {
+                name: "algorithm",
+                reason: format!(
+                    "unknown sorting algorithm `{s}`; valid names: {}",
+                    Algorithm::ALL.map(Algorithm::name).join(", ")
+                ),
+            })
+    }
+}
+
+/// The caller's comparator and counter together: the one place where sorting operations are
+/// counted, so that algorithm bodies hold no counting code.
+pub(crate) struct Counted<'c, F, C> {
+    cmp: F,
+    counter: &'c mut C,
+}
+
+impl<'c, F, C: Counter> Counted<'c, F, C> {
+    pub(crate) fn new(cmp: F, counter: &'c mut C) -> Self {
+        Counted { cmp, counter }
+    }
+
+    /// One counted comparison.
+    #[inline(always)]
+    pub(crate) fn cmp<T>(&mut self, a: &T, b: &T) -> Ordering
+    where
+        F: FnMut(&T, &T) -> Ordering,
+    {
+        self.counter.comparison();
+        (self.cmp)(a, b)
+    }
+
+    /// One counted comparison: is `a` strictly before `b`?
+    #[inline(always)]
+    pub(crate) fn less<T>(&mut self, a: &T, b: &T) -> bool
+    where
+        F: FnMut(&T, &T) -> Ordering,
+    {
+        self.cmp(a, b) == Ordering::Less
+    }
+
+    /// One counted exchange of `v[i]` and `v[j]`.
+    #[inline(always)]
+    pub(crate) fn swap<T>(&mut self, v: &mut [T], i: usize, j: usize) {
+        self.counter.swap();
+        v.swap(i, j);
+    }
+
+    /// Records `count` single-element moves.
+    #[inline(always)]
+    pub(crate) fn moves(&mut self, count: usize) {
+        for _ in 0..count {
+            self.counter.element_move();
+        }
+    }
+}
+
+/// A point in an algorithm where [`trace`] prints a row. Positions are 0-based indices into
+/// the slice being sorted.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Step<'a> {
+    /// Bubble sort compared `v[j]` with `v[j + 1]` and exchanged them if out of order.
+    Compared { j: usize },
+    /// Bubble sort finished its pass number `pass` (from 1).
+    PassDone { pass: usize },
+    /// Selection sort found the minimum of `v[i..]` at `min` and exchanged it into `v[i]`
+    /// (no exchange when `min == i`).
+    Selected { i: usize, min: usize },
+    /// Insertion by bisection is about to compare `v[k]` with `v[mid]` while searching the
+    /// sorted run `v[lo..hi]`.
+    Probe {
+        k: usize,
+        lo: usize,
+        mid: usize,
+        hi: usize,
+    },
+    /// Insertion sort (either kind) moved the element that was at `k` to `pos`; `v[..=k]` is
+    /// sorted.
+    Inserted { k: usize, pos: usize },
+    /// Merge sort is about to merge two sorted runs, given as positions into the input.
+    Merging {
+        left: &'a [usize],
+        right: &'a [usize],
+    },
+    /// Merge sort merged them into this run (positions into the input).
+    Merged { run: &'a [usize] },
+    /// Heap sort made `v` a max-heap.
+    HeapBuilt,
+    /// Heap sort moved the maximum of `v[..=end]` to `end` and restored the heap `v[..end]`.
+    Extracted { end: usize },
+    /// Quicksort partitioned `v[lo..hi]` around the pivot now at `pivot`.
+    Partitioned { lo: usize, hi: usize, pivot: usize },
+    /// Quicksort sorted the short range `v[lo..hi]` (at most three elements) directly.
+    ShortSorted { lo: usize, hi: usize },
+    /// Quicksort hit its depth limit and heap-sorted `v[lo..hi]`.
+    HeapFallback { lo: usize, hi: usize },
+}
+
+/// Watches an algorithm's steps; [`trace`] implements it, [`NoObserver`] ignores everything.
+pub(crate) trait Observer<T> {
+    /// Called at each [`Step`] with the slice as it is at that moment.
+    fn step(&mut self, v: &[T], step: Step<'_>);
+}
+
+/// The observer that watches nothing (what every public sorting function uses).
+pub(crate) struct NoObserver;
+
+impl<T> Observer<T> for NoObserver {
+    #[inline(always)]
+    fn step(&mut self, _v: &[T], _step: Step<'_>) {}
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::count::Counts;
+
+    #[test]
+    fn names_round_trip_and_are_distinct() {
+        for a in Algorithm::ALL {
+            assert_eq!(a.name().parse::<Algorithm>(), Ok(a));
+            assert_eq!(a.to_string(), a.name());
+        }
+        let mut names = Algorithm::ALL.map(Algorithm::name).to_vec();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), Algorithm::ALL.len());
+    }
+
+    #[test]
+    fn unknown_name_lists_valid_names() {
+        let e = "bogo".parse::<Algorithm>().unwrap_err();
+        let msg = e.to_string();
+        assert!(msg.contains("`bogo`"), "{msg}");
+        for a in Algorithm::ALL {
+            assert!(msg.contains(a.name()), "{msg}");
+        }
+    }
+
+    #[test]
+    fn counted_counts_each_operation_once() {
+        let mut counts = Counts::default();
+        let mut ops = Counted::new(i32::cmp, &mut counts);
+        let mut v = [2, 1];
+        assert!(ops.less(&v[1], &v[0]));
+        assert_eq!(ops.cmp(&v[0], &v[0]), Ordering::Equal);
+        ops.swap(&mut v, 0, 1);
+        ops.moves(3);
+        assert_eq!(v, [1, 2]);
+        assert_eq!((counts.comparisons, counts.swaps, counts.moves), (2, 1, 3));
+    }
+}

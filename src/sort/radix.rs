@@ -1,0 +1,194 @@
+//! LSD radix sort for `f64` keys in the IEEE 754 total order, without comparisons.
+//!
+//! A float's bits, read as an unsigned integer after flipping the sign bit of non-negative
+//! values and every bit of negative ones, order exactly as [`f64::total_cmp`] orders the
+//! floats: −NaN < −∞ < … < −0.0 < +0.0 < … < +∞ < +NaN. Sorting those 64-bit keys by their
+//! bytes, least significant first, with a stable counting sort per byte sorts the floats.
+//! One pass over the input builds all eight byte histograms; a byte on which every key agrees
+//! (the sign and high exponent bits of data of one sign and magnitude, say) is skipped.
+//! Not in the seed; it is compgeo's candidate fast path for sorting coordinates, measured
+//! against `sort_unstable_by(f64::total_cmp)` in `benches/sort.rs` (group `radix-f64`).
+//!
+//! Invariants the tests check: the output equals `sort_unstable_by(f64::total_cmp)` bit for
+//! bit (signed zeros, subnormals, infinities, NaNs of both signs and any payload); moves are
+//! n per pass made.
+
+use crate::count::{Counter, NoCount};
+
+/// Bits per digit: eight passes of one byte, 256 buckets.
+const DIGIT_BITS: u32 = 8;
+const BUCKETS: usize = 1 << DIGIT_BITS;
+const PASSES: usize = (u64::BITS / DIGIT_BITS) as usize;
+
+/// Sorts `v` in the IEEE 754 total order ([`f64::total_cmp`]) with an LSD radix sort.
+///
+/// The result is the same, bit for bit, as `v.sort_unstable_by(f64::total_cmp)` (in that
+/// order distinct bit patterns never compare equal, so the sorted sequence is unique).
+/// See [`radix_sort_f64_with`] for the algorithm and its complexity.
+///
+/// ```
+/// let mut v = [2.0, -0.0, f64::NAN, 0.0, -f64::INFINITY, 5e-324];
+/// compgeo::sort::radix_sort_f64(&mut v);
+/// assert_eq!(v[..5], [f64::NEG_INFINITY, -0.0, 0.0, 5e-324, 2.0]);
+/// assert!(v[1].is_sign_negative() && v[2].is_sign_positive() && v[5].is_nan());
+/// ```
+pub fn radix_sort_f64(v: &mut [f64]) {
+    radix_sort_f64_with(v, &mut NoCount);
+}
+
+/// Sorts `v` like [`radix_sort_f64`], recording its element moves in `counter`.
+///
+/// Idea: map each float to the 64-bit key that orders as [`f64::total_cmp`] (flip the sign
+/// bit of non-negative floats, every bit of negative ones), count the keys' bytes in one
+/// pass, then for each byte from the least significant up distribute the elements stably
+/// into 256 buckets between `v` and a buffer, skipping bytes on which all keys agree.
+///
+/// Not in the seed; it sorts what [`super::merge_sort_by`] or [`super::quick_sort_by`] with
+/// `f64::total_cmp` sort, in linear time.
+///
+/// # Errors
+///
+/// None: every `f64`, NaN included, has its place in the total order.
+///
+/// # Complexity
+///
+/// With n = `v.len()`, d = 8 passes of b = 256 buckets: time O(d(n + b)) = O(n); auxiliary
+/// space n floats plus d·b counters.
+///
+/// # Counts
+///
+/// No comparisons. moves: n for every pass made (a pass writes each element once into its
+/// bucket), plus n when an odd number of passes leaves the result in the buffer and it is
+/// copied back; so at most 8n, and 0 when all elements share their bit pattern.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::sort::radix_sort_f64_with;
+///
+/// // Only the lowest byte differs: one pass, then the copy back.
+/// let mut v = [1.0 + 3.0 * f64::EPSILON, 1.0, 1.0 + f64::EPSILON];
+/// let mut counts = Counts::default();
+/// radix_sort_f64_with(&mut v, &mut counts);
+/// assert_eq!(v, [1.0, 1.0 + f64::EPSILON, 1.0 + 3.0 * f64::EPSILON]);
+/// assert_eq!((counts.comparisons, counts.moves), (0, 6));
+/// ```
+pub fn radix_sort_f64_with<C: Counter>(v: &mut [f64], counter: &mut C) {
+    let n = v.len();
+    if n < 2 {
+        return;
+    }
+    let mut histograms = [[0usize; BUCKETS]; PASSES];
+    for &x in v.iter() {
+        let k = key(x);
+        for (pass, histogram) in histograms.iter_mut().enumerate() {
+            histogram[digit(k, pass)] += 1;
+        }
+    }
+
+    let mut buffer = vec![0.0; n];
+    let mut in_buffer = false;
+    for (pass, histogram) in histograms.iter().enumerate() {
+        if histogram.contains(&n) {
+            continue;
+        }
+        let mut next = [0usize; BUCKETS];
+        let mut sum = 0;
+        for (slot, &count) in next.iter_mut().zip(histogram) {
+            *slot = sum;
+            sum += count;
+        }
+        if in_buffer {
+            scatter(&buffer, v, pass, &mut next);
+        } else {
+            scatter(v, &mut buffer, pass, &mut next);
+        }
+        in_buffer = !in_buffer;
+        moves(counter, n);
+    }
+    if in_buffer {
+        v.copy_from_slice(&buffer);
+        moves(counter, n);
+    }
+}
+
+/// The unsigned key that orders as [`f64::total_cmp`].
+#[inline(always)]
+fn key(x: f64) -> u64 {
+    let bits = x.to_bits();
+    // All ones for negative floats, only the sign bit for the others.
+    let flip = (((bits as i64) >> 63) as u64) | (1 << 63);
+    bits ^ flip
+}
+
+#[inline(always)]
+fn digit(key: u64, pass: usize) -> usize {
+    ((key >> (pass as u32 * DIGIT_BITS)) as usize) & (BUCKETS - 1)
+}
+
+/// Stable distribution of `src` into `dst` by the digit of `pass`; `next[d]` is the next free
+/// slot of bucket `d`.
+#[inline(always)]
+fn scatter(src: &[f64], dst: &mut [f64], pass: usize, next: &mut [usize; BUCKETS]) {
+    for &x in src {
+        let d = digit(key(x), pass);
+        dst[next[d]] = x;
+        next[d] += 1;
+    }
+}
+
+fn moves<C: Counter>(counter: &mut C, n: usize) {
+    for _ in 0..n {
+        counter.element_move();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::count::Counts;
+
+    #[test]
+    fn keys_order_as_total_cmp() {
+        let xs = [
+            f64::from_bits(0xFFF8_0000_0000_0001), // negative NaN with a payload
+            -f64::NAN,
+            f64::NEG_INFINITY,
+            f64::MIN,
+            -1.0,
+            -f64::MIN_POSITIVE,
+            -5e-324,
+            -0.0,
+            0.0,
+            5e-324,
+            f64::MIN_POSITIVE,
+            1.0,
+            f64::MAX,
+            f64::INFINITY,
+            f64::NAN,
+        ];
+        for a in xs {
+            for b in xs {
+                assert_eq!(key(a).cmp(&key(b)), a.total_cmp(&b), "{a:e} vs {b:e}");
+            }
+        }
+    }
+
+    #[test]
+    fn equal_bit_patterns_make_no_pass() {
+        let mut v = vec![-3.25; 100];
+        let mut counts = Counts::default();
+        radix_sort_f64_with(&mut v, &mut counts);
+        assert_eq!(counts.moves, 0);
+    }
+
+    #[test]
+    fn two_differing_bytes_make_two_passes_and_no_copy() {
+        // One binade: the keys differ in byte 0 (last mantissa bit) and byte 6 only.
+        let e = f64::EPSILON;
+        let mut v = vec![1.75 + e, 1.5, 1.75, 1.5 + e];
+        let mut counts = Counts::default();
+        radix_sort_f64_with(&mut v, &mut counts);
+        assert_eq!(v, [1.5, 1.5 + e, 1.75, 1.75 + e]);
+        assert_eq!(counts.moves, 2 * 4);
+    }
+}
