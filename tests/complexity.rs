@@ -537,7 +537,13 @@ mod report {
     }
 
     /// Writes a criterion-0.8-style measurement: `group/function/n/new/{benchmark,estimates}.json`.
-    fn fixture(root: &std::path::Path, group: &str, function: &str, n: usize, median: f64) {
+    pub(super) fn fixture(
+        root: &std::path::Path,
+        group: &str,
+        function: &str,
+        n: usize,
+        median: f64,
+    ) {
         let dir = root
             .join(group.replace('/', "_"))
             .join(function)
@@ -646,5 +652,182 @@ mod report {
             assert!(out.0.join(file).is_file(), "{file}");
         }
         assert!(read_criterion(&root.0.join("missing")).is_err());
+    }
+}
+
+#[test]
+fn every_catalog_entry_is_unique_sized_and_consistent() {
+    let all = compgeo::complexity::catalog();
+    let mut keys: Vec<String> = all.iter().map(|e| e.info.key()).collect();
+    keys.sort();
+    let n = keys.len();
+    keys.dedup();
+    assert_eq!(keys.len(), n, "duplicate keys");
+    let settings = Settings {
+        batch_time: Duration::ZERO,
+        batches: 1,
+        ..Settings::default()
+    };
+    for entry in &all {
+        let key = entry.info.key();
+        assert!(
+            key.starts_with(&format!("{}/", entry.info.problem)),
+            "{key}"
+        );
+        for profile in [
+            compgeo::complexity::Profile::Quick,
+            compgeo::complexity::Profile::Full,
+        ] {
+            assert!(entry.sizes(profile).len() >= MIN_SIZES, "{key} {profile}");
+        }
+        // The first sizes of the quick profile: enough for a fit, small enough for a debug build.
+        let sizes = &entry.sizes(compgeo::complexity::Profile::Quick)[..MIN_SIZES];
+        let m = measure(entry, sizes, &settings, &mut |_| {}).unwrap();
+        assert_eq!(
+            m.counts.verdict,
+            Verdict::Consistent,
+            "{key}: {:?}",
+            m.counts
+        );
+        assert!(
+            m.counts.excess > -0.5,
+            "{key}: the bound should be tight on its registered input: {:?}",
+            m.counts
+        );
+    }
+}
+
+#[test]
+fn sort_entries_cover_the_required_inputs() {
+    let all = compgeo::complexity::catalog();
+    let has = |key: &str| all.iter().any(|e| e.info.key() == key);
+    for name in [
+        "bubble",
+        "selection",
+        "insertion",
+        "binary-insertion",
+        "merge",
+        "heap",
+        "quick",
+    ] {
+        assert!(has(&format!("sort/{name}/random")), "{name}");
+    }
+    for key in [
+        "sort/insertion/sorted",
+        "sort/insertion/reversed",
+        "sort/quick/sorted",
+    ] {
+        assert!(has(key), "{key}");
+    }
+}
+
+#[cfg(feature = "cli")]
+mod cli {
+    use super::TempDir;
+    use assert_cmd::cargo::cargo_bin_cmd;
+    use serde_json::Value;
+
+    /// Runs the binary; returns (exit code, stdout, stderr).
+    fn run(args: &[&str]) -> (i32, String, String) {
+        let out = cargo_bin_cmd!("compgeo").args(args).output().unwrap();
+        (
+            out.status.code().unwrap(),
+            String::from_utf8(out.stdout).unwrap(),
+            String::from_utf8(out.stderr).unwrap(),
+        )
+    }
+
+    fn assert_usage_error(args: &[&str], mentions: &str) {
+        let (code, out, err) = run(args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(out.is_empty(), "{args:?}: {out}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(
+            err.starts_with("error:") && err.contains(mentions),
+            "{args:?}: {err}"
+        );
+    }
+
+    #[test]
+    fn report_measures_the_selected_entry_and_says_where_it_wrote() {
+        let dir = TempDir::new("cli-report");
+        let out_dir = dir.0.join("out");
+        let out_arg = out_dir.to_str().unwrap();
+        let (code, out, err) = run(&[
+            "report",
+            "--only",
+            "sort/insertion/reversed",
+            "--out",
+            out_arg,
+        ]);
+        assert_eq!(code, 0, "{err}");
+        assert!(err.contains("index.html"), "{err}");
+        let printed: Value = serde_json::from_str(out.trim()).unwrap();
+        assert_eq!(
+            printed["index"],
+            out_dir.join("index.html").to_str().unwrap()
+        );
+        assert_eq!(printed["algorithms"], 1);
+        assert_eq!(printed["exceeds"], serde_json::json!([]));
+        let results: Value =
+            serde_json::from_str(&std::fs::read_to_string(out_dir.join("results.json")).unwrap())
+                .unwrap();
+        let a = &results["algorithms"][0];
+        assert_eq!(a["id"], "sort/insertion");
+        assert_eq!(a["input"], "reversed");
+        assert_eq!(a["operation"], "moves");
+        let e = a["exponent_counts"].as_f64().unwrap();
+        assert!((e - 2.0).abs() < 0.1, "exponent {e}");
+        // Reversed keys: every pair is an inversion, one move each.
+        for s in a["samples"].as_array().unwrap() {
+            let n = s["n"].as_u64().unwrap();
+            assert_eq!(s["counts"]["moves"].as_u64(), Some(n * (n - 1) / 2));
+        }
+        assert!(out_dir.join("sort-insertion-reversed.svg").is_file());
+        assert!(out_dir.join("problem-sort.svg").is_file());
+    }
+
+    #[test]
+    fn report_rejects_bad_arguments_with_one_error_line() {
+        assert_usage_error(&["report", "--only", "no/such/entry"], "no/such/entry");
+        assert_usage_error(&["report", "--bound", "sort/std=O(n log n)"], "--criterion");
+        assert_usage_error(
+            &["report", "--criterion", "target", "--bound", "sort=O(2^n)"],
+            "O(2^n)",
+        );
+        assert_usage_error(&["report", "--quick", "--full"], "--full");
+        let missing = TempDir::new("cli-missing");
+        let path = missing.0.join("absent");
+        assert_usage_error(&["report", "--criterion", path.to_str().unwrap()], "absent");
+    }
+
+    #[test]
+    fn report_draws_criterion_measurements() {
+        let root = TempDir::new("cli-criterion");
+        for n in [64usize, 128, 256, 512, 1024] {
+            super::report::fixture(&root.0, "sort", "std", n, 5.0 * n as f64);
+        }
+        let out_dir = root.0.join("out");
+        let (code, out, err) = run(&[
+            "report",
+            "--criterion",
+            root.0.to_str().unwrap(),
+            "--out",
+            out_dir.to_str().unwrap(),
+            "--bound",
+            "sort/std=O(n log n)",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        let printed: Value = serde_json::from_str(out.trim()).unwrap();
+        assert_eq!(printed["profile"], "criterion");
+        assert_eq!(printed["algorithms"], 1);
+        let results: Value =
+            serde_json::from_str(&std::fs::read_to_string(out_dir.join("results.json")).unwrap())
+                .unwrap();
+        let a = &results["algorithms"][0];
+        assert_eq!(a["id"], "sort/std");
+        assert_eq!(a["bound"], "O(n log n)");
+        assert_eq!(a["verdict_time"], "consistent");
+        assert!(out_dir.join("sort-std.svg").is_file());
     }
 }

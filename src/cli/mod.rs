@@ -14,6 +14,7 @@ pub mod error;
 mod gen;
 pub mod input;
 pub mod output;
+mod report;
 mod stats;
 
 pub use error::CliError;
@@ -37,6 +38,8 @@ enum Command {
     Gen(gen::GenArgs),
     /// Print the size, distinct count and bounding box of a point set
     Stats(stats::StatsArgs),
+    /// Measure every algorithm against its stated bound and write the HTML/SVG/JSON report
+    Report(report::ReportArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -58,6 +61,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Gen(args) => gen::run(args),
         Command::Stats(args) => stats::run(args),
+        Command::Report(args) => report::run(args),
     }
 }
 

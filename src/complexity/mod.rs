@@ -25,7 +25,7 @@ mod measure;
 pub mod report;
 
 pub use bound::{Bound, SecondSize};
-pub use catalog::{Entry, Info, Profile, SizeRange, Workload};
+pub use catalog::{catalog, Entry, Info, Profile, SizeRange, Workload};
 pub use fit::{fit, slope, Fit, Observation, Verdict, COUNT_TOLERANCE, MIN_SIZES, TIME_TOLERANCE};
 pub use machine::Machine;
 pub use measure::{measure, measure_size, Measurement, Progress, Sample, Settings};

@@ -131,6 +131,23 @@ pub struct Entry {
     workload: Box<dyn Erased>,
 }
 
+/// Every registered algorithm of the crate, problem by problem.
+///
+/// Entries are unique by [`Info::key`], and every entry has at least
+/// [`MIN_SIZES`](crate::complexity::MIN_SIZES) sizes in each profile.
+///
+/// ```
+/// let all = compgeo::complexity::catalog();
+/// assert!(all.iter().any(|e| e.info.id == "sort/bubble" && e.info.input == "random"));
+/// ```
+pub fn catalog() -> Vec<Entry> {
+    let mut all = Vec::new();
+    all.extend(sort::entries());
+    all
+}
+
+mod sort;
+
 /// The result of one counted run.
 pub(crate) struct Counted {
     pub counts: Counts,
