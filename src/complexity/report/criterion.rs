@@ -148,7 +148,9 @@ pub fn write_criterion_report(
             });
             Row {
                 problem: b.group.clone(),
-                input: matched.map(|i| i.input.clone()),
+                input: matched
+                    .filter(|i| b.names_input(&i.input))
+                    .map(|i| i.input.clone()),
                 bound,
                 operation: None,
                 bare_time_exponent: bare_exponent(&points),
@@ -174,9 +176,11 @@ impl CriterionBenchmark {
 
     /// The catalog entry this benchmark measures, if any: an entry whose id is the
     /// benchmark's id, or whose algorithm name (after the `/`) is the function id while its
-    /// problem starts the group id (groups such as `sort/sorted` or `sort-reversed`). Among
-    /// several entries the one whose input name is a word of the group id wins, else the
-    /// `random` one, else the first.
+    /// problem starts the group id (groups such as `sort-sorted` or `sort/reversed`). Among
+    /// several entries the one whose input the group names (see
+    /// [`CriterionBenchmark::names_input`]) wins, else the `random` one, else the first. The
+    /// bound of an entry on another input is still the algorithm's bound; the report then
+    /// leaves the input empty rather than claim one.
     pub fn matching<'a>(&self, catalog: &'a [Info]) -> Option<&'a Info> {
         let id = self.id();
         let function = self.function.as_deref()?;
@@ -188,16 +192,22 @@ impl CriterionBenchmark {
                         && self.group.starts_with(&i.problem))
             })
             .collect();
-        let words: Vec<&str> = self
-            .group
-            .split(|c: char| !c.is_ascii_alphanumeric())
-            .collect();
         candidates
             .iter()
-            .find(|i| words.contains(&i.input.as_str()))
+            .find(|i| self.names_input(&i.input))
             .or_else(|| candidates.iter().find(|i| i.input == "random"))
             .or(candidates.first())
             .copied()
+    }
+
+    /// Whether the group id names `input` after its problem prefix (`sort-few-distinct`
+    /// names `few-distinct`; `sort` names nothing).
+    pub fn names_input(&self, input: &str) -> bool {
+        let rest = self
+            .group
+            .split_once(|c: char| !c.is_ascii_alphanumeric())
+            .map_or("", |(_, rest)| rest);
+        !input.is_empty() && rest.contains(input)
     }
 }
 
