@@ -490,3 +490,92 @@ fn unknown_kinds_and_bad_arguments_are_usage_errors() {
     );
     assert!(err.contains(&gen::MAX_COCIRCULAR.to_string()), "{err}");
 }
+
+#[test]
+fn sort_trace_prints_the_seed_bubble_table() {
+    let (code, out, err) = run(
+        &[
+            "sort",
+            "--algorithm",
+            "bubble",
+            "--trace",
+            "7",
+            "3",
+            "5",
+            "1",
+        ],
+        None,
+    );
+    assert_eq!(code, 0, "{err}");
+    // The rows of seed 003 §2.1 (bubble sort of {7, 3, 5, 1}): after each comparison the
+    // compared pair, after each pass the whole list.
+    let seed_rows = [
+        "7 3 5 1", "3 7", "5 7", "1 7", "3 5 1 7", "3 5", "1 5", "3 1 5 7", "1 3", "1 3 5 7",
+        "1 3 5 7",
+    ];
+    let rows: Vec<&str> = out.lines().skip(1).take(seed_rows.len()).collect();
+    for (row, expected) in rows.iter().zip(seed_rows) {
+        assert!(
+            row.ends_with(expected),
+            "{row:?} should end with {expected:?}"
+        );
+    }
+    assert!(out.contains("Comparisons: 6"), "{out}");
+}
+
+#[test]
+fn sort_prints_the_sorted_keys_and_counts() {
+    let keys = gen::sequence(SequenceKind::Random, 40, 5);
+    let args: Vec<String> = keys.iter().map(i64::to_string).collect();
+    for algorithm in [
+        "bubble",
+        "selection",
+        "insertion",
+        "binary-insertion",
+        "merge",
+        "heap",
+        "quick",
+    ] {
+        let mut cmd = vec!["sort", "--algorithm", algorithm];
+        cmd.extend(args.iter().map(String::as_str));
+        let v = run_json(&cmd, None);
+        let sorted: Vec<i64> = serde_json::from_value(v["sorted"].clone()).unwrap();
+        let mut expected = keys.clone();
+        expected.sort();
+        assert_eq!(sorted, expected, "{algorithm}");
+        let comparisons = v["counts"]["comparisons"].as_u64().unwrap();
+        if matches!(algorithm, "bubble" | "selection") {
+            assert_eq!(comparisons, 40 * 39 / 2, "{algorithm}");
+        } else {
+            assert!(
+                comparisons > 0 && comparisons <= 40 * 39 / 2,
+                "{algorithm}: {comparisons}"
+            );
+        }
+    }
+    // Floats from stdin, as a JSON array, including extremes.
+    let v = run_json(
+        &["sort", "-a", "merge"],
+        Some("[1e300, -5e-324, 0.5, -1e-300]"),
+    );
+    let sorted: Vec<f64> = serde_json::from_value(v["sorted"].clone()).unwrap();
+    assert_eq!(sorted, [-1e-300, -5e-324, 0.5, 1e300]);
+}
+
+#[test]
+fn sort_rejects_bad_numbers_and_names_them() {
+    let err = assert_rejected(&["sort", "-a", "quick", "3", "oops", "1"], None);
+    assert!(err.contains("number 1") && err.contains("oops"), "{err}");
+    let err = assert_rejected(&["sort", "-a", "quick"], Some("1 2 inf"));
+    assert!(
+        err.contains("number 2") && err.contains("not finite"),
+        "{err}"
+    );
+    let err = assert_rejected(&["sort", "-a", "bubble", "--trace", "1.5", "2"], None);
+    assert!(err.contains("--trace"), "{err}");
+    let err = assert_rejected(&["sort", "-a", "shell", "1"], None);
+    assert!(
+        err.contains("shell") && err.contains("binary-insertion"),
+        "{err}"
+    );
+}

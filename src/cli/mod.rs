@@ -15,6 +15,7 @@ mod gen;
 pub mod input;
 pub mod output;
 mod report;
+mod sort;
 mod stats;
 
 pub use error::CliError;
@@ -40,6 +41,8 @@ enum Command {
     Stats(stats::StatsArgs),
     /// Measure every algorithm against its stated bound and write the HTML/SVG/JSON report
     Report(report::ReportArgs),
+    /// Sort numbers with a chosen algorithm and print the operation counts (or --trace)
+    Sort(sort::SortArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -62,6 +65,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Gen(args) => gen::run(args),
         Command::Stats(args) => stats::run(args),
         Command::Report(args) => report::run(args),
+        Command::Sort(args) => sort::run(args),
     }
 }
 
