@@ -11,6 +11,7 @@
 //! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) |
 //! | [`error`] | the crate's [`Error`] and [`Result`] |
 //! | [`gen`] | seeded workload generators: point sets, graphs, number sequences |
+//! | [`complexity`] | stated bounds, the catalog of algorithms, measurement, fits and verdicts |
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
 //!
 //! ## Algorithms and their bounds
@@ -34,6 +35,7 @@
 //! The plane is oriented with y up: a counter-clockwise turn is positive. Every finite `f64`
 //! is valid input; NaN and infinities are rejected with [`Error::NonFinite`].
 
+pub mod complexity;
 pub mod count;
 pub mod error;
 pub mod gen;

@@ -14,6 +14,7 @@ pub mod error;
 mod gen;
 pub mod input;
 pub mod output;
+mod report;
 mod sort;
 mod stats;
 
@@ -38,6 +39,8 @@ enum Command {
     Gen(gen::GenArgs),
     /// Print the size, distinct count and bounding box of a point set
     Stats(stats::StatsArgs),
+    /// Measure every algorithm against its stated bound and write the HTML/SVG/JSON report
+    Report(report::ReportArgs),
     /// Sort numbers with a chosen algorithm and print the operation counts (or --trace)
     Sort(sort::SortArgs),
 }
@@ -61,6 +64,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Gen(args) => gen::run(args),
         Command::Stats(args) => stats::run(args),
+        Command::Report(args) => report::run(args),
         Command::Sort(args) => sort::run(args),
     }
 }

@@ -1,0 +1,105 @@
+//! Catalog entries of [`crate::sort`]: every comparison sort on random keys, plus the inputs
+//! where a sort's behaviour differs (insertion sort on sorted and reversed keys, quicksort on
+//! sorted keys).
+//!
+//! The counted operation is comparisons, except where the quadratic cost is in the shifts:
+//! insertion by bisection makes O(n log n) comparisons but one move per inversion, and the
+//! seed's sequential insertion sort, which scans the sorted prefix from the front, makes only
+//! n − 1 comparisons on reversed keys but n(n − 1)/2 moves. On sorted keys it is the other way
+//! round (n(n − 1)/2 comparisons, no moves): this insertion sort has no linear best case, so
+//! both its entries claim O(n²), each on the operation that carries the cost.
+
+use crate::complexity::{Bound, Entry, Workload};
+use crate::count::{Counter, Operation};
+use crate::error::Result;
+use crate::gen::{sequence, SequenceKind};
+use crate::sort::Algorithm;
+
+/// One comparison sort on one kind of generated `i64` sequence.
+struct SortKeys {
+    algorithm: Algorithm,
+    kind: SequenceKind,
+}
+
+/// The sorting entries.
+pub(super) fn entries() -> Vec<Entry> {
+    let quadratic = [
+        Algorithm::Bubble,
+        Algorithm::Selection,
+        Algorithm::Insertion,
+        Algorithm::BinaryInsertion,
+    ];
+    let mut out: Vec<Entry> = Algorithm::ALL
+        .into_iter()
+        .map(|algorithm| {
+            let operation = if algorithm == Algorithm::BinaryInsertion {
+                Operation::Moves
+            } else {
+                Operation::Comparisons
+            };
+            if quadratic.contains(&algorithm) {
+                quadratic_sizes(entry(
+                    algorithm,
+                    SequenceKind::Random,
+                    Bound::Quadratic,
+                    operation,
+                ))
+            } else {
+                n_log_n_sizes(entry(
+                    algorithm,
+                    SequenceKind::Random,
+                    Bound::NLogN,
+                    operation,
+                ))
+            }
+        })
+        .collect();
+    out.push(quadratic_sizes(entry(
+        Algorithm::Insertion,
+        SequenceKind::Sorted,
+        Bound::Quadratic,
+        Operation::Comparisons,
+    )));
+    out.push(quadratic_sizes(entry(
+        Algorithm::Insertion,
+        SequenceKind::Reversed,
+        Bound::Quadratic,
+        Operation::Moves,
+    )));
+    out.push(n_log_n_sizes(entry(
+        Algorithm::Quick,
+        SequenceKind::Sorted,
+        Bound::NLogN,
+        Operation::Comparisons,
+    )));
+    out
+}
+
+/// Quadratic sorts: 8 doublings in the quick profile (about a second for bubble sort).
+fn quadratic_sizes(e: Entry) -> Entry {
+    e.quick(64, 1 << 13).full(64, 1 << 15)
+}
+
+/// O(n log n) sorts start at 256, where lower-order terms no longer tilt the fit.
+fn n_log_n_sizes(e: Entry) -> Entry {
+    e.quick(256, 1 << 20).full(256, 1 << 23)
+}
+
+fn entry(algorithm: Algorithm, kind: SequenceKind, bound: Bound, operation: Operation) -> Entry {
+    let id = format!("sort/{}", algorithm.name());
+    Entry::new(&id, bound, operation, SortKeys { algorithm, kind }).input(kind.name())
+}
+
+impl Workload for SortKeys {
+    type Input = Vec<i64>;
+    type Output = ();
+
+    fn prepare(&self, n: usize, seed: u64) -> Result<Vec<i64>> {
+        Ok(sequence(self.kind, n, seed))
+    }
+
+    fn run<C: Counter>(&self, keys: &mut Vec<i64>, counter: &mut C) -> Result<()> {
+        self.algorithm.sort_with(keys, i64::cmp, counter);
+        Ok(())
+    }
+}

@@ -1,0 +1,31 @@
+//! The complexity engine: every algorithm proves its own growth.
+//!
+//! The course measures the complexity of an algorithm by counting its operations as the input
+//! grows (seed `003_5b666ee3e15e6353.txt`, ch. 2, "Complejidad de un algoritmo"). This module
+//! turns that into a measurement:
+//!
+//! | step | item |
+//! |---|---|
+//! | what an algorithm claims | [`Bound`] (O(1) ... O(m log n)), evaluated by [`Bound::eval`] |
+//! | what is registered | [`Entry`]: id, problem, input, bound, counted [`Operation`](crate::count::Operation), sizes, [`Workload`] |
+//! | how it is measured | [`measure`]: exact counts and median wall time at doubling sizes |
+//! | how it is judged | [`fit`]: log-log slopes, cost / f(n), [`Verdict`] |
+//! | where it was measured | [`Machine`] |
+//!
+//! The HTML/SVG/JSON report built on top of this is [`report`] (feature `cli`, used by
+//! `compgeo report`); the engine itself needs no optional dependency. `docs/complexity.md`
+//! explains the method, the tolerances and the report.
+
+mod bound;
+mod catalog;
+mod fit;
+mod machine;
+mod measure;
+#[cfg(feature = "cli")]
+pub mod report;
+
+pub use bound::{Bound, SecondSize};
+pub use catalog::{catalog, Entry, Info, Profile, SizeRange, Workload};
+pub use fit::{fit, slope, Fit, Observation, Verdict, COUNT_TOLERANCE, MIN_SIZES, TIME_TOLERANCE};
+pub use machine::Machine;
+pub use measure::{measure, measure_size, Measurement, Progress, Sample, Settings};
