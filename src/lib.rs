@@ -12,6 +12,7 @@
 //! | [`error`] | the crate's [`Error`] and [`Result`] |
 //! | [`gen`] | seeded workload generators: point sets, graphs, number sequences |
 //! | [`complexity`] | stated bounds, the catalog of algorithms, measurement, fits and verdicts |
+//! | [`graph`] | CSR graphs, BFS/DFS, greedy colouring, minimum spanning trees |
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
 //!
 //! ## Algorithms and their bounds
@@ -40,6 +41,7 @@ pub mod count;
 pub mod error;
 pub mod gen;
 pub mod geometry;
+pub mod graph;
 pub mod sort;
 
 #[cfg(feature = "cli")]

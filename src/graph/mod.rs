@@ -1,0 +1,22 @@
+//! Graphs: a compact CSR graph type, breadth- and depth-first search, greedy vertex
+//! colouring and minimum spanning trees, following seed `003_5b666ee3e15e6353.txt`, §2.1
+//! ("Algoritmo voraz", "Coloración de vértices", "Árbol Spanning Minimal", "Algoritmos de
+//! búsqueda").
+//!
+//! Build a [`Graph`] (or a [`WeightedGraph`]) once from an edge list, with
+//! [`Graph::from_edges`] or from a generator's [`EdgeList`](crate::gen::EdgeList); every
+//! algorithm is a free function over it, with a `_with` form that takes a
+//! [`Counter`](crate::count::Counter).
+//!
+//! | function | bound (n vertices, m edges) | counted |
+//! |---|---|---|
+//! | [`bfs`], [`dfs`] | O(n + m) | vertex and edge visits |
+
+mod graph;
+mod traverse;
+
+pub use graph::{Graph, WeightedGraph};
+pub use traverse::{
+    bfs, bfs_with, components, dfs, dfs_with, is_connected, is_search_tree, search_trace,
+    trace_table, Components, Search, SearchKind, TraceRow, TRACE_MAX_VERTICES,
+};

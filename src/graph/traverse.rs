@@ -1,0 +1,510 @@
+//! Breadth-first and depth-first search from a start vertex: visit order, the spanning tree
+//! as a parent array, connected components, and the seed's add/remove trace of the list Q.
+//!
+//! Both searches follow the seed's scheme (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de
+//! búsqueda"): keep a list Q holding the start; look at the first (BFS, a queue) or the last
+//! (DFS, a stack) vertex x of Q; if x is adjacent to a new vertex y, append y, else remove x.
+//! "A new vertex" is the smallest unvisited neighbour, since neighbour lists are ascending.
+//! Each vertex keeps a cursor into its neighbour list, so every edge is looked at twice in
+//! total (once from each end) and the searches run in O(n + m) without recursion.
+//!
+//! The tests check that every vertex of the start's component is visited exactly once, that
+//! the parent array is a tree of graph edges rooted at the start, and the seed's two tables.
+
+use super::graph::Graph;
+use crate::count::{Counter, NoCount};
+use crate::error::{Error, Result};
+use std::fmt::Write;
+
+/// The longest graph [`search_trace`] accepts: each row copies the list Q, so a trace of n
+/// vertices holds up to 2n rows of up to n entries, meant for graphs a reader can follow.
+pub const TRACE_MAX_VERTICES: usize = 1000;
+
+/// The result of a search from one start vertex.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Search {
+    /// The vertices in the order the search reached them, the start first. Exactly the
+    /// start's connected component.
+    pub order: Vec<usize>,
+    /// `parent[v]` is the vertex from which the search reached `v`: the spanning tree of the
+    /// component, rooted at the start. `None` for the start and for vertices not reached.
+    pub parent: Vec<Option<usize>>,
+}
+
+/// Which list discipline a search uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SearchKind {
+    /// Breadth-first (B.E.A.): Q is a queue, look at its first vertex.
+    Breadth,
+    /// Depth-first (B.E.P.): Q is a stack, look at its last vertex.
+    Depth,
+}
+
+/// One row of the seed's search table: the vertex added to Q or removed from it, and Q after
+/// the step.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TraceRow {
+    /// The vertex appended to Q in this step, if any.
+    pub added: Option<usize>,
+    /// The vertex removed from Q in this step, if any (exactly one of the two is set).
+    pub removed: Option<usize>,
+    /// Q after the step, first element first.
+    pub list: Vec<usize>,
+}
+
+/// The connected components of a graph.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Components {
+    /// `label[v]` is the component of `v`, numbered `0..count` in order of their smallest
+    /// vertex.
+    pub label: Vec<usize>,
+    /// The number of components (0 for the empty graph).
+    pub count: usize,
+}
+
+/// Breadth-first search from `start`; see [`bfs_with`].
+///
+/// # Errors
+/// [`Error::NoSuchVertex`] if `start >= n` (every start is missing from the empty graph).
+///
+/// # Complexity
+/// O(n + m) time, O(n) auxiliary space.
+///
+/// ```
+/// use compgeo::graph::{bfs, Graph};
+///
+/// // The path 0 - 1 - 2 plus the edge 0 - 3.
+/// let g = Graph::from_edges(4, &[[0, 1], [1, 2], [0, 3]])?;
+/// let s = bfs(&g, 0)?;
+/// assert_eq!(s.order, [0, 1, 3, 2]);
+/// assert_eq!(s.parent, [None, Some(0), Some(1), Some(0)]);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn bfs(g: &Graph, start: usize) -> Result<Search> {
+    bfs_with(g, start, &mut NoCount)
+}
+
+/// Breadth-first search from `start`, counting its work.
+///
+/// The idea: the seed's B.E.A. (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de búsqueda"):
+/// Q is a queue; while it is not empty, its first vertex x adds its new neighbours one by one
+/// in ascending order, then leaves Q. The visit order is the order of arrival in Q, and each
+/// vertex's parent is the x that added it, so depths in the tree are graph distances from the
+/// start.
+///
+/// # Errors
+/// [`Error::NoSuchVertex`] if `start >= n`.
+///
+/// # Complexity
+/// O(n + m) time for n vertices and m edges (each vertex enters Q once, each edge is looked
+/// at once from each end); O(n) auxiliary space.
+///
+/// # Counts
+/// One `vertex_visit` per vertex taken from Q and one `edge_visit` per neighbour looked at:
+/// on a component with n_c vertices and m_c edges, exactly n_c and 2·m_c.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::graph::{bfs_with, Graph};
+///
+/// let g = Graph::from_edges(4, &[[0, 1], [1, 2], [2, 0]])?;
+/// let mut c = Counts::default();
+/// let s = bfs_with(&g, 2, &mut c)?;
+/// assert_eq!(s.order, [2, 0, 1]);
+/// assert_eq!((c.vertex_visits, c.edge_visits), (3, 6));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn bfs_with<C: Counter>(g: &Graph, start: usize, c: &mut C) -> Result<Search> {
+    g.check_vertex(start)?;
+    let n = g.vertex_count();
+    let mut parent = vec![NONE; n];
+    // The visit order doubles as the queue: the queue is order[head..].
+    let mut order: Vec<u32> = Vec::with_capacity(n);
+    parent[start] = start as u32;
+    order.push(start as u32);
+    let mut head = 0;
+    while head < order.len() {
+        let x = order[head] as usize;
+        head += 1;
+        c.vertex_visit();
+        for &y in g.adjacent(x) {
+            c.edge_visit();
+            if parent[y as usize] == NONE {
+                parent[y as usize] = x as u32;
+                order.push(y);
+            }
+        }
+    }
+    Ok(finish(order, parent, start))
+}
+
+/// Depth-first search from `start`; see [`dfs_with`].
+///
+/// # Errors
+/// [`Error::NoSuchVertex`] if `start >= n`.
+///
+/// # Complexity
+/// O(n + m) time, O(n) auxiliary space.
+///
+/// ```
+/// use compgeo::graph::{dfs, Graph};
+///
+/// let g = Graph::from_edges(4, &[[0, 1], [1, 2], [0, 3]])?;
+/// let s = dfs(&g, 0)?;
+/// assert_eq!(s.order, [0, 1, 2, 3]);
+/// assert_eq!(s.parent, [None, Some(0), Some(1), Some(0)]);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn dfs(g: &Graph, start: usize) -> Result<Search> {
+    dfs_with(g, start, &mut NoCount)
+}
+
+/// Depth-first search from `start`, counting its work.
+///
+/// The idea: the seed's B.E.P. (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de búsqueda"):
+/// Q is a stack; while it is not empty, look at its last vertex x: if x has a new neighbour,
+/// push the smallest one, else pop x. Each stacked vertex keeps a cursor into its neighbour
+/// list, so no neighbour is looked at twice from the same vertex. Iterative: the depth of the
+/// tree is limited by memory, not by the call stack.
+///
+/// # Errors
+/// [`Error::NoSuchVertex`] if `start >= n`.
+///
+/// # Complexity
+/// O(n + m) time for n vertices and m edges; O(n) auxiliary space (the stack).
+///
+/// # Counts
+/// One `vertex_visit` per vertex pushed and one `edge_visit` per neighbour looked at: on a
+/// component with n_c vertices and m_c edges, exactly n_c and 2·m_c.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::graph::{dfs_with, Graph};
+///
+/// let g = Graph::from_edges(3, &[[0, 1], [1, 2], [2, 0]])?;
+/// let mut c = Counts::default();
+/// let s = dfs_with(&g, 0, &mut c)?;
+/// assert_eq!(s.parent, [None, Some(0), Some(1)]);
+/// assert_eq!((c.vertex_visits, c.edge_visits), (3, 6));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn dfs_with<C: Counter>(g: &Graph, start: usize, c: &mut C) -> Result<Search> {
+    g.check_vertex(start)?;
+    let n = g.vertex_count();
+    let mut parent = vec![NONE; n];
+    let mut order: Vec<u32> = Vec::with_capacity(n);
+    // (vertex, how many of its neighbours have been looked at)
+    let mut stack: Vec<(u32, u32)> = Vec::new();
+    parent[start] = start as u32;
+    order.push(start as u32);
+    c.vertex_visit();
+    stack.push((start as u32, 0));
+    while let Some(top) = stack.last_mut() {
+        let x = top.0 as usize;
+        let adjacent = g.adjacent(x);
+        let mut cursor = top.1 as usize;
+        let mut next = None;
+        while cursor < adjacent.len() {
+            let y = adjacent[cursor];
+            cursor += 1;
+            c.edge_visit();
+            if parent[y as usize] == NONE {
+                next = Some(y);
+                break;
+            }
+        }
+        top.1 = cursor as u32;
+        match next {
+            Some(y) => {
+                parent[y as usize] = x as u32;
+                order.push(y);
+                c.vertex_visit();
+                stack.push((y, 0));
+            }
+            None => {
+                stack.pop();
+            }
+        }
+    }
+    Ok(finish(order, parent, start))
+}
+
+/// The seed's step table of a search: one row per vertex added to Q and one per vertex
+/// removed, with Q after each step.
+///
+/// The rows are exactly those of the seed's tables (`003_5b666ee3e15e6353.txt`, §2.1
+/// "Algoritmos de búsqueda", columns Añadir / Quitar / Q): the first row adds the start, and
+/// a component of n_c vertices gives 2·n_c rows. The visit order is the order of the `added`
+/// entries, the same as [`bfs`] or [`dfs`] return. [`trace_table`] prints the rows.
+///
+/// # Errors
+/// [`Error::NoSuchVertex`] if `start >= n`; [`Error::InvalidParameter`] (name `"graph"`) if
+/// the graph has more than [`TRACE_MAX_VERTICES`] vertices.
+///
+/// # Complexity
+/// O(n + m + n_c²) time and O(n_c²) space for the rows.
+///
+/// ```
+/// use compgeo::graph::{search_trace, Graph, SearchKind};
+///
+/// let g = Graph::from_edges(3, &[[0, 1], [0, 2]])?;
+/// let rows = search_trace(&g, 0, SearchKind::Depth)?;
+/// let added: Vec<_> = rows.iter().filter_map(|r| r.added).collect();
+/// assert_eq!(added, [0, 1, 2]);
+/// assert_eq!(rows[2].list, [0]); // 1 was removed before 2 was added
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn search_trace(g: &Graph, start: usize, kind: SearchKind) -> Result<Vec<TraceRow>> {
+    g.check_vertex(start)?;
+    if g.vertex_count() > TRACE_MAX_VERTICES {
+        return Err(Error::InvalidParameter {
+            name: "graph",
+            reason: format!(
+                "{} vertices; a trace is limited to {TRACE_MAX_VERTICES}",
+                g.vertex_count()
+            ),
+        });
+    }
+    let mut seen = vec![false; g.vertex_count()];
+    let mut cursor = vec![0usize; g.vertex_count()];
+    let mut list = std::collections::VecDeque::from([start]);
+    seen[start] = true;
+    let mut rows = vec![TraceRow {
+        added: Some(start),
+        removed: None,
+        list: vec![start],
+    }];
+    while let Some(&x) = match kind {
+        SearchKind::Breadth => list.front(),
+        SearchKind::Depth => list.back(),
+    } {
+        let adjacent = g.adjacent(x);
+        let mut next = None;
+        while cursor[x] < adjacent.len() {
+            let y = adjacent[cursor[x]] as usize;
+            cursor[x] += 1;
+            if !seen[y] {
+                next = Some(y);
+                break;
+            }
+        }
+        let (added, removed) = match next {
+            Some(y) => {
+                seen[y] = true;
+                list.push_back(y);
+                (Some(y), None)
+            }
+            None => {
+                match kind {
+                    SearchKind::Breadth => list.pop_front(),
+                    SearchKind::Depth => list.pop_back(),
+                };
+                (None, Some(x))
+            }
+        };
+        rows.push(TraceRow {
+            added,
+            removed,
+            list: list.iter().copied().collect(),
+        });
+    }
+    Ok(rows)
+}
+
+/// Prints search rows as the seed's three-column table, `Add`, `Remove`, `Q`, tab-separated,
+/// with `-` for an empty cell and `∅` for an empty Q; `name` writes a vertex (the seed uses
+/// letters).
+///
+/// ```
+/// use compgeo::graph::{search_trace, trace_table, Graph, SearchKind};
+///
+/// let g = Graph::from_edges(2, &[[0, 1]])?;
+/// let rows = search_trace(&g, 0, SearchKind::Breadth)?;
+/// let letter = |v: usize| char::from(b'a' + v as u8).to_string();
+/// assert_eq!(
+///     trace_table(&rows, letter),
+///     "Add\tRemove\tQ\na\t-\ta\nb\t-\tab\n-\ta\tb\n-\tb\t∅\n"
+/// );
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn trace_table(rows: &[TraceRow], name: impl Fn(usize) -> String) -> String {
+    let mut out = String::from("Add\tRemove\tQ\n");
+    let cell = |v: Option<usize>| v.map_or_else(|| "-".to_string(), &name);
+    for row in rows {
+        let list: String = if row.list.is_empty() {
+            "∅".to_string()
+        } else {
+            let names: Vec<String> = row.list.iter().map(|&v| name(v)).collect();
+            // Single-letter names read like the seed's "abce"; longer ones need a separator.
+            let sep = if names.iter().all(|s| s.chars().count() == 1) {
+                ""
+            } else {
+                " "
+            };
+            names.join(sep)
+        };
+        let _ = writeln!(out, "{}\t{}\t{}", cell(row.added), cell(row.removed), list);
+    }
+    out
+}
+
+/// The connected components, found by breadth-first search from each unvisited vertex in
+/// ascending order.
+///
+/// The seed's remark (§2.1 "Algoritmos de búsqueda"): a search that reaches every vertex has
+/// built a spanning tree, so the graph is connected.
+///
+/// # Complexity
+/// O(n + m) time, O(n) auxiliary space.
+///
+/// ```
+/// use compgeo::graph::{components, Graph};
+///
+/// let g = Graph::from_edges(5, &[[0, 3], [1, 4]])?;
+/// let c = components(&g);
+/// assert_eq!((c.count, c.label), (3, vec![0, 1, 2, 0, 1]));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn components(g: &Graph) -> Components {
+    let n = g.vertex_count();
+    let mut label = vec![usize::MAX; n];
+    let mut queue = Vec::new();
+    let mut count = 0;
+    for s in 0..n {
+        if label[s] != usize::MAX {
+            continue;
+        }
+        label[s] = count;
+        queue.clear();
+        queue.push(s);
+        let mut head = 0;
+        while head < queue.len() {
+            let x = queue[head];
+            head += 1;
+            for y in g.neighbours(x) {
+                if label[y] == usize::MAX {
+                    label[y] = count;
+                    queue.push(y);
+                }
+            }
+        }
+        count += 1;
+    }
+    Components { label, count }
+}
+
+/// Whether the graph is connected: one search from vertex 0 reaches every vertex. The
+/// empty graph counts as connected.
+///
+/// # Complexity
+/// O(n + m) time, O(n) auxiliary space.
+///
+/// ```
+/// use compgeo::graph::{is_connected, Graph};
+///
+/// assert!(is_connected(&Graph::from_edges(3, &[[0, 1], [2, 1]])?));
+/// assert!(!is_connected(&Graph::from_edges(3, &[[0, 1]])?));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn is_connected(g: &Graph) -> bool {
+    match bfs(g, 0) {
+        Ok(s) => s.order.len() == g.vertex_count(),
+        Err(_) => true,
+    }
+}
+
+/// Whether `search` is a valid search result from `start`: `order` lists distinct vertices
+/// starting with `start`, each non-start vertex's parent is a graph neighbour that appears
+/// earlier in `order`, the vertices outside `order` have no parent, and `order` is closed
+/// under adjacency (a whole component).
+///
+/// # Complexity
+/// O(n + m) time, O(n) auxiliary space.
+///
+/// ```
+/// use compgeo::graph::{bfs, is_search_tree, Graph};
+///
+/// let g = Graph::from_edges(4, &[[0, 1], [1, 2]])?;
+/// let mut s = bfs(&g, 1)?;
+/// assert!(is_search_tree(&g, 1, &s));
+/// s.parent[2] = Some(0); // not an edge
+/// assert!(!is_search_tree(&g, 1, &s));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn is_search_tree(g: &Graph, start: usize, search: &Search) -> bool {
+    let n = g.vertex_count();
+    if search.parent.len() != n || search.order.first() != Some(&start) {
+        return false;
+    }
+    let mut rank = vec![usize::MAX; n];
+    for (i, &v) in search.order.iter().enumerate() {
+        if v >= n || rank[v] != usize::MAX {
+            return false;
+        }
+        rank[v] = i;
+    }
+    for v in 0..n {
+        let ok = match search.parent[v] {
+            None => v == start || rank[v] == usize::MAX,
+            Some(p) => {
+                v != start
+                    && rank[v] != usize::MAX
+                    && p < n
+                    && rank[p] < rank[v]
+                    && g.has_edge(p, v)
+            }
+        };
+        if !ok {
+            return false;
+        }
+        if rank[v] != usize::MAX && g.neighbours(v).any(|y| rank[y] == usize::MAX) {
+            return false;
+        }
+    }
+    true
+}
+
+/// "No parent yet" in the searches' compact parent arrays.
+const NONE: u32 = u32::MAX;
+
+/// Converts the compact arrays of a search into a [`Search`].
+fn finish(order: Vec<u32>, parent: Vec<u32>, start: usize) -> Search {
+    Search {
+        order: order.into_iter().map(|v| v as usize).collect(),
+        parent: parent
+            .into_iter()
+            .enumerate()
+            .map(|(v, p)| (p != NONE && v != start).then_some(p as usize))
+            .collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_missing_start_is_an_error() {
+        let g = Graph::from_edges(0, &[]).unwrap();
+        assert!(matches!(
+            bfs(&g, 0),
+            Err(Error::NoSuchVertex {
+                vertex: 0,
+                vertices: 0
+            })
+        ));
+        let g = Graph::from_edges(2, &[[0, 1]]).unwrap();
+        assert!(dfs(&g, 2).is_err());
+        assert!(search_trace(&g, 5, SearchKind::Depth).is_err());
+    }
+
+    #[test]
+    fn a_long_path_does_not_overflow_the_stack() {
+        let n = 200_000;
+        let edges: Vec<[usize; 2]> = (1..n).map(|i| [i - 1, i]).collect();
+        let g = Graph::from_edges(n, &edges).unwrap();
+        let s = dfs(&g, 0).unwrap();
+        assert_eq!(s.order.len(), n);
+        assert_eq!(s.parent[n - 1], Some(n - 2));
+    }
+}
