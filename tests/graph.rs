@@ -234,3 +234,178 @@ proptest! {
         prop_assert_eq!(is_connected(&g), c.count == 1);
     }
 }
+
+// ---------------------------------------------------------------- colouring
+
+use compgeo::gen::{graph as generate, GraphKind};
+
+fn generated(kind: GraphKind, n: usize, m: usize, seed: u64) -> Graph {
+    Graph::from_edge_list(&generate(kind, n, m, seed).unwrap()).unwrap()
+}
+
+fn colours_with(g: &Graph, s: ColouringAlgorithm) -> usize {
+    let c = colour(g, s);
+    assert!(is_proper_colouring(g, &c.colour), "{s} is not proper");
+    assert_eq!(c.count, c.colour.iter().max().map_or(0, |k| k + 1));
+    c.count
+}
+
+#[test]
+fn seed_chromatic_numbers() {
+    for n in 1..=9 {
+        let k = generated(GraphKind::Complete, n, 0, 1);
+        for s in ColouringAlgorithm::ALL {
+            assert_eq!(colours_with(&k, s), n, "K_{n} with {s}");
+        }
+    }
+    for n in 3..=16 {
+        let c = generated(GraphKind::Cycle, n, 0, 1);
+        let chi = if n % 2 == 0 { 2 } else { 3 };
+        // DSatur is exact on bipartite graphs; every greedy uses at most Δ + 1 = 3.
+        assert_eq!(colours_with(&c, ColouringAlgorithm::Dsatur), chi, "C_{n}");
+        for s in ColouringAlgorithm::ALL {
+            assert!(colours_with(&c, s) >= chi && colours_with(&c, s) <= 3);
+        }
+    }
+    for seed in 0..20 {
+        let t = generated(GraphKind::Tree, 2 + seed as usize * 3, 0, seed);
+        // Trees are 1-degenerate: smallest-last needs 2; DSatur is exact on bipartite graphs.
+        assert_eq!(colours_with(&t, ColouringAlgorithm::SmallestLast), 2);
+        assert_eq!(colours_with(&t, ColouringAlgorithm::Dsatur), 2);
+    }
+}
+
+#[test]
+fn seed_course_greedy_makes_n_choose_2_adjacency_tests() {
+    for (kind, n) in [
+        (GraphKind::Gnm, 40),
+        (GraphKind::Complete, 12),
+        (GraphKind::Gnm, 0),
+    ] {
+        let g = generated(kind, n, n, 3);
+        let mut c = Counts::default();
+        let order: Vec<usize> = (0..n).rev().collect();
+        let course = course_greedy_colouring_with(&g, &order, &mut c).unwrap();
+        assert_eq!(c.adjacency_tests, (n * n.saturating_sub(1) / 2) as u64);
+        assert_eq!(course, greedy_colouring(&g, &order).unwrap());
+    }
+}
+
+#[test]
+fn crown_graphs_fool_the_natural_order() {
+    for half in 2..=10 {
+        let g = generated(GraphKind::Crown, half, 0, 1);
+        assert_eq!(colours_with(&g, ColouringAlgorithm::Greedy), half);
+        assert_eq!(colours_with(&g, ColouringAlgorithm::Course), half);
+        assert_eq!(colours_with(&g, ColouringAlgorithm::Dsatur), 2);
+        // Crown graphs are regular, so largest-first keeps the natural order and is fooled.
+        assert_eq!(largest_first_order(&g), (0..2 * half).collect::<Vec<_>>());
+        assert_eq!(colours_with(&g, ColouringAlgorithm::LargestFirst), half);
+    }
+}
+
+#[test]
+fn mycielski_graphs_need_k_colours() {
+    for k in 2..=6 {
+        let g = generated(GraphKind::Mycielski, k, 0, 1);
+        for s in ColouringAlgorithm::ALL {
+            assert!(colours_with(&g, s) >= k, "M_{k} with {s}");
+        }
+    }
+}
+
+/// petgraph's undirected graph with the same edges.
+fn petgraph_of(g: &Graph) -> petgraph::graph::UnGraph<(), ()> {
+    let mut p = petgraph::graph::UnGraph::<(), ()>::with_capacity(g.vertex_count(), g.edge_count());
+    for _ in 0..g.vertex_count() {
+        p.add_node(());
+    }
+    for [u, v] in g.edges() {
+        p.add_edge((u as u32).into(), (v as u32).into(), ());
+    }
+    p
+}
+
+/// DSatur is a heuristic whose colour count depends on how ties are broken: ours go to the
+/// smaller id, petgraph's to its heap's internal order. On the structured families ours never
+/// uses more colours; on random G(n, m) each side wins some graphs (by one colour), and over
+/// the sample the totals agree within 1% (measured: 14 wins, 12 losses, all by one colour).
+#[test]
+fn dsatur_uses_no_more_colours_than_petgraph_on_generated_graphs() {
+    let structured = [
+        (GraphKind::Grid, 400, 0),
+        (GraphKind::Queen, 8, 0),
+        (GraphKind::Crown, 12, 0),
+        (GraphKind::Tree, 300, 0),
+        (GraphKind::Petersen, 10, 0),
+        (GraphKind::Mycielski, 6, 0),
+        (GraphKind::Cycle, 51, 0),
+        (GraphKind::Complete, 20, 0),
+    ];
+    for (kind, n, m) in structured {
+        for seed in 0..4 {
+            let g = generated(kind, n, m, seed);
+            let ours = colours_with(&g, ColouringAlgorithm::Dsatur);
+            let (_, theirs) = petgraph::algo::dsatur_coloring(&petgraph_of(&g));
+            assert!(
+                ours <= theirs,
+                "{kind} n={n} seed {seed}: {ours} > {theirs}"
+            );
+        }
+    }
+    let (mut ours_total, mut theirs_total) = (0, 0);
+    for (n, m) in [(300, 1500), (200, 4000)] {
+        for seed in 0..40 {
+            let g = generated(GraphKind::Gnm, n, m, seed);
+            let ours = colours_with(&g, ColouringAlgorithm::Dsatur);
+            let (_, theirs) = petgraph::algo::dsatur_coloring(&petgraph_of(&g));
+            assert!(
+                ours <= theirs + 1,
+                "gnm n={n} m={m} seed {seed}: {ours} vs {theirs}"
+            );
+            ours_total += ours;
+            theirs_total += theirs;
+        }
+    }
+    assert!(
+        100 * ours_total <= 101 * theirs_total,
+        "{ours_total} vs {theirs_total}"
+    );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn every_strategy_colours_properly((n, edges) in arb_edges(14, 40), seed in any::<u64>()) {
+        let g = Graph::from_edges(n, &edges).unwrap();
+        for s in ColouringAlgorithm::ALL {
+            let mut c = Counts::default();
+            let col = colour_with(&g, s, &mut c);
+            prop_assert!(is_proper_colouring(&g, &col.colour));
+            prop_assert!(col.count <= (0..n).map(|v| g.degree(v)).max().unwrap_or(0) + 1);
+        }
+        // A random order: the course algorithm and the O(n + m) greedy agree.
+        let mut order: Vec<usize> = (0..n).collect();
+        let mut x = seed | 1;
+        for i in (1..n).rev() {
+            x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+            order.swap(i, (x % (i as u64 + 1)) as usize);
+        }
+        prop_assert_eq!(
+            course_greedy_colouring(&g, &order).unwrap(),
+            greedy_colouring(&g, &order).unwrap()
+        );
+        // Smallest-last colours within degeneracy + 1: brute-force the degeneracy.
+        let mut alive = vec![true; n];
+        let mut degeneracy = 0;
+        for _ in 0..n {
+            let deg = |v: usize, alive: &[bool]| g.neighbours(v).filter(|&u| alive[u]).count();
+            let v = (0..n).filter(|&v| alive[v]).min_by_key(|&v| deg(v, &alive)).unwrap();
+            degeneracy = degeneracy.max(deg(v, &alive));
+            alive[v] = false;
+        }
+        let sl = smallest_last_order(&g);
+        prop_assert!(greedy_colouring(&g, &sl).unwrap().count <= degeneracy + 1);
+    }
+}

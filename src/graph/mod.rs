@@ -11,10 +11,20 @@
 //! | function | bound (n vertices, m edges) | counted |
 //! |---|---|---|
 //! | [`bfs`], [`dfs`] | O(n + m) | vertex and edge visits |
+//! | [`course_greedy_colouring`] | O(n²), exactly n(n−1)/2 adjacency tests | adjacency tests |
+//! | [`greedy_colouring`] (any order, [`largest_first_order`], [`smallest_last_order`]) | O(n + m) | edge visits |
+//! | [`dsatur`] | O((n + m) log n) | heap comparisons |
 
+mod colouring;
 mod graph;
+mod heap;
 mod traverse;
 
+pub use colouring::{
+    colour, colour_with, course_greedy_colouring, course_greedy_colouring_with, dsatur,
+    dsatur_with, greedy_colouring, greedy_colouring_with, is_proper_colouring, largest_first_order,
+    smallest_last_order, Colouring, ColouringAlgorithm,
+};
 pub use graph::{Graph, WeightedGraph};
 pub use traverse::{
     bfs, bfs_with, components, dfs, dfs_with, is_connected, is_search_tree, search_trace,
