@@ -409,3 +409,129 @@ proptest! {
         prop_assert!(greedy_colouring(&g, &sl).unwrap().count <= degeneracy + 1);
     }
 }
+
+// ---------------------------------------------------------------- spanning trees
+
+use compgeo::gen::with_random_weights;
+
+/// Small weighted multigraphs with integer weights (ties on purpose, sums exact).
+fn arb_weighted(
+    max_n: usize,
+    max_m: usize,
+) -> impl proptest::strategy::Strategy<Value = (usize, Vec<[usize; 2]>, Vec<f64>)> {
+    arb_edges(max_n, max_m).prop_flat_map(|(n, edges)| {
+        let m = edges.len();
+        (
+            Just(n),
+            Just(edges),
+            prop::collection::vec((-3i32..6).prop_map(f64::from), m),
+        )
+    })
+}
+
+/// The least weight of a spanning forest, by trying every set of n − c edges.
+fn brute_force_forest_weight(g: &WeightedGraph) -> f64 {
+    let (n, m) = (g.vertex_count(), g.edge_count());
+    let mut whole = UnionFind::new(n);
+    for e in 0..m {
+        let [u, v] = g.endpoints(e);
+        whole.union(u, v);
+    }
+    let size = n - whole.set_count();
+    let mut best = f64::INFINITY;
+    for mask in 0u32..1 << m {
+        if mask.count_ones() as usize != size {
+            continue;
+        }
+        let chosen: Vec<usize> = (0..m).filter(|&e| mask >> e & 1 == 1).collect();
+        if is_spanning_forest(g, &chosen) {
+            best = best.min(chosen.iter().map(|&e| g.weight(e)).sum());
+        }
+    }
+    best
+}
+
+#[test]
+fn mst_input_errors_are_named() {
+    let e = WeightedGraph::from_edges(3, &[[0, 1], [1, 2]], &[1.0, f64::INFINITY]).unwrap_err();
+    assert!(matches!(e, Error::NonFiniteWeight { edge: 1, .. }), "{e}");
+    let unweighted = generate(GraphKind::Cycle, 5, 0, 1).unwrap();
+    assert!(WeightedGraph::from_edge_list(&unweighted).is_err());
+    assert!(matches!(
+        WeightedGraph::from_edges(2, &[[0, 2]], &[1.0]),
+        Err(Error::VertexOutOfRange {
+            edge: 0,
+            vertex: 2,
+            vertices: 2
+        })
+    ));
+}
+
+/// Kruskal's and Prim's results on larger random graphs agree with petgraph's.
+#[test]
+fn spanning_trees_agree_with_petgraph() {
+    use petgraph::data::Element;
+    for (n, m, seed) in [(300, 1200, 1), (1000, 3000, 2), (500, 700, 3)] {
+        let list = with_random_weights(generate(GraphKind::Gnm, n, m, seed).unwrap(), seed);
+        let g = WeightedGraph::from_edge_list(&list).unwrap();
+        let mut p = petgraph::graph::UnGraph::<(), f64>::new_undirected();
+        for _ in 0..n {
+            p.add_node(());
+        }
+        for (e, &[u, v]) in list.edges.iter().enumerate() {
+            p.add_edge((u as u32).into(), (v as u32).into(), g.weight(e));
+        }
+        let mut theirs: Vec<[usize; 2]> = petgraph::algo::min_spanning_tree(&p)
+            .filter_map(|el| match el {
+                Element::Edge { source, target, .. } => {
+                    Some([source.min(target), source.max(target)])
+                }
+                Element::Node { .. } => None,
+            })
+            .collect();
+        theirs.sort_unstable();
+        for a in MstAlgorithm::ALL {
+            let f = a.run_with(&g, &mut Counts::default());
+            assert!(is_spanning_forest(&g, &f.edges));
+            let mut ours: Vec<[usize; 2]> = f.edges.iter().map(|&e| g.endpoints(e)).collect();
+            ours.sort_unstable();
+            assert_eq!(ours, theirs, "{a} on G({n}, {m})");
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Theorem 2.7 (the greedy tree is minimal), and the same for Kruskal and Borůvka.
+    #[test]
+    fn spanning_forests_are_minimal((n, edges, w) in arb_weighted(7, 11)) {
+        let g = WeightedGraph::from_edges(n, &edges, &w).unwrap();
+        let best = brute_force_forest_weight(&g);
+        let forests: Vec<SpanningForest> =
+            MstAlgorithm::ALL.iter().map(|a| a.run_with(&g, &mut Counts::default())).collect();
+        for f in &forests {
+            prop_assert!(is_spanning_forest(&g, &f.edges));
+            prop_assert_eq!(f.weight, best);
+            prop_assert_eq!(f.components, n - f.edges.len());
+        }
+        // Ties are broken by edge index, so the minimum forest is unique.
+        prop_assert_eq!(&forests[0], &forests[1]);
+        prop_assert_eq!(&forests[1], &forests[2]);
+    }
+
+    #[test]
+    fn union_find_agrees_with_components((n, edges) in arb_edges(20, 30)) {
+        let mut sets = UnionFind::new(n);
+        for &[u, v] in &edges {
+            sets.union(u, v);
+        }
+        let c = components(&Graph::from_edges(n, &edges).unwrap());
+        prop_assert_eq!(sets.set_count(), c.count);
+        for u in 0..n {
+            for v in 0..n {
+                prop_assert_eq!(sets.find(u) == sets.find(v), c.label[u] == c.label[v]);
+            }
+        }
+    }
+}

@@ -345,6 +345,11 @@ impl WeightedGraph {
             .map(|&(t, e)| (t as usize, e as usize))
     }
 
+    /// The raw edge array.
+    pub(crate) fn raw_edges(&self) -> &[[u32; 2]] {
+        &self.edges
+    }
+
     /// The raw incidence slice of `v`.
     pub(crate) fn incidences_of(&self, v: usize) -> &[(u32, u32)] {
         &self.incidences[self.offsets[v]..self.offsets[v + 1]]

@@ -14,11 +14,16 @@
 //! | [`course_greedy_colouring`] | O(n²), exactly n(n−1)/2 adjacency tests | adjacency tests |
 //! | [`greedy_colouring`] (any order, [`largest_first_order`], [`smallest_last_order`]) | O(n + m) | edge visits |
 //! | [`dsatur`] | O((n + m) log n) | heap comparisons |
+//! | [`prim`] (the seed's greedy tree) | O(m log n) | heap comparisons |
+//! | [`kruskal`] | O(m log m) | sort comparisons |
+//! | [`boruvka`] | O(m log n) | edge visits |
 
 mod colouring;
 mod graph;
 mod heap;
+mod mst;
 mod traverse;
+mod union_find;
 
 pub use colouring::{
     colour, colour_with, course_greedy_colouring, course_greedy_colouring_with, dsatur,
@@ -26,7 +31,12 @@ pub use colouring::{
     smallest_last_order, Colouring, ColouringAlgorithm,
 };
 pub use graph::{Graph, WeightedGraph};
+pub use mst::{
+    boruvka, boruvka_with, is_spanning_forest, kruskal, kruskal_with, prim, prim_with,
+    MstAlgorithm, SpanningForest,
+};
 pub use traverse::{
     bfs, bfs_with, components, dfs, dfs_with, is_connected, is_search_tree, search_trace,
     trace_table, Components, Search, SearchKind, TraceRow, TRACE_MAX_VERTICES,
 };
+pub use union_find::UnionFind;
