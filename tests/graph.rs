@@ -535,3 +535,141 @@ proptest! {
         }
     }
 }
+
+// ---------------------------------------------------------------- command line
+
+#[cfg(feature = "cli")]
+mod cli {
+    use super::*;
+    use assert_cmd::cargo::cargo_bin_cmd;
+    use serde_json::Value;
+
+    /// Runs the binary with `stdin`; returns (exit code, stdout, stderr).
+    fn run(args: &[&str], stdin: &str) -> (i32, String, String) {
+        let out = cargo_bin_cmd!("compgeo")
+            .args(args)
+            .write_stdin(stdin.as_bytes().to_vec())
+            .output()
+            .unwrap();
+        (
+            out.status.code().unwrap(),
+            String::from_utf8(out.stdout).unwrap(),
+            String::from_utf8(out.stderr).unwrap(),
+        )
+    }
+
+    fn json_of(g: &Graph) -> String {
+        let edges: Vec<String> = g.edges().map(|[u, v]| format!("[{u},{v}]")).collect();
+        format!(
+            "{{\"vertices\": {}, \"edges\": [{}]}}",
+            g.vertex_count(),
+            edges.join(",")
+        )
+    }
+
+    fn usizes(v: &Value) -> Vec<usize> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_u64().unwrap() as usize)
+            .collect()
+    }
+
+    #[test]
+    fn dfs_trace_prints_the_seed_table() {
+        let (code, out, _) = run(
+            &["dfs", "--start", "0", "--trace", "-"],
+            &json_of(&seed_toys()),
+        );
+        assert_eq!(code, 0);
+        let rows: Vec<&str> = out.lines().collect();
+        assert_eq!(rows.len(), 15);
+        assert_eq!(rows[4], "4\t-\t0 1 2 4");
+        assert_eq!(rows[14], "-\t0\t∅");
+    }
+
+    #[test]
+    fn search_and_colour_output_match_the_library() {
+        let g = generated(GraphKind::Gnm, 60, 90, 5);
+        let input = json_of(&g);
+        for (cmd, kind) in [("bfs", SearchKind::Breadth), ("dfs", SearchKind::Depth)] {
+            let (code, out, err) = run(&[cmd, "-s", "3", "-"], &input);
+            assert_eq!((code, err.as_str()), (0, ""));
+            let v: Value = serde_json::from_str(&out).unwrap();
+            let expected = match kind {
+                SearchKind::Breadth => bfs(&g, 3).unwrap(),
+                SearchKind::Depth => dfs(&g, 3).unwrap(),
+            };
+            assert_eq!(usizes(&v["order"]), expected.order);
+            assert_eq!(v["components"], components(&g).count);
+            assert_eq!(v["counts"]["vertex_visits"], expected.order.len());
+        }
+        for a in ColouringAlgorithm::ALL {
+            let (code, out, _) = run(&["colour", "--algorithm", a.name(), "-"], &input);
+            assert_eq!(code, 0);
+            let v: Value = serde_json::from_str(&out).unwrap();
+            let colours = usizes(&v["colours"]);
+            assert!(is_proper_colouring(&g, &colours));
+            assert_eq!(v["count"], colour(&g, a).count);
+        }
+    }
+
+    #[test]
+    fn mst_output_is_a_minimum_forest() {
+        let input = r#"{"vertices": 5, "edges": [[0,1,4],[1,2,1],[2,0,2],[0,1,1.5],[3,4,-2]]}"#;
+        for a in ["prim", "kruskal", "boruvka"] {
+            let (code, out, _) = run(&["mst", "-a", a, "-"], input);
+            assert_eq!(code, 0);
+            let v: Value = serde_json::from_str(&out).unwrap();
+            assert_eq!(usizes(&v["edge_indices"]), [1, 3, 4]);
+            assert_eq!(v["weight"], 0.5);
+            assert_eq!(v["components"], 2);
+        }
+    }
+
+    #[test]
+    fn bad_input_exits_2_with_one_error_line() {
+        let cases: [(&[&str], &str, &str); 6] = [
+            (
+                &["bfs", "-s", "4", "-"],
+                r#"{"vertices": 3, "edges": [[0,1]]}"#,
+                "vertex 4 does not exist",
+            ),
+            (
+                &["dfs", "-s", "0", "-"],
+                r#"{"vertices": 0, "edges": []}"#,
+                "graph is empty",
+            ),
+            (
+                &["colour", "-a", "greedy", "-"],
+                r#"{"vertices": 2, "edges": [[0,5]]}"#,
+                "vertex 5",
+            ),
+            (
+                &["colour", "-a", "rainbow", "-"],
+                r#"{"vertices": 2, "edges": []}"#,
+                "dsatur",
+            ),
+            (
+                &["mst", "-a", "prim", "-"],
+                r#"{"vertices": 2, "edges": [[0,1]]}"#,
+                "weight",
+            ),
+            (
+                &["mst", "-a", "prim", "-"],
+                r#"{"vertices": 2, "edges": [[0,1,NaN]]}"#,
+                "error: ",
+            ),
+        ];
+        for (args, input, needle) in cases {
+            let (code, out, err) = run(args, input);
+            assert_eq!(code, 2, "{args:?}: {err}");
+            assert!(out.is_empty());
+            assert_eq!(err.lines().count(), 1, "{err}");
+            assert!(
+                err.starts_with("error: ") && err.contains(needle),
+                "{args:?}: {err}"
+            );
+        }
+    }
+}

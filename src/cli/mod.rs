@@ -12,6 +12,7 @@
 
 pub mod error;
 mod gen;
+mod graph;
 pub mod input;
 pub mod output;
 mod report;
@@ -43,6 +44,14 @@ enum Command {
     Report(report::ReportArgs),
     /// Sort numbers with a chosen algorithm and print the operation counts (or --trace)
     Sort(sort::SortArgs),
+    /// Breadth-first search from a vertex: visit order and parents (or --trace)
+    Bfs(graph::SearchArgs),
+    /// Depth-first search from a vertex: visit order and parents (or --trace)
+    Dfs(graph::SearchArgs),
+    /// Colour a graph's vertices greedily with a chosen algorithm
+    Colour(graph::ColourArgs),
+    /// Minimum spanning tree (forest) of a weighted graph with a chosen algorithm
+    Mst(graph::MstArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -66,6 +75,10 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Stats(args) => stats::run(args),
         Command::Report(args) => report::run(args),
         Command::Sort(args) => sort::run(args),
+        Command::Bfs(args) => graph::run_search(args, crate::graph::SearchKind::Breadth),
+        Command::Dfs(args) => graph::run_search(args, crate::graph::SearchKind::Depth),
+        Command::Colour(args) => graph::run_colour(args),
+        Command::Mst(args) => graph::run_mst(args),
     }
 }
 

@@ -313,7 +313,8 @@ pub fn search_trace(g: &Graph, start: usize, kind: SearchKind) -> Result<Vec<Tra
 
 /// Prints search rows as the seed's three-column table, `Add`, `Remove`, `Q`, tab-separated,
 /// with `-` for an empty cell and `∅` for an empty Q; `name` writes a vertex (the seed uses
-/// letters).
+/// letters). Q's vertices are run together when every name is a single letter, as in the
+/// seed (`abce`), and separated by spaces otherwise.
 ///
 /// ```
 /// use compgeo::graph::{search_trace, trace_table, Graph, SearchKind};
@@ -335,8 +336,13 @@ pub fn trace_table(rows: &[TraceRow], name: impl Fn(usize) -> String) -> String 
             "∅".to_string()
         } else {
             let names: Vec<String> = row.list.iter().map(|&v| name(v)).collect();
-            // Single-letter names read like the seed's "abce"; longer ones need a separator.
-            let sep = if names.iter().all(|s| s.chars().count() == 1) {
+            // Single letters read like the seed's "abce"; numbers and longer names need a
+            // separator.
+            let single_letter = |s: &String| {
+                let mut chars = s.chars();
+                chars.next().is_some_and(char::is_alphabetic) && chars.next().is_none()
+            };
+            let sep = if names.iter().all(single_letter) {
                 ""
             } else {
                 " "
