@@ -10,6 +10,7 @@
 //! | [`geometry`] | [`Point2`](geometry::Point2), exact predicates, validation |
 //! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) |
 //! | [`error`] | the crate's [`Error`] and [`Result`] |
+//! | [`gen`] | seeded workload generators: point sets, graphs, number sequences |
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
 //!
 //! ## Algorithms and their bounds
@@ -35,6 +36,7 @@
 
 pub mod count;
 pub mod error;
+pub mod gen;
 pub mod geometry;
 pub mod sort;
 

@@ -1,15 +1,129 @@
 //! The `compgeo` command line: a thin layer that parses arguments, reads input, calls the
-//! library and prints JSON. See the command-line contract in `docs/design.md`.
+//! library and prints one JSON value on stdout.
+//!
+//! Exit codes: 0 on success; 2 for bad input or bad arguments, with exactly one line on
+//! stderr starting `error: ` and nothing on stdout; 1 if the result cannot be written.
+//! `--help` and `--version` print to stdout and exit 0.
+//!
+//! Every command lives in its own file, `src/cli/<command>.rs`, exposing an `Args` struct
+//! and a `run` function; adding one means a variant in the private `Command` enum and an arm in `run`.
+//! Commands read their input with [`input`] (points and graphs), print with
+//! [`output::print_json`], and report problems as [`CliError`].
 
-use clap::Parser;
+pub mod error;
+mod gen;
+pub mod input;
+pub mod output;
+mod sort;
+mod stats;
+
+pub use error::CliError;
+
+use clap::error::ErrorKind;
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
 
 /// Exact computational geometry that measures its own complexity.
 #[derive(Debug, Parser)]
 #[command(name = "compgeo", version, about)]
-pub struct Cli {}
+pub struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Generate a seeded workload: points, a graph or a key sequence
+    Gen(gen::GenArgs),
+    /// Print the size, distinct count and bounding box of a point set
+    Stats(stats::StatsArgs),
+    /// Sort numbers with a chosen algorithm and print the operation counts (or --trace)
+    Sort(sort::SortArgs),
+}
 
 /// Runs the command line with the process arguments and returns the exit code.
-pub fn main() -> std::process::ExitCode {
-    let _cli = Cli::parse();
-    std::process::ExitCode::SUCCESS
+pub fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_exit(&e),
+    };
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {}", one_line(&e.to_string()));
+            ExitCode::from(e.exit_code())
+        }
+    }
+}
+
+fn run(cli: Cli) -> Result<(), CliError> {
+    match cli.command {
+        Command::Gen(args) => gen::run(args),
+        Command::Stats(args) => stats::run(args),
+        Command::Sort(args) => sort::run(args),
+    }
+}
+
+/// Help and version go to stdout as clap prints them; usage errors become one `error:`
+/// line on stderr with clap's exit code (2).
+fn clap_exit(e: &clap::Error) -> ExitCode {
+    let code = u8::try_from(e.exit_code()).unwrap_or(2);
+    match e.kind() {
+        ErrorKind::DisplayHelp
+        | ErrorKind::DisplayVersion
+        | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            // Nothing sensible is left to do if the terminal itself cannot be written.
+            let _ = e.print();
+        }
+        _ => {
+            let text = e.render().to_string();
+            let message = one_line(text.trim_start().trim_start_matches("error:"));
+            eprintln!("error: {message}");
+        }
+    }
+    ExitCode::from(code)
+}
+
+/// Joins a multi-line message into one line, dropping blank lines and clap's
+/// "For more information" hint, and bracketing its usage and tip lines.
+fn one_line(text: &str) -> String {
+    text.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with("For more information"))
+        .map(|l| {
+            if l.starts_with("Usage:") || l.starts_with("tip:") {
+                format!("({l})")
+            } else {
+                l.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn the_command_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn clap_errors_collapse_to_one_line() {
+        let e = Cli::try_parse_from(["compgeo", "gen", "points", "--kind", "hexagon", "--n", "3"])
+            .unwrap_err();
+        let text = e.render().to_string();
+        assert!(text.lines().count() > 1, "clap's own message spans lines");
+        let line = one_line(&text);
+        assert!(!line.contains('\n'));
+        assert!(
+            line.contains("hexagon") && line.contains("uniform-square"),
+            "{line}"
+        );
+        assert!(!line.contains("For more information"));
+    }
 }

@@ -17,7 +17,10 @@
 //! [`CountedPredicates`] gives every predicate a counted form for use with a
 //! [`Counter`](crate::count::Counter).
 
+mod bigint;
 mod counted;
+mod expansion;
+mod extended;
 mod point;
 mod predicates;
 mod validate;

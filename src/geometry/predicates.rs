@@ -1,17 +1,60 @@
-//! Exact geometric predicates (fast path; the exact slow path for extreme magnitudes follows).
+//! Exact geometric predicates for every finite `f64` input.
+//!
+//! Each predicate runs in up to three stages:
+//!
+//! 1. **Filter.** The determinant in plain floating point with a forward error bound
+//!    (Shewchuk's, plus an absolute slack for products that underflow). If the rounded value
+//!    clears the bound its sign is exact. Overflow gives `inf` or NaN, which never clears the
+//!    bound. Almost every call on ordinary input ends here, at the cost of the bare formula.
+//! 2. **Exact stage in the safe window.** If every nonzero operand has magnitude in the
+//!    predicate's safe exponent window (see [`DEGREE_2`], [`DEGREE_4`]), floating-point
+//!    expansion arithmetic is exact: `robust`'s adaptive stages for `orient2d` and
+//!    `incircle`, this crate's expansions for `cmp_dist` and `cross_sign`.
+//! 3. **Outside the window**, [`super::extended`] rescales the operands by an exact power of
+//!    two when their exponents allow, and otherwise evaluates the polynomial in big integers
+//!    on the exact binary values of the doubles.
+//!
+//! Stages 2 and 3 live in `#[cold]` functions so the filter inlines into callers' loops.
 
+use super::expansion::{two_diff, Expansion};
+use super::extended::{self, Predicate};
 use super::Point2;
 use std::cmp::Ordering;
 
-/// Where a point lies relative to a directed line, or the turn of a point triple.
+/// The turn made by three points, or the side of a directed line a point is on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Orientation {
-    /// A left turn: positive signed area.
+    /// A left turn (positive signed area): the third point is left of the directed line.
     CounterClockwise,
-    /// A right turn: negative signed area.
+    /// A right turn (negative signed area): the third point is right of the directed line.
     Clockwise,
-    /// Zero signed area.
+    /// Zero signed area: the points are on one line (or coincide).
     Collinear,
+}
+
+impl Orientation {
+    /// The orientation of the same points in reverse order.
+    ///
+    /// ```
+    /// use compgeo::geometry::Orientation;
+    /// assert_eq!(Orientation::Clockwise.reversed(), Orientation::CounterClockwise);
+    /// assert_eq!(Orientation::Collinear.reversed(), Orientation::Collinear);
+    /// ```
+    pub fn reversed(self) -> Orientation {
+        match self {
+            Orientation::CounterClockwise => Orientation::Clockwise,
+            Orientation::Clockwise => Orientation::CounterClockwise,
+            Orientation::Collinear => Orientation::Collinear,
+        }
+    }
+
+    pub(crate) fn from_sign(sign: i32) -> Orientation {
+        match sign.cmp(&0) {
+            Ordering::Greater => Orientation::CounterClockwise,
+            Ordering::Less => Orientation::Clockwise,
+            Ordering::Equal => Orientation::Collinear,
+        }
+    }
 }
 
 /// Where a point lies relative to a circle.
@@ -25,55 +68,267 @@ pub enum InCircle {
     Outside,
 }
 
-fn orientation_of(det: f64) -> Orientation {
-    if det > 0.0 {
+impl InCircle {
+    fn from_sign(sign: i32) -> InCircle {
+        match sign.cmp(&0) {
+            Ordering::Greater => InCircle::Inside,
+            Ordering::Less => InCircle::Outside,
+            Ordering::Equal => InCircle::On,
+        }
+    }
+}
+
+/// A safe exponent window: every nonzero operand has magnitude in `[2^min, 2^(max+1))`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Window {
+    pub(crate) min_exp: i32,
+    pub(crate) max_exp: i32,
+    low: f64,
+    high: f64,
+}
+
+impl Window {
+    const fn new(min_exp: i32, max_exp: i32) -> Window {
+        Window {
+            min_exp,
+            max_exp,
+            low: pow2(min_exp),
+            high: pow2(max_exp + 1),
+        }
+    }
+
+    fn contains_all(&self, coords: &[f64]) -> bool {
+        // A fold with `&` keeps the check branch-free; it is a few comparisons per call.
+        coords.iter().fold(true, |ok, &v| {
+            let m = v.abs();
+            ok & ((m >= self.low) & (m < self.high) | (m == 0.0))
+        })
+    }
+}
+
+/// `2^e` for `-1022 <= e <= 1023`.
+pub(crate) const fn pow2(e: i32) -> f64 {
+    assert!(-1022 <= e && e <= 1023, "pow2 takes a normal exponent");
+    f64::from_bits(((e + 1023) as u64) << 52)
+}
+
+/// Window of the degree-2 predicates (`orient2d`, `cmp_dist`, `cross_sign`): products of two
+/// differences stay below 2^804, and their rounding errors, multiples of 2^-704, stay normal.
+pub(crate) const DEGREE_2: Window = Window::new(-300, 400);
+
+/// Window of `incircle` (degree 4): the lifted terms stay below 2^812 and the smallest
+/// rounding errors of the exact stage, multiples of 2^-776, stay normal.
+pub(crate) const DEGREE_4: Window = Window::new(-142, 200);
+
+/// Shewchuk's bound for the rounded value of `p*q - r*s` with `p, q, r, s` rounded
+/// differences: `(3 + 16 eps) eps` with `eps = 2^-53`.
+const CROSS_ERRBOUND: f64 = (3.0 + 16.0 * (f64::EPSILON / 2.0)) * (f64::EPSILON / 2.0);
+
+/// Absolute slack for rounding errors of operations that underflow: each is at most 2^-1075,
+/// and no filter adds more than a few of them. 2^-1000 is far more than needed, but it is a
+/// normal double: arithmetic on subnormals is slow on common hardware, and ordinary inputs
+/// never come near it.
+const UNDERFLOW_SLACK: f64 = pow2(-1000);
+
+/// `incircle`'s filter bound `(10 + 96 eps) eps` (Shewchuk's `iccerrboundA`).
+const INCIRCLE_ERRBOUND: f64 = (10.0 + 96.0 * (f64::EPSILON / 2.0)) * (f64::EPSILON / 2.0);
+
+/// Bound for the rounded `(p^2 + q^2) - (r^2 + s^2)` with rounded differences: each sum of
+/// squares carries at most about `4 eps` relative error, the final subtraction one more `eps`;
+/// `6 eps` leaves room for the rounding of the bound itself.
+const DIST_ERRBOUND: f64 = 6.0 * (f64::EPSILON / 2.0);
+
+fn sign_of(x: f64) -> i32 {
+    (x > 0.0) as i32 - (x < 0.0) as i32
+}
+
+/// The orientation of the triple `(a, b, c)`: the sign of the signed area
+/// `(b - a) x (c - a)`, exact for every finite input.
+///
+/// [`Orientation::CounterClockwise`] means `c` is strictly left of the directed line from `a`
+/// to `b` (y up), [`Orientation::Clockwise`] strictly right, [`Orientation::Collinear`] on it.
+///
+/// # Complexity
+/// O(1): a floating-point filter; near-degenerate input takes an exact adaptive stage, and
+/// operands outside the safe window a rescaled or big-integer path.
+///
+/// ```
+/// use compgeo::geometry::{orient2d, Orientation, Point2};
+///
+/// let a = Point2::new(0.0, 0.0);
+/// let b = Point2::new(1.0, 1.0);
+/// assert_eq!(orient2d(a, b, Point2::new(0.0, 1.0)), Orientation::CounterClockwise);
+/// assert_eq!(orient2d(a, b, Point2::new(1.0, 0.0)), Orientation::Clockwise);
+/// // Exact for every finite input, however large or small:
+/// assert_eq!(orient2d(a, b, Point2::new(1e300, 1e300)), Orientation::Collinear);
+/// assert_eq!(orient2d(a, b, Point2::new(5e-324, 0.0)), Orientation::Clockwise);
+/// ```
+#[inline]
+pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
+    let left = (a.x - c.x) * (b.y - c.y);
+    let right = (a.y - c.y) * (b.x - c.x);
+    let det = left - right;
+    let bound = CROSS_ERRBOUND * (left.abs() + right.abs()) + UNDERFLOW_SLACK;
+    if det > bound {
         Orientation::CounterClockwise
-    } else if det < 0.0 {
+    } else if -det > bound {
         Orientation::Clockwise
     } else {
-        Orientation::Collinear
+        Orientation::from_sign(exact_sign(
+            Predicate::Orient2d,
+            &[a.x, a.y, b.x, b.y, c.x, c.y],
+        ))
     }
 }
 
-fn coord(p: Point2) -> robust::Coord<f64> {
-    robust::Coord { x: p.x, y: p.y }
-}
-
-/// Orientation of the triple `(a, b, c)`.
-pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
-    orientation_of(robust::orient2d(coord(a), coord(b), coord(c)))
-}
-
-/// Position of `d` relative to the circle through the counter-clockwise triangle `a, b, c`.
+/// Where `d` lies relative to the circle through `a`, `b`, `c`, exact for every finite input.
+///
+/// The answer is for a counter-clockwise triangle `a, b, c`; for a clockwise one
+/// [`InCircle::Inside`] and [`InCircle::Outside`] swap (the predicate is the sign of the
+/// lifted determinant). If `a, b, c` are collinear the "circle" is their line, and the
+/// answer tells the side of the line `d` is on ([`InCircle::On`] if `d` is on it too).
+///
+/// # Complexity
+/// O(1), as for [`orient2d`].
+///
+/// ```
+/// use compgeo::geometry::{incircle, InCircle, Point2};
+///
+/// let (a, b, c) = (Point2::new(0.0, 0.0), Point2::new(2.0, 0.0), Point2::new(0.0, 2.0));
+/// assert_eq!(incircle(a, b, c, Point2::new(1.0, 1.0)), InCircle::Inside);
+/// assert_eq!(incircle(a, b, c, Point2::new(2.0, 2.0)), InCircle::On);
+/// assert_eq!(incircle(a, b, c, Point2::new(3.0, 3.0)), InCircle::Outside);
+/// ```
+#[inline]
 pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> InCircle {
-    let det = robust::incircle(coord(a), coord(b), coord(c), coord(d));
-    if det > 0.0 {
-        InCircle::Inside
-    } else if det < 0.0 {
-        InCircle::Outside
+    let (adx, ady, bdx, bdy) = (a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y);
+    let (cdx, cdy) = (c.x - d.x, c.y - d.y);
+    let (bc, cb) = (bdx * cdy, cdx * bdy);
+    let (ca, ac) = (cdx * ady, adx * cdy);
+    let (ab, ba) = (adx * bdy, bdx * ady);
+    let alift = adx * adx + ady * ady;
+    let blift = bdx * bdx + bdy * bdy;
+    let clift = cdx * cdx + cdy * cdy;
+    let det = alift * (bc - cb) + blift * (ca - ac) + clift * (ab - ba);
+    let (pa, pb, pc) = (
+        bc.abs() + cb.abs(),
+        ca.abs() + ac.abs(),
+        ab.abs() + ba.abs(),
+    );
+    let permanent = pa * alift + pb * blift + pc * clift;
+    // An underflowed degree-2 term is later multiplied by a lift or a minor, and every minor
+    // is at most the sum of two lifts (|xy| <= (x^2 + y^2) / 2), so the slack scales with the
+    // lifts; the 1 covers underflow in the final products and sums.
+    let slack = UNDERFLOW_SLACK * (alift + blift + clift + 1.0);
+    let bound = INCIRCLE_ERRBOUND * permanent + slack;
+    if det > bound {
+        return InCircle::Inside;
+    }
+    if -det > bound {
+        return InCircle::Outside;
+    }
+    InCircle::from_sign(exact_sign(
+        Predicate::Incircle,
+        &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y],
+    ))
+}
+
+/// Compares the squared distances `|ab|^2` and `|cd|^2`, exact for every finite input.
+///
+/// `Ordering::Less` means `a` and `b` are strictly closer to each other than `c` and `d`.
+/// No distance is ever rounded, so ties are detected exactly.
+///
+/// # Complexity
+/// O(1): a floating-point filter, then an exact expansion of at most 32 terms.
+///
+/// ```
+/// use compgeo::geometry::{cmp_dist, Point2};
+/// use std::cmp::Ordering;
+///
+/// let o = Point2::new(0.0, 0.0);
+/// // 3-4-5: |(0,0)-(3,4)| = |(0,0)-(5,0)| exactly.
+/// assert_eq!(cmp_dist(o, Point2::new(3.0, 4.0), o, Point2::new(5.0, 0.0)), Ordering::Equal);
+/// assert_eq!(cmp_dist(o, Point2::new(3.0, 4.0), o, Point2::new(0.0, 6.0)), Ordering::Less);
+/// ```
+#[inline]
+pub fn cmp_dist(a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
+    let (abx, aby, cdx, cdy) = (b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
+    let ab = abx * abx + aby * aby;
+    let cd = cdx * cdx + cdy * cdy;
+    let diff = ab - cd;
+    let bound = DIST_ERRBOUND * (ab + cd) + UNDERFLOW_SLACK;
+    if diff > bound {
+        Ordering::Greater
+    } else if -diff > bound {
+        Ordering::Less
     } else {
-        InCircle::On
+        exact_sign(
+            Predicate::CmpDist,
+            &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y],
+        )
+        .cmp(&0)
     }
 }
 
-/// Compares `|ab|^2` with `|cd|^2`.
-pub fn cmp_dist(a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
-    let ab = (b.x - a.x).powi(2) + (b.y - a.y).powi(2);
-    let cd = (d.x - c.x).powi(2) + (d.y - c.y).powi(2);
-    ab.total_cmp(&cd)
-}
-
-/// Sign of the cross product `(b - a) x (d - c)`.
+/// The sign of the cross product `(b - a) x (d - c)` of two edge vectors, exact for every
+/// finite input.
+///
+/// [`Orientation::CounterClockwise`] means the direction `d - c` is obtained from `b - a` by a
+/// counter-clockwise turn of less than half a revolution; [`Orientation::Collinear`] means the
+/// edges are parallel (or one is a single point). Rotating calipers compare edge directions
+/// with it, without forming the rounded point `a + (d - c)`.
+///
+/// # Complexity
+/// O(1): a floating-point filter, then an exact expansion of at most 16 terms.
+///
+/// ```
+/// use compgeo::geometry::{cross_sign, Orientation, Point2};
+///
+/// let p = |x, y| Point2::new(x, y);
+/// assert_eq!(cross_sign(p(0.0, 0.0), p(1.0, 0.0), p(5.0, 5.0), p(5.0, 6.0)), Orientation::CounterClockwise);
+/// assert_eq!(cross_sign(p(0.0, 0.0), p(2.0, 2.0), p(7.0, 1.0), p(8.0, 2.0)), Orientation::Collinear);
+/// ```
+#[inline]
 pub fn cross_sign(a: Point2, b: Point2, c: Point2, d: Point2) -> Orientation {
-    orientation_of((b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x))
+    let left = (b.x - a.x) * (d.y - c.y);
+    let right = (b.y - a.y) * (d.x - c.x);
+    let det = left - right;
+    let bound = CROSS_ERRBOUND * (left.abs() + right.abs()) + UNDERFLOW_SLACK;
+    if det > bound {
+        Orientation::CounterClockwise
+    } else if -det > bound {
+        Orientation::Clockwise
+    } else {
+        Orientation::from_sign(exact_sign(
+            Predicate::CrossSign,
+            &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y],
+        ))
+    }
 }
 
-/// Lexicographic order: by x, then by y.
+/// Lexicographic order of points: by x, then by y. `-0.0` and `0.0` compare equal.
+///
+/// The comparison is exact (it compares coordinates, it computes nothing). For NaN
+/// coordinates, which [`validate`](super::validate) rejects, the order is unspecified.
+///
+/// # Complexity
+/// O(1).
+///
+/// ```
+/// use compgeo::geometry::{cmp_lex, Point2};
+/// use std::cmp::Ordering;
+///
+/// assert_eq!(cmp_lex(Point2::new(0.0, 5.0), Point2::new(1.0, 0.0)), Ordering::Less);
+/// assert_eq!(cmp_lex(Point2::new(1.0, 0.0), Point2::new(1.0, -1.0)), Ordering::Greater);
+/// assert_eq!(cmp_lex(Point2::new(-0.0, 0.0), Point2::new(0.0, -0.0)), Ordering::Equal);
+/// ```
+#[inline]
 pub fn cmp_lex(a: Point2, b: Point2) -> Ordering {
-    cmp_f64(a.x, b.x).then_with(|| cmp_f64(a.y, b.y))
+    cmp_coordinate(a.x, b.x).then_with(|| cmp_coordinate(a.y, b.y))
 }
 
-fn cmp_f64(a: f64, b: f64) -> Ordering {
+#[inline]
+fn cmp_coordinate(a: f64, b: f64) -> Ordering {
     if a < b {
         Ordering::Less
     } else if a > b {
@@ -81,4 +336,56 @@ fn cmp_f64(a: f64, b: f64) -> Ordering {
     } else {
         Ordering::Equal
     }
+}
+
+/// Stages 2 and 3: the exact sign when the filter could not decide.
+#[cold]
+#[inline(never)]
+fn exact_sign(predicate: Predicate, coords: &[f64]) -> i32 {
+    if predicate.window().contains_all(coords) {
+        sign_in_window(predicate, coords)
+    } else {
+        extended::sign(predicate, coords)
+    }
+}
+
+/// The exact sign for operands inside the predicate's window (also used after rescaling).
+pub(crate) fn sign_in_window(predicate: Predicate, coords: &[f64]) -> i32 {
+    let p = |i: usize| robust::Coord {
+        x: coords[2 * i],
+        y: coords[2 * i + 1],
+    };
+    match predicate {
+        Predicate::Orient2d => sign_of(robust::orient2d(p(0), p(1), p(2))),
+        Predicate::Incircle => sign_of(robust::incircle(p(0), p(1), p(2), p(3))),
+        Predicate::CmpDist => cmp_dist_in_window(coords),
+        Predicate::CrossSign => cross_sign_in_window(coords),
+    }
+}
+
+fn cmp_dist_in_window(coords: &[f64]) -> i32 {
+    let &[ax, ay, bx, by, cx, cy, dx, dy] = coords else {
+        unreachable!("cmp_dist takes four points")
+    };
+    let neg = |(hi, lo): (f64, f64)| (-hi, -lo);
+    let (abx, aby) = (two_diff(bx, ax), two_diff(by, ay));
+    let (cdx, cdy) = (two_diff(dx, cx), two_diff(dy, cy));
+    let mut sum = Expansion::new();
+    sum.add_product2(abx, abx);
+    sum.add_product2(aby, aby);
+    sum.add_product2(cdx, neg(cdx));
+    sum.add_product2(cdy, neg(cdy));
+    sum.signum()
+}
+
+fn cross_sign_in_window(coords: &[f64]) -> i32 {
+    let &[ax, ay, bx, by, cx, cy, dx, dy] = coords else {
+        unreachable!("cross_sign takes four points")
+    };
+    let (abx, aby) = (two_diff(bx, ax), two_diff(by, ay));
+    let (cdx, cdy) = (two_diff(dx, cx), two_diff(dy, cy));
+    let mut sum = Expansion::new();
+    sum.add_product2(abx, cdy);
+    sum.add_product2((-aby.0, -aby.1), cdx);
+    sum.signum()
 }

@@ -1,0 +1,195 @@
+//! Readers for the command line's inputs, shared by every command.
+//!
+//! **Points** come from a path or `-` (stdin), as JSON or CSV:
+//!
+//! - JSON: an array of two-element arrays, `[[x, y], ...]`. Numbers follow the JSON
+//!   grammar and are converted with correct rounding; a literal too large for `f64` (such
+//!   as `1e999`) becomes infinite and is then rejected by validation like any other
+//!   non-finite coordinate, naming the point. JSON has no NaN or infinity literals, but
+//!   other tools write them (`NaN`, `Infinity`, `-Infinity`, in any letter case, or
+//!   `inf`): they are recognised so that the error names the point ("point 2 has a
+//!   non-finite coordinate (NaN)") instead of a bare syntax error.
+//! - CSV: one point per line, `x,y`, with optional spaces around either value. Blank lines
+//!   are skipped. The first non-blank line may be the header `x,y` (any letter case); no
+//!   other header is recognised, so a typo in the first data line is an error rather than
+//!   a silently dropped point. Values use Rust's float syntax (`1e-5`, `.5`, `inf`, `nan`):
+//!   `nan` and `inf` parse and are then reported as non-finite coordinates.
+//!
+//! The format is `--format json|csv` if given, else the file extension (`.json`, `.csv`,
+//! any case); stdin defaults to JSON. A leading UTF-8 byte-order mark is ignored.
+//!
+//! **Graphs** are JSON objects `{"vertices": n, "edges": [[u, v], ...]}`, or with a weight
+//! on every edge, `[[u, v, w], ...]`, read into a [`gen::EdgeList`](crate::gen::EdgeList).
+//! Vertex ids must be integers in `0..n`; weights are finite numbers.
+
+mod csv_points;
+mod graph_json;
+mod json_points;
+
+pub use csv_points::parse_csv_points;
+pub use graph_json::parse_json_graph;
+pub use json_points::parse_json_points;
+
+use super::CliError;
+use crate::gen::EdgeList;
+use crate::geometry::Point2;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+/// A point-set argument: the input path and its format. Flatten it into a command's
+/// arguments with `#[command(flatten)]`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct PointInput {
+    /// Point file: JSON [[x, y], ...] or CSV lines x,y; `-` reads stdin.
+    #[arg(value_name = "IN")]
+    pub input: PathBuf,
+    /// Input format [default: from the file extension; JSON for stdin].
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub format: Option<Format>,
+}
+
+/// A graph argument: the path of a JSON graph, or `-` for stdin.
+#[derive(Debug, Clone, clap::Args)]
+pub struct GraphInput {
+    /// Graph file: JSON {"vertices": n, "edges": [[u, v], ...]} or [[u, v, w], ...]; `-`
+    /// reads stdin.
+    #[arg(value_name = "G")]
+    pub input: PathBuf,
+}
+
+/// The text formats a point set can be read from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// `[[x, y], ...]`.
+    Json,
+    /// Lines `x,y`.
+    Csv,
+}
+
+impl PointInput {
+    /// Reads and validates the point set.
+    ///
+    /// # Errors
+    /// [`CliError::Usage`] if the format cannot be told from the extension,
+    /// [`CliError::Read`] if the input cannot be read, and the errors of
+    /// [`parse_json_points`] and [`parse_csv_points`].
+    pub fn read(&self) -> Result<Vec<Point2>, CliError> {
+        let format = match self.format {
+            Some(f) => f,
+            None => format_of(&self.input)?,
+        };
+        let text = read_text(&self.input)?;
+        match format {
+            Format::Json => parse_json_points(&text),
+            Format::Csv => parse_csv_points(&text),
+        }
+    }
+}
+
+impl GraphInput {
+    /// Reads and validates the graph.
+    ///
+    /// # Errors
+    /// [`CliError::Read`] if the input cannot be read, and the errors of
+    /// [`parse_json_graph`].
+    pub fn read(&self) -> Result<EdgeList, CliError> {
+        parse_json_graph(&read_text(&self.input)?)
+    }
+}
+
+/// Reads all of `path` (or stdin for `-`) as UTF-8 text.
+///
+/// # Errors
+/// [`CliError::Read`] naming the path (or `stdin`) and the I/O error.
+pub fn read_text(path: &Path) -> Result<String, CliError> {
+    let mut text = String::new();
+    let result = if is_stdin(path) {
+        std::io::stdin().read_to_string(&mut text).map(|_| ())
+    } else {
+        std::fs::read_to_string(path).map(|t| text = t)
+    };
+    result.map_err(|source| CliError::Read {
+        path: if is_stdin(path) {
+            "stdin".to_string()
+        } else {
+            format!("'{}'", path.display())
+        },
+        source,
+    })?;
+    Ok(text)
+}
+
+/// The format implied by `path`'s extension; stdin is JSON.
+fn format_of(path: &Path) -> Result<Format, CliError> {
+    if is_stdin(path) {
+        return Ok(Format::Json);
+    }
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("json") => Ok(Format::Json),
+        Some("csv") => Ok(Format::Csv),
+        _ => Err(CliError::Usage(format!(
+            "cannot tell the format of '{}' from its extension; pass --format json or --format csv",
+            path.display()
+        ))),
+    }
+}
+
+fn is_stdin(path: &Path) -> bool {
+    path.as_os_str() == "-"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn formats_follow_extensions() {
+        assert_eq!(format_of(Path::new("a.json")).unwrap(), Format::Json);
+        assert_eq!(format_of(Path::new("dir/a.CSV")).unwrap(), Format::Csv);
+        assert_eq!(format_of(Path::new("-")).unwrap(), Format::Json);
+        for p in ["a.txt", "noext", "a.json.gz"] {
+            assert!(
+                matches!(format_of(Path::new(p)), Err(CliError::Usage(_))),
+                "{p}"
+            );
+        }
+    }
+
+    #[test]
+    fn inputs_read_files_by_extension() {
+        let dir = std::env::temp_dir().join(format!("compgeo-input-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let csv = dir.join("p.csv");
+        std::fs::write(&csv, "1,2\n3,4\n").unwrap();
+        let input = PointInput {
+            input: csv.clone(),
+            format: None,
+        };
+        assert_eq!(
+            input.read().unwrap(),
+            vec![Point2::new(1.0, 2.0), Point2::new(3.0, 4.0)]
+        );
+        // Forcing JSON on CSV text fails as JSON would.
+        let forced = PointInput {
+            input: csv,
+            format: Some(Format::Json),
+        };
+        assert!(matches!(forced.read(), Err(CliError::Json { .. })));
+        let g = dir.join("g.json");
+        std::fs::write(&g, r#"{"vertices": 2, "edges": [[0, 1]]}"#).unwrap();
+        let graph = GraphInput { input: g }.read().unwrap();
+        assert_eq!((graph.vertices, graph.edges), (2, vec![[0, 1]]));
+        let missing = GraphInput {
+            input: dir.join("missing.json"),
+        };
+        match missing.read() {
+            Err(CliError::Read { path, .. }) => assert!(path.contains("missing.json")),
+            other => panic!("{other:?}"),
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
