@@ -56,7 +56,8 @@
 //! ## Conventions
 //!
 //! The plane is oriented with y up: a counter-clockwise turn is positive. Every finite `f64`
-//! is valid input; NaN and infinities are rejected with [`Error::NonFinite`].
+//! is valid input; NaN and infinities are rejected with [`Error::NonFinite`]. Sorting is the
+//! exception: it orders every `f64`, NaN included, by [`f64::total_cmp`].
 
 pub mod complexity;
 pub mod count;
