@@ -167,18 +167,12 @@ fn sign_of(x: f64) -> i32 {
 pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
     let left = (a.x - c.x) * (b.y - c.y);
     let right = (a.y - c.y) * (b.x - c.x);
-    let det = left - right;
-    let bound = CROSS_ERRBOUND * (left.abs() + right.abs()) + UNDERFLOW_SLACK;
-    if det > bound {
-        Orientation::CounterClockwise
-    } else if -det > bound {
-        Orientation::Clockwise
-    } else {
+    cross_filter(left, right).unwrap_or_else(|| {
         Orientation::from_sign(exact_sign(
             Predicate::Orient2d,
             &[a.x, a.y, b.x, b.y, c.x, c.y],
         ))
-    }
+    })
 }
 
 /// Where `d` lies relative to the circle through `a`, `b`, `c`, exact for every finite input.
@@ -292,17 +286,24 @@ pub fn cmp_dist(a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
 pub fn cross_sign(a: Point2, b: Point2, c: Point2, d: Point2) -> Orientation {
     let left = (b.x - a.x) * (d.y - c.y);
     let right = (b.y - a.y) * (d.x - c.x);
+    cross_filter(left, right).unwrap_or_else(|| {
+        let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
+        Orientation::from_sign(exact_sign(Predicate::CrossSign, &coords))
+    })
+}
+
+/// The filter of the degree-2 cross products: the sign of the rounded `left - right` when it
+/// clears the error bound, `None` when only an exact stage can tell.
+#[inline(always)]
+fn cross_filter(left: f64, right: f64) -> Option<Orientation> {
     let det = left - right;
     let bound = CROSS_ERRBOUND * (left.abs() + right.abs()) + UNDERFLOW_SLACK;
     if det > bound {
-        Orientation::CounterClockwise
+        Some(Orientation::CounterClockwise)
     } else if -det > bound {
-        Orientation::Clockwise
+        Some(Orientation::Clockwise)
     } else {
-        Orientation::from_sign(exact_sign(
-            Predicate::CrossSign,
-            &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y],
-        ))
+        None
     }
 }
 
