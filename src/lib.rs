@@ -18,7 +18,7 @@
 //!
 //! ## Algorithms and their bounds
 //!
-//! n is the input size. Bounds are worst case unless marked otherwise; the counted operation
+//! n is the input size (vertices for graphs, m their edges). Bounds are worst case unless marked otherwise; the counted operation
 //! is the one each algorithm's `# Counts` section names.
 //!
 //! | algorithm | bound |
@@ -33,6 +33,13 @@
 //! | [`sort::heap_sort`] | O(n log n) time, at most 2n log₂ n comparisons |
 //! | [`sort::quick_sort`] | O(n log n) time (introsort), at most 6n log₂ n + n comparisons |
 //! | [`sort::radix_sort_f64`] | Θ(n) time, 8 passes, no comparisons |
+//! | [`graph::bfs`], [`graph::dfs`] | O(n + m) time, exactly 2m edge visits on a connected graph |
+//! | [`graph::course_greedy_colouring`] | O(n² + m) time, exactly n(n−1)/2 adjacency tests |
+//! | [`graph::greedy_colouring`] (any order) | O(n + m) time |
+//! | [`graph::dsatur`] | O((n + m) log n) time |
+//! | [`graph::prim`] | O(m log n) time (simple graphs), binary heap |
+//! | [`graph::kruskal`] | O(m log m) time, union–find |
+//! | [`graph::boruvka`] | O(m log n) time, at most ⌈log₂ n⌉ rounds |
 //!
 //! ## A first example
 //!

@@ -143,9 +143,11 @@ pub struct Entry {
 pub fn catalog() -> Vec<Entry> {
     let mut all = Vec::new();
     all.extend(sort::entries());
+    all.extend(graph::entries());
     all
 }
 
+mod graph;
 mod sort;
 
 /// The result of one counted run.
