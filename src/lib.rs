@@ -18,8 +18,9 @@
 //!
 //! ## Algorithms and their bounds
 //!
-//! n is the input size (vertices for graphs, m their edges). Bounds are worst case unless marked otherwise; the counted operation
-//! is the one each algorithm's `# Counts` section names.
+//! n is the input size (for graphs the number of vertices, m the number of edges). Bounds are
+//! worst case unless marked otherwise; the counted operation is the one each algorithm's
+//! `# Counts` section names.
 //!
 //! | algorithm | bound |
 //! |---|---|
