@@ -1,0 +1,154 @@
+//! Benchmarks of `compgeo::graph` with petgraph 0.8 in the same groups: BFS and DFS against
+//! `Bfs`/`Dfs` on its `UnGraph`, DSatur against `dsatur_coloring`, and the spanning trees
+//! against `min_spanning_tree` (Kruskal) and `min_spanning_tree_prim`.
+//!
+//! Inputs are seeded G(n, m) graphs with m = 10n (and uniform weights in [0, 1) for the
+//! trees), plus grid graphs in the search group. Graphs are built once per size, outside the
+//! timing, in both libraries' own types. The default sizes keep a full run to a few minutes;
+//! set `COMPGEO_BENCH_BIG=1` to add n = 10⁶, m = 10⁷ (several GB of memory, minutes per
+//! group). Run one group with e.g. `cargo bench --bench graph -- search`.
+
+use compgeo::gen::{graph, with_random_weights, EdgeList, GraphKind};
+use compgeo::graph::{bfs, dfs, dsatur, ColouringAlgorithm, Graph, MstAlgorithm, WeightedGraph};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use petgraph::graph::{NodeIndex, UnGraph};
+use petgraph::visit::{Bfs, Dfs};
+use std::hint::black_box;
+use std::time::Duration;
+
+const SEED: u64 = 0x5EED_0004;
+const DENSITY: usize = 10;
+
+/// The vertex counts: log-spaced, and the acceptance size when asked for.
+fn sizes() -> Vec<usize> {
+    let mut s = vec![1 << 10, 1 << 13, 1 << 16, 1 << 18];
+    if std::env::var_os("COMPGEO_BENCH_BIG").is_some() {
+        s.push(1_000_000);
+    }
+    s
+}
+
+fn gnm(n: usize) -> EdgeList {
+    graph(GraphKind::Gnm, n, DENSITY * n, SEED ^ n as u64).unwrap()
+}
+
+fn petgraph_of(list: &EdgeList) -> UnGraph<(), f64> {
+    let mut g = UnGraph::with_capacity(list.vertices, list.edges.len());
+    for _ in 0..list.vertices {
+        g.add_node(());
+    }
+    let weights = list.weights.as_deref();
+    for (e, &[u, v]) in list.edges.iter().enumerate() {
+        let w = weights.map_or(1.0, |w| w[e]);
+        g.add_edge(NodeIndex::new(u), NodeIndex::new(v), w);
+    }
+    g
+}
+
+fn search(c: &mut Criterion) {
+    for (kind, label) in [
+        (GraphKind::Gnm, "search-gnm"),
+        (GraphKind::Grid, "search-grid"),
+    ] {
+        let mut group = c.benchmark_group(label);
+        group
+            .sample_size(10)
+            .warm_up_time(Duration::from_millis(500));
+        for n in sizes() {
+            let list = match kind {
+                GraphKind::Gnm => gnm(n),
+                _ => graph(kind, n, 0, SEED).unwrap(),
+            };
+            let ours = Graph::from_edge_list(&list).unwrap();
+            let theirs = petgraph_of(&list);
+            group.throughput(Throughput::Elements((n + list.edges.len()) as u64));
+            group.bench_function(BenchmarkId::new("bfs", n), |b| {
+                b.iter(|| bfs(black_box(&ours), 0).unwrap().order.len())
+            });
+            group.bench_function(BenchmarkId::new("petgraph-bfs", n), |b| {
+                b.iter(|| {
+                    let mut walk = Bfs::new(black_box(&theirs), NodeIndex::new(0));
+                    let mut seen = 0usize;
+                    while let Some(v) = walk.next(&theirs) {
+                        seen += v.index() & 1;
+                    }
+                    seen
+                })
+            });
+            group.bench_function(BenchmarkId::new("dfs", n), |b| {
+                b.iter(|| dfs(black_box(&ours), 0).unwrap().order.len())
+            });
+            group.bench_function(BenchmarkId::new("petgraph-dfs", n), |b| {
+                b.iter(|| {
+                    let mut walk = Dfs::new(black_box(&theirs), NodeIndex::new(0));
+                    let mut seen = 0usize;
+                    while let Some(v) = walk.next(&theirs) {
+                        seen += v.index() & 1;
+                    }
+                    seen
+                })
+            });
+        }
+        group.finish();
+    }
+}
+
+fn colour(c: &mut Criterion) {
+    let mut group = c.benchmark_group("colour");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500));
+    for n in sizes() {
+        let list = gnm(n);
+        let ours = Graph::from_edge_list(&list).unwrap();
+        let theirs = petgraph_of(&list);
+        group.throughput(Throughput::Elements((n + list.edges.len()) as u64));
+        group.bench_function(BenchmarkId::new("dsatur", n), |b| {
+            b.iter(|| dsatur(black_box(&ours)).count)
+        });
+        group.bench_function(BenchmarkId::new("petgraph-dsatur", n), |b| {
+            b.iter(|| petgraph::algo::dsatur_coloring(black_box(&theirs)).1)
+        });
+        for a in [
+            ColouringAlgorithm::Greedy,
+            ColouringAlgorithm::LargestFirst,
+            ColouringAlgorithm::SmallestLast,
+        ] {
+            group.bench_function(BenchmarkId::new(a.name(), n), |b| {
+                b.iter(|| compgeo::graph::colour(black_box(&ours), a).count)
+            });
+        }
+    }
+    group.finish();
+}
+
+fn mst(c: &mut Criterion) {
+    let mut group = c.benchmark_group("mst");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500));
+    for n in sizes() {
+        let list = with_random_weights(gnm(n), SEED);
+        let ours = WeightedGraph::from_edge_list(&list).unwrap();
+        let theirs = petgraph_of(&list);
+        group.throughput(Throughput::Elements(list.edges.len() as u64));
+        for a in MstAlgorithm::ALL {
+            group.bench_function(BenchmarkId::new(a.name(), n), |b| {
+                b.iter(|| {
+                    a.run_with(black_box(&ours), &mut compgeo::count::NoCount)
+                        .weight
+                })
+            });
+        }
+        group.bench_function(BenchmarkId::new("petgraph-kruskal", n), |b| {
+            b.iter(|| petgraph::algo::min_spanning_tree(black_box(&theirs)).count())
+        });
+        group.bench_function(BenchmarkId::new("petgraph-prim", n), |b| {
+            b.iter(|| petgraph::algo::min_spanning_tree_prim(black_box(&theirs)).count())
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, search, colour, mst);
+criterion_main!(benches);
