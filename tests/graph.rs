@@ -1,4 +1,6 @@
 //! Graph module: seed examples, properties against brute-force oracles, bad input.
+// The oracles index adjacency matrices by vertex pairs; index loops read best there.
+#![allow(clippy::needless_range_loop)]
 
 use compgeo::count::Counts;
 use compgeo::graph::*;

@@ -224,6 +224,7 @@ pub fn course_greedy_colouring_with<C: Counter>(
         colour[vi] = k;
         count = count.max(k + 1);
     }
+    debug_assert!(is_proper_colouring(g, &colour));
     Ok(Colouring { colour, count })
 }
 
@@ -301,10 +302,9 @@ pub fn greedy_colouring_with<C: Counter>(
         colour[v] = k as u32;
         count = count.max(k + 1);
     }
-    Ok(Colouring {
-        colour: colour.into_iter().map(|k| k as usize).collect(),
-        count,
-    })
+    let colour: Vec<usize> = colour.into_iter().map(|k| k as usize).collect();
+    debug_assert!(is_proper_colouring(g, &colour));
+    Ok(Colouring { colour, count })
 }
 
 /// The largest-first (Welsh–Powell) order: vertices by decreasing degree, ties by ascending
@@ -501,10 +501,9 @@ pub fn dsatur_with<C: Counter>(g: &Graph, c: &mut C) -> Colouring {
             }
         }
     }
-    Colouring {
-        colour: colour.into_iter().map(|k| k as usize).collect(),
-        count,
-    }
+    let colour: Vec<usize> = colour.into_iter().map(|k| k as usize).collect();
+    debug_assert!(is_proper_colouring(g, &colour));
+    Colouring { colour, count }
 }
 
 /// Whether `colour` is a proper colouring of `g`: one colour per vertex and no edge whose

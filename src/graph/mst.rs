@@ -339,10 +339,10 @@ pub fn boruvka_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest 
         }
         live.truncate(kept);
         let mut added = false;
-        for r in 0..n {
-            let e = lightest[r];
+        for slot in lightest.iter_mut() {
+            let e = *slot;
             if e != NO_EDGE {
-                lightest[r] = NO_EDGE;
+                *slot = NO_EDGE;
                 let [u, v] = edges[e as usize];
                 if sets.union(u as usize, v as usize) {
                     chosen.push(e as usize);
@@ -440,6 +440,7 @@ fn edge_keys(g: &WeightedGraph) -> Vec<u64> {
 /// Sorts the chosen edges and sums their weights in index order.
 fn finish(g: &WeightedGraph, mut chosen: Vec<usize>, components: usize) -> SpanningForest {
     chosen.sort_unstable();
+    debug_assert!(is_spanning_forest(g, &chosen));
     let weight = chosen.iter().map(|&e| g.weight(e)).sum();
     SpanningForest {
         edges: chosen,
