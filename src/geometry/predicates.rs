@@ -97,8 +97,9 @@ impl Window {
         }
     }
 
-    fn contains_all(&self, coords: &[f64]) -> bool {
-        // A fold with `&` keeps the check branch-free; it is a few comparisons per call.
+    #[inline(always)]
+    fn contains_all<const N: usize>(&self, coords: &[f64; N]) -> bool {
+        // A fixed-size fold with `&` unrolls into branch-free comparisons.
         coords.iter().fold(true, |ok, &v| {
             let m = v.abs();
             ok & ((m >= self.low) & (m < self.high) | (m == 0.0))
@@ -339,10 +340,11 @@ fn cmp_coordinate(a: f64, b: f64) -> Ordering {
     }
 }
 
-/// Stages 2 and 3: the exact sign when the filter could not decide.
+/// Stages 2 and 3: the exact sign when the filter could not decide. Each predicate gets its
+/// own cold copy, so the dispatch on `predicate` folds away and the window check unrolls.
 #[cold]
 #[inline(never)]
-fn exact_sign(predicate: Predicate, coords: &[f64]) -> i32 {
+fn exact_sign<const N: usize>(predicate: Predicate, coords: &[f64; N]) -> i32 {
     if predicate.window().contains_all(coords) {
         sign_in_window(predicate, coords)
     } else {
@@ -351,6 +353,7 @@ fn exact_sign(predicate: Predicate, coords: &[f64]) -> i32 {
 }
 
 /// The exact sign for operands inside the predicate's window (also used after rescaling).
+#[inline(always)]
 pub(crate) fn sign_in_window(predicate: Predicate, coords: &[f64]) -> i32 {
     let p = |i: usize| robust::Coord {
         x: coords[2 * i],
