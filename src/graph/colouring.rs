@@ -311,6 +311,10 @@ pub fn greedy_colouring_with<C: Counter>(
 /// The largest-first (Welsh–Powell) order: vertices by decreasing degree, ties by ascending
 /// id.
 ///
+/// Not in the seed, which colours in a given order and shows (§2.1 "Coloración de vértices",
+/// the congress example) that a better order can save colours; this is the classic heuristic
+/// order for [`greedy_colouring`].
+///
 /// Greedy in this order uses at most max_i min(d_i + 1, i) colours, d_i the i-th largest
 /// degree. When all degrees are equal (cycles, complete graphs, crown graphs) it is the
 /// natural order.
@@ -347,6 +351,9 @@ pub fn largest_first_order(g: &Graph) -> Vec<usize> {
 
 /// The smallest-last (degeneracy) order: repeatedly remove a vertex of least remaining
 /// degree; colour in the reverse order of removal.
+///
+/// Not in the seed; like [`largest_first_order`] it feeds the seed's greedy scheme (§2.1
+/// "Coloración de vértices") a better order.
 ///
 /// Each vertex then has at most d earlier neighbours, d the graph's degeneracy (the
 /// largest "least remaining degree" met), so greedy in this order uses at most d + 1
