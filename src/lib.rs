@@ -40,6 +40,7 @@ pub mod count;
 pub mod error;
 pub mod gen;
 pub mod geometry;
+pub mod hull;
 pub mod sort;
 
 #[cfg(feature = "cli")]
