@@ -35,6 +35,7 @@
 //! The plane is oriented with y up: a counter-clockwise turn is positive. Every finite `f64`
 //! is valid input; NaN and infinities are rejected with [`Error::NonFinite`].
 
+pub mod calipers;
 pub mod complexity;
 pub mod count;
 pub mod error;
