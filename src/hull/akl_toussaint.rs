@@ -1,7 +1,7 @@
 //! The Akl–Toussaint heuristic: discard the points strictly inside the polygon of a few
 //! extreme points, then run the monotone chain on the survivors.
 
-use super::{chains, finish, lex_sorted_unique, HullOptions};
+use super::{chains, finish, lex_sorted_items, HullOptions};
 use crate::count::{Counter, NoCount};
 use crate::error::Result;
 use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
@@ -66,11 +66,11 @@ pub fn akl_toussaint_with<C: Counter>(
     counter: &mut C,
 ) -> Result<Vec<usize>> {
     let survivors = akl_toussaint_filter(points, counter)?;
-    let sorted = lex_sorted_unique(points, survivors, counter);
-    let strict = chains(points, &sorted, counter);
+    let sorted = lex_sorted_items(points, survivors.into_iter(), counter);
+    let strict = chains(&sorted, counter);
     Ok(finish(
         points,
-        sorted.iter().copied(),
+        sorted.iter().map(|s| s.1),
         strict,
         options,
         counter,
@@ -103,7 +103,7 @@ pub fn akl_toussaint_with<C: Counter>(
 /// # Counts
 ///
 /// Comparisons: up to four per point for the box, and those of the polygon's construction;
-/// orientation tests: up to eight per point outside the box, and 32 to verify the box.
+/// orientation tests: up to eight per point outside the box, and at most 160 to verify the box.
 ///
 /// ```
 /// use compgeo::gen::{points, PointKind};
@@ -119,13 +119,16 @@ pub fn akl_toussaint_with<C: Counter>(
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn akl_toussaint_filter<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Vec<usize>> {
-    validate(points)?;
     if points.len() < 4 {
+        validate(points)?;
         return Ok((0..points.len()).collect());
     }
-    let extremes = extremes(points);
-    let corners = lex_sorted_unique(points, extremes.to_vec(), counter);
-    let polygon: Vec<Point2> = chains(points, &corners, counter)
+    let Some(extremes) = extremes(points) else {
+        validate(points)?;
+        return Ok((0..points.len()).collect());
+    };
+    let corners = lex_sorted_items(points, extremes.into_iter(), counter);
+    let polygon: Vec<Point2> = chains(&corners, counter)
         .into_iter()
         .map(|i| points[i])
         .collect();
@@ -150,13 +153,16 @@ pub fn akl_toussaint_filter<C: Counter>(points: &[Point2], counter: &mut C) -> R
 /// An axis-parallel box `[x_lo, x_hi, y_lo, y_hi]`.
 type Box = [f64; 4];
 
-/// The indices of the points with smallest and largest x, y, x + y and x − y.
-fn extremes(points: &[Point2]) -> [usize; 8] {
+/// The indices of the points with smallest and largest x, y, x + y and x − y, or `None` if
+/// a coordinate is not finite (the one pass over the input also validates it).
+fn extremes(points: &[Point2]) -> Option<[usize; 8]> {
     let key = |p: Point2| [p.x, p.y, p.x + p.y, p.x - p.y];
     let first = key(points[0]);
     let (mut lo, mut hi) = (first, first);
     let (mut lo_at, mut hi_at) = ([0usize; 4], [0usize; 4]);
-    for (i, &p) in points.iter().enumerate().skip(1) {
+    let mut finite = true;
+    for (i, &p) in points.iter().enumerate() {
+        finite &= p.x.is_finite() & p.y.is_finite();
         let k = key(p);
         for d in 0..4 {
             if k[d] < lo[d] {
@@ -169,9 +175,9 @@ fn extremes(points: &[Point2]) -> [usize; 8] {
             }
         }
     }
-    [
+    finite.then_some([
         lo_at[0], lo_at[1], lo_at[2], lo_at[3], hi_at[0], hi_at[1], hi_at[2], hi_at[3],
-    ]
+    ])
 }
 
 /// The largest box spanned by the diagonal extremes, if its corners are strictly inside
@@ -185,18 +191,34 @@ fn inner_box<C: Counter>(
     // extremes: min x+y (south-west), min x−y (north-west), max x+y (north-east),
     // max x−y (south-east).
     let [sw, nw, ne, se] = [2, 3, 6, 7].map(|k| points[extremes[k]]);
-    let b = [
+    let widest = [
         sw.x.max(nw.x),
         ne.x.min(se.x),
         sw.y.max(se.y),
         nw.y.min(ne.y),
     ];
-    let ok = b[0] < b[1]
-        && b[2] < b[3]
-        && [(b[0], b[2]), (b[1], b[2]), (b[1], b[3]), (b[0], b[3])]
-            .into_iter()
-            .all(|c| strictly_inside(polygon, c.into(), counter));
-    ok.then_some(b)
+    let (w, h) = (widest[1] - widest[0], widest[3] - widest[2]);
+    if !(w > 0.0 && h > 0.0 && w.is_finite() && h.is_finite()) {
+        return None;
+    }
+    // The widest box may poke out of the polygon by a hair; shrink it until it does not.
+    [0.0, 1.0 / 256.0, 1.0 / 32.0, 1.0 / 8.0, 1.0 / 4.0]
+        .into_iter()
+        .map(|t| {
+            [
+                widest[0] + t * w,
+                widest[1] - t * w,
+                widest[2] + t * h,
+                widest[3] - t * h,
+            ]
+        })
+        .find(|b| {
+            b[0] < b[1]
+                && b[2] < b[3]
+                && [(b[0], b[2]), (b[1], b[2]), (b[1], b[3]), (b[0], b[3])]
+                    .into_iter()
+                    .all(|c| strictly_inside(polygon, c.into(), counter))
+        })
 }
 
 /// Whether `p` is strictly inside the box.

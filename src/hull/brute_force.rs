@@ -1,7 +1,7 @@
 //! The seed's brute-force hull: a pair of points is a hull edge when no point lies to its
 //! right. The oracle every other algorithm is tested against.
 
-use super::{lex_sorted_unique, HullOptions};
+use super::{lex_sorted_items, HullOptions};
 use crate::count::{Counter, NoCount};
 use crate::error::Result;
 use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
@@ -66,7 +66,10 @@ pub fn brute_force_hull_with<C: Counter>(
     counter: &mut C,
 ) -> Result<Vec<usize>> {
     validate(points)?;
-    let unique = lex_sorted_unique(points, (0..points.len()).collect(), counter);
+    let unique: Vec<usize> = lex_sorted_items(points, 0..points.len(), counter)
+        .into_iter()
+        .map(|s| s.1)
+        .collect();
     let m = unique.len();
     if m <= 2 {
         return Ok(unique);

@@ -220,38 +220,37 @@ fn lex_min<C: Counter>(points: &[Point2], counter: &mut C) -> usize {
     best
 }
 
-/// `indices` sorted lexicographically by their points, each distinct point kept once by its
-/// smallest index.
-fn lex_sorted_unique<C: Counter>(
+/// The points of `indices` with their indices, sorted lexicographically, each distinct point
+/// kept once by its smallest index. Sorting the points themselves, not indices into
+/// `points`, keeps the sort's memory accesses sequential.
+fn lex_sorted_items<C: Counter>(
     points: &[Point2],
-    mut indices: Vec<usize>,
+    indices: impl Iterator<Item = usize>,
     counter: &mut C,
-) -> Vec<usize> {
-    indices.sort_unstable_by(|&a, &b| {
-        counter
-            .cmp_lex(points[a], points[b])
-            .then_with(|| a.cmp(&b))
-    });
-    indices.dedup_by(|b, a| counter.cmp_lex(points[*a], points[*b]) == Ordering::Equal);
-    indices
+) -> Vec<(Point2, usize)> {
+    let mut items: Vec<(Point2, usize)> = indices.map(|i| (points[i], i)).collect();
+    items.sort_unstable_by(|a, b| counter.cmp_lex(a.0, b.0).then_with(|| a.1.cmp(&b.1)));
+    items.dedup_by(|b, a| counter.cmp_lex(a.0, b.0) == Ordering::Equal);
+    items
 }
 
 /// Andrew's chains over `sorted`, distinct points in lexicographic order: the strictly
-/// convex hull, counter-clockwise from `sorted[0]`.
-fn chains<C: Counter>(points: &[Point2], sorted: &[usize], counter: &mut C) -> Vec<usize> {
+/// convex hull, counter-clockwise from `sorted[0]`, as indices into the input.
+fn chains<C: Counter>(sorted: &[(Point2, usize)], counter: &mut C) -> Vec<usize> {
     if sorted.len() <= 2 {
-        return sorted.to_vec();
+        return sorted.iter().map(|s| s.1).collect();
     }
+    let local: Vec<Point2> = sorted.iter().map(|s| s.0).collect();
     let mut hull: Vec<usize> = Vec::with_capacity(sorted.len() + 1);
-    for &i in sorted {
-        push_left_turn(points, &mut hull, 2, i, counter);
+    for k in 0..local.len() {
+        push_left_turn(&local, &mut hull, 2, k, counter);
     }
     let lower_len = hull.len() + 1;
-    for &i in sorted.iter().rev().skip(1) {
-        push_left_turn(points, &mut hull, lower_len, i, counter);
+    for k in (0..local.len() - 1).rev() {
+        push_left_turn(&local, &mut hull, lower_len, k, counter);
     }
     hull.pop();
-    hull
+    hull.into_iter().map(|k| sorted[k].1).collect()
 }
 
 /// Pops from `stack` while it holds at least `floor` indices and its last two do not turn

@@ -1,7 +1,7 @@
 //! Andrew's monotone chain: the seed's "variante" of Graham's scan, which sorts
 //! lexicographically instead of by angle and scans the lower and upper chains.
 
-use super::{chains, finish, lex_sorted_unique, HullOptions};
+use super::{chains, finish, lex_sorted_items, HullOptions};
 use crate::count::{Counter, NoCount};
 use crate::error::Result;
 use crate::geometry::{validate, Point2};
@@ -67,11 +67,11 @@ pub fn monotone_chain_with<C: Counter>(
     counter: &mut C,
 ) -> Result<Vec<usize>> {
     validate(points)?;
-    let sorted = lex_sorted_unique(points, (0..points.len()).collect(), counter);
-    let strict = chains(points, &sorted, counter);
+    let sorted = lex_sorted_items(points, 0..points.len(), counter);
+    let strict = chains(&sorted, counter);
     Ok(finish(
         points,
-        sorted.iter().copied(),
+        sorted.iter().map(|s| s.1),
         strict,
         options,
         counter,
