@@ -236,21 +236,46 @@ fn lex_sorted_items<C: Counter>(
 
 /// Andrew's chains over `sorted`, distinct points in lexicographic order: the strictly
 /// convex hull, counter-clockwise from `sorted[0]`, as indices into the input.
+///
+/// The points strictly below the line from the first to the last point go to the lower
+/// chain, those strictly above to the upper one, the rest (on the line) to neither: each
+/// chain scans only its own points.
 fn chains<C: Counter>(sorted: &[(Point2, usize)], counter: &mut C) -> Vec<usize> {
-    if sorted.len() <= 2 {
+    let m = sorted.len();
+    if m <= 2 {
         return sorted.iter().map(|s| s.1).collect();
     }
-    let local: Vec<Point2> = sorted.iter().map(|s| s.0).collect();
-    let mut hull: Vec<usize> = Vec::with_capacity(sorted.len() + 1);
-    for k in 0..local.len() {
-        push_left_turn(&local, &mut hull, 2, k, counter);
+    let (a, b) = (sorted[0].0, sorted[m - 1].0);
+    let mut lower = vec![sorted[0]];
+    let mut upper = vec![sorted[m - 1]];
+    for &item in &sorted[1..m - 1] {
+        match counter.orient2d(a, b, item.0) {
+            Orientation::Clockwise => lower.push(item),
+            Orientation::CounterClockwise => upper.push(item),
+            Orientation::Collinear => {}
+        }
     }
-    let lower_len = hull.len() + 1;
-    for k in (0..local.len() - 1).rev() {
-        push_left_turn(&local, &mut hull, lower_len, k, counter);
-    }
+    lower.push(sorted[m - 1]);
+    upper.push(sorted[0]);
+    let upper_last = upper.len() - 1;
+    upper[1..upper_last].reverse();
+    let mut hull = scan_chain(&lower, counter);
     hull.pop();
-    hull.into_iter().map(|k| sorted[k].1).collect()
+    let mut top = scan_chain(&upper, counter);
+    top.pop();
+    hull.extend(top);
+    hull
+}
+
+/// Graham's scan over one chain whose points are all on one side of its end-to-end line:
+/// the chain's strictly convex vertices, both ends included.
+fn scan_chain<C: Counter>(chain: &[(Point2, usize)], counter: &mut C) -> Vec<usize> {
+    let local: Vec<Point2> = chain.iter().map(|s| s.0).collect();
+    let mut stack: Vec<usize> = Vec::with_capacity(chain.len());
+    for k in 0..local.len() {
+        push_left_turn(&local, &mut stack, 2, k, counter);
+    }
+    stack.into_iter().map(|k| chain[k].1).collect()
 }
 
 /// Pops from `stack` while it holds at least `floor` indices and its last two do not turn
