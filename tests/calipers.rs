@@ -187,3 +187,37 @@ fn the_length_does_not_overflow() {
     let pts = [Point2::new(-8e307, 0.0), Point2::new(8e307, 0.0)];
     assert_eq!(diameter(&pts).unwrap().unwrap().length, 1.6e308);
 }
+
+#[test]
+fn cli_diameter_by_calipers_and_by_brute_force() {
+    use assert_cmd::cargo::cargo_bin_cmd;
+    let input = "[[1,1],[0,0],[4,0],[4,3],[2,1]]";
+    for flag in [None, Some("--brute-force")] {
+        let mut cmd = cargo_bin_cmd!("compgeo");
+        cmd.args(["diameter", "-"]);
+        if let Some(f) = flag {
+            cmd.arg(f);
+        }
+        let out = cmd
+            .write_stdin(input)
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+        assert_eq!(v["pair"], serde_json::json!([1, 3]), "{flag:?}");
+        assert_eq!(v["length"], serde_json::json!(5.0));
+        assert_eq!(v["points"], serde_json::json!([[0.0, 0.0], [4.0, 3.0]]));
+    }
+    let out = cargo_bin_cmd!("compgeo")
+        .args(["diameter", "-"])
+        .write_stdin("[]")
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert!(v["pair"].is_null() && v["length"].is_null());
+}

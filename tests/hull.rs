@@ -260,3 +260,49 @@ fn algorithm_names_round_trip() {
     let err = "gift".parse::<Algorithm>().unwrap_err().to_string();
     assert!(err.contains("gift") && err.contains("quickhull"), "{err}");
 }
+
+#[test]
+fn cli_hull_prints_the_hull_of_every_algorithm_and_rejects_bad_input() {
+    use assert_cmd::cargo::cargo_bin_cmd;
+    let input = "[[0,0],[2,0],[1,1],[2,2],[0,2],[1,0],[0,0]]";
+    for algorithm in Algorithm::ALL {
+        for (flag, expected) in [
+            (None, vec![0, 1, 3, 4]),
+            (Some("--keep-collinear"), vec![0, 5, 1, 3, 4]),
+        ] {
+            let mut cmd = cargo_bin_cmd!("compgeo");
+            cmd.args(["hull", "--algorithm", algorithm.name(), "-"]);
+            if let Some(f) = flag {
+                cmd.arg(f);
+            }
+            let out = cmd
+                .write_stdin(input)
+                .assert()
+                .success()
+                .get_output()
+                .stdout
+                .clone();
+            let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+            let hull: Vec<usize> = serde_json::from_value(v["hull"].clone()).unwrap();
+            assert_eq!(hull, expected, "{algorithm} {flag:?}");
+            assert_eq!(
+                v["vertices"][1],
+                serde_json::json!([if flag.is_some() { 1.0 } else { 2.0 }, 0.0])
+            );
+            assert!(v["counts"]["orientation_tests"].as_u64().unwrap() > 0);
+        }
+    }
+    cargo_bin_cmd!("compgeo")
+        .args(["hull", "--algorithm", "gift", "-"])
+        .write_stdin(input)
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains("quickhull"));
+    cargo_bin_cmd!("compgeo")
+        .args(["hull", "-"])
+        .write_stdin("[[0, 0], [1e999, 1]]")
+        .assert()
+        .code(2)
+        .stdout("")
+        .stderr(predicates::str::starts_with("error: "));
+}

@@ -10,8 +10,10 @@
 //! Commands read their input with [`input`] (points and graphs), print with
 //! [`output::print_json`], and report problems as [`CliError`].
 
+mod diameter;
 pub mod error;
 mod gen;
+mod hull;
 pub mod input;
 pub mod output;
 mod report;
@@ -43,6 +45,10 @@ enum Command {
     Report(report::ReportArgs),
     /// Sort numbers with a chosen algorithm and print the operation counts (or --trace)
     Sort(sort::SortArgs),
+    /// Convex hull of a point set: vertex indices counter-clockwise from the lowest-leftmost
+    Hull(hull::HullArgs),
+    /// Diameter of a point set: the farthest pair, by rotating calipers or brute force
+    Diameter(diameter::DiameterArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -66,6 +72,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Stats(args) => stats::run(args),
         Command::Report(args) => report::run(args),
         Command::Sort(args) => sort::run(args),
+        Command::Hull(args) => hull::run(args),
+        Command::Diameter(args) => diameter::run(args),
     }
 }
 
