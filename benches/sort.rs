@@ -4,10 +4,13 @@
 //!
 //! Run one group with e.g. `cargo bench --bench sort -- sort-random` or `-- radix`.
 
+use compgeo::count::NoCount;
+use compgeo::gen::{sequence, sequence_f64, SequenceKind};
 use compgeo::sort::{radix_sort_f64, Algorithm};
-use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion, Throughput};
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
+use criterion::measurement::WallTime;
+use criterion::{
+    criterion_group, criterion_main, BatchSize, BenchmarkGroup, BenchmarkId, Criterion, Throughput,
+};
 use std::time::Duration;
 
 /// The quadratic sorts stop here; the others go on to the largest size.
@@ -15,34 +18,30 @@ const QUADRATIC_MAX: usize = 1 << 12;
 const SIZES: [usize; 7] = [1 << 4, 1 << 6, 1 << 8, 1 << 10, 1 << 12, 1 << 14, 1 << 16];
 const SEED: u64 = 0x5EED_0003;
 
-#[derive(Clone, Copy)]
-enum Kind {
-    Random,
-    Sorted,
-    Reversed,
-    FewDistinct,
-}
-
-impl Kind {
-    fn name(self) -> &'static str {
-        match self {
-            Kind::Random => "random",
-            Kind::Sorted => "sorted",
-            Kind::Reversed => "reversed",
-            Kind::FewDistinct => "few-distinct",
-        }
-    }
-
-    /// A deterministic input of `n` keys of this kind.
-    fn input(self, n: usize) -> Vec<u64> {
-        let mut rng = ChaCha8Rng::seed_from_u64(SEED ^ n as u64);
-        match self {
-            Kind::Random => (0..n).map(|_| rng.random()).collect(),
-            Kind::Sorted => (0..n as u64).collect(),
-            Kind::Reversed => (0..n as u64).rev().collect(),
-            Kind::FewDistinct => (0..n).map(|_| rng.random_range(0..4)).collect(),
-        }
-    }
+/// Benchmarks `sort` on inputs of `kind` and size `n`, a fresh seeded input
+/// ([`compgeo::gen::sequence`]) for every iteration, outside the timing: repeating one input
+/// lets the branch predictor learn its comparisons, which made branchy sorts look several
+/// times faster up to n = 4096. Every sort draws from the same sequence of seeds.
+fn bench<F>(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    name: &str,
+    kind: SequenceKind,
+    n: usize,
+    mut sort: F,
+) where
+    F: FnMut(&mut Vec<i64>),
+{
+    let mut seed = SEED ^ n as u64;
+    group.bench_function(BenchmarkId::new(name, n), |b| {
+        b.iter_batched_ref(
+            || {
+                seed += 1;
+                sequence(kind, n, seed)
+            },
+            &mut sort,
+            BatchSize::LargeInput,
+        )
+    });
 }
 
 fn quadratic(algorithm: Algorithm) -> bool {
@@ -56,47 +55,29 @@ fn quadratic(algorithm: Algorithm) -> bool {
 }
 
 fn sorts(c: &mut Criterion) {
-    for kind in [
-        Kind::Random,
-        Kind::Sorted,
-        Kind::Reversed,
-        Kind::FewDistinct,
-    ] {
+    for kind in SequenceKind::ALL {
         let mut group = c.benchmark_group(format!("sort-{}", kind.name()));
         group
             .sample_size(20)
             .warm_up_time(Duration::from_millis(500))
             .measurement_time(Duration::from_secs(2));
         for n in SIZES {
-            let input = kind.input(n);
             group.throughput(Throughput::Elements(n as u64));
             for algorithm in Algorithm::ALL {
                 if quadratic(algorithm) && n > QUADRATIC_MAX {
                     continue;
                 }
-                group.bench_with_input(BenchmarkId::new(algorithm.name(), n), &input, |b, v| {
-                    b.iter_batched_ref(
-                        || v.clone(),
-                        |v| algorithm.sort_with(v, u64::cmp, &mut compgeo::count::NoCount),
-                        BatchSize::LargeInput,
-                    )
+                bench(&mut group, algorithm.name(), kind, n, |v| {
+                    algorithm.sort_with(v, i64::cmp, &mut NoCount)
                 });
             }
-            group.bench_with_input(BenchmarkId::new("std-sort", n), &input, |b, v| {
-                b.iter_batched_ref(|| v.clone(), |v| v.sort(), BatchSize::LargeInput)
-            });
-            group.bench_with_input(BenchmarkId::new("std-sort-unstable", n), &input, |b, v| {
-                b.iter_batched_ref(|| v.clone(), |v| v.sort_unstable(), BatchSize::LargeInput)
+            bench(&mut group, "std-sort", kind, n, |v| v.sort());
+            bench(&mut group, "std-sort-unstable", kind, n, |v| {
+                v.sort_unstable()
             });
         }
         group.finish();
     }
-}
-
-/// Uniform in [-1, 1): both signs, so every one of the radix sort's eight bytes varies.
-fn random_f64(n: usize) -> Vec<f64> {
-    let mut rng = ChaCha8Rng::seed_from_u64(SEED ^ 0xF64);
-    (0..n).map(|_| rng.random_range(-1.0..1.0)).collect()
 }
 
 fn radix(c: &mut Criterion) {
@@ -105,23 +86,29 @@ fn radix(c: &mut Criterion) {
         .sample_size(10)
         .warm_up_time(Duration::from_secs(1))
         .measurement_time(Duration::from_secs(4));
+    type Sort = fn(&mut Vec<f64>);
+    let peers: [(&str, Sort); 2] = [
+        ("radix", |v| radix_sort_f64(v)),
+        ("std-sort-unstable-total-cmp", |v| {
+            v.sort_unstable_by(f64::total_cmp)
+        }),
+    ];
+    // compgeo::gen::sequence_f64: both signs and 128 binades, so all eight bytes vary.
     for n in [1_000, 10_000, 100_000, 1_000_000] {
-        let input = random_f64(n);
         group.throughput(Throughput::Elements(n as u64));
-        group.bench_with_input(BenchmarkId::new("radix", n), &input, |b, v| {
-            b.iter_batched_ref(|| v.clone(), |v| radix_sort_f64(v), BatchSize::LargeInput)
-        });
-        group.bench_with_input(
-            BenchmarkId::new("std-sort-unstable-total-cmp", n),
-            &input,
-            |b, v| {
+        for (name, sort) in peers {
+            let mut seed = SEED ^ 0xF64 ^ n as u64;
+            group.bench_function(BenchmarkId::new(name, n), |b| {
                 b.iter_batched_ref(
-                    || v.clone(),
-                    |v| v.sort_unstable_by(f64::total_cmp),
+                    || {
+                        seed += 1;
+                        sequence_f64(n, seed)
+                    },
+                    sort,
                     BatchSize::LargeInput,
                 )
-            },
-        );
+            });
+        }
     }
     group.finish();
 }

@@ -13,6 +13,7 @@
 //! | [`gen`] | seeded workload generators: point sets, graphs, number sequences |
 //! | [`complexity`] | stated bounds, the catalog of algorithms, measurement, fits and verdicts |
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
+//! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
 //! ## Algorithms and their bounds
 //!
@@ -21,6 +22,8 @@
 //!
 //! | algorithm | bound |
 //! |---|---|
+//! | [`geometry::orient2d`], [`geometry::cmp_dist`], [`geometry::cross_sign`] | O(1), exact for every finite input |
+//! | [`geometry::incircle`] | O(1), exact for every finite input |
 //! | [`sort::bubble_sort`] | Θ(n²) time, exactly n(n−1)/2 comparisons |
 //! | [`sort::selection_sort`] | Θ(n²) time, exactly n(n−1)/2 comparisons |
 //! | [`sort::insertion_sort`] | Θ(n²) time, at most n(n−1)/2 comparisons |
@@ -30,10 +33,31 @@
 //! | [`sort::quick_sort`] | O(n log n) time (introsort), at most 6n log₂ n + n comparisons |
 //! | [`sort::radix_sort_f64`] | Θ(n) time, 8 passes, no comparisons |
 //!
+//! ## A first example
+//!
+//! Run an algorithm with a counter, and the predicates on inputs where floating point fails:
+//!
+//! ```
+//! use compgeo::count::Counts;
+//! use compgeo::geometry::{orient2d, Orientation, Point2};
+//! use compgeo::sort::bubble_sort_with;
+//!
+//! let mut keys = [7, 3, 5, 1];
+//! let mut counts = Counts::default();
+//! bubble_sort_with(&mut keys, i32::cmp, &mut counts);
+//! assert_eq!(keys, [1, 3, 5, 7]);
+//! assert_eq!(counts.comparisons, 6); // n(n-1)/2, as the course counts it
+//!
+//! // (0,0), (1e300, 1e300) and a point one subnormal step right of the diagonal.
+//! let (a, b) = (Point2::new(0.0, 0.0), Point2::new(1e300, 1e300));
+//! assert_eq!(orient2d(a, b, Point2::new(5e-324, 0.0)), Orientation::Clockwise);
+//! ```
+//!
 //! ## Conventions
 //!
 //! The plane is oriented with y up: a counter-clockwise turn is positive. Every finite `f64`
-//! is valid input; NaN and infinities are rejected with [`Error::NonFinite`].
+//! is valid input; NaN and infinities are rejected with [`Error::NonFinite`]. Sorting is the
+//! exception: it orders every `f64`, NaN included, by [`f64::total_cmp`].
 
 pub mod calipers;
 pub mod complexity;

@@ -97,8 +97,9 @@ impl Window {
         }
     }
 
-    fn contains_all(&self, coords: &[f64]) -> bool {
-        // A fold with `&` keeps the check branch-free; it is a few comparisons per call.
+    #[inline(always)]
+    fn contains_all<const N: usize>(&self, coords: &[f64; N]) -> bool {
+        // A fixed-size fold with `&` unrolls into branch-free comparisons.
         coords.iter().fold(true, |ok, &v| {
             let m = v.abs();
             ok & ((m >= self.low) & (m < self.high) | (m == 0.0))
@@ -167,18 +168,12 @@ fn sign_of(x: f64) -> i32 {
 pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
     let left = (a.x - c.x) * (b.y - c.y);
     let right = (a.y - c.y) * (b.x - c.x);
-    let det = left - right;
-    let bound = CROSS_ERRBOUND * (left.abs() + right.abs()) + UNDERFLOW_SLACK;
-    if det > bound {
-        Orientation::CounterClockwise
-    } else if -det > bound {
-        Orientation::Clockwise
-    } else {
+    cross_filter(left, right).unwrap_or_else(|| {
         Orientation::from_sign(exact_sign(
             Predicate::Orient2d,
             &[a.x, a.y, b.x, b.y, c.x, c.y],
         ))
-    }
+    })
 }
 
 /// Where `d` lies relative to the circle through `a`, `b`, `c`, exact for every finite input.
@@ -292,17 +287,24 @@ pub fn cmp_dist(a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
 pub fn cross_sign(a: Point2, b: Point2, c: Point2, d: Point2) -> Orientation {
     let left = (b.x - a.x) * (d.y - c.y);
     let right = (b.y - a.y) * (d.x - c.x);
+    cross_filter(left, right).unwrap_or_else(|| {
+        let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
+        Orientation::from_sign(exact_sign(Predicate::CrossSign, &coords))
+    })
+}
+
+/// The filter of the degree-2 cross products: the sign of the rounded `left - right` when it
+/// clears the error bound, `None` when only an exact stage can tell.
+#[inline(always)]
+fn cross_filter(left: f64, right: f64) -> Option<Orientation> {
     let det = left - right;
     let bound = CROSS_ERRBOUND * (left.abs() + right.abs()) + UNDERFLOW_SLACK;
     if det > bound {
-        Orientation::CounterClockwise
+        Some(Orientation::CounterClockwise)
     } else if -det > bound {
-        Orientation::Clockwise
+        Some(Orientation::Clockwise)
     } else {
-        Orientation::from_sign(exact_sign(
-            Predicate::CrossSign,
-            &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y],
-        ))
+        None
     }
 }
 
@@ -338,10 +340,11 @@ fn cmp_coordinate(a: f64, b: f64) -> Ordering {
     }
 }
 
-/// Stages 2 and 3: the exact sign when the filter could not decide.
+/// Stages 2 and 3: the exact sign when the filter could not decide. Each predicate gets its
+/// own cold copy, so the dispatch on `predicate` folds away and the window check unrolls.
 #[cold]
 #[inline(never)]
-fn exact_sign(predicate: Predicate, coords: &[f64]) -> i32 {
+fn exact_sign<const N: usize>(predicate: Predicate, coords: &[f64; N]) -> i32 {
     if predicate.window().contains_all(coords) {
         sign_in_window(predicate, coords)
     } else {
@@ -350,6 +353,7 @@ fn exact_sign(predicate: Predicate, coords: &[f64]) -> i32 {
 }
 
 /// The exact sign for operands inside the predicate's window (also used after rescaling).
+#[inline(always)]
 pub(crate) fn sign_in_window(predicate: Predicate, coords: &[f64]) -> i32 {
     let p = |i: usize| robust::Coord {
         x: coords[2 * i],

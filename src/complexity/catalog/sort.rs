@@ -8,12 +8,15 @@
 //! n − 1 comparisons on reversed keys but n(n − 1)/2 moves. On sorted keys it is the other way
 //! round (n(n − 1)/2 comparisons, no moves): this insertion sort has no linear best case, so
 //! both its entries claim O(n²), each on the operation that carries the cost.
+//!
+//! The radix sort for `f64` keys makes no comparisons; its entry counts moves (at most eight
+//! passes of n writes each), O(n).
 
 use crate::complexity::{Bound, Entry, Workload};
 use crate::count::{Counter, Operation};
 use crate::error::Result;
-use crate::gen::{sequence, SequenceKind};
-use crate::sort::Algorithm;
+use crate::gen::{sequence, sequence_f64, SequenceKind};
+use crate::sort::{radix_sort_f64_with, Algorithm};
 
 /// One comparison sort on one kind of generated `i64` sequence.
 struct SortKeys {
@@ -72,6 +75,12 @@ pub(super) fn entries() -> Vec<Entry> {
         Bound::NLogN,
         Operation::Comparisons,
     )));
+    out.push(
+        Entry::new("sort/radix-f64", Bound::Linear, Operation::Moves, RadixKeys)
+            .input("random-f64")
+            .quick(256, 1 << 20)
+            .full(256, 1 << 23),
+    );
     out
 }
 
@@ -100,6 +109,23 @@ impl Workload for SortKeys {
 
     fn run<C: Counter>(&self, keys: &mut Vec<i64>, counter: &mut C) -> Result<()> {
         self.algorithm.sort_with(keys, i64::cmp, counter);
+        Ok(())
+    }
+}
+
+/// The LSD radix sort on random `f64` keys of mixed signs and magnitudes.
+struct RadixKeys;
+
+impl Workload for RadixKeys {
+    type Input = Vec<f64>;
+    type Output = ();
+
+    fn prepare(&self, n: usize, seed: u64) -> Result<Vec<f64>> {
+        Ok(sequence_f64(n, seed))
+    }
+
+    fn run<C: Counter>(&self, keys: &mut Vec<f64>, counter: &mut C) -> Result<()> {
+        radix_sort_f64_with(keys, counter);
         Ok(())
     }
 }
