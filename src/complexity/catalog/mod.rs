@@ -143,9 +143,11 @@ pub struct Entry {
 pub fn catalog() -> Vec<Entry> {
     let mut all = Vec::new();
     all.extend(sort::entries());
+    all.extend(hull::entries());
     all
 }
 
+mod hull;
 mod sort;
 
 /// The result of one counted run.
