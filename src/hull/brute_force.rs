@@ -77,7 +77,7 @@ pub fn brute_force_hull_with<C: Counter>(
     let p = |k: usize| points[unique[k]];
     // For each position in `unique`: the edge leaving it and the points inside that edge.
     let mut next: Vec<Option<(usize, Vec<usize>)>> = vec![None; m];
-    for a in 0..m {
+    for (a, slot) in next.iter_mut().enumerate() {
         for b in 0..m {
             if a == b {
                 continue;
@@ -102,7 +102,7 @@ pub fn brute_force_hull_with<C: Counter>(
                 if b < a {
                     inside.reverse();
                 }
-                next[a] = Some((b, inside));
+                *slot = Some((b, inside));
             }
         }
     }

@@ -33,7 +33,7 @@
 //!
 //! Every geometric decision is one of the exact predicates of [`crate::geometry`], so the
 //! hull is exact for every finite input, including 1e300 and subnormals in one set. NaN and
-//! infinities give [`Error::NonFinite`](crate::Error::NonFinite).
+//! infinities give [`Error::NonFinite`].
 //!
 //! [`is_strictly_convex_ccw`] and [`encloses`] check a result exactly; tests and debug
 //! builds use them.
