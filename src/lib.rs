@@ -13,6 +13,8 @@
 //! | [`gen`] | seeded workload generators: point sets, graphs, number sequences |
 //! | [`complexity`] | stated bounds, the catalog of algorithms, measurement, fits and verdicts |
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
+//! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
+//! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
 //! ## Algorithms and their bounds
@@ -32,6 +34,15 @@
 //! | [`sort::heap_sort`] | O(n log n) time, at most 2n log₂ n comparisons |
 //! | [`sort::quick_sort`] | O(n log n) time (introsort), at most 6n log₂ n + n comparisons |
 //! | [`sort::radix_sort_f64`] | Θ(n) time, 8 passes, no comparisons |
+//! | [`hull::brute_force_hull`] | Θ(n³) orientation tests |
+//! | [`hull::jarvis_march`] | Θ(nh) for h hull vertices: O(n²) on points in convex position |
+//! | [`hull::graham_scan`] | O(n log n); at most 2n − 4 orientation tests after sorting |
+//! | [`hull::monotone_chain`] | O(n log n) |
+//! | [`hull::akl_toussaint`] | O(n log n) worst case, O(n) expected on uniform input |
+//! | [`hull::quickhull`] | O(n log n) expected, O(nh) worst case |
+//! | [`calipers::antipodal_pairs`] | Θ(n) on a convex polygon of n vertices, at most 3n/2 pairs |
+//! | [`calipers::diameter`] | the hull's time plus Θ(h) |
+//! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |
 //!
 //! ## A first example
 //!
