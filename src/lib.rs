@@ -14,6 +14,8 @@
 //! | [`complexity`] | stated bounds, the catalog of algorithms, measurement, fits and verdicts |
 //! | [`graph`] | CSR graphs, BFS/DFS, greedy colouring, minimum spanning trees |
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
+//! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
+//! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
 //! ## Algorithms and their bounds
@@ -41,6 +43,15 @@
 //! | [`graph::prim`] | O(m log n) time (simple graphs), binary heap |
 //! | [`graph::kruskal`] | O(m log m) time, union–find |
 //! | [`graph::boruvka`] | O(m log n) time, at most ⌈log₂ n⌉ rounds |
+//! | [`hull::brute_force_hull`] | Θ(n³) orientation tests |
+//! | [`hull::jarvis_march`] | Θ(nh) for h hull vertices: O(n²) on points in convex position |
+//! | [`hull::graham_scan`] | O(n log n); at most 2n − 4 orientation tests after sorting |
+//! | [`hull::monotone_chain`] | O(n log n) |
+//! | [`hull::akl_toussaint`] | O(n log n) worst case, O(n) expected on uniform input |
+//! | [`hull::quickhull`] | O(n log n) expected, O(nh) worst case |
+//! | [`calipers::antipodal_pairs`] | Θ(n) on a convex polygon of n vertices, at most 3n/2 pairs |
+//! | [`calipers::diameter`] | the hull's time plus Θ(h) |
+//! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |
 //!
 //! ## A first example
 //!
@@ -68,12 +79,14 @@
 //! is valid input; NaN and infinities are rejected with [`Error::NonFinite`]. Sorting is the
 //! exception: it orders every `f64`, NaN included, by [`f64::total_cmp`].
 
+pub mod calipers;
 pub mod complexity;
 pub mod count;
 pub mod error;
 pub mod gen;
 pub mod geometry;
 pub mod graph;
+pub mod hull;
 pub mod sort;
 
 #[cfg(feature = "cli")]

@@ -10,9 +10,11 @@
 //! Commands read their input with [`input`] (points and graphs), print with
 //! [`output::print_json`], and report problems as [`CliError`].
 
+mod diameter;
 pub mod error;
 mod gen;
 mod graph;
+mod hull;
 pub mod input;
 pub mod output;
 mod report;
@@ -52,6 +54,10 @@ enum Command {
     Colour(graph::ColourArgs),
     /// Minimum spanning tree (forest) of a weighted graph with a chosen algorithm
     Mst(graph::MstArgs),
+    /// Convex hull of a point set: vertex indices counter-clockwise from the lowest-leftmost
+    Hull(hull::HullArgs),
+    /// Diameter of a point set: the farthest pair, by rotating calipers or brute force
+    Diameter(diameter::DiameterArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -79,6 +85,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Dfs(args) => graph::run_search(args, crate::graph::SearchKind::Depth),
         Command::Colour(args) => graph::run_colour(args),
         Command::Mst(args) => graph::run_mst(args),
+        Command::Hull(args) => hull::run(args),
+        Command::Diameter(args) => diameter::run(args),
     }
 }
 

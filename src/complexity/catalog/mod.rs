@@ -144,10 +144,12 @@ pub fn catalog() -> Vec<Entry> {
     let mut all = Vec::new();
     all.extend(sort::entries());
     all.extend(graph::entries());
+    all.extend(hull::entries());
     all
 }
 
 mod graph;
+mod hull;
 mod sort;
 
 /// The result of one counted run.

@@ -1,0 +1,250 @@
+//! The Akl–Toussaint heuristic: discard the points strictly inside the polygon of a few
+//! extreme points, then run the monotone chain on the survivors.
+
+use super::{chains, finish, lex_sorted_items, HullOptions};
+use crate::count::{Counter, NoCount};
+use crate::error::Result;
+use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+
+/// The convex hull of `points` by the Akl–Toussaint filter and the monotone chain. See
+/// [`akl_toussaint_with`].
+///
+/// ```
+/// use compgeo::geometry::Point2;
+/// use compgeo::hull::{akl_toussaint, HullOptions};
+///
+/// let pts = [(1.0, 1.0), (0.0, 0.0), (2.0, 0.0), (1.0, 0.5), (1.0, 0.0)].map(Point2::from);
+/// assert_eq!(akl_toussaint(&pts, HullOptions::default())?, [1, 2, 0]);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn akl_toussaint(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
+    akl_toussaint_with(points, options, &mut NoCount)
+}
+
+/// The convex hull of `points` by the Akl–Toussaint filter followed by the monotone chain,
+/// recording its operations in `counter`; the fastest hull of this module on random input.
+///
+/// Idea: see [`akl_toussaint_filter`]; the survivors, a small fraction on most inputs, are
+/// sorted and scanned as in [`monotone_chain`](super::monotone_chain), so only they are
+/// sorted.
+///
+/// Follows `003_5b666ee3e15e6353.txt`, §2.2 "Scan de Graham - Variante de Akl-Toussaint",
+/// with the diagonal extremes added to the seed's four.
+///
+/// Output convention and degenerate inputs: see the [module docs](super).
+///
+/// # Errors
+///
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or
+/// infinite coordinate.
+///
+/// # Complexity
+///
+/// With n = `points.len()` and s the number of survivors: time O(n + s log s), so
+/// O(n log n) in the worst case (points in convex position survive) and O(n) expected for
+/// uniform points in a square or disk; auxiliary space O(s).
+///
+/// # Counts
+///
+/// Those of [`akl_toussaint_filter`], plus the monotone chain's on the s survivors.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::gen::{points, PointKind};
+/// use compgeo::hull::{akl_toussaint_with, monotone_chain, HullOptions};
+///
+/// let pts = points(PointKind::UniformSquare, 2000, 1)?;
+/// let mut counts = Counts::default();
+/// let hull = akl_toussaint_with(&pts, HullOptions::default(), &mut counts)?;
+/// assert_eq!(hull, monotone_chain(&pts, HullOptions::default())?);
+/// assert!(counts.orientation_tests < 2000); // most points never reach a predicate
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn akl_toussaint_with<C: Counter>(
+    points: &[Point2],
+    options: HullOptions,
+    counter: &mut C,
+) -> Result<Vec<usize>> {
+    let survivors = akl_toussaint_filter(points, counter)?;
+    let sorted = lex_sorted_items(points, survivors.into_iter(), counter);
+    let strict = chains(&sorted, counter);
+    Ok(finish(
+        points,
+        sorted.iter().map(|s| s.1),
+        strict,
+        options,
+        counter,
+    ))
+}
+
+/// The indices, increasing, of the points of `points` that are not strictly inside the
+/// polygon of its extreme points: a superset of every hull's boundary points, to put in
+/// front of any hull algorithm.
+///
+/// Idea: the points with smallest and largest x, y, x + y and x − y are hull points (or
+/// nearly so: the sums are rounded, which only makes the choice less good, never wrong), so
+/// their convex hull, an exact polygon of up to eight input points, lies inside the hull, and a
+/// point strictly inside it is no hull vertex and on no hull edge. Most points are discarded
+/// without a predicate: an axis-parallel box whose corners are verified to be strictly inside
+/// the polygon (exactly, with [`orient2d`](crate::geometry::orient2d)) discards the points
+/// strictly inside it with four coordinate comparisons.
+///
+/// Follows `003_5b666ee3e15e6353.txt`, §2.2 "Scan de Graham - Variante de Akl-Toussaint".
+///
+/// # Errors
+///
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or
+/// infinite coordinate.
+///
+/// # Complexity
+///
+/// With n = `points.len()`: time Θ(n), auxiliary space O(s) for the s survivors.
+///
+/// # Counts
+///
+/// Comparisons: up to four per point for the box, and those of the polygon's construction;
+/// orientation tests: up to eight per point outside the box, and at most 160 to verify the box.
+///
+/// ```
+/// use compgeo::gen::{points, PointKind};
+/// use compgeo::hull::{akl_toussaint_filter, graham_scan, HullOptions};
+///
+/// let pts = points(PointKind::UniformDisk, 5000, 3)?;
+/// let kept = akl_toussaint_filter(&pts, &mut compgeo::count::NoCount)?;
+/// assert!(kept.len() < 1000);
+/// // Any algorithm on the survivors, mapped back, gives the hull of all points.
+/// let sub: Vec<_> = kept.iter().map(|&i| pts[i]).collect();
+/// let hull: Vec<usize> = graham_scan(&sub, HullOptions::default())?.iter().map(|&k| kept[k]).collect();
+/// assert_eq!(hull, graham_scan(&pts, HullOptions::default())?);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn akl_toussaint_filter<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Vec<usize>> {
+    if points.len() < 4 {
+        validate(points)?;
+        return Ok((0..points.len()).collect());
+    }
+    let Some(extremes) = extremes(points) else {
+        validate(points)?;
+        return Ok((0..points.len()).collect());
+    };
+    let corners = lex_sorted_items(points, extremes.into_iter(), counter);
+    let polygon: Vec<Point2> = chains(&corners, counter)
+        .into_iter()
+        .map(|i| points[i])
+        .collect();
+    if polygon.len() < 3 {
+        return Ok((0..points.len()).collect());
+    }
+    let inner = inner_box(points, &extremes, &polygon, counter);
+    let mut survivors = Vec::new();
+    for (i, &p) in points.iter().enumerate() {
+        if let Some(b) = &inner {
+            if in_box(p, b, counter) {
+                continue;
+            }
+        }
+        if !strictly_inside(&polygon, p, counter) {
+            survivors.push(i);
+        }
+    }
+    Ok(survivors)
+}
+
+/// An axis-parallel box `[x_lo, x_hi, y_lo, y_hi]`.
+type Box = [f64; 4];
+
+/// The indices of the points with smallest and largest x, y, x + y and x − y, or `None` if
+/// a coordinate is not finite (the one pass over the input also validates it).
+fn extremes(points: &[Point2]) -> Option<[usize; 8]> {
+    let key = |p: Point2| [p.x, p.y, p.x + p.y, p.x - p.y];
+    let first = key(points[0]);
+    let (mut lo, mut hi) = (first, first);
+    let (mut lo_at, mut hi_at) = ([0usize; 4], [0usize; 4]);
+    let mut finite = true;
+    for (i, &p) in points.iter().enumerate() {
+        finite &= p.x.is_finite() & p.y.is_finite();
+        let k = key(p);
+        for d in 0..4 {
+            if k[d] < lo[d] {
+                lo[d] = k[d];
+                lo_at[d] = i;
+            }
+            if k[d] > hi[d] {
+                hi[d] = k[d];
+                hi_at[d] = i;
+            }
+        }
+    }
+    finite.then_some([
+        lo_at[0], lo_at[1], lo_at[2], lo_at[3], hi_at[0], hi_at[1], hi_at[2], hi_at[3],
+    ])
+}
+
+/// The largest box spanned by the diagonal extremes, if its corners are strictly inside
+/// `polygon` (checked exactly).
+fn inner_box<C: Counter>(
+    points: &[Point2],
+    extremes: &[usize; 8],
+    polygon: &[Point2],
+    counter: &mut C,
+) -> Option<Box> {
+    // extremes: min x+y (south-west), min x−y (north-west), max x+y (north-east),
+    // max x−y (south-east).
+    let [sw, nw, ne, se] = [2, 3, 6, 7].map(|k| points[extremes[k]]);
+    let widest = [
+        sw.x.max(nw.x),
+        ne.x.min(se.x),
+        sw.y.max(se.y),
+        nw.y.min(ne.y),
+    ];
+    let (w, h) = (widest[1] - widest[0], widest[3] - widest[2]);
+    if !(w > 0.0 && h > 0.0 && w.is_finite() && h.is_finite()) {
+        return None;
+    }
+    // The widest box may poke out of the polygon by a hair; shrink it until it does not.
+    [0.0, 1.0 / 256.0, 1.0 / 32.0, 1.0 / 8.0, 1.0 / 4.0]
+        .into_iter()
+        .map(|t| {
+            [
+                widest[0] + t * w,
+                widest[1] - t * w,
+                widest[2] + t * h,
+                widest[3] - t * h,
+            ]
+        })
+        .find(|b| {
+            b[0] < b[1]
+                && b[2] < b[3]
+                && [(b[0], b[2]), (b[1], b[2]), (b[1], b[3]), (b[0], b[3])]
+                    .into_iter()
+                    .all(|c| strictly_inside(polygon, c.into(), counter))
+        })
+}
+
+/// Whether `p` is strictly inside the box.
+#[inline]
+fn in_box<C: Counter>(p: Point2, b: &Box, counter: &mut C) -> bool {
+    counter.comparison();
+    if p.x <= b[0] {
+        return false;
+    }
+    counter.comparison();
+    if p.x >= b[1] {
+        return false;
+    }
+    counter.comparison();
+    if p.y <= b[2] {
+        return false;
+    }
+    counter.comparison();
+    p.y < b[3]
+}
+
+/// Whether `p` is strictly left of every edge of the counter-clockwise convex `polygon`.
+#[inline]
+fn strictly_inside<C: Counter>(polygon: &[Point2], p: Point2, counter: &mut C) -> bool {
+    let h = polygon.len();
+    (0..h).all(|k| {
+        counter.orient2d(polygon[k], polygon[(k + 1) % h], p) == Orientation::CounterClockwise
+    })
+}

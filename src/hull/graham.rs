@@ -1,0 +1,170 @@
+//! Graham's scan: sort by angle about the lowest-leftmost point, then keep only left turns.
+
+use super::{finish, lex_min, push_left_turn, HullOptions};
+use crate::count::{Counter, NoCount};
+use crate::error::Result;
+use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use std::cmp::Ordering;
+
+/// The convex hull of `points` by Graham's scan. See [`graham_scan_with`].
+///
+/// ```
+/// use compgeo::geometry::Point2;
+/// use compgeo::hull::{graham_scan, HullOptions};
+///
+/// let pts = [(1.0, 1.0), (0.0, 0.0), (2.0, 0.0), (1.0, 0.5), (1.0, 0.0)].map(Point2::from);
+/// assert_eq!(graham_scan(&pts, HullOptions::default())?, [1, 2, 0]);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn graham_scan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
+    graham_scan_with(points, options, &mut NoCount)
+}
+
+/// The convex hull of `points` by Graham's scan, recording its operations in `counter`.
+///
+/// Idea: the pivot v₁ is the lexicographically smallest point (the seed's "abscisa mínima,
+/// then ordenada mínima"). Every other point lies in the half-plane right of the vertical
+/// through v₁, within an angle below π, so "`a` comes before `b`" is exactly
+/// `orient2d(v₁, a, b)` = counter-clockwise: the angular sort needs no angles. Of several
+/// points in one direction only the farthest is kept (the seed's note for collinear input;
+/// [`cmp_dist`](crate::geometry::cmp_dist) decides). The scan then pushes the points in
+/// order, first popping every point that does not turn strictly left.
+///
+/// Follows `003_5b666ee3e15e6353.txt`, §2.2 "Scan de Graham" (steps 1–4 and the "Nota").
+///
+/// Output convention and degenerate inputs: see the [module docs](super). `keep_collinear`
+/// inserts the boundary points afterwards.
+///
+/// # Errors
+///
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or
+/// infinite coordinate.
+///
+/// # Complexity
+///
+/// With n = `points.len()`: time O(n log n) (the sort), the scan O(n); auxiliary space O(n).
+///
+/// # Counts
+///
+/// Orientation tests: those of the angular sort, O(n log n), the n − 2 that merge equal
+/// directions, and at most 2m − 4 ≤ 2n − 4 in the scan (m − 1 directions), the seed's bound:
+/// every test either pops a point or ends a push. Distance evaluations: one per tie of the
+/// sort. Comparisons: 2(n − 1) to find the pivot and drop its duplicates.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::geometry::Point2;
+/// use compgeo::hull::{graham_scan_with, HullOptions};
+///
+/// let pts = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (0.2, 0.2)].map(Point2::from);
+/// let mut counts = Counts::default();
+/// assert_eq!(graham_scan_with(&pts, HullOptions::default(), &mut counts)?, [0, 1, 2]);
+/// assert!(counts.orientation_tests > 0);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn graham_scan_with<C: Counter>(
+    points: &[Point2],
+    options: HullOptions,
+    counter: &mut C,
+) -> Result<Vec<usize>> {
+    validate(points)?;
+    if points.is_empty() {
+        return Ok(Vec::new());
+    }
+    let order = angular_order(points, counter);
+    let strict = scan(points, &order, counter);
+    Ok(finish(points, 0..points.len(), strict, options, counter))
+}
+
+/// The pivot followed by the farthest point of every direction from it, in angular order.
+fn angular_order<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
+    let pivot = lex_min(points, counter);
+    let o = points[pivot];
+    let mut rest: Vec<usize> = (0..points.len())
+        .filter(|&i| counter.cmp_lex(points[i], o) != Ordering::Equal)
+        .collect();
+    rest.sort_unstable_by(|&a, &b| match counter.orient2d(o, points[a], points[b]) {
+        Orientation::CounterClockwise => Ordering::Less,
+        Orientation::Clockwise => Ordering::Greater,
+        // Farthest first, then smallest index: the first of a direction is the one kept.
+        Orientation::Collinear => counter
+            .cmp_dist(o, points[b], o, points[a])
+            .then_with(|| a.cmp(&b)),
+    });
+    let mut order = Vec::with_capacity(rest.len() + 1);
+    order.push(pivot);
+    for i in rest {
+        let last = order[order.len() - 1];
+        if order.len() > 1 && counter.orient2d(o, points[last], points[i]) == Orientation::Collinear
+        {
+            continue;
+        }
+        order.push(i);
+    }
+    order
+}
+
+/// The seed's step 4 over `order` (pivot first, then one point per direction in angular
+/// order): the strictly convex hull.
+fn scan<C: Counter>(points: &[Point2], order: &[usize], counter: &mut C) -> Vec<usize> {
+    let mut stack: Vec<usize> = order.iter().copied().take(2).collect();
+    for &i in order.iter().skip(2) {
+        push_left_turn(points, &mut stack, 2, i, counter);
+    }
+    stack
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::count::Counts;
+    use crate::gen::{points as generate, PointKind};
+
+    /// The seed's bound: the scan after sorting makes at most 2n − 4 orientation tests.
+    #[test]
+    fn the_scan_makes_at_most_2n_minus_4_orientation_tests() {
+        for kind in PointKind::ALL {
+            for (n, seed) in [(3, 1), (10, 2), (100, 3), (1000, 4)] {
+                let pts = generate(kind, n, seed).unwrap();
+                let order = angular_order(&pts, &mut NoCount);
+                let mut counts = Counts::default();
+                let hull = scan(&pts, &order, &mut counts);
+                assert!(
+                    counts.orientation_tests <= (2 * n).saturating_sub(4) as u64,
+                    "{kind} n={n}: {} tests",
+                    counts.orientation_tests
+                );
+                assert!(super::super::is_strictly_convex_ccw(&pts, &hull));
+            }
+        }
+    }
+
+    /// Points in convex position in angular order are all kept: every test ends a push, so
+    /// the scan makes exactly n − 2 tests, and a zig-zag that pops often stays within 2n − 4.
+    #[test]
+    fn the_bound_is_tight_in_shape() {
+        let convex: Vec<Point2> = (0..20)
+            .map(|i| Point2::new(f64::from(i), f64::from(i * i)))
+            .collect();
+        let order = angular_order(&convex, &mut NoCount);
+        let mut counts = Counts::default();
+        assert_eq!(scan(&convex, &order, &mut counts).len(), 20);
+        assert_eq!(counts.orientation_tests, 18);
+
+        // Alternating near/far points on a fan: every second point is popped.
+        let fan: Vec<Point2> = (0..40)
+            .map(|i| {
+                let r = if i % 2 == 0 { 4.0 } else { 1.0 };
+                let t = f64::from(i) / 40.0;
+                Point2::new(r * (1.0 + t), r * t)
+            })
+            .chain([Point2::new(0.0, 0.0)])
+            .collect();
+        let order = angular_order(&fan, &mut NoCount);
+        let mut counts = Counts::default();
+        let hull = scan(&fan, &order, &mut counts);
+        assert!(counts.orientation_tests <= 2 * 41 - 4);
+        assert!(counts.orientation_tests > 41, "pops happened");
+        assert!(super::super::is_strictly_convex_ccw(&fan, &hull));
+    }
+}
