@@ -131,6 +131,10 @@ const CROSS_ERRBOUND: f64 = (3.0 + 16.0 * (f64::EPSILON / 2.0)) * (f64::EPSILON 
 /// never come near it.
 const UNDERFLOW_SLACK: f64 = pow2(-1000);
 
+/// Added to each minor's permanent in `incircle`'s filter: 2^-900 times the error bound is
+/// still 2^70 times the largest underflow error it has to cover, per unit of lift.
+const MINOR_SLACK: f64 = pow2(-900);
+
 /// `incircle`'s filter bound `(10 + 96 eps) eps` (Shewchuk's `iccerrboundA`).
 const INCIRCLE_ERRBOUND: f64 = (10.0 + 96.0 * (f64::EPSILON / 2.0)) * (f64::EPSILON / 2.0);
 
@@ -210,12 +214,14 @@ pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> InCircle {
         ca.abs() + ac.abs(),
         ab.abs() + ba.abs(),
     );
-    let permanent = pa * alift + pb * blift + pc * clift;
-    // An underflowed degree-2 term is later multiplied by a lift or a minor, and every minor
-    // is at most the sum of two lifts (|xy| <= (x^2 + y^2) / 2), so the slack scales with the
-    // lifts; the 1 covers underflow in the final products and sums.
-    let slack = UNDERFLOW_SLACK * (alift + blift + clift + 1.0);
-    let bound = INCIRCLE_ERRBOUND * permanent + slack;
+    // An underflowed degree-2 term (absolute error below 2^-1074) is later multiplied by a
+    // lift or by a minor, and every minor is at most the sum of two lifts
+    // (|xy| <= (x^2 + y^2) / 2). Adding MINOR_SLACK to each minor's permanent puts
+    // `eps * MINOR_SLACK * (alift + blift + clift)` into the bound, which covers both; the
+    // constant covers underflow in the final products and sums.
+    let permanent =
+        (pa + MINOR_SLACK) * alift + (pb + MINOR_SLACK) * blift + (pc + MINOR_SLACK) * clift;
+    let bound = INCIRCLE_ERRBOUND * permanent + UNDERFLOW_SLACK;
     if det > bound {
         return InCircle::Inside;
     }
