@@ -12,6 +12,9 @@ use compgeo::Error;
 use proptest::prelude::*;
 use std::cmp::Ordering;
 
+#[cfg(feature = "cli")]
+mod common;
+
 fn small_points() -> impl Strategy<Value = Vec<Point2>> {
     prop::collection::vec((-6i32..=6, -6i32..=6), 0..30).prop_map(|v| {
         v.into_iter()
@@ -188,36 +191,19 @@ fn the_length_does_not_overflow() {
     assert_eq!(diameter(&pts).unwrap().unwrap().length, 1.6e308);
 }
 
+#[cfg(feature = "cli")]
 #[test]
 fn cli_diameter_by_calipers_and_by_brute_force() {
-    use assert_cmd::cargo::cargo_bin_cmd;
+    use common::run_json;
     let input = "[[1,1],[0,0],[4,0],[4,3],[2,1]]";
     for flag in [None, Some("--brute-force")] {
-        let mut cmd = cargo_bin_cmd!("compgeo");
-        cmd.args(["diameter", "-"]);
-        if let Some(f) = flag {
-            cmd.arg(f);
-        }
-        let out = cmd
-            .write_stdin(input)
-            .assert()
-            .success()
-            .get_output()
-            .stdout
-            .clone();
-        let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+        let mut args = vec!["diameter", "-"];
+        args.extend(flag);
+        let v = run_json(&args, Some(input));
         assert_eq!(v["pair"], serde_json::json!([1, 3]), "{flag:?}");
         assert_eq!(v["length"], serde_json::json!(5.0));
         assert_eq!(v["points"], serde_json::json!([[0.0, 0.0], [4.0, 3.0]]));
     }
-    let out = cargo_bin_cmd!("compgeo")
-        .args(["diameter", "-"])
-        .write_stdin("[]")
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
-    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let v = run_json(&["diameter", "-"], Some("[]"));
     assert!(v["pair"].is_null() && v["length"].is_null());
 }

@@ -3,56 +3,20 @@
 //! `error:` line on stderr and nothing on stdout.
 #![cfg(feature = "cli")]
 
-use assert_cmd::cargo::cargo_bin_cmd;
 use compgeo::gen::{self, GraphKind, PointKind, SequenceKind};
 use compgeo::geometry::Point2;
 use serde_json::Value;
 use std::collections::HashSet;
 use std::path::PathBuf;
 
+mod common;
+use common::{assert_rejected, run, run_json};
+
 /// A file in Cargo's per-test scratch directory.
 fn temp_file(name: &str, contents: &str) -> PathBuf {
     let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{name}"));
     std::fs::write(&path, contents).unwrap();
     path
-}
-
-/// Runs the binary; returns (exit code, stdout, stderr).
-fn run(args: &[&str], stdin: Option<&str>) -> (i32, String, String) {
-    let mut cmd = cargo_bin_cmd!("compgeo");
-    cmd.args(args);
-    if let Some(input) = stdin {
-        cmd.write_stdin(input.as_bytes().to_vec());
-    }
-    let out = cmd.output().unwrap();
-    (
-        out.status.code().unwrap(),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
-
-/// Runs a command that must succeed and print one JSON line; returns it parsed.
-fn run_json(args: &[&str], stdin: Option<&str>) -> Value {
-    let (code, out, err) = run(args, stdin);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    assert!(err.is_empty(), "{args:?}: {err}");
-    assert_eq!(out.lines().count(), 1, "{args:?}: one line of JSON");
-    serde_json::from_str(&out).unwrap()
-}
-
-/// Asserts the bad-input contract and returns the error line.
-fn assert_rejected(args: &[&str], stdin: Option<&str>) -> String {
-    let (code, out, err) = run(args, stdin);
-    assert_eq!(code, 2, "{args:?}: stderr {err}");
-    assert!(out.is_empty(), "{args:?}: stdout must be empty, got {out}");
-    assert_eq!(
-        err.lines().count(),
-        1,
-        "{args:?}: exactly one line, got {err:?}"
-    );
-    assert!(err.starts_with("error: "), "{args:?}: {err}");
-    err.trim_end().to_string()
 }
 
 fn points_of(v: &Value) -> Vec<Point2> {

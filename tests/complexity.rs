@@ -12,6 +12,9 @@ use compgeo::count::{Counter, Operation};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
+#[cfg(feature = "cli")]
+mod common;
+
 /// Doubling sizes `2^lo ..= 2^hi`.
 fn sizes(lo: u32, hi: u32) -> Vec<f64> {
     (lo..=hi).map(|k| f64::from(1u32 << k)).collect()
@@ -724,28 +727,16 @@ fn sort_entries_cover_the_required_inputs() {
 #[cfg(feature = "cli")]
 mod cli {
     use super::TempDir;
-    use assert_cmd::cargo::cargo_bin_cmd;
+    use crate::common::assert_rejected;
     use serde_json::Value;
 
-    /// Runs the binary; returns (exit code, stdout, stderr).
     fn run(args: &[&str]) -> (i32, String, String) {
-        let out = cargo_bin_cmd!("compgeo").args(args).output().unwrap();
-        (
-            out.status.code().unwrap(),
-            String::from_utf8(out.stdout).unwrap(),
-            String::from_utf8(out.stderr).unwrap(),
-        )
+        crate::common::run(args, None)
     }
 
     fn assert_usage_error(args: &[&str], mentions: &str) {
-        let (code, out, err) = run(args);
-        assert_eq!(code, 2, "{args:?}");
-        assert!(out.is_empty(), "{args:?}: {out}");
-        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
-        assert!(
-            err.starts_with("error:") && err.contains(mentions),
-            "{args:?}: {err}"
-        );
+        let err = assert_rejected(args, None);
+        assert!(err.contains(mentions), "{args:?}: {err}");
     }
 
     #[test]

@@ -7,6 +7,9 @@ use compgeo::graph::*;
 use compgeo::Error;
 use proptest::prelude::*;
 
+#[cfg(feature = "cli")]
+mod common;
+
 /// A random simple-or-not graph: n in 1..=max_n, up to max_m edges (loops and repeats
 /// allowed, the graph type must cope).
 fn arb_edges(max_n: usize, max_m: usize) -> impl Strategy<Value = (usize, Vec<[usize; 2]>)> {
@@ -543,21 +546,10 @@ proptest! {
 #[cfg(feature = "cli")]
 mod cli {
     use super::*;
-    use assert_cmd::cargo::cargo_bin_cmd;
     use serde_json::Value;
 
-    /// Runs the binary with `stdin`; returns (exit code, stdout, stderr).
     fn run(args: &[&str], stdin: &str) -> (i32, String, String) {
-        let out = cargo_bin_cmd!("compgeo")
-            .args(args)
-            .write_stdin(stdin.as_bytes().to_vec())
-            .output()
-            .unwrap();
-        (
-            out.status.code().unwrap(),
-            String::from_utf8(out.stdout).unwrap(),
-            String::from_utf8(out.stderr).unwrap(),
-        )
+        crate::common::run(args, Some(stdin))
     }
 
     fn json_of(g: &Graph) -> String {

@@ -11,6 +11,9 @@ use compgeo::Error;
 use proptest::prelude::*;
 use std::cmp::Ordering;
 
+#[cfg(feature = "cli")]
+mod common;
+
 const STRICT: HullOptions = HullOptions {
     keep_collinear: false,
 };
@@ -262,28 +265,19 @@ fn algorithm_names_round_trip() {
     assert!(err.contains("gift") && err.contains("quickhull"), "{err}");
 }
 
+#[cfg(feature = "cli")]
 #[test]
 fn cli_hull_prints_the_hull_of_every_algorithm_and_rejects_bad_input() {
-    use assert_cmd::cargo::cargo_bin_cmd;
+    use common::{assert_rejected, run_json};
     let input = "[[0,0],[2,0],[1,1],[2,2],[0,2],[1,0],[0,0]]";
     for algorithm in Algorithm::ALL {
         for (flag, expected) in [
             (None, vec![0, 1, 3, 4]),
             (Some("--keep-collinear"), vec![0, 5, 1, 3, 4]),
         ] {
-            let mut cmd = cargo_bin_cmd!("compgeo");
-            cmd.args(["hull", "--algorithm", algorithm.name(), "-"]);
-            if let Some(f) = flag {
-                cmd.arg(f);
-            }
-            let out = cmd
-                .write_stdin(input)
-                .assert()
-                .success()
-                .get_output()
-                .stdout
-                .clone();
-            let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+            let mut args = vec!["hull", "--algorithm", algorithm.name(), "-"];
+            args.extend(flag);
+            let v = run_json(&args, Some(input));
             let hull: Vec<usize> = serde_json::from_value(v["hull"].clone()).unwrap();
             assert_eq!(hull, expected, "{algorithm} {flag:?}");
             assert_eq!(
@@ -293,17 +287,7 @@ fn cli_hull_prints_the_hull_of_every_algorithm_and_rejects_bad_input() {
             assert!(v["counts"]["orientation_tests"].as_u64().unwrap() > 0);
         }
     }
-    cargo_bin_cmd!("compgeo")
-        .args(["hull", "--algorithm", "gift", "-"])
-        .write_stdin(input)
-        .assert()
-        .code(2)
-        .stderr(predicates::str::contains("quickhull"));
-    cargo_bin_cmd!("compgeo")
-        .args(["hull", "-"])
-        .write_stdin("[[0, 0], [1e999, 1]]")
-        .assert()
-        .code(2)
-        .stdout("")
-        .stderr(predicates::str::starts_with("error: "));
+    let err = assert_rejected(&["hull", "--algorithm", "gift", "-"], Some(input));
+    assert!(err.contains("quickhull"), "{err}");
+    assert_rejected(&["hull", "-"], Some("[[0, 0], [1e999, 1]]"));
 }

@@ -1,0 +1,45 @@
+//! Helpers shared by the integration tests that run the `compgeo` binary.
+// Each test crate compiles its own copy and uses only some of the helpers.
+#![allow(dead_code)]
+
+use assert_cmd::cargo::cargo_bin_cmd;
+use serde_json::Value;
+
+/// Runs the binary with `args` and optional `stdin`; returns (exit code, stdout, stderr).
+pub fn run(args: &[&str], stdin: Option<&str>) -> (i32, String, String) {
+    let mut cmd = cargo_bin_cmd!("compgeo");
+    cmd.args(args);
+    if let Some(input) = stdin {
+        cmd.write_stdin(input.as_bytes().to_vec());
+    }
+    let out = cmd.output().unwrap();
+    (
+        out.status.code().unwrap(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+/// Runs a command that must succeed and print one JSON line; returns it parsed.
+pub fn run_json(args: &[&str], stdin: Option<&str>) -> Value {
+    let (code, out, err) = run(args, stdin);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    assert!(err.is_empty(), "{args:?}: {err}");
+    assert_eq!(out.lines().count(), 1, "{args:?}: one line of JSON");
+    serde_json::from_str(&out).unwrap()
+}
+
+/// Asserts the bad-input contract (exit code 2, nothing on stdout, exactly one line on stderr
+/// starting `error: `) and returns the error line.
+pub fn assert_rejected(args: &[&str], stdin: Option<&str>) -> String {
+    let (code, out, err) = run(args, stdin);
+    assert_eq!(code, 2, "{args:?}: stderr {err}");
+    assert!(out.is_empty(), "{args:?}: stdout must be empty, got {out}");
+    assert_eq!(
+        err.lines().count(),
+        1,
+        "{args:?}: exactly one line, got {err:?}"
+    );
+    assert!(err.starts_with("error: "), "{args:?}: {err}");
+    err.trim_end().to_string()
+}
