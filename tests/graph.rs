@@ -656,14 +656,8 @@ mod cli {
             ),
         ];
         for (args, input, needle) in cases {
-            let (code, out, err) = run(args, input);
-            assert_eq!(code, 2, "{args:?}: {err}");
-            assert!(out.is_empty());
-            assert_eq!(err.lines().count(), 1, "{err}");
-            assert!(
-                err.starts_with("error: ") && err.contains(needle),
-                "{args:?}: {err}"
-            );
+            let err = crate::common::assert_rejected(args, Some(input));
+            assert!(err.contains(needle), "{args:?}: {err}");
         }
     }
 }

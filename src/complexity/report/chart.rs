@@ -89,16 +89,7 @@ fn draw_growth(path: &Path, row: &Row) -> ChartResult {
         (Some(_), Some(op)) => format!("{} (count)", op.name()),
         _ => "time per run (ns)".to_string(),
     };
-    chart
-        .configure_mesh()
-        .x_desc("n (input size)")
-        .y_desc(primary_desc)
-        .x_label_formatter(&|v| compact(*v))
-        .y_label_formatter(&|v| compact(*v))
-        .label_style(("sans-serif", 14))
-        .axis_desc_style(("sans-serif", 16))
-        .light_line_style(WHITE.mix(0.0))
-        .draw()?;
+    draw_log_mesh(&mut chart, &primary_desc)?;
     if counts.is_some() {
         chart
             .configure_secondary_axes()
@@ -231,16 +222,7 @@ fn panel(
         .x_label_area_size(48)
         .y_label_area_size(78)
         .build_cartesian_2d((x_lo..x_hi).log_scale().base(2.0), (y_lo..y_hi).log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc("n (input size)")
-        .y_desc(y_desc)
-        .x_label_formatter(&|v| compact(*v))
-        .y_label_formatter(&|v| compact(*v))
-        .label_style(("sans-serif", 14))
-        .axis_desc_style(("sans-serif", 16))
-        .light_line_style(WHITE.mix(0.0))
-        .draw()?;
+    draw_log_mesh(&mut chart, y_desc)?;
     for (i, (label, pts)) in series.iter().enumerate() {
         let colour = PALETTE[i % PALETTE.len()];
         chart.draw_series(LineSeries::new(pts.clone(), colour.stroke_width(2)))?;
@@ -334,6 +316,24 @@ fn compact(v: f64) -> String {
         text
     };
     format!("{text}{suffix}")
+}
+
+/// The log-log mesh every chart shares: n on a base-2 axis, compact labels, no minor lines.
+fn draw_log_mesh(
+    chart: &mut ChartContext<'_, SVGBackend<'_>, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>,
+    y_desc: &str,
+) -> ChartResult {
+    chart
+        .configure_mesh()
+        .x_desc("n (input size)")
+        .y_desc(y_desc)
+        .x_label_formatter(&|v| compact(*v))
+        .y_label_formatter(&|v| compact(*v))
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 16))
+        .light_line_style(WHITE.mix(0.0))
+        .draw()?;
+    Ok(())
 }
 
 #[cfg(test)]
