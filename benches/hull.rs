@@ -50,6 +50,7 @@ fn hulls(c: &mut Criterion) {
         Algorithm::MonotoneChain,
         Algorithm::Graham,
         Algorithm::Quickhull,
+        Algorithm::Chan,
     ];
     for (kind, sizes) in groups {
         let mut group = c.benchmark_group(format!("hull/{kind}"));

@@ -8,6 +8,12 @@
 //! builds the point `x = p + SIG(q) − q`, which rounds in floating point; here the same test
 //! is [`cross_sign`](crate::geometry::cross_sign) of the two edge directions, exact.
 //!
+//! The same calipers give the [`width`] (the smallest distance between two parallel
+//! supporting lines) and the [`min_area_rectangle`]: both are attained with one side on a
+//! hull edge, so four calipers, one per side, rotate once around the hull and each edge is
+//! scored with an exact comparison ([`cmp_line_dist`](crate::geometry::cmp_line_dist),
+//! [`cmp_rect_area`](crate::geometry::cmp_rect_area)) instead of a rounded distance or area.
+//!
 //! ```
 //! use compgeo::calipers::{diameter, diameter_brute_force};
 //! use compgeo::geometry::{cmp_dist, Point2};
@@ -38,6 +44,41 @@ pub struct Diameter {
     /// The Euclidean distance between the two, rounded (within a few ulps). The pair itself
     /// is exact: it is chosen by exact comparisons of squared distances.
     pub length: f64,
+}
+
+/// A width: a hull edge, the hull vertex farthest from its line, and the distance between
+/// the two parallel supporting lines through them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Width {
+    /// The hull edge `[i, j]` (indices into the input, counter-clockwise) one supporting line
+    /// runs along; `[i, i]` for a one-point set, the two ends for a segment.
+    pub edge: [usize; 2],
+    /// The vertex on the other supporting line (the edge's start when the width is zero).
+    pub vertex: usize,
+    /// The distance between the lines, rounded (within a few ulps; `inf` if it exceeds
+    /// `f64::MAX`). The edge and the vertex are exact: chosen by exact comparisons.
+    pub width: f64,
+}
+
+/// A minimum-area enclosing rectangle: the hull edge one side lies on, the vertices that
+/// touch the other three sides, and the corners.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Rectangle {
+    /// The hull edge `[i, j]` that one side lies on (counter-clockwise, so the rectangle is
+    /// left of `i -> j`).
+    pub edge: [usize; 2],
+    /// The vertices touching the other sides, counter-clockwise from the edge:
+    /// `[right, top, left]` (extreme along the edge's direction, farthest from its line,
+    /// extreme against its direction).
+    pub support: [usize; 3],
+    /// The corners, counter-clockwise, starting on the edge's line below `left`. These are
+    /// constructions (projections onto the lines), rounded to within a few ulps of the
+    /// hull's largest coordinate; the edge and the support vertices are exact.
+    pub corners: [Point2; 4],
+    /// The area, rounded (`inf` if it exceeds `f64::MAX`).
+    pub area: f64,
 }
 
 /// All antipodal pairs of a strictly convex polygon, by rotating calipers. See
@@ -253,6 +294,308 @@ pub fn diameter_brute_force_with<C: Counter>(
             farthest_pair(points, pairs, counter).map(|(a, b)| make(points, a, b))
         }
     })
+}
+
+/// The width of `points`. See [`width_with`].
+///
+/// ```
+/// use compgeo::calipers::width;
+/// use compgeo::geometry::Point2;
+///
+/// let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (0.0, 3.0), (2.0, 1.0)].map(Point2::from);
+/// let w = width(&pts)?.unwrap();
+/// assert_eq!((w.edge, w.vertex, w.width), ([1, 2], 3, 4.0));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn width(points: &[Point2]) -> Result<Option<Width>> {
+    width_with(points, &mut NoCount)
+}
+
+/// The width of `points`, the smallest distance between two parallel lines enclosing them,
+/// by rotating calipers over the convex hull, recording the operations in `counter`; `None`
+/// for an empty set.
+///
+/// Idea: a pair of parallel supporting lines at minimum distance has one line along a hull
+/// edge (rotating a pair that touches only vertices shortens it one way or the other), so
+/// the width is the smallest over edges of the distance to the farthest vertex. That vertex
+/// moves counter-clockwise as the edge does: one caliper walks around the hull once, moved
+/// on by [`cross_sign`](crate::geometry::cross_sign) (does the next vertex lie farther from
+/// the edge's line?). Edges are compared by
+/// [`cmp_line_dist`](crate::geometry::cmp_line_dist), exact; of equal widths the first edge
+/// counter-clockwise from the lexicographically smallest vertex is returned.
+///
+/// Follows `003_5b666ee3e15e6353.txt`, §2.3 ("Algoritmo de girar calibres": the same
+/// calipers, scored per edge instead of per antipodal pair).
+///
+/// Degenerate input: a single point or collinear points have width 0 (`edge` joins the two
+/// extreme points).
+///
+/// # Errors
+///
+/// [`Error::NonFinite`] naming the first point with a NaN or infinite coordinate.
+///
+/// # Complexity
+///
+/// With n = `points.len()` and h the number of hull vertices: the hull's time (O(n log n)
+/// worst case, O(n) expected on uniform input) plus Θ(h); auxiliary space O(n).
+///
+/// # Counts
+///
+/// Those of the hull, plus at most 9h orientation tests for the calipers (each of three
+/// calipers is tested once per edge to stop it, and advances less than twice around the
+/// hull; about 7h on points in convex position) and h − 1 distance evaluations.
+///
+/// ```
+/// use compgeo::calipers::width_with;
+/// use compgeo::count::Counts;
+/// use compgeo::gen::{points, PointKind};
+///
+/// let pts = points(PointKind::UniformDisk, 1000, 9)?;
+/// let mut counts = Counts::default();
+/// let w = width_with(&pts, &mut counts)?.unwrap();
+/// assert!(w.width > 1.9 && w.width < 2.0);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn width_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Option<Width>> {
+    let hull = akl_toussaint_with(points, HullOptions::default(), counter)?;
+    let h = hull.len();
+    if h <= 2 {
+        return Ok(hull.first().map(|&i| Width {
+            edge: [i, hull[h - 1]],
+            vertex: i,
+            width: 0.0,
+        }));
+    }
+    let v = |k: usize| points[hull[k % h]];
+    let mut best: Option<Sides> = None;
+    four_calipers(points, &hull, counter, |s, counter| {
+        let better = best.is_none_or(|b| {
+            counter.cmp_line_dist(
+                v(s.edge),
+                v(s.edge + 1),
+                v(s.top),
+                v(b.edge),
+                v(b.edge + 1),
+                v(b.top),
+            ) == Ordering::Less
+        });
+        if better {
+            best = Some(s);
+        }
+    });
+    let s = best.expect("a polygon has edges");
+    let frame = Frame::new([v(s.edge), v(s.edge + 1), v(s.top)]);
+    let [a, b, p] = frame.points;
+    let u = unit(b.x - a.x, b.y - a.y);
+    let height = (u.0 * (p.y - a.y) - u.1 * (p.x - a.x)).abs();
+    Ok(Some(Width {
+        edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
+        vertex: hull[s.top % h],
+        width: frame.unscale(height),
+    }))
+}
+
+/// The minimum-area rectangle enclosing `points`. See [`min_area_rectangle_with`].
+///
+/// ```
+/// use compgeo::calipers::min_area_rectangle;
+/// use compgeo::geometry::Point2;
+///
+/// // A diamond: the best rectangle is the tilted square on its sides, area 2, not the
+/// // axis-parallel box of area 4.
+/// let pts = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)].map(Point2::from);
+/// let r = min_area_rectangle(&pts)?.unwrap();
+/// assert_eq!(r.edge, [3, 0]);
+/// assert!((r.area - 2.0).abs() < 1e-12);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn min_area_rectangle(points: &[Point2]) -> Result<Option<Rectangle>> {
+    min_area_rectangle_with(points, &mut NoCount)
+}
+
+/// The minimum-area rectangle enclosing `points`, by rotating four calipers over the convex
+/// hull, recording the operations in `counter`; `None` for an empty set.
+///
+/// Idea: a minimum-area enclosing rectangle has a side along a hull edge (Freeman and
+/// Shapira, 1975). For each edge, in counter-clockwise order, three more calipers track the
+/// vertex extreme along the edge's direction, the one farthest from its line and the one
+/// extreme against its direction; each only moves forward, so together they go around the
+/// hull a bounded number of times. The extremes along the direction are found with the
+/// sign of a dot product, which is [`cross_sign`](crate::geometry::cross_sign) of the edge
+/// turned by a right angle (an exact swap and negation of coordinates). Edges are compared
+/// by [`cmp_rect_area`](crate::geometry::cmp_rect_area), exact; of equal areas the first
+/// edge counter-clockwise from the lexicographically smallest vertex wins.
+///
+/// Not in the seed's algorithms; it extends `003_5b666ee3e15e6353.txt`, §2.3 "Algoritmo de
+/// girar calibres" from two calipers to four.
+///
+/// Degenerate input: a single point gives a rectangle with four equal corners; collinear
+/// points the segment between the extremes (`corners` `[a, b, b, a]`); both have area 0.
+///
+/// # Errors
+///
+/// [`Error::NonFinite`] naming the first point with a NaN or infinite coordinate.
+///
+/// # Complexity
+///
+/// With n = `points.len()` and h the number of hull vertices: the hull's time plus Θ(h);
+/// auxiliary space O(n).
+///
+/// # Counts
+///
+/// Those of the hull, plus at most 9h orientation tests for the calipers (as for
+/// [`width_with`]) and h − 1 distance evaluations (area comparisons).
+///
+/// ```
+/// use compgeo::calipers::min_area_rectangle_with;
+/// use compgeo::count::Counts;
+/// use compgeo::gen::{points, PointKind};
+///
+/// let pts = points(PointKind::UniformSquare, 1000, 4)?;
+/// let mut counts = Counts::default();
+/// let r = min_area_rectangle_with(&pts, &mut counts)?.unwrap();
+/// assert!(r.area > 0.9 && r.area <= 1.0); // nearly the unit square
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn min_area_rectangle_with<C: Counter>(
+    points: &[Point2],
+    counter: &mut C,
+) -> Result<Option<Rectangle>> {
+    let hull = akl_toussaint_with(points, HullOptions::default(), counter)?;
+    let h = hull.len();
+    if h <= 2 {
+        return Ok(hull.first().map(|&i| {
+            let (a, b) = (points[i], points[hull[h - 1]]);
+            Rectangle {
+                edge: [i, hull[h - 1]],
+                support: [hull[h - 1], i, i],
+                corners: [a, b, b, a],
+                area: 0.0,
+            }
+        }));
+    }
+    let v = |k: usize| points[hull[k % h]];
+    let key = |s: Sides| [v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)];
+    let mut best: Option<Sides> = None;
+    four_calipers(points, &hull, counter, |s, counter| {
+        if best.is_none_or(|b| counter.cmp_rect_area(key(s), key(b)) == Ordering::Less) {
+            best = Some(s);
+        }
+    });
+    let s = best.expect("a polygon has edges");
+    let frame = Frame::new([v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)]);
+    let [a, b, top, left, right] = frame.points;
+    let u = unit(b.x - a.x, b.y - a.y);
+    let along = |p: Point2| u.0 * (p.x - a.x) + u.1 * (p.y - a.y);
+    let height = u.0 * (top.y - a.y) - u.1 * (top.x - a.x);
+    let (lo, hi) = (along(left), along(right));
+    let on_line = |t: f64| Point2::new(a.x + t * u.0, a.y + t * u.1);
+    let lifted = |p: Point2| Point2::new(p.x - height * u.1, p.y + height * u.0);
+    let corners = [
+        on_line(lo),
+        on_line(hi),
+        lifted(on_line(hi)),
+        lifted(on_line(lo)),
+    ];
+    Ok(Some(Rectangle {
+        edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
+        support: [s.right, s.top, s.left].map(|k| hull[k % h]),
+        corners: corners.map(|c| Point2::new(frame.unscale(c.x), frame.unscale(c.y))),
+        area: frame.unscale(frame.unscale((hi - lo) * height)),
+    }))
+}
+
+/// For one hull edge (position `edge`, from `edge` to `edge + 1`), the positions of the
+/// vertices on the other sides of its enclosing rectangle; positions count up without
+/// wrapping, so take them modulo h.
+#[derive(Debug, Clone, Copy)]
+struct Sides {
+    edge: usize,
+    right: usize,
+    top: usize,
+    left: usize,
+}
+
+/// Rotates four calipers once around the strictly convex counter-clockwise `hull` (at least
+/// three vertices) and calls `visit` for every edge with its extreme vertices: the first of
+/// equally extreme ones counter-clockwise.
+fn four_calipers<C: Counter>(
+    points: &[Point2],
+    hull: &[usize],
+    counter: &mut C,
+    mut visit: impl FnMut(Sides, &mut C),
+) {
+    let h = hull.len();
+    let v = |k: usize| points[hull[k % h]];
+    // The sign of (b - a) · (d - c) is that of (b' - a') x (d - c) for p' = (p.y, -p.x).
+    let turned = |p: Point2| Point2::new(p.y, -p.x);
+    let (mut right, mut top, mut left) = (1, 1, 1);
+    for edge in 0..h {
+        let (a, b) = (v(edge), v(edge + 1));
+        let (ta, tb) = (turned(a), turned(b));
+        right = right.max(edge + 1);
+        while counter.cross_sign(ta, tb, v(right), v(right + 1)) == Orientation::CounterClockwise {
+            right += 1;
+        }
+        top = top.max(right);
+        while counter.cross_sign(a, b, v(top), v(top + 1)) == Orientation::CounterClockwise {
+            top += 1;
+        }
+        left = left.max(top);
+        while counter.cross_sign(ta, tb, v(left), v(left + 1)) == Orientation::Clockwise {
+            left += 1;
+        }
+        visit(
+            Sides {
+                edge,
+                right,
+                top,
+                left,
+            },
+            counter,
+        );
+    }
+}
+
+/// Points scaled by a power of two so that the largest coordinate is about 1: rounded
+/// constructions on them neither overflow nor lose subnormal precision.
+struct Frame<const N: usize> {
+    points: [Point2; N],
+    exponent: i32,
+}
+
+impl<const N: usize> Frame<N> {
+    fn new(points: [Point2; N]) -> Frame<N> {
+        let largest = points
+            .iter()
+            .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+        // Any nearby power of two will do: the scaling only steers rounding.
+        let exponent = if largest == 0.0 {
+            0
+        } else {
+            largest.log2().floor() as i32
+        };
+        Frame {
+            points: points.map(|p| Point2::new(scale(p.x, -exponent), scale(p.y, -exponent))),
+            exponent,
+        }
+    }
+
+    fn unscale(&self, v: f64) -> f64 {
+        scale(v, self.exponent)
+    }
+}
+
+/// `v · 2^e` in two steps, so that no factor overflows for |e| up to 2100.
+fn scale(v: f64, e: i32) -> f64 {
+    let half = e / 2;
+    v * 2f64.powi(half) * 2f64.powi(e - half)
+}
+
+/// The unit vector along `(x, y)` (not both zero, neither huge).
+fn unit(x: f64, y: f64) -> (f64, f64) {
+    let length = x.hypot(y);
+    (x / length, y / length)
 }
 
 /// The seed's loop over a valid strictly convex counter-clockwise polygon.

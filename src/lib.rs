@@ -49,6 +49,7 @@
 //! | [`hull::monotone_chain`] | O(n log n) |
 //! | [`hull::akl_toussaint`] | O(n log n) worst case, O(n) expected on uniform input |
 //! | [`hull::quickhull`] | O(n log n) expected, O(nh) worst case |
+//! | [`hull::chan`] | O(n log h), output-sensitive |
 //! | [`calipers::antipodal_pairs`] | Θ(n) on a convex polygon of n vertices, at most 3n/2 pairs |
 //! | [`calipers::diameter`] | the hull's time plus Θ(h) |
 //! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |

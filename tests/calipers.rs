@@ -204,6 +204,17 @@ fn cli_diameter_by_calipers_and_by_brute_force() {
         assert_eq!(v["length"], serde_json::json!(5.0));
         assert_eq!(v["points"], serde_json::json!([[0.0, 0.0], [4.0, 3.0]]));
     }
+    // A 4 x 3 box and an interior point: width 3 on the bottom edge, rectangle the box.
+    let v = run_json(&["diameter", "-"], Some("[[0,0],[4,0],[4,3],[0,3],[1,1]]"));
+    assert_eq!(v["width"]["edge"], serde_json::json!([0, 1]));
+    assert_eq!(v["width"]["width"], serde_json::json!(3.0));
+    assert_eq!(v["rectangle"]["edge"], serde_json::json!([0, 1]));
+    assert_eq!(v["rectangle"]["area"], serde_json::json!(12.0));
+    assert_eq!(
+        v["rectangle"]["corners"][2],
+        serde_json::json!({"x": 4.0, "y": 3.0})
+    );
     let v = run_json(&["diameter", "-"], Some("[]"));
     assert!(v["pair"].is_null() && v["length"].is_null());
+    assert!(v["width"].is_null() && v["rectangle"].is_null());
 }

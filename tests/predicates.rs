@@ -4,7 +4,8 @@
 //! mixed magnitudes in one call.
 
 use compgeo::geometry::{
-    cmp_dist, cmp_lex, cross_sign, incircle, orient2d, InCircle, Orientation, Point2,
+    cmp_dist, cmp_lex, cmp_line_dist, cmp_rect_area, cross_sign, incircle, orient2d, InCircle,
+    Orientation, Point2,
 };
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -62,6 +63,34 @@ fn exact_incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> i32 {
         - &r0[1] * (&r1[0] * &r2[2] - &r1[2] * &r2[0])
         + &r0[2] * (&r1[0] * &r2[1] - &r1[1] * &r2[0]);
     sign(&det)
+}
+
+/// `(b - a) x (d - c)` and `(b - a) · (d - c)`, exactly.
+fn exact_forms(a: Point2, b: Point2, c: Point2, d: Point2) -> (BigRational, BigRational) {
+    let (ux, uy) = (q(b.x) - q(a.x), q(b.y) - q(a.y));
+    let (vx, vy) = (q(d.x) - q(c.x), q(d.y) - q(c.y));
+    (&ux * &vy - &uy * &vx, ux * vx + uy * vy)
+}
+
+/// dist(p, ab)² vs dist(q, cd)², denominators cleared: cross1² |cd|² − cross2² |ab|².
+fn exact_line_dist(a: Point2, b: Point2, p: Point2, c: Point2, d: Point2, r: Point2) -> i32 {
+    let (c1, _) = exact_forms(a, b, a, p);
+    let (c2, _) = exact_forms(c, d, c, r);
+    let (_, l1) = exact_forms(a, b, a, b);
+    let (_, l2) = exact_forms(c, d, c, d);
+    sign(&(&c1 * &c1 * l2 - &c2 * &c2 * l1))
+}
+
+/// |cross| · |dot| / |ab|² for each rectangle, denominators cleared.
+fn exact_rect_area(first: [Point2; 5], second: [Point2; 5]) -> i32 {
+    let side = |[a, b, p, l, r]: [Point2; 5]| {
+        let (height, _) = exact_forms(a, b, a, p);
+        let (_, length) = exact_forms(a, b, l, r);
+        let (_, norm) = exact_forms(a, b, a, b);
+        (height.abs() * length.abs(), norm)
+    };
+    let ((n1, d1), (n2, d2)) = (side(first), side(second));
+    sign(&(n1 * d2 - n2 * d1))
 }
 
 fn orient_sign(o: Orientation) -> i32 {
@@ -331,6 +360,110 @@ proptest! {
         let [a, b, c, d] = p;
         prop_assert_eq!(exact_incircle(a, b, c, d), 0);
         prop_assert_eq!(incircle(a, b, c, d), InCircle::On);
+    }
+}
+
+proptest! {
+    // Degree 6 and 8: the rational oracle and the big-integer path are slower still.
+    #![proptest_config(cases(600))]
+
+    #[test]
+    fn cmp_line_dist_is_exact_on_mixed_magnitudes(
+        a in point(), b in point(), p in point(), c in point(), d in point(), r in point(),
+    ) {
+        prop_assert_eq!(ord_sign(cmp_line_dist(a, b, p, c, d, r)), exact_line_dist(a, b, p, c, d, r));
+    }
+
+    #[test]
+    fn cmp_line_dist_is_exact_on_near_ties(
+        (a, b, _) in nearly_collinear(), p in point(), t in -2.0f64..2.0,
+        kx in -3i32..4, ky in -3i32..4, reverse in any::<bool>(),
+    ) {
+        // The same line (maybe reversed) and p slid along it, then nudged by ulps.
+        let slid = Point2::new(p.x + t * (b.x - a.x), p.y + t * (b.y - a.y));
+        let r = Point2::new(ulps(slid.x, kx), ulps(slid.y, ky));
+        let (c, d) = if reverse { (b, a) } else { (a, b) };
+        for r in [r, p] {
+            if r.is_finite() {
+                prop_assert_eq!(ord_sign(cmp_line_dist(a, b, p, c, d, r)), exact_line_dist(a, b, p, c, d, r));
+            }
+        }
+    }
+
+    #[test]
+    fn cmp_line_dist_is_exact_on_arbitrary_bit_patterns(v in proptest::array::uniform12(any_finite())) {
+        let p = |i: usize| Point2::new(v[2 * i], v[2 * i + 1]);
+        prop_assert_eq!(
+            ord_sign(cmp_line_dist(p(0), p(1), p(2), p(3), p(4), p(5))),
+            exact_line_dist(p(0), p(1), p(2), p(3), p(4), p(5))
+        );
+    }
+
+    #[test]
+    fn cmp_rect_area_is_exact_on_mixed_magnitudes(
+        first in proptest::array::uniform5(point()), second in proptest::array::uniform5(point()),
+    ) {
+        prop_assert_eq!(ord_sign(cmp_rect_area(first, second)), exact_rect_area(first, second));
+    }
+
+    #[test]
+    fn cmp_rect_area_is_exact_on_near_ties(
+        first in proptest::array::uniform5(point()), k in proptest::array::uniform5((-2i32..3, -2i32..3)),
+    ) {
+        // The same rectangle described from the other end of its line (an exact tie),
+        // then with every point nudged by a few ulps.
+        let [a, b, p, l, r] = first;
+        let mirrored = [b, a, p, r, l];
+        let mut nudged = mirrored;
+        for (x, (kx, ky)) in nudged.iter_mut().zip(k) {
+            *x = Point2::new(ulps(x.x, kx), ulps(x.y, ky));
+        }
+        prop_assert_eq!(cmp_rect_area(first, mirrored), Ordering::Equal);
+        prop_assert_eq!(ord_sign(cmp_rect_area(first, nudged)), exact_rect_area(first, nudged));
+    }
+
+    #[test]
+    fn cmp_rect_area_is_exact_on_arbitrary_bit_patterns(
+        first in proptest::array::uniform5((any_finite(), any_finite())),
+        second in proptest::array::uniform5((any_finite(), any_finite())),
+    ) {
+        let (first, second) = (first.map(Point2::from), second.map(Point2::from));
+        prop_assert_eq!(ord_sign(cmp_rect_area(first, second)), exact_rect_area(first, second));
+    }
+}
+
+#[test]
+fn line_distance_and_area_ties_at_every_scale() {
+    // (0, 4) and (3, 8) are both 12/5 from the line through (0, 0) and (3, 4), (4, 2) is
+    // 2; a 3 × 4 box described from two of its sides has area 12 both ways.
+    for s in [5e-324, 1e-300, 1e-140, 1.0, 1e15, 1e200, 1e300] {
+        let p = |x: f64, y: f64| Point2::new(x * s, y * s);
+        let (o, h) = (p(0.0, 0.0), p(3.0, 4.0));
+        assert_eq!(
+            cmp_line_dist(o, h, p(0.0, 4.0), h, o, p(3.0, 8.0)),
+            Ordering::Equal,
+            "{s:e}"
+        );
+        assert_eq!(
+            cmp_line_dist(o, h, p(0.0, 4.0), o, h, p(4.0, 2.0)),
+            Ordering::Greater,
+            "{s:e}"
+        );
+        let legs = [
+            p(0.0, 0.0),
+            p(1.0, 0.0),
+            p(0.0, 4.0),
+            p(0.0, 0.0),
+            p(3.0, 0.0),
+        ];
+        let upright = [
+            p(0.0, 0.0),
+            p(0.0, -1.0),
+            p(3.0, 0.0),
+            p(0.0, 4.0),
+            p(0.0, 0.0),
+        ];
+        assert_eq!(cmp_rect_area(legs, upright), Ordering::Equal, "{s:e}");
     }
 }
 

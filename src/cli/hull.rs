@@ -11,7 +11,7 @@ use serde::Serialize;
 /// Arguments of `compgeo hull`.
 #[derive(Debug, Args)]
 pub(super) struct HullArgs {
-    /// brute-force, jarvis, graham, monotone-chain, akl-toussaint or quickhull
+    /// brute-force, jarvis, graham, monotone-chain, akl-toussaint, quickhull or chan
     #[arg(long, short, default_value = "akl-toussaint")]
     algorithm: Algorithm,
     /// Also list the points in the middle of hull edges, in boundary order

@@ -38,6 +38,11 @@ impl BigInt {
         }
     }
 
+    /// The absolute value.
+    pub(crate) fn abs(&self) -> BigInt {
+        BigInt::normalized(false, self.mag.clone())
+    }
+
     pub(crate) fn add(&self, other: &BigInt) -> BigInt {
         if self.negative == other.negative {
             return BigInt::normalized(self.negative, add_mag(&self.mag, &other.mag));

@@ -1,7 +1,10 @@
 //! Counted forms of the predicates: the counter increments at the boundary, so algorithm
 //! bodies hold no counting code.
 
-use super::{cmp_dist, cmp_lex, cross_sign, incircle, orient2d, InCircle, Orientation, Point2};
+use super::{
+    cmp_dist, cmp_lex, cmp_line_dist, cmp_rect_area, cross_sign, incircle, orient2d, InCircle,
+    Orientation, Point2,
+};
 use crate::count::Counter;
 use std::cmp::Ordering;
 
@@ -48,6 +51,29 @@ pub trait CountedPredicates: Counter {
     fn cross_sign(&mut self, a: Point2, b: Point2, c: Point2, d: Point2) -> Orientation {
         self.orientation_test();
         cross_sign(a, b, c, d)
+    }
+
+    /// [`cmp_line_dist`], counted as one distance evaluation.
+    #[inline]
+    fn cmp_line_dist(
+        &mut self,
+        a: Point2,
+        b: Point2,
+        p: Point2,
+        c: Point2,
+        d: Point2,
+        q: Point2,
+    ) -> Ordering {
+        self.distance_evaluation();
+        cmp_line_dist(a, b, p, c, d, q)
+    }
+
+    /// [`cmp_rect_area`], counted as one distance evaluation (it compares products of
+    /// lengths).
+    #[inline]
+    fn cmp_rect_area(&mut self, first: [Point2; 5], second: [Point2; 5]) -> Ordering {
+        self.distance_evaluation();
+        cmp_rect_area(first, second)
     }
 
     /// [`cmp_lex`], counted as one comparison.

@@ -89,7 +89,7 @@ fn scale_by_pow2(mut v: f64, mut shift: i32) -> f64 {
 }
 
 /// `v = (-1)^negative * mantissa * 2^exp` with integer mantissa, for finite `v`.
-fn decompose(v: f64) -> (bool, u64, i32) {
+pub(crate) fn decompose(v: f64) -> (bool, u64, i32) {
     let bits = v.to_bits();
     let negative = bits >> 63 == 1;
     let biased = ((bits >> 52) & 0x7ff) as i32;

@@ -11,6 +11,8 @@
 //! | [`incircle`] | is `d` inside, on, or outside the circle through `a, b, c`? | 4 |
 //! | [`cmp_dist`] | is `|ab|` shorter than, equal to, or longer than `|cd|`? | 2 |
 //! | [`cross_sign`] | does the direction `d - c` turn left or right of `b - a`? | 2 |
+//! | [`cmp_line_dist`] | is `p` closer to line `ab` than `q` to line `cd`? | 8 |
+//! | [`cmp_rect_area`] | which of two rectangles on given lines is smaller? | 6 |
 //! | [`cmp_lex`] | lexicographic (x, then y) order | 1 |
 //!
 //! How exactness is achieved for inputs of any magnitude is described in `docs/design.md`.
@@ -23,9 +25,11 @@ mod expansion;
 mod extended;
 mod point;
 mod predicates;
+mod products;
 mod validate;
 
 pub use counted::CountedPredicates;
 pub use point::Point2;
 pub use predicates::{cmp_dist, cmp_lex, cross_sign, incircle, orient2d, InCircle, Orientation};
+pub use products::{cmp_line_dist, cmp_rect_area};
 pub use validate::validate;

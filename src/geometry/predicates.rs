@@ -129,7 +129,7 @@ const CROSS_ERRBOUND: f64 = (3.0 + 16.0 * (f64::EPSILON / 2.0)) * (f64::EPSILON 
 /// and no filter adds more than a few of them. 2^-1000 is far more than needed, but it is a
 /// normal double: arithmetic on subnormals is slow on common hardware, and ordinary inputs
 /// never come near it.
-const UNDERFLOW_SLACK: f64 = pow2(-1000);
+pub(crate) const UNDERFLOW_SLACK: f64 = pow2(-1000);
 
 /// Added to each minor's permanent in `incircle`'s filter: 2^-900 times the error bound is
 /// still 2^70 times the largest underflow error it has to cover, per unit of lift.

@@ -3,7 +3,7 @@
 //! The seed (`003_5b666ee3e15e6353.txt`, §2.2 "Cierre Convexo de una nube de puntos")
 //! teaches brute force, Jarvis's march, Graham's scan, its lexicographic variant (Andrew's
 //! monotone chain) and the Akl–Toussaint filter; Quickhull is here as the peer crates'
-//! default. The seed assumes no three points collinear; compgeo does not.
+//! default, and Chan's algorithm as the optimal output-sensitive one. The seed assumes no three points collinear; compgeo does not.
 //!
 //! | algorithm | time | file |
 //! |---|---|---|
@@ -13,6 +13,7 @@
 //! | [`monotone_chain`] | O(n log n) | `monotone_chain.rs` |
 //! | [`akl_toussaint`] | O(n log n), O(n) expected on uniform input | `akl_toussaint.rs` |
 //! | [`quickhull`] | O(n²) worst, O(n log n) expected | `quickhull.rs` |
+//! | [`chan`] | O(n log h) | `chan.rs` |
 //!
 //! n is the number of input points, h the number of hull vertices.
 //!
@@ -62,6 +63,7 @@ use std::str::FromStr;
 
 mod akl_toussaint;
 mod brute_force;
+mod chan;
 mod check;
 mod collinear;
 mod graham;
@@ -71,6 +73,7 @@ mod quickhull;
 
 pub use akl_toussaint::{akl_toussaint, akl_toussaint_filter, akl_toussaint_with};
 pub use brute_force::{brute_force_hull, brute_force_hull_with};
+pub use chan::{chan, chan_with};
 pub use check::{encloses, is_strictly_convex_ccw};
 pub use graham::{graham_scan, graham_scan_with};
 pub use jarvis::{jarvis_march, jarvis_march_with};
@@ -110,6 +113,8 @@ pub enum Algorithm {
     AklToussaint,
     /// [`quickhull`]: divide by the farthest point from each edge.
     Quickhull,
+    /// [`chan`]: group hulls, then wrapping with tangent searches, O(n log h).
+    Chan,
 }
 
 /// Runs `algorithm` on `points`: the same as calling its function.
@@ -139,17 +144,18 @@ pub fn convex_hull(
 
 impl Algorithm {
     /// Every algorithm, brute force first.
-    pub const ALL: [Algorithm; 6] = [
+    pub const ALL: [Algorithm; 7] = [
         Algorithm::BruteForce,
         Algorithm::Jarvis,
         Algorithm::Graham,
         Algorithm::MonotoneChain,
         Algorithm::AklToussaint,
         Algorithm::Quickhull,
+        Algorithm::Chan,
     ];
 
     /// The kebab-case name used on the command line: `"brute-force"`, `"jarvis"`,
-    /// `"graham"`, `"monotone-chain"`, `"akl-toussaint"`, `"quickhull"`.
+    /// `"graham"`, `"monotone-chain"`, `"akl-toussaint"`, `"quickhull"`, `"chan"`.
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::BruteForce => "brute-force",
@@ -158,6 +164,7 @@ impl Algorithm {
             Algorithm::MonotoneChain => "monotone-chain",
             Algorithm::AklToussaint => "akl-toussaint",
             Algorithm::Quickhull => "quickhull",
+            Algorithm::Chan => "chan",
         }
     }
 
@@ -179,6 +186,7 @@ impl Algorithm {
             Algorithm::MonotoneChain => monotone_chain_with(points, options, counter),
             Algorithm::AklToussaint => akl_toussaint_with(points, options, counter),
             Algorithm::Quickhull => quickhull_with(points, options, counter),
+            Algorithm::Chan => chan_with(points, options, counter),
         }
     }
 }

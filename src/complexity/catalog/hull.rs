@@ -1,7 +1,7 @@
 //! Catalog entries of [`crate::hull`] and [`crate::calipers`]: each hull algorithm on the
-//! input that shows its bound, Jarvis's march on both sides of its output sensitivity
-//! (few vertices in a disk, every point a vertex on a circle), and the diameter by brute
-//! force and by calipers over a convex polygon.
+//! input that shows its bound, Jarvis's march and Chan's algorithm on both sides of their
+//! output sensitivity (few vertices in a disk, every point a vertex on a circle), and the
+//! diameter by brute force and by calipers over a convex polygon.
 //!
 //! The counted operation is the orientation test, the course's "signed area" (quickhull's
 //! farthest-point test and the calipers' direction test are signed areas too); the monotone
@@ -87,6 +87,22 @@ pub(super) fn entries() -> Vec<Entry> {
         )
         .quick(256, 1 << 16)
         .full(256, 1 << 20),
+        hull(
+            Algorithm::Chan,
+            PointKind::UniformDisk,
+            Bound::NLogH,
+            Operation::OrientationTests,
+        )
+        .quick(256, 1 << 15)
+        .full(256, 1 << 19),
+        hull(
+            Algorithm::Chan,
+            PointKind::Cocircular,
+            Bound::NLogH,
+            Operation::OrientationTests,
+        )
+        .quick(256, 1 << 15)
+        .full(256, 1 << 18),
         hull(
             Algorithm::Quickhull,
             PointKind::UniformDisk,

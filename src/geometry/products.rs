@@ -1,0 +1,232 @@
+//! Exact comparisons of products of degree-2 forms: distances from points to lines, and
+//! areas of rectangles with a side on a line.
+//!
+//! Both questions compare quotients such as `cross² / |ab|²`. Clearing the denominators
+//! turns each into the sign of `P - Q`, where `P` and `Q` are products of three absolute
+//! values of degree-2 forms: cross products `(b - a) x (d - c)` and dot products
+//! `(b - a) · (d - c)` of coordinate differences. The stages are those of the other
+//! predicates:
+//!
+//! 1. **Filter.** Each form in floating point with an absolute error bound; if every form is
+//!    well clear of zero (relative error at most 1/8) and of overflow and underflow
+//!    (magnitude in `[2^-300, 2^300]`), the products carry a relative error bound, and a
+//!    difference that clears it has the exact sign.
+//! 2. **Exact.** Otherwise every coordinate is written as `m · 2^e` with integer `m`, all
+//!    are brought to the smallest exponent, and the forms and products are evaluated in big
+//!    integers. Both sides have the same degree, so the common power of two cancels.
+
+use super::bigint::BigInt;
+use super::extended::decompose;
+use super::predicates::{pow2, UNDERFLOW_SLACK};
+use super::Point2;
+use std::cmp::Ordering;
+
+/// Compares the distance from `p` to the line through `a` and `b` with the distance from
+/// `q` to the line through `c` and `d`, exact for every finite input.
+///
+/// `Ordering::Less` means `p` is strictly closer to its line than `q` to its own. The
+/// distances are never computed: the predicate is the sign of
+/// `((b - a) x (p - a))² · |d - c|² − ((d - c) x (q - c))² · |b - a|²`, so when a line is
+/// degenerate (`a = b` or `c = d`) both terms vanish and the answer is `Ordering::Equal`.
+/// Rotating calipers use it to choose the edge that realises a convex polygon's width.
+///
+/// # Complexity
+/// O(1): a floating-point filter; near ties, and operands near overflow or underflow, take
+/// an exact big-integer evaluation of the degree-8 polynomial.
+///
+/// ```
+/// use compgeo::geometry::{cmp_line_dist, Point2};
+/// use std::cmp::Ordering;
+///
+/// let p = |x, y| Point2::new(x, y);
+/// // (0, 5) is 5 from the x-axis; (4, 0) is 12/5 from the line through (0, 0) and (4, 3).
+/// assert_eq!(cmp_line_dist(p(0.0, 0.0), p(1.0, 0.0), p(0.0, 5.0), p(0.0, 0.0), p(4.0, 3.0), p(4.0, 0.0)), Ordering::Greater);
+/// // (3, 4) is 4 from the x-axis and (4, 1) is 4 from the y-axis: a tie, detected exactly.
+/// assert_eq!(cmp_line_dist(p(0.0, 0.0), p(1.0, 0.0), p(3.0, 4.0), p(0.0, 0.0), p(0.0, 7.0), p(4.0, 1.0)), Ordering::Equal);
+/// ```
+pub fn cmp_line_dist(a: Point2, b: Point2, p: Point2, c: Point2, d: Point2, q: Point2) -> Ordering {
+    let lhs = [
+        Form::cross(a, b, a, p),
+        Form::cross(a, b, a, p),
+        Form::dot(c, d, c, d),
+    ];
+    let rhs = [
+        Form::cross(c, d, c, q),
+        Form::cross(c, d, c, q),
+        Form::dot(a, b, a, b),
+    ];
+    cmp_abs_products(&lhs, &rhs)
+}
+
+/// Compares the areas of two rectangles, each given as `[a, b, p, l, r]`: a side on the
+/// line through `a` and `b`, the opposite side through `p`, and the two other sides through
+/// `l` and `r` perpendicular to the line; exact for every finite input.
+///
+/// The area is `|(b - a) x (p - a)| · |(b - a) · (r - l)| / |b - a|²` (height times length),
+/// and the predicate is the sign of the first area's numerator times the second's
+/// denominator minus the other way round, so a degenerate line (`a = b`) gives
+/// `Ordering::Equal`. Rotating calipers use it to choose the minimum-area enclosing
+/// rectangle without rounding an area.
+///
+/// # Complexity
+/// O(1), as for [`cmp_line_dist`] (a degree-6 polynomial).
+///
+/// ```
+/// use compgeo::geometry::{cmp_rect_area, Point2};
+/// use std::cmp::Ordering;
+///
+/// let p = |x, y| Point2::new(x, y);
+/// // A 4 × 2 box on the x-axis against a box on the diagonal y = x: height √2 (through
+/// // (0, 2)), length 3√2 (from (0, 0) to (3, 3) along the diagonal), area 6.
+/// let flat = [p(0.0, 0.0), p(1.0, 0.0), p(0.0, 2.0), p(0.0, 0.0), p(4.0, 0.0)];
+/// let tilted = [p(0.0, 0.0), p(1.0, 1.0), p(0.0, 2.0), p(0.0, 0.0), p(3.0, 3.0)];
+/// assert_eq!(cmp_rect_area(flat, tilted), Ordering::Greater);
+/// let tilted_8 = [p(0.0, 0.0), p(1.0, 1.0), p(0.0, 2.0), p(0.0, 0.0), p(4.0, 4.0)];
+/// assert_eq!(cmp_rect_area(flat, tilted_8), Ordering::Equal);
+/// ```
+pub fn cmp_rect_area(first: [Point2; 5], second: [Point2; 5]) -> Ordering {
+    let [a, b, p, l, r] = first;
+    let [c, d, q, l2, r2] = second;
+    let lhs = [
+        Form::cross(a, b, a, p),
+        Form::dot(a, b, l, r),
+        Form::dot(c, d, c, d),
+    ];
+    let rhs = [
+        Form::cross(c, d, c, q),
+        Form::dot(c, d, l2, r2),
+        Form::dot(a, b, a, b),
+    ];
+    cmp_abs_products(&lhs, &rhs)
+}
+
+/// `(u1 - u0) x (v1 - v0)` or `(u1 - u0) · (v1 - v0)`.
+#[derive(Debug, Clone, Copy)]
+struct Form {
+    dot: bool,
+    /// `[u0, u1, v0, v1]`.
+    points: [Point2; 4],
+}
+
+/// Each operand of the filter's products stays in `[2^-300, 2^300]`, so a product of three
+/// is a normal double and never overflows.
+const FORM_MIN: f64 = pow2(-300);
+const FORM_MAX: f64 = pow2(300);
+
+/// Absolute error of a form `t1 - t2` with `t = (difference)·(difference)`: each product
+/// of rounded differences carries at most about `3 eps` relative error and the subtraction
+/// one more `eps` of the sum; `5 eps` leaves room for the rounding of the bound itself.
+const FORM_ERRBOUND: f64 = 5.0 * (f64::EPSILON / 2.0);
+
+impl Form {
+    fn cross(u0: Point2, u1: Point2, v0: Point2, v1: Point2) -> Form {
+        Form {
+            dot: false,
+            points: [u0, u1, v0, v1],
+        }
+    }
+
+    fn dot(u0: Point2, u1: Point2, v0: Point2, v1: Point2) -> Form {
+        Form {
+            dot: true,
+            points: [u0, u1, v0, v1],
+        }
+    }
+
+    /// The rounded absolute value and a bound on its relative error, if the value is well
+    /// clear of zero, overflow and underflow.
+    #[inline]
+    fn approx(&self) -> Option<(f64, f64)> {
+        let [u0, u1, v0, v1] = self.points;
+        let (ux, uy, vx, vy) = (u1.x - u0.x, u1.y - u0.y, v1.x - v0.x, v1.y - v0.y);
+        let (t1, t2) = if self.dot {
+            (ux * vx, -(uy * vy))
+        } else {
+            (ux * vy, uy * vx)
+        };
+        let value = (t1 - t2).abs();
+        let err = FORM_ERRBOUND * (t1.abs() + t2.abs()) + UNDERFLOW_SLACK;
+        // Written so that NaN fails every test.
+        let usable = value >= 8.0 * err && value >= FORM_MIN && value <= FORM_MAX;
+        usable.then(|| (value, err / value))
+    }
+
+    /// The exact value, its coordinates scaled by `2^-base`.
+    fn exact(&self, base: i32) -> BigInt {
+        let c: Vec<BigInt> = self
+            .points
+            .iter()
+            .flat_map(|p| [p.x, p.y])
+            .map(|v| big(v, base))
+            .collect();
+        let (ux, uy) = (c[2].sub(&c[0]), c[3].sub(&c[1]));
+        let (vx, vy) = (c[6].sub(&c[4]), c[7].sub(&c[5]));
+        if self.dot {
+            ux.mul(&vx).add(&uy.mul(&vy))
+        } else {
+            ux.mul(&vy).sub(&uy.mul(&vx))
+        }
+    }
+}
+
+/// The sign of `Π |lhs| − Π |rhs|` for two products of the same number of forms.
+fn cmp_abs_products<const K: usize>(lhs: &[Form; K], rhs: &[Form; K]) -> Ordering {
+    filtered(lhs, rhs).unwrap_or_else(|| exact(lhs, rhs))
+}
+
+#[inline]
+fn filtered<const K: usize>(lhs: &[Form; K], rhs: &[Form; K]) -> Option<Ordering> {
+    let product = |forms: &[Form; K]| -> Option<(f64, f64)> {
+        let mut value = 1.0;
+        let mut rel = 0.0;
+        for f in forms {
+            let (v, r) = f.approx()?;
+            value *= v;
+            rel += r;
+        }
+        // With every relative error r_i <= 1/8 and K <= 3, Π(1 + r_i) − 1 <= 1.5 Σ r_i; the
+        // K − 1 roundings of the product and of the comparison fit in 8 eps.
+        Some((value, 1.5 * rel + 8.0 * f64::EPSILON))
+    };
+    let (p, p_rel) = product(lhs)?;
+    let (q, q_rel) = product(rhs)?;
+    let diff = p - q;
+    let bound = p_rel * p + q_rel * q;
+    if diff > bound {
+        Some(Ordering::Greater)
+    } else if -diff > bound {
+        Some(Ordering::Less)
+    } else {
+        None
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn exact<const K: usize>(lhs: &[Form; K], rhs: &[Form; K]) -> Ordering {
+    let base = lhs
+        .iter()
+        .chain(rhs)
+        .flat_map(|f| f.points)
+        .flat_map(|p| [p.x, p.y])
+        .map(decompose)
+        .filter(|&(_, m, _)| m != 0)
+        .map(|(_, _, e)| e)
+        .min()
+        .unwrap_or(0);
+    let product = |forms: &[Form; K]| {
+        forms
+            .iter()
+            .map(|f| f.exact(base).abs())
+            .reduce(|acc, v| acc.mul(&v))
+            .expect("at least one form")
+    };
+    product(lhs).sub(&product(rhs)).signum().cmp(&0)
+}
+
+/// `v · 2^-base` as a big integer (`base` at most the exponent of `v`'s last bit).
+fn big(v: f64, base: i32) -> BigInt {
+    let (negative, mantissa, e) = decompose(v);
+    let shift = if mantissa == 0 { 0 } else { (e - base) as u32 };
+    BigInt::from_parts(negative, mantissa, shift)
+}

@@ -1,0 +1,354 @@
+//! Chan's output-sensitive hull: monotone-chain hulls of small groups, then Jarvis's march
+//! over the groups with a binary search for each group's tangent.
+
+use super::{chains, finish, lex_min, lex_sorted_items, HullOptions};
+use crate::count::{Counter, NoCount};
+use crate::error::Result;
+use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use std::cmp::Ordering;
+
+/// The convex hull of `points` by Chan's algorithm. See [`chan_with`].
+///
+/// ```
+/// use compgeo::geometry::Point2;
+/// use compgeo::hull::{chan, HullOptions};
+///
+/// let pts = [(1.0, 1.0), (0.0, 0.0), (2.0, 0.0), (1.0, 0.5), (1.0, 0.0)].map(Point2::from);
+/// assert_eq!(chan(&pts, HullOptions::default())?, [1, 2, 0]);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
+    chan_with(points, options, &mut NoCount)
+}
+
+/// The convex hull of `points` by Chan's algorithm, recording its operations in `counter`.
+///
+/// Idea: guess m = 2^(2^t) for t = 1, 2, ... (4, 16, 256, 65 536, ...). Split the input
+/// into groups of m consecutive points and hull each group by the monotone chain
+/// (O(n log m)). Then run Jarvis's march from the lexicographically smallest point, but
+/// instead of scanning every point, ask each group for its tangent from the current vertex:
+/// the vertex of the group's hull that every point of the group is left of (the farthest of
+/// two on one ray), found by binary search in O(log m). The best of the n/m tangents is the
+/// next hull vertex (O((n/m) log m) per step). If the march has not closed after m steps,
+/// h > m: square m and start again. The round that succeeds has m < h², and the rounds'
+/// costs grow geometrically in log m, so the total is O(n log h). When m reaches n the
+/// single group's hull is the answer.
+///
+/// The binary search is exact: seen from the current vertex p (a strict hull vertex, so
+/// outside every group's hull or equal to one of its vertices), the group's vertices ordered
+/// "more clockwise, then farther" form a cyclic sequence with one minimum and one maximum;
+/// every comparison is one [`orient2d`](crate::geometry::orient2d) (and a
+/// [`cmp_dist`](crate::geometry::cmp_dist) when two vertices are on one ray from p, as on
+/// grids). A group that holds p itself answers with p's successor on its hull.
+///
+/// Not in the seed; T. M. Chan, "Optimal output-sensitive convex hull algorithms in two and
+/// three dimensions" (1996). It combines `003_5b666ee3e15e6353.txt`, §2.2 "Marcha de
+/// Jarvis" (the wrapping, with the seed's signed-area test) and "Scan de Graham - Variante"
+/// (the group hulls).
+///
+/// Output convention and degenerate inputs: see the [module docs](super). `keep_collinear`
+/// inserts the boundary points afterwards.
+///
+/// # Errors
+///
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or
+/// infinite coordinate.
+///
+/// # Complexity
+///
+/// With n = `points.len()` and h the number of hull vertices: time O(n log h),
+/// output-sensitive (O(n log n) when every point is a vertex, O(n) when h is bounded);
+/// auxiliary space O(n) for the group hulls.
+///
+/// # Counts
+///
+/// Per round with group size m: the monotone chain's comparisons (O(n log m)) and
+/// orientation tests (at most 3n) on the groups, then per step of the march O(log m)
+/// comparisons and at most 2⌈log₂ m⌉ + 3 orientation tests per group, and up to n/m more to
+/// pick the best tangent. In all O(n log h) comparisons and orientation tests, plus a
+/// distance evaluation for each tie between vertices on one ray, and n − 1 comparisons to
+/// find the start.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::gen::{points, PointKind};
+/// use compgeo::hull::{chan_with, jarvis_march_with, HullOptions};
+///
+/// let pts = points(PointKind::UniformDisk, 4096, 7)?;
+/// let (mut fast, mut slow) = (Counts::default(), Counts::default());
+/// let hull = chan_with(&pts, HullOptions::default(), &mut fast)?;
+/// assert_eq!(hull, jarvis_march_with(&pts, HullOptions::default(), &mut slow)?);
+/// assert!(fast.orientation_tests < slow.orientation_tests);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn chan_with<C: Counter>(
+    points: &[Point2],
+    options: HullOptions,
+    counter: &mut C,
+) -> Result<Vec<usize>> {
+    validate(points)?;
+    let n = points.len();
+    if n == 0 {
+        return Ok(Vec::new());
+    }
+    let start = lex_min(points, counter);
+    let mut exponent = 2u32;
+    let strict = loop {
+        let m = group_size(exponent, n);
+        if m >= n {
+            let sorted = lex_sorted_items(points, 0..n, counter);
+            break chains(&sorted, counter);
+        }
+        let groups = Groups::new(points, m, counter);
+        if let Some(hull) = wrap(points, &groups, start, m, counter) {
+            break hull;
+        }
+        exponent *= 2;
+    };
+    Ok(finish(points, 0..n, strict, options, counter))
+}
+
+/// The hulls of consecutive groups of points, stored one after another.
+struct Groups {
+    /// Every group's strictly convex hull, counter-clockwise from its lexicographically
+    /// smallest vertex: the point and its index in the input.
+    vertices: Vec<(Point2, usize)>,
+    /// Per group: where its hull starts in `vertices`, and its lexicographically largest
+    /// vertex (relative to the start).
+    spans: Vec<Span>,
+}
+
+#[derive(Clone, Copy)]
+struct Span {
+    start: usize,
+    len: usize,
+    top: usize,
+}
+
+impl Groups {
+    /// The hulls of the groups `points[0..m]`, `points[m..2m]`, ...
+    fn new<C: Counter>(points: &[Point2], m: usize, counter: &mut C) -> Groups {
+        let mut vertices = Vec::with_capacity(points.len());
+        let mut spans = Vec::with_capacity(points.len().div_ceil(m));
+        for lo in (0..points.len()).step_by(m) {
+            let hi = (lo + m).min(points.len());
+            let sorted = lex_sorted_items(points, lo..hi, counter);
+            let hull = chains(&sorted, counter);
+            let start = vertices.len();
+            vertices.extend(hull.iter().map(|&i| (points[i], i)));
+            let len = hull.len();
+            // Lexicographically increasing up to the top vertex, decreasing after it.
+            let v = &vertices[start..];
+            let top = partition_point(0, len - 1, |k| {
+                counter.cmp_lex(v[k].0, v[k + 1].0) == Ordering::Less
+            });
+            spans.push(Span { start, len, top });
+        }
+        Groups { vertices, spans }
+    }
+
+    /// The tangent of group `g` from `p`: the vertex of its hull that no vertex is right of
+    /// (seen from `p`), the farthest of two on one ray; `None` if the group is only `p`.
+    /// `p` must be outside the group's hull or one of its vertices.
+    fn tangent<C: Counter>(&self, g: usize, p: Point2, counter: &mut C) -> Option<(Point2, usize)> {
+        let Span { start, len, top } = self.spans[g];
+        let v = &self.vertices[start..start + len];
+        if let Some(j) = vertex_at(v, top, p, counter) {
+            return (len > 1).then(|| v[(j + 1) % len]);
+        }
+        if len <= 2 {
+            return v.iter().copied().reduce(|best, c| {
+                if better(p, c.0, best.0, counter) {
+                    c
+                } else {
+                    best
+                }
+            });
+        }
+        // key(i) < key(j) when v[i] is more clockwise from p than v[j] (or on one ray and
+        // farther). Around the polygon the keys rise from their minimum to their maximum
+        // and fall back: find the minimum by binary search over 1..len, anchored at v[0].
+        let k = len;
+        let mut below = |i: usize, j: usize| better(p, v[i].0, v[j].0, counter);
+        let falls_at_0 = below(1, 0);
+        let min = partition_point(1, k, |i| {
+            let falls = below((i + 1) % k, i);
+            let under_0 = below(i, 0);
+            if falls_at_0 {
+                // 0 is on the falling arc: before the minimum the keys fall below key(0).
+                falls && under_0
+            } else {
+                // 0 is on the rising arc: after the minimum they rise below key(0).
+                !(!falls && under_0)
+            }
+        });
+        Some(v[min % k])
+    }
+}
+
+/// Chan's group size for the guess `exponent` (2^exponent), capped at `n`.
+fn group_size(exponent: u32, n: usize) -> usize {
+    if exponent >= usize::BITS {
+        n
+    } else {
+        (1usize << exponent).min(n)
+    }
+}
+
+/// Jarvis's march from `start` over the group hulls; `None` if it has not closed after `m`
+/// vertices.
+fn wrap<C: Counter>(
+    points: &[Point2],
+    groups: &Groups,
+    start: usize,
+    m: usize,
+    counter: &mut C,
+) -> Option<Vec<usize>> {
+    let first = points[start];
+    let mut hull = vec![start];
+    let mut p = first;
+    loop {
+        let mut next: Option<(Point2, usize)> = None;
+        // Groups in input order and strict improvement only: of equal points the one with
+        // the smallest index wins.
+        for g in 0..groups.spans.len() {
+            if let Some(c) = groups.tangent(g, p, counter) {
+                next = match next {
+                    Some(best) if !better(p, c.0, best.0, counter) => Some(best),
+                    _ => Some(c),
+                };
+            }
+        }
+        match next {
+            Some((q, i)) if counter.cmp_lex(q, first) != Ordering::Equal => {
+                if hull.len() == m {
+                    return None;
+                }
+                hull.push(i);
+                p = q;
+            }
+            _ => return Some(hull),
+        }
+    }
+}
+
+/// Whether `c` beats `best` as the next vertex after `p`: `c` is right of `p -> best`, or
+/// on the ray from `p` through `best` and strictly farther.
+#[inline]
+fn better<C: Counter>(p: Point2, c: Point2, best: Point2, counter: &mut C) -> bool {
+    match counter.orient2d(p, best, c) {
+        Orientation::Clockwise => true,
+        Orientation::CounterClockwise => false,
+        Orientation::Collinear => counter.cmp_dist(p, c, p, best) == Ordering::Greater,
+    }
+}
+
+/// The position of `p` among the vertices `v` of a strictly convex hull (counter-clockwise
+/// from its lexicographically smallest vertex, `top` its largest), if it is one: a binary
+/// search on the increasing lower chain, then on the decreasing upper chain.
+fn vertex_at<C: Counter>(
+    v: &[(Point2, usize)],
+    top: usize,
+    p: Point2,
+    counter: &mut C,
+) -> Option<usize> {
+    let k = partition_point(0, top + 1, |i| counter.cmp_lex(v[i].0, p) == Ordering::Less);
+    if k <= top && counter.cmp_lex(v[k].0, p) == Ordering::Equal {
+        return Some(k);
+    }
+    let k = partition_point(top + 1, v.len(), |i| {
+        counter.cmp_lex(v[i].0, p) == Ordering::Greater
+    });
+    (k < v.len() && counter.cmp_lex(v[k].0, p) == Ordering::Equal).then_some(k)
+}
+
+/// The first `k` in `lo..hi` for which `before(k)` is false, given that it is true on a
+/// prefix of the range.
+fn partition_point(mut lo: usize, mut hi: usize, mut before: impl FnMut(usize) -> bool) -> usize {
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if before(mid) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hull::brute_force_hull;
+
+    /// The tangent search against a linear scan, from every point outside a polygon with
+    /// collinear neighbours (a grid) and from each of its vertices.
+    #[test]
+    fn tangents_match_a_linear_scan() {
+        let mut pts = Vec::new();
+        for x in -3..=3 {
+            for y in -3..=3 {
+                pts.push(Point2::new(f64::from(x), f64::from(y)));
+            }
+        }
+        let polygon: Vec<Point2> = [
+            (0.0, -2.0),
+            (2.0, -1.0),
+            (2.0, 1.0),
+            (0.0, 2.0),
+            (-1.0, 0.0),
+        ]
+        .map(Point2::from)
+        .to_vec();
+        let groups = Groups::new(&polygon, polygon.len(), &mut NoCount);
+        let hull: Vec<Point2> = groups.vertices.iter().map(|v| v.0).collect();
+        let outside = |q: Point2| {
+            (0..hull.len()).any(|k| {
+                crate::geometry::orient2d(hull[k], hull[(k + 1) % hull.len()], q)
+                    == Orientation::Clockwise
+            })
+        };
+        for &p in pts.iter().filter(|&&q| outside(q) || hull.contains(&q)) {
+            let got = groups.tangent(0, p, &mut NoCount).unwrap().0;
+            let expected = hull
+                .iter()
+                .copied()
+                .filter(|&q| q != p)
+                .reduce(|best, c| {
+                    if better(p, c, best, &mut NoCount) {
+                        c
+                    } else {
+                        best
+                    }
+                })
+                .unwrap();
+            assert_eq!(got, expected, "from {p:?}");
+        }
+    }
+
+    /// 300 points in convex position: the marches with m = 4, 16 and 256 stop early, and
+    /// the round with m = 65 536 >= n is the single group's hull.
+    #[test]
+    fn restarts_with_squared_group_size() {
+        let pts: Vec<Point2> = (0..300)
+            .map(|i| Point2::new(f64::from(i), f64::from(i * i)))
+            .collect();
+        assert_eq!([2, 4, 8, 16].map(|e| group_size(e, 300)), [4, 16, 256, 300]);
+        assert_eq!(group_size(64, 300), 300);
+        for m in [4, 16, 256] {
+            let groups = Groups::new(&pts, m, &mut NoCount);
+            assert_eq!(groups.spans.len(), 300usize.div_ceil(m));
+            assert!(wrap(&pts, &groups, 0, m, &mut NoCount).is_none(), "m = {m}");
+        }
+        let oracle = brute_force_hull(&pts, HullOptions::default()).unwrap();
+        assert_eq!(oracle.len(), 300);
+        assert_eq!(chan(&pts, HullOptions::default()).unwrap(), oracle);
+        // With m = h the march closes: the first 16 points have 16 vertices.
+        let groups = Groups::new(&pts[..16], 4, &mut NoCount);
+        let small = wrap(&pts[..16], &groups, 0, 16, &mut NoCount).unwrap();
+        assert_eq!(
+            small,
+            brute_force_hull(&pts[..16], HullOptions::default()).unwrap()
+        );
+    }
+}

@@ -1,0 +1,261 @@
+//! Width and minimum-area enclosing rectangle by rotating calipers, against brute-force
+//! oracles that score every hull edge with a linear scan and exact comparisons.
+
+use compgeo::calipers::{min_area_rectangle, min_area_rectangle_with, width, Rectangle, Width};
+use compgeo::count::Counts;
+use compgeo::gen::{points, PointKind};
+use compgeo::geometry::{cmp_line_dist, cmp_rect_area, cross_sign, orient2d, Orientation, Point2};
+use compgeo::hull::{monotone_chain, HullOptions};
+use compgeo::Error;
+use proptest::prelude::*;
+use std::cmp::Ordering;
+
+#[cfg(feature = "cli")]
+mod common;
+
+/// `p` turned a quarter clockwise: `cross_sign` of turned edges is the sign of a dot product.
+fn turned(p: Point2) -> Point2 {
+    Point2::new(p.y, -p.x)
+}
+
+/// Whether `v` is strictly farther along `b - a` than `w` (`dot(b - a, v - w) > 0`).
+fn further_along(a: Point2, b: Point2, w: Point2, v: Point2) -> bool {
+    cross_sign(turned(a), turned(b), w, v) == Orientation::CounterClockwise
+}
+
+/// Per hull edge, by linear scans: `[a, b, top, left, right]`, the first extreme of each.
+fn edge_keys(pts: &[Point2], hull: &[usize]) -> Vec<[usize; 5]> {
+    let h = hull.len();
+    (0..h)
+        .map(|k| {
+            let (ia, ib) = (hull[k], hull[(k + 1) % h]);
+            let (a, b) = (pts[ia], pts[ib]);
+            let pick = |better: &dyn Fn(Point2, Point2) -> bool| {
+                hull.iter()
+                    .copied()
+                    .reduce(|best, v| if better(pts[best], pts[v]) { v } else { best })
+                    .unwrap()
+            };
+            let top = pick(&|best, v| cross_sign(a, b, best, v) == Orientation::CounterClockwise);
+            let left = pick(&|best, v| further_along(a, b, v, best));
+            let right = pick(&|best, v| further_along(a, b, best, v));
+            [ia, ib, top, left, right]
+        })
+        .collect()
+}
+
+/// The first edge whose key is smallest under `cmp`.
+fn first_min(
+    keys: &[[usize; 5]],
+    cmp: impl Fn(&[usize; 5], &[usize; 5]) -> Ordering,
+) -> [usize; 5] {
+    *keys
+        .iter()
+        .reduce(|best, k| {
+            if cmp(k, best) == Ordering::Less {
+                k
+            } else {
+                best
+            }
+        })
+        .unwrap()
+}
+
+fn check(pts: &[Point2]) -> Result<(), TestCaseError> {
+    let hull = monotone_chain(pts, HullOptions::default()).unwrap();
+    let w = width(pts).unwrap();
+    let r = min_area_rectangle(pts).unwrap();
+    if hull.len() <= 2 {
+        prop_assert_eq!(w.map(|w| w.width), hull.first().map(|_| 0.0));
+        prop_assert_eq!(r.map(|r| r.area), hull.first().map(|_| 0.0));
+        if let (Some(w), Some(r)) = (w, r) {
+            let ends = [hull[0], hull[hull.len() - 1]];
+            prop_assert_eq!(w.edge, ends);
+            prop_assert_eq!(r.edge, ends);
+            prop_assert_eq!(
+                r.corners,
+                [pts[ends[0]], pts[ends[1]], pts[ends[1]], pts[ends[0]]]
+            );
+        }
+        return Ok(());
+    }
+    let (w, r) = (w.unwrap(), r.unwrap());
+    let keys = edge_keys(pts, &hull);
+    let p = |i: usize| pts[i];
+
+    // Width: the first edge whose farthest vertex is nearest, exactly.
+    let oracle = first_min(&keys, |k, b| {
+        cmp_line_dist(p(k[0]), p(k[1]), p(k[2]), p(b[0]), p(b[1]), p(b[2]))
+    });
+    prop_assert_eq!(w.edge, [oracle[0], oracle[1]]);
+    let (a, b) = (p(w.edge[0]), p(w.edge[1]));
+    prop_assert_eq!(
+        cmp_line_dist(a, b, p(w.vertex), a, b, p(oracle[2])),
+        Ordering::Equal
+    );
+    for &q in pts {
+        prop_assert!(orient2d(a, b, q) != Orientation::Clockwise);
+    }
+
+    // Rectangle: the first edge of smallest area, and support vertices that are extreme.
+    let area_key = |k: &[usize; 5]| k.map(p);
+    let oracle = first_min(&keys, |k, b| cmp_rect_area(area_key(k), area_key(b)));
+    prop_assert_eq!(r.edge, [oracle[0], oracle[1]]);
+    let [right, top, left] = r.support;
+    let mine = [r.edge[0], r.edge[1], top, left, right];
+    prop_assert_eq!(
+        cmp_rect_area(area_key(&mine), area_key(&oracle)),
+        Ordering::Equal
+    );
+    let (a, b) = (p(r.edge[0]), p(r.edge[1]));
+    for &v in &hull {
+        prop_assert!(!further_along(a, b, p(right), p(v)));
+        prop_assert!(!further_along(a, b, p(v), p(left)));
+        prop_assert!(cross_sign(a, b, p(top), p(v)) != Orientation::CounterClockwise);
+    }
+    Ok(())
+}
+
+/// The rounded values against a plain floating-point evaluation, for small coordinates.
+fn check_values(pts: &[Point2], w: Width, r: Rectangle) {
+    if r.area == 0.0 {
+        return; // collinear input: checked by `check`
+    }
+    let (a, b, t) = (pts[w.edge[0]], pts[w.edge[1]], pts[w.vertex]);
+    let (ux, uy) = (b.x - a.x, b.y - a.y);
+    let expected = ((ux * (t.y - a.y) - uy * (t.x - a.x)) / ux.hypot(uy)).abs();
+    assert!(
+        (w.width - expected).abs() <= 1e-12 * expected,
+        "{} vs {expected}",
+        w.width
+    );
+    // The corners span the rectangle: shoelace area, and every point inside up to rounding.
+    let c = r.corners;
+    let shoelace: f64 = (0..4)
+        .map(|k| c[k].x * c[(k + 1) % 4].y - c[(k + 1) % 4].x * c[k].y)
+        .sum::<f64>()
+        / 2.0;
+    assert!(
+        (shoelace - r.area).abs() <= 1e-9 * r.area.max(1.0),
+        "{shoelace} vs {}",
+        r.area
+    );
+    for q in pts {
+        for k in 0..4 {
+            let (e, f) = (c[k], c[(k + 1) % 4]);
+            let side = (f.x - e.x) * (q.y - e.y) - (f.y - e.y) * (q.x - e.x);
+            assert!(side >= -1e-9, "{q:?} outside side {k}: {side}");
+        }
+    }
+}
+
+fn small_points() -> impl Strategy<Value = Vec<Point2>> {
+    prop::collection::vec((-6i32..=6, -6i32..=6), 0..30).prop_map(|v| {
+        v.into_iter()
+            .map(|(x, y)| Point2::new(f64::from(x), f64::from(y)))
+            .collect()
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn width_and_rectangle_equal_brute_force(pts in small_points()) {
+        check(&pts)?;
+        if let (Some(w), Some(r)) = (width(&pts).unwrap(), min_area_rectangle(&pts).unwrap()) {
+            check_values(&pts, w, r);
+        }
+    }
+
+    #[test]
+    fn width_and_rectangle_equal_brute_force_at_any_magnitude(
+        pts in small_points(),
+        scale in prop::sample::select(vec![5e-324, 1e-300, 1e-140, 1e15, 1e200, 1e300]),
+        shift in prop::sample::select(vec![0.0, 3e16]),
+    ) {
+        let pts: Vec<Point2> = pts.iter().map(|p| Point2::new(p.x * scale + shift, p.y * scale)).collect();
+        check(&pts)?;
+    }
+
+    /// Scaling by a power of two scales the width exactly in the exact choice and up to
+    /// rounding in the value, even near the ends of the double range.
+    #[test]
+    fn the_values_scale(pts in small_points(), e in prop::sample::select(vec![-1070, -1000, -500, 500, 1000])) {
+        let s = 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
+        let scaled: Vec<Point2> = pts.iter().map(|p| Point2::new(p.x * s, p.y * s)).collect();
+        if let (Some(w), Some(ws)) = (width(&pts).unwrap(), width(&scaled).unwrap()) {
+            prop_assert_eq!(w.edge, ws.edge);
+            prop_assert_eq!(w.vertex, ws.vertex);
+            let expected = w.width * s;
+            prop_assert!((ws.width - expected).abs() <= 1e-12 * expected + 8.0 * 5e-324, "{} vs {}", ws.width, expected);
+        }
+    }
+}
+
+#[test]
+fn every_generator_agrees_with_brute_force() {
+    for kind in PointKind::ALL {
+        let pts = points(kind, 300, 11).unwrap();
+        check(&pts).unwrap_or_else(|e| panic!("{kind}: {e}"));
+    }
+}
+
+#[test]
+fn the_calipers_make_at_most_9h_orientation_tests() {
+    for kind in [
+        PointKind::Cocircular,
+        PointKind::RotatedGrid,
+        PointKind::UniformDisk,
+    ] {
+        let pts = points(kind, 2000, 3).unwrap();
+        let h = monotone_chain(&pts, HullOptions::default()).unwrap().len() as u64;
+        let mut hull_only = Counts::default();
+        compgeo::hull::akl_toussaint_with(&pts, HullOptions::default(), &mut hull_only).unwrap();
+        let mut counts = Counts::default();
+        min_area_rectangle_with(&pts, &mut counts).unwrap();
+        let calipers = counts.orientation_tests - hull_only.orientation_tests;
+        assert!(calipers <= 9 * h, "{kind}: {calipers} tests for h = {h}");
+        assert!(counts.distance_evaluations < h, "{kind}");
+    }
+}
+
+#[test]
+fn known_shapes() {
+    let p = |x: f64, y: f64| Point2::new(x, y);
+    // A 4 × 3 box with an interior point: width 3 on the bottom edge [0, 1] (the right edge
+    // [1, 2] gives 4); every side gives area 12, the first edge wins.
+    let boxed = [
+        p(0.0, 0.0),
+        p(4.0, 0.0),
+        p(4.0, 3.0),
+        p(0.0, 3.0),
+        p(1.0, 1.0),
+    ];
+    let w = width(&boxed).unwrap().unwrap();
+    assert_eq!((w.edge, w.width), ([0, 1], 3.0));
+    let r = min_area_rectangle(&boxed).unwrap().unwrap();
+    assert_eq!((r.edge, r.area), ([0, 1], 12.0));
+    assert_eq!(
+        r.corners,
+        [p(0.0, 0.0), p(4.0, 0.0), p(4.0, 3.0), p(0.0, 3.0)]
+    );
+    // A right triangle with legs 3, 4: width 12/5 (the altitude on the hypotenuse).
+    let tri = [p(0.0, 0.0), p(4.0, 0.0), p(0.0, 3.0)];
+    let w = width(&tri).unwrap().unwrap();
+    assert_eq!((w.edge, w.vertex), ([1, 2], 0));
+    assert!((w.width - 2.4).abs() < 1e-15);
+    // One point and a segment.
+    let r = min_area_rectangle(&[p(1.0, 2.0)]).unwrap().unwrap();
+    assert_eq!((r.edge, r.area, r.corners), ([0, 0], 0.0, [p(1.0, 2.0); 4]));
+    assert!(width(&[]).unwrap().is_none());
+    let bad = [p(0.0, 0.0), p(f64::NAN, 1.0)];
+    assert!(matches!(
+        width(&bad),
+        Err(Error::NonFinite { index: 1, .. })
+    ));
+    assert!(matches!(
+        min_area_rectangle(&bad),
+        Err(Error::NonFinite { index: 1, .. })
+    ));
+}
