@@ -1,0 +1,17 @@
+//! Curves for geometric modelling: Bézier curves and the scalar and point types they compute
+//! with.
+//!
+//! The kernels are generic over the field ([`Scalar`]: `f64`, or exact `BigRational` with the
+//! feature `exact`) and over the dimension of the control points ([`Point<S, D>`], R^D for any
+//! `D`). The `f64` path costs nothing for being generic (the `spline` benchmark compares it
+//! with a hand-written cubic).
+//!
+//! | file | what it holds |
+//! |---|---|
+//! | `scalar.rs` | [`Scalar`], [`Point`], exact parsing of numbers, validation helpers |
+
+mod scalar;
+
+pub use scalar::{
+    binomial, parse_scalar, validate_parameter, validate_points, ParseScalar, Point, Scalar,
+};
