@@ -9,9 +9,18 @@
 //! | file | what it holds |
 //! |---|---|
 //! | `scalar.rs` | [`Scalar`], [`Point`], exact parsing of numbers, validation helpers |
+//! | `bernstein.rs` | [`bernstein`], [`bernstein_all`], [`bernstein_derivative`] |
+//! | `bezier.rs` | [`Bezier`]: de Casteljau, Horner, derivatives, split, restrict, blossom, box; [`Reparametrised`] |
+//! | `bezier_ops.rs` | degree elevation (Zhou), monomial conversion, integral, flattening, forward differences |
 
+mod bernstein;
+mod bezier;
+mod bezier_ops;
 mod scalar;
 
+pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
+pub use bezier::{Bezier, Reparametrised};
+pub use bezier_ops::MAX_FLATTEN_SEGMENTS;
 pub use scalar::{
     binomial, parse_scalar, validate_parameter, validate_points, ParseScalar, Point, Scalar,
 };
