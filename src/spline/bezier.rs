@@ -118,17 +118,27 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
 
     /// The point b(t), by the Horner-type scheme ([`Bezier::horner`]): the fast evaluation.
     ///
+    /// Horner scales the control points by binomial coefficients, which can overflow `f64`
+    /// for coordinates near the top of its range; then the result is recomputed by de
+    /// Casteljau's algorithm, which only forms affine combinations. On `f64`, a value that is
+    /// itself beyond the double range (t far outside [0, 1]) comes out infinite.
+    ///
     /// # Errors
     ///
     /// [`Error::InvalidParameter`] if `t` is NaN or infinite.
     ///
     /// # Complexity
     ///
-    /// Θ(nD) time, O(D) auxiliary space.
+    /// Θ(nD) time, O(D) auxiliary space (Θ(n²D) time and O(nD) space in the overflow case).
     #[inline]
     pub fn eval(&self, t: &S) -> Result<Point<S, D>> {
         validate_parameter(t, "t")?;
-        Ok(self.horner_unchecked(t, &mut NoCount))
+        let p = self.horner_unchecked(t, &mut NoCount);
+        if p.is_finite() {
+            Ok(p)
+        } else {
+            self.de_casteljau(t)
+        }
     }
 
     /// The point b(t) by de Casteljau's algorithm. See [`Bezier::de_casteljau_with`].
