@@ -474,3 +474,184 @@ fn bad_input_is_an_error_never_a_panic() {
     assert!(b.integral(Point::new([f64::NAN, 0.0])).is_err());
     assert!(Bezier::<f64, 2>::from_monomial(&[]).is_err());
 }
+
+#[test]
+fn cli_evaluates_splits_elevates_and_differentiates_exactly() {
+    use common::run_json;
+    let cubic = r#"[[0, 0], ["1/3", 2], [3, 2], [4, 0]]"#;
+    let v = run_json(
+        &[
+            "bezier",
+            "eval",
+            "--control",
+            cubic,
+            "--t",
+            "1/3",
+            "--exact",
+        ],
+        None,
+    );
+    // The library's exact value, computed independently through the Bernstein sum.
+    let b = Bezier::new(vec![
+        qp([(0, 1), (0, 1)]),
+        qp([(1, 3), (2, 1)]),
+        qp([(3, 1), (2, 1)]),
+        qp([(4, 1), (0, 1)]),
+    ])
+    .unwrap();
+    let basis = bernstein_all(3, &q(1, 3)).unwrap();
+    let expected = sum(b.control().iter().zip(&basis).map(|(p, w)| p.clone() * w));
+    assert_eq!(v["point"][0], expected[0].to_string());
+    assert_eq!(v["point"][1], expected[1].to_string());
+    assert_eq!(v["counts"]["arithmetic_operations"], 6);
+    let h = run_json(
+        &[
+            "bezier",
+            "eval",
+            "--control",
+            cubic,
+            "--t",
+            "1/3",
+            "--exact",
+            "--algorithm",
+            "horner",
+        ],
+        None,
+    );
+    assert_eq!(h["point"], v["point"]);
+    assert_eq!(h["counts"]["arithmetic_operations"], 4);
+
+    // Decimal input is exact with --exact: 0.1 is 1/10, not the nearest double.
+    let s = run_json(
+        &[
+            "bezier",
+            "split",
+            "--control",
+            "[0.1, 0.3]",
+            "--t",
+            "0.5",
+            "--exact",
+        ],
+        None,
+    );
+    assert_eq!(s["left"], serde_json::json!([["1/10"], ["1/5"]]));
+    assert_eq!(s["right"], serde_json::json!([["1/5"], ["3/10"]]));
+
+    let e = run_json(
+        &[
+            "bezier",
+            "elevate",
+            "--control",
+            "[[0, 0, 0], [3, 6, 9]]",
+            "--degree",
+            "3",
+        ],
+        None,
+    );
+    assert_eq!(
+        e["control"],
+        serde_json::json!([
+            [0.0, 0.0, 0.0],
+            [1.0, 2.0, 3.0],
+            [2.0, 4.0, 6.0],
+            [3.0, 6.0, 9.0]
+        ])
+    );
+
+    let d = run_json(
+        &[
+            "bezier",
+            "derivative",
+            "--control",
+            "[[0], [0], [1]]",
+            "--order",
+            "1",
+            "--t",
+            "-0.5",
+        ],
+        None,
+    );
+    assert_eq!(d["control"], serde_json::json!([[0.0], [2.0]]));
+    assert_eq!(d["point"], serde_json::json!([-1.0]));
+
+    // f64 results print as numbers that round-trip.
+    let f = run_json(
+        &[
+            "bezier",
+            "eval",
+            "--control",
+            "[[0, 0], [1, 2], [3, 2], [4, 0]]",
+            "--t",
+            "0.5",
+        ],
+        None,
+    );
+    assert_eq!(f["point"], serde_json::json!([2.0, 1.5]));
+}
+
+#[test]
+fn cli_rejects_bad_input_with_exit_code_2() {
+    use common::assert_rejected;
+    let ok = "[[0, 0], [1, 1]]";
+    for (args, needle) in [
+        (
+            vec!["bezier", "eval", "--control", "[]", "--t", "0.5"],
+            "empty",
+        ),
+        (
+            vec!["bezier", "eval", "--control", "[[0, 0], [1]]", "--t", "0.5"],
+            "point 1",
+        ),
+        (
+            vec!["bezier", "eval", "--control", "[[0, NaN]]", "--t", "0.5"],
+            "control point",
+        ),
+        (
+            vec!["bezier", "eval", "--control", "[[0, 1e999]]", "--t", "0.5"],
+            "range",
+        ),
+        (
+            vec![
+                "bezier",
+                "eval",
+                "--control",
+                "[[0, 0], [1, 1]",
+                "--t",
+                "0.5",
+            ],
+            "JSON",
+        ),
+        (vec!["bezier", "eval", "--control", ok, "--t", "nan"], "t"),
+        (
+            vec!["bezier", "eval", "--control", ok, "--t", "1/0"],
+            "denominator",
+        ),
+        (
+            vec!["bezier", "split", "--control", ok, "--t", "x", "--exact"],
+            "t",
+        ),
+        (
+            vec!["bezier", "elevate", "--control", ok, "--degree", "0"],
+            "degree",
+        ),
+        (
+            vec!["bezier", "eval", "--control", "[[1,2,3,4,5]]", "--t", "0"],
+            "1 to 4",
+        ),
+        (
+            vec![
+                "bezier",
+                "eval",
+                "--control",
+                "[[1e308], [-1e308]]",
+                "--t",
+                "-1e10",
+            ],
+            "range",
+        ),
+        (vec!["bezier", "eval", "--control", ok], "--t"),
+    ] {
+        let line = assert_rejected(&args, None);
+        assert!(line.contains(needle), "{args:?}: {line}");
+    }
+}
