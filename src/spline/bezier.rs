@@ -229,7 +229,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Complexity
     ///
     /// Θ(nD) time: n multiply-adds of points and one scaling, plus O(n) scalar operations
-    /// (binomials from a table for n < 64); O(D) auxiliary space.
+    /// (binomials from a table for n < 64, by their ratio recurrence above); O(D) auxiliary
+    /// space. On `f64` the binomials overflow for n above about 1020.
     ///
     /// # Counts
     ///
@@ -548,8 +549,16 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             }
         };
         let mut acc = at(n).clone();
+        // Past the table, C(n, i) = C(n, i + 1)·(i + 1)/(n − i) keeps each step O(1).
+        let mut c = S::one();
         for i in (0..n).rev() {
-            acc = acc * &s + &(at(i).clone() * binomial_coefficient::<S>(n, i));
+            let coefficient = if n < BINOMIAL_ROWS {
+                binomial_coefficient::<S>(n, i)
+            } else {
+                c = c * S::from_i64((i + 1) as i64) / S::from_i64((n - i) as i64);
+                c.clone()
+            };
+            acc = acc * &s + &(at(i).clone() * coefficient);
             counter.arithmetic_operation();
         }
         let mut power = S::one();
