@@ -89,6 +89,7 @@ pub mod geometry;
 pub mod graph;
 pub mod hull;
 pub mod sort;
+pub mod spline;
 
 #[cfg(feature = "cli")]
 pub mod cli;

@@ -1,0 +1,26 @@
+//! Curves for geometric modelling: Bézier curves and the scalar and point types they compute
+//! with.
+//!
+//! The kernels are generic over the field ([`Scalar`]: `f64`, or exact `BigRational` with the
+//! feature `exact`) and over the dimension of the control points ([`Point<S, D>`], R^D for any
+//! `D`). The `f64` path costs nothing for being generic (the `spline` benchmark compares it
+//! with a hand-written cubic).
+//!
+//! | file | what it holds |
+//! |---|---|
+//! | `scalar.rs` | [`Scalar`], [`Point`], exact parsing of numbers, validation helpers |
+//! | `bernstein.rs` | [`bernstein`], [`bernstein_all`], [`bernstein_derivative`] |
+//! | `bezier.rs` | [`Bezier`]: de Casteljau, Horner, derivatives, split, restrict, blossom, box; [`Reparametrised`] |
+//! | `bezier_ops.rs` | degree elevation (Zhou), monomial conversion, integral, flattening, forward differences |
+
+mod bernstein;
+mod bezier;
+mod bezier_ops;
+mod scalar;
+
+pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
+pub use bezier::{Bezier, Reparametrised};
+pub use bezier_ops::MAX_FLATTEN_SEGMENTS;
+pub use scalar::{
+    binomial, parse_scalar, validate_parameter, validate_points, ParseScalar, Point, Scalar,
+};
