@@ -9,9 +9,27 @@
 //! | file | what it holds |
 //! |---|---|
 //! | `scalar.rs` | [`Scalar`], [`Point`], exact parsing of numbers, validation helpers |
+//! | `composite.rs` | [`CompositeBezier`]: pieces over a partition, C⁰/G¹/Cʳ join checks, Cʳ builder, [`c1_partition`] |
+//! | `hermite.rs` | piecewise cubic [`hermite`] interpolation, [`estimate_tangents`], [`parameterise`] |
+//! | `interpolate.rs` | [`Polynomial`], [`vandermonde`], [`vandermonde_hermite`] |
+//! | `lagrange.rs` | [`lagrange_basis`], [`lagrange`], [`aitken`] |
+//! | `newton.rs` | divided differences: [`newton`], [`newton_hermite`] (confluent nodes) |
+//! | `cubic_spline.rs` | C² [`cubic_spline`]: natural, clamped, Bessel, periodic ([`EndCondition`]) |
 
+mod composite;
+mod cubic_spline;
+mod hermite;
+mod interpolate;
+mod lagrange;
+mod newton;
 mod scalar;
 
+pub use composite::{c1_partition, CompositeBezier, Join};
+pub use cubic_spline::{cubic_spline, cubic_spline_tangents, EndCondition};
+pub use hermite::{estimate_tangents, hermite, parameterise, Parameterisation};
+pub use interpolate::{vandermonde, vandermonde_hermite, HermiteNode, Polynomial};
+pub use lagrange::{aitken, lagrange, lagrange_basis};
+pub use newton::{newton, newton_hermite, NewtonForm};
 pub use scalar::{
     binomial, parse_scalar, validate_parameter, validate_points, ParseScalar, Point, Scalar,
 };
