@@ -347,17 +347,18 @@ pub(crate) fn solve_dense<S: Scalar, const D: usize>(
         };
         a.swap(col, pivot);
         b.swap(col, pivot);
-        for r in col + 1..n {
-            if a[r][col].is_zero() {
+        let (top, rest) = a.split_at_mut(col + 1);
+        let pivot_row = &top[col];
+        for (offset, row) in rest.iter_mut().enumerate() {
+            if row[col].is_zero() {
                 continue;
             }
-            let factor = a[r][col].clone() / &a[col][col];
-            for k in col..n {
-                let delta = factor.clone() * &a[col][k];
-                a[r][k] -= delta;
+            let factor = row[col].clone() / &pivot_row[col];
+            for (x, p) in row[col..].iter_mut().zip(&pivot_row[col..]) {
+                *x -= factor.clone() * p;
             }
             let delta = b[col].clone() * &factor;
-            b[r] -= &delta;
+            b[col + 1 + offset] -= &delta;
         }
     }
     for col in (0..n).rev() {
