@@ -45,6 +45,9 @@ pub trait Counter {
     fn edge_visit(&mut self);
     /// One visit of a vertex (a traversal takes a vertex from its queue or stack).
     fn vertex_visit(&mut self);
+    /// One arithmetic step on points: an affine combination of two points (a de Casteljau
+    /// step) or a multiply-add of a point (a Horner step). Scalar bookkeeping is not counted.
+    fn arithmetic_operation(&mut self);
 }
 
 /// The counts of every kind of operation: a plain struct with named fields.
@@ -71,6 +74,8 @@ pub struct Counts {
     pub edge_visits: u64,
     /// Vertex visits.
     pub vertex_visits: u64,
+    /// Arithmetic steps on points (affine combinations, multiply-adds).
+    pub arithmetic_operations: u64,
 }
 
 /// The kinds of operation [`Counts`] records, to name one of them (the complexity catalog
@@ -97,11 +102,13 @@ pub enum Operation {
     EdgeVisits,
     /// [`Counts::vertex_visits`].
     VertexVisits,
+    /// [`Counts::arithmetic_operations`].
+    ArithmeticOperations,
 }
 
 impl Operation {
     /// Every operation, in the order of the fields of [`Counts`].
-    pub const ALL: [Operation; 9] = [
+    pub const ALL: [Operation; 10] = [
         Operation::Comparisons,
         Operation::Swaps,
         Operation::Moves,
@@ -111,6 +118,7 @@ impl Operation {
         Operation::AdjacencyTests,
         Operation::EdgeVisits,
         Operation::VertexVisits,
+        Operation::ArithmeticOperations,
     ];
 
     /// The field name in [`Counts`] (and in the JSON the CLI prints), e.g. `"orientation_tests"`.
@@ -125,6 +133,7 @@ impl Operation {
             Operation::AdjacencyTests => "adjacency_tests",
             Operation::EdgeVisits => "edge_visits",
             Operation::VertexVisits => "vertex_visits",
+            Operation::ArithmeticOperations => "arithmetic_operations",
         }
     }
 }
@@ -142,6 +151,7 @@ impl Counts {
             Operation::AdjacencyTests => self.adjacency_tests,
             Operation::EdgeVisits => self.edge_visits,
             Operation::VertexVisits => self.vertex_visits,
+            Operation::ArithmeticOperations => self.arithmetic_operations,
         }
     }
 
@@ -188,6 +198,10 @@ impl Counter for Counts {
     fn vertex_visit(&mut self) {
         self.vertex_visits += 1;
     }
+    #[inline]
+    fn arithmetic_operation(&mut self) {
+        self.arithmetic_operations += 1;
+    }
 }
 
 impl Add for Counts {
@@ -209,6 +223,7 @@ impl AddAssign for Counts {
         self.adjacency_tests += rhs.adjacency_tests;
         self.edge_visits += rhs.edge_visits;
         self.vertex_visits += rhs.vertex_visits;
+        self.arithmetic_operations += rhs.arithmetic_operations;
     }
 }
 
@@ -236,6 +251,8 @@ impl Counter for NoCount {
     fn edge_visit(&mut self) {}
     #[inline(always)]
     fn vertex_visit(&mut self) {}
+    #[inline(always)]
+    fn arithmetic_operation(&mut self) {}
 }
 
 #[cfg(test)]
@@ -252,6 +269,7 @@ mod tests {
         c.adjacency_test();
         c.edge_visit();
         c.vertex_visit();
+        c.arithmetic_operation();
     }
 
     #[test]
@@ -262,7 +280,7 @@ mod tests {
         for op in Operation::ALL {
             assert_eq!(c.get(op), 2, "{}", op.name());
         }
-        assert_eq!(c.total(), 18);
+        assert_eq!(c.total(), 20);
     }
 
     #[test]

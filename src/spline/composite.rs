@@ -20,7 +20,7 @@
 //! `|a − b|² ≤ tol² · max(|a|², |b|²)`.
 
 use super::interpolate::check_partition;
-use super::{validate_parameter, validate_points, Point, Scalar};
+use super::{validate_parameter, validate_points, Bezier, Point, Scalar};
 use crate::{Error, Result};
 
 /// A piecewise Bézier curve over a strictly increasing partition.
@@ -42,7 +42,7 @@ use crate::{Error, Result};
 #[derive(Clone, Debug, PartialEq)]
 pub struct CompositeBezier<S, const D: usize> {
     partition: Vec<S>,
-    pieces: Vec<Vec<Point<S, D>>>,
+    pieces: Vec<Bezier<S, D>>,
 }
 
 /// How smoothly two consecutive pieces meet, as [`CompositeBezier::join`] reports it.
@@ -69,6 +69,19 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     /// not the number of intervals; [`Error::Empty`] / [`Error::NonFinite`] for an empty
     /// control polygon or a bad coordinate.
     pub fn new(partition: Vec<S>, pieces: Vec<Vec<Point<S, D>>>) -> Result<Self> {
+        let pieces = pieces
+            .into_iter()
+            .map(Bezier::new)
+            .collect::<Result<Vec<_>>>()?;
+        Self::from_pieces(partition, pieces)
+    }
+
+    /// A composite curve from its partition and its `m` Bézier pieces.
+    ///
+    /// # Errors
+    ///
+    /// As [`new`](Self::new).
+    pub fn from_pieces(partition: Vec<S>, pieces: Vec<Bezier<S, D>>) -> Result<Self> {
         check_partition(&partition, 2, "partition")?;
         if pieces.len() + 1 != partition.len() {
             return Err(Error::InvalidParameter {
@@ -80,9 +93,6 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
                 ),
             });
         }
-        for piece in &pieces {
-            validate_points(piece, "control polygon")?;
-        }
         Ok(CompositeBezier { partition, pieces })
     }
 
@@ -91,8 +101,8 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
         &self.partition
     }
 
-    /// The control polygons, one per interval.
-    pub fn pieces(&self) -> &[Vec<Point<S, D>>] {
+    /// The Bézier pieces, one per interval, each over its local parameter `t ∈ [0, 1]`.
+    pub fn pieces(&self) -> &[Bezier<S, D>] {
         &self.pieces
     }
 
@@ -134,7 +144,7 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     /// O(log m + n²·D) for m pieces of degree n (de Casteljau on one piece).
     pub fn eval(&self, u: &S) -> Result<Point<S, D>> {
         let (i, t) = self.locate(u)?;
-        Ok(de_casteljau(&self.pieces[i], &t))
+        self.pieces[i].eval(&t)
     }
 
     /// The r-th derivative `C⁽ʳ⁾(u)` (from the right at an interior knot, from the left at
@@ -146,11 +156,7 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     pub fn derivative_at(&self, u: &S, order: usize) -> Result<Point<S, D>> {
         let (i, t) = self.locate(u)?;
         let h = self.partition[i + 1].clone() - &self.partition[i];
-        let hodograph = hodograph(&self.pieces[i], order);
-        if hodograph.is_empty() {
-            return Ok(Point::zero());
-        }
-        Ok(de_casteljau(&hodograph, &t) / &power(&h, order))
+        Ok(self.pieces[i].derivative_at(&t, order)? / &power(&h, order))
     }
 
     /// The derivatives of orders `0..=order` at the end of piece `i` (`end = true`, at
@@ -161,7 +167,7 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     /// If `i` is not a piece index.
     pub fn end_derivatives(&self, i: usize, end: bool, order: usize) -> Vec<Point<S, D>> {
         let h = self.partition[i + 1].clone() - &self.partition[i];
-        local_end_derivatives(&self.pieces[i], end, order)
+        local_end_derivatives(self.pieces[i].control(), end, order)
             .into_iter()
             .enumerate()
             .map(|(r, d)| d / &power(&h, r))
@@ -188,7 +194,7 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
                 ),
             });
         }
-        let max = (self.pieces[i - 1].len() - 1).min(self.pieces[i].len() - 1);
+        let max = self.pieces[i - 1].degree().min(self.pieces[i].degree());
         let left = self.end_derivatives(i - 1, true, max);
         let right = self.end_derivatives(i, false, max);
         let parametric = left
@@ -205,7 +211,7 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     /// A single piece is C^∞.
     pub fn is_c(&self, r: usize, tolerance: &S) -> bool {
         (1..self.pieces.len()).all(|i| {
-            let max = (self.pieces[i - 1].len() - 1).min(self.pieces[i].len() - 1);
+            let max = self.pieces[i - 1].degree().min(self.pieces[i].degree());
             let left = self.end_derivatives(i - 1, true, r.min(max));
             let right = self.end_derivatives(i, false, r.min(max));
             r <= max
@@ -240,7 +246,7 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     /// Θ(n²·D) for degree n (a de Casteljau scheme per determined point).
     pub fn push_cr(&mut self, r: usize, next_knot: S, free: &[Point<S, D>]) -> Result<()> {
         let last = self.pieces.last().expect("a composite curve has a piece");
-        let n = last.len() - 1;
+        let n = last.degree();
         if r > n {
             return Err(Error::InvalidParameter {
                 name: "r",
@@ -275,12 +281,15 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
         // The new interval in the last piece's local parameter is [1, lambda].
         let h = self.partition[m].clone() - &self.partition[m - 1];
         let lambda = (next_knot.clone() - &self.partition[m - 1]) / &h;
-        let mut piece: Vec<Point<S, D>> = (0..=r)
-            .map(|i| blossom_two(last, n - i, &S::one(), &lambda))
-            .collect();
+        let mut piece = Vec::with_capacity(n + 1);
+        for i in 0..=r {
+            let mut args = vec![S::one(); n - i];
+            args.resize(n, lambda.clone());
+            piece.push(last.blossom(&args)?);
+        }
         piece.extend_from_slice(free);
         self.partition.push(next_knot);
-        self.pieces.push(piece);
+        self.pieces.push(Bezier::new(piece)?);
         Ok(())
     }
 }
@@ -431,51 +440,4 @@ fn local_end_derivatives<S: Scalar, const D: usize>(
         diffs.pop();
     }
     out
-}
-
-/// The control points of the r-th hodograph, `n!/(n−r)! Δʳ b_i` (empty if `r > n`).
-fn hodograph<S: Scalar, const D: usize>(control: &[Point<S, D>], order: usize) -> Vec<Point<S, D>> {
-    let n = control.len() - 1;
-    if order > n {
-        return Vec::new();
-    }
-    let mut points = control.to_vec();
-    for k in 0..order {
-        let degree = S::from_i64((n - k) as i64);
-        for j in 0..points.len() - 1 {
-            points[j] = (points[j + 1].clone() - &points[j]) * &degree;
-        }
-        points.pop();
-    }
-    points
-}
-
-/// de Casteljau's algorithm at `t`.
-fn de_casteljau<S: Scalar, const D: usize>(control: &[Point<S, D>], t: &S) -> Point<S, D> {
-    let mut p = control.to_vec();
-    for k in (1..p.len()).rev() {
-        for j in 0..k {
-            p[j] = Point::lerp(&p[j], &p[j + 1], t);
-        }
-    }
-    p.swap_remove(0)
-}
-
-/// The blossom value `b[s^{a}, t^{n−a}]` (a copies of `s`, the rest `t`) by de Casteljau
-/// steps with the two arguments.
-fn blossom_two<S: Scalar, const D: usize>(
-    control: &[Point<S, D>],
-    a: usize,
-    s: &S,
-    t: &S,
-) -> Point<S, D> {
-    let mut p = control.to_vec();
-    let n = p.len() - 1;
-    for step in 0..n {
-        let arg = if step < a { s } else { t };
-        for j in 0..n - step {
-            p[j] = Point::lerp(&p[j], &p[j + 1], arg);
-        }
-    }
-    p.swap_remove(0)
 }

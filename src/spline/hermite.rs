@@ -49,7 +49,7 @@ pub enum Parameterisation {
 ///
 /// let p = |x: f64, y: f64| Point::new([x, y]);
 /// let c = hermite(&[p(0.0, 1.0), p(5.0, 2.0)], &[p(6.0, 12.0), p(12.0, -12.0)], &[0.0, 0.5])?;
-/// assert_eq!(c.pieces()[0], vec![p(0.0, 1.0), p(1.0, 3.0), p(3.0, 4.0), p(5.0, 2.0)]);
+/// assert_eq!(c.pieces()[0].control(), [p(0.0, 1.0), p(1.0, 3.0), p(3.0, 4.0), p(5.0, 2.0)]);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn hermite<S: Scalar, const D: usize>(

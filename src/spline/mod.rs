@@ -9,6 +9,9 @@
 //! | file | what it holds |
 //! |---|---|
 //! | `scalar.rs` | [`Scalar`], [`Point`], exact parsing of numbers, validation helpers |
+//! | `bernstein.rs` | [`bernstein`], [`bernstein_all`], [`bernstein_derivative`] |
+//! | `bezier.rs` | [`Bezier`]: de Casteljau, Horner, derivatives, split, restrict, blossom, box; [`Reparametrised`] |
+//! | `bezier_ops.rs` | degree elevation (Zhou), monomial conversion, integral, flattening, forward differences |
 //! | `composite.rs` | [`CompositeBezier`]: pieces over a partition, C⁰/G¹/Cʳ join checks, Cʳ builder, [`c1_partition`] |
 //! | `hermite.rs` | piecewise cubic [`hermite`] interpolation, [`estimate_tangents`], [`parameterise`] |
 //! | `interpolate.rs` | [`Polynomial`], [`vandermonde`], [`vandermonde_hermite`] |
@@ -16,6 +19,9 @@
 //! | `newton.rs` | divided differences: [`newton`], [`newton_hermite`] (confluent nodes) |
 //! | `cubic_spline.rs` | C² [`cubic_spline`]: natural, clamped, Bessel, periodic ([`EndCondition`]) |
 
+mod bernstein;
+mod bezier;
+mod bezier_ops;
 mod composite;
 mod cubic_spline;
 mod hermite;
@@ -24,6 +30,9 @@ mod lagrange;
 mod newton;
 mod scalar;
 
+pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
+pub use bezier::{Bezier, Reparametrised};
+pub use bezier_ops::MAX_FLATTEN_SEGMENTS;
 pub use composite::{c1_partition, CompositeBezier, Join};
 pub use cubic_spline::{cubic_spline, cubic_spline_tangents, EndCondition};
 pub use hermite::{estimate_tangents, hermite, parameterise, Parameterisation};

@@ -545,7 +545,7 @@ fn parse_plain_f64(text: &str) -> std::result::Result<f64, String> {
 /// Checks `[+-]digits[.digits][(e|E)[+-]digits]` with at least one mantissa digit, so that
 /// `inf`, `nan` and hexadecimal never pass.
 fn check_decimal_syntax(text: &str) -> std::result::Result<(), String> {
-    let bad = || format!("expected an integer, a decimal or a fraction p/q, got {text:?}");
+    let bad = || "expected an integer, a decimal or a fraction p/q".to_string();
     let s = text.strip_prefix(['+', '-']).unwrap_or(text);
     let (mantissa, exponent) = match s.find(['e', 'E']) {
         Some(i) => (&s[..i], Some(&s[i + 1..])),

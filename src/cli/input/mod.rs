@@ -21,14 +21,19 @@
 //! **Graphs** are JSON objects `{"vertices": n, "edges": [[u, v], ...]}`, or with a weight
 //! on every edge, `[[u, v, w], ...]`, read into a [`gen::EdgeList`](crate::gen::EdgeList).
 //! Vertex ids must be integers in `0..n`; weights are finite numbers.
+//!
+//! **Exact number lists** (the curve commands' `--exact`): [`parse_number_arrays`] keeps the
+//! text of every number of `[[x, y, ...], ...]` so it can be read as an exact rational.
 
 mod csv_points;
 mod graph_json;
 mod json_points;
+mod number_arrays;
 
 pub use csv_points::parse_csv_points;
 pub use graph_json::parse_json_graph;
 pub use json_points::parse_json_points;
+pub use number_arrays::parse_number_arrays;
 
 use super::CliError;
 use crate::gen::EdgeList;

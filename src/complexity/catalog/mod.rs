@@ -145,12 +145,14 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(sort::entries());
     all.extend(graph::entries());
     all.extend(hull::entries());
+    all.extend(spline::entries());
     all
 }
 
 mod graph;
 mod hull;
 mod sort;
+mod spline;
 
 /// The result of one counted run.
 pub(crate) struct Counted {

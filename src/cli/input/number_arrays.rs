@@ -1,0 +1,233 @@
+//! A reader for lists of points whose numbers must keep their exact text: JSON arrays
+//! `[[x, y, ...], ...]` (or `[x, ...]` for points of one coordinate) whose entries are JSON
+//! numbers or strings holding a number (`"47/18"`, `"0.1"`).
+//!
+//! `serde_json` turns every number into an `f64` on reading, so `0.1` would already be
+//! rounded; the exact (`--exact`) commands need the digits as written. Converting the text
+//! is the caller's job ([`crate::spline::parse_scalar`]).
+
+use crate::cli::CliError;
+
+/// The entries of a JSON list of points, as the text of each number.
+///
+/// `[[0, 1], ["1/3", 2.5]]` gives `[["0", "1"], ["1/3", "2.5"]]`; a flat list `[1, "2/3"]`
+/// gives one-coordinate points `[["1"], ["2/3"]]`.
+///
+/// # Errors
+///
+/// [`CliError::Json`] with the line and column of a syntax error; [`CliError::Shape`] if
+/// the list is empty, mixes numbers and arrays, or its points differ in length.
+pub fn parse_number_arrays(text: &str) -> Result<Vec<Vec<String>>, CliError> {
+    let mut p = Parser {
+        chars: text.trim_start_matches('\u{feff}').char_indices().collect(),
+        pos: 0,
+        text,
+    };
+    let items = p.array(0)?;
+    p.skip_ws();
+    if p.pos < p.chars.len() {
+        return Err(p.error("trailing characters after the list"));
+    }
+    let points: Vec<Vec<String>> = if items.iter().all(|i| matches!(i, Item::Number(_))) {
+        items
+            .into_iter()
+            .map(|i| match i {
+                Item::Number(s) => vec![s],
+                Item::List(_) => unreachable!("checked above"),
+            })
+            .collect()
+    } else {
+        items
+            .into_iter()
+            .enumerate()
+            .map(|(index, i)| match i {
+                Item::List(v) => Ok(v),
+                Item::Number(_) => Err(CliError::Shape(format!(
+                    "point {index} is a number, but other points are lists"
+                ))),
+            })
+            .collect::<Result<_, _>>()?
+    };
+    if points.is_empty() {
+        return Err(CliError::Shape("the list of points is empty".to_string()));
+    }
+    let d = points[0].len();
+    if d == 0 {
+        return Err(CliError::Shape("point 0 has no coordinates".to_string()));
+    }
+    if let Some((index, p)) = points.iter().enumerate().find(|(_, p)| p.len() != d) {
+        return Err(CliError::Shape(format!(
+            "point {index} has {} coordinates, but point 0 has {d}",
+            p.len()
+        )));
+    }
+    Ok(points)
+}
+
+enum Item {
+    Number(String),
+    List(Vec<String>),
+}
+
+struct Parser<'a> {
+    chars: Vec<(usize, char)>,
+    pos: usize,
+    text: &'a str,
+}
+
+impl Parser<'_> {
+    /// An array at nesting `depth` (0: the list of points, 1: one point).
+    fn array(&mut self, depth: usize) -> Result<Vec<Item>, CliError> {
+        self.skip_ws();
+        self.expect('[')?;
+        let mut items = Vec::new();
+        self.skip_ws();
+        if self.peek() == Some(']') {
+            self.pos += 1;
+            return Ok(items);
+        }
+        loop {
+            self.skip_ws();
+            let item = match self.peek() {
+                Some('[') if depth == 0 => {
+                    let inner = self.array(1)?;
+                    Item::List(
+                        inner
+                            .into_iter()
+                            .map(|i| match i {
+                                Item::Number(s) => s,
+                                Item::List(_) => unreachable!("depth 1 holds numbers only"),
+                            })
+                            .collect(),
+                    )
+                }
+                Some('"') => Item::Number(self.string()?),
+                Some(c) if c == '-' || c == '+' || c == '.' || c.is_ascii_alphanumeric() => {
+                    Item::Number(self.bare_number())
+                }
+                _ => return Err(self.error("expected a number, a string or a point")),
+            };
+            items.push(item);
+            self.skip_ws();
+            match self.peek() {
+                Some(',') => self.pos += 1,
+                Some(']') => {
+                    self.pos += 1;
+                    return Ok(items);
+                }
+                _ => return Err(self.error("expected ',' or ']'")),
+            }
+        }
+    }
+
+    /// A run of number-like characters; the number parser says whether it is valid
+    /// (words such as `NaN` get a message naming them there).
+    fn bare_number(&mut self) -> String {
+        let start = self.pos;
+        while let Some(c) = self.peek() {
+            if c.is_ascii_alphanumeric() || matches!(c, '-' | '+' | '.' | '/') {
+                self.pos += 1;
+            } else {
+                break;
+            }
+        }
+        self.chars[start..self.pos]
+            .iter()
+            .map(|&(_, c)| c)
+            .collect()
+    }
+
+    fn string(&mut self) -> Result<String, CliError> {
+        self.expect('"')?;
+        let start = self.pos;
+        while let Some(c) = self.peek() {
+            match c {
+                '"' => {
+                    let s = self.chars[start..self.pos]
+                        .iter()
+                        .map(|&(_, c)| c)
+                        .collect();
+                    self.pos += 1;
+                    return Ok(s);
+                }
+                '\\' => return Err(self.error("escapes are not allowed in a number string")),
+                _ => self.pos += 1,
+            }
+        }
+        Err(self.error("unterminated string"))
+    }
+
+    fn expect(&mut self, c: char) -> Result<(), CliError> {
+        if self.peek() == Some(c) {
+            self.pos += 1;
+            Ok(())
+        } else {
+            Err(self.error(&format!("expected '{c}'")))
+        }
+    }
+
+    fn peek(&self) -> Option<char> {
+        self.chars.get(self.pos).map(|&(_, c)| c)
+    }
+
+    fn skip_ws(&mut self) {
+        while matches!(self.peek(), Some(' ' | '\t' | '\n' | '\r')) {
+            self.pos += 1;
+        }
+    }
+
+    fn error(&self, message: &str) -> CliError {
+        let byte = self
+            .chars
+            .get(self.pos)
+            .map_or(self.text.len(), |&(b, _)| b);
+        let before = &self.text[..byte.min(self.text.len())];
+        let line = before.matches('\n').count() + 1;
+        let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        CliError::Json {
+            line,
+            column,
+            message: message.to_string(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keeps_the_text_of_every_number() {
+        let p = parse_number_arrays(r#" [[0, 1.50], ["1/3", -2e-3]] "#).unwrap();
+        assert_eq!(p, [["0", "1.50"], ["1/3", "-2e-3"]]);
+        let flat = parse_number_arrays(r#"[1, "2/3"]"#).unwrap();
+        assert_eq!(flat, [["1"], ["2/3"]]);
+    }
+
+    #[test]
+    fn reports_shape_and_syntax_problems() {
+        assert!(matches!(
+            parse_number_arrays("[[1, 2], [3]]"),
+            Err(CliError::Shape(_))
+        ));
+        assert!(matches!(parse_number_arrays("[]"), Err(CliError::Shape(_))));
+        assert!(matches!(
+            parse_number_arrays("[[1], 2]"),
+            Err(CliError::Shape(_))
+        ));
+        match parse_number_arrays("[[1, 2],\n [3 4]]") {
+            Err(CliError::Json {
+                line: 2, column, ..
+            }) => assert_eq!(column, 5),
+            other => panic!("{other:?}"),
+        }
+        assert!(matches!(
+            parse_number_arrays("[[1, 2]] x"),
+            Err(CliError::Json { .. })
+        ));
+        assert!(matches!(
+            parse_number_arrays("[[[1]]]"),
+            Err(CliError::Json { .. })
+        ));
+    }
+}

@@ -1,0 +1,69 @@
+//! Catalog entries of [`crate::spline`]: one evaluation of a Bézier curve of degree n, by de
+//! Casteljau's algorithm (n(n + 1)/2 affine combinations, Θ(n²)) and by the Horner-type
+//! scheme of 000 §2.3 Obs. 4 (n + 1 point operations, Θ(n)).
+//!
+//! The counted operation is the arithmetic step on points
+//! ([`Operation::ArithmeticOperations`]). Control points are uniform in the unit square and
+//! the parameter is drawn from [0, 1) with the same seed. Degrees stay at most 512: beyond
+//! about 1020 the binomial coefficients of Horner's scheme overflow `f64`.
+
+use crate::complexity::{Bound, Entry, Workload};
+use crate::count::{Counter, Operation};
+use crate::error::Result;
+use crate::gen::{points, PointKind};
+use crate::spline::{Bezier, Point};
+
+/// The evaluation schemes measured.
+#[derive(Clone, Copy)]
+enum Scheme {
+    DeCasteljau,
+    Horner,
+}
+
+/// One evaluation of a random curve of degree n at a random parameter.
+struct Evaluate(Scheme);
+
+/// The spline entries.
+pub(super) fn entries() -> Vec<Entry> {
+    vec![
+        Entry::new(
+            "bezier/de-casteljau",
+            Bound::Quadratic,
+            Operation::ArithmeticOperations,
+            Evaluate(Scheme::DeCasteljau),
+        )
+        .input(PointKind::UniformSquare.name())
+        .quick(8, 256)
+        .full(8, 512),
+        Entry::new(
+            "bezier/horner",
+            Bound::Linear,
+            Operation::ArithmeticOperations,
+            Evaluate(Scheme::Horner),
+        )
+        .input(PointKind::UniformSquare.name())
+        .quick(8, 256)
+        .full(8, 512),
+    ]
+}
+
+impl Workload for Evaluate {
+    type Input = (Bezier<f64, 2>, f64);
+    type Output = Point<f64, 2>;
+
+    fn prepare(&self, n: usize, seed: u64) -> Result<Self::Input> {
+        let pts = points(PointKind::UniformSquare, n + 1, seed)?;
+        // The first generated coordinate is uniform in [0, 1): a parameter inside the segment.
+        let t = pts[0].x;
+        let curve = Bezier::new(pts.into_iter().map(Point::from).collect())?;
+        Ok((curve, t))
+    }
+
+    fn run<C: Counter>(&self, input: &mut Self::Input, c: &mut C) -> Result<Self::Output> {
+        let (curve, t) = input;
+        match self.0 {
+            Scheme::DeCasteljau => curve.de_casteljau_with(t, c),
+            Scheme::Horner => curve.horner_with(t, c),
+        }
+    }
+}
