@@ -34,7 +34,9 @@ pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
 pub use bezier::{Bezier, Reparametrised};
 pub use bezier_ops::MAX_FLATTEN_SEGMENTS;
 pub use composite::{c1_partition, CompositeBezier, Join};
-pub use cubic_spline::{cubic_spline, cubic_spline_tangents, EndCondition};
+pub use cubic_spline::{
+    cubic_spline, cubic_spline_tangents, cubic_spline_tangents_with, EndCondition,
+};
 pub use hermite::{estimate_tangents, hermite, parameterise, Parameterisation};
 pub use interpolate::{vandermonde, vandermonde_hermite, HermiteNode, Polynomial};
 pub use lagrange::{aitken, lagrange, lagrange_basis};
