@@ -13,6 +13,7 @@
 //! | `bezier.rs` | [`Bezier`]: de Casteljau, Horner, derivatives, split, restrict, blossom, box; [`Reparametrised`] |
 //! | `bezier_ops.rs` | degree elevation (Zhou), monomial conversion, integral, flattening, forward differences |
 //! | `composite.rs` | [`CompositeBezier`]: pieces over a partition, C⁰/G¹/Cʳ join checks, Cʳ builder, [`c1_partition`] |
+//! | `frenet.rs` | [`FrenetFrame`], [`frenet_frame`], [`bezier_frenet`], [`curvature_vector`], G² checks [`is_g2_join`], [`is_g2`] |
 //! | `hermite.rs` | piecewise cubic [`hermite`] interpolation, [`estimate_tangents`], [`parameterise`] |
 //! | `interpolate.rs` | [`Polynomial`], [`vandermonde`], [`vandermonde_hermite`] |
 //! | `lagrange.rs` | [`lagrange_basis`], [`lagrange`], [`aitken`] |
@@ -24,6 +25,7 @@ mod bezier;
 mod bezier_ops;
 mod composite;
 mod cubic_spline;
+mod frenet;
 mod hermite;
 mod interpolate;
 mod lagrange;
@@ -37,6 +39,7 @@ pub use composite::{c1_partition, CompositeBezier, Join};
 pub use cubic_spline::{
     cubic_spline, cubic_spline_tangents, cubic_spline_tangents_with, EndCondition,
 };
+pub use frenet::{bezier_frenet, curvature_vector, frenet_frame, is_g2, is_g2_join, FrenetFrame};
 pub use hermite::{estimate_tangents, hermite, parameterise, Parameterisation};
 pub use interpolate::{vandermonde, vandermonde_hermite, HermiteNode, Polynomial};
 pub use lagrange::{aitken, lagrange, lagrange_basis};
