@@ -1,14 +1,17 @@
 //! Interpolation and composite curves against exact oracles: the seed's worked Hermite example
 //! digit for digit, interpolants that reproduce their data and derivatives with rationals,
 //! the end conditions of the cubic spline, agreement of the Lagrange, Aitken, Newton and
-//! Vandermonde forms, and the bad-input contract.
+//! Vandermonde forms, C¹ quadratic splines, least-squares fits (exact recovery, orthogonal
+//! residuals), Frenet frames against analytic curves, and the bad-input contract (library and
+//! `compgeo interpolate`).
 #![cfg(feature = "exact")]
 
 use compgeo::spline::{
-    aitken, bezier_frenet, c1_partition, cubic_spline, cubic_spline_tangents, curvature_vector,
-    estimate_tangents, frenet_frame, hermite, is_g2, is_g2_join, lagrange, lagrange_basis, newton,
-    newton_hermite, parameterise, vandermonde, vandermonde_hermite, Bezier, CompositeBezier,
-    EndCondition, HermiteNode, Parameterisation, Point, Polynomial, Scalar,
+    aitken, bernstein_all, bezier_frenet, c1_partition, closed_quadratic_spline, cubic_spline,
+    cubic_spline_tangents, curvature_vector, estimate_tangents, fit_bezier, frenet_frame, hermite,
+    is_g2, is_g2_join, lagrange, lagrange_basis, newton, newton_hermite, parameterise,
+    quadratic_spline, vandermonde, vandermonde_hermite, Bezier, CompositeBezier, EndCondition,
+    FitOptions, HermiteNode, Parameterisation, Point, Polynomial, Scalar,
 };
 use compgeo::Error;
 use num_bigint::BigInt;
@@ -516,6 +519,69 @@ proptest! {
         }
     }
 
+
+    #[test]
+    fn open_and_closed_quadratic_splines_are_c1((nodes, mut pts) in nodes_and_points(7), v in (-9i64..9, -9i64..9)) {
+        let start = p2(qi(v.0), qi(v.1));
+        let c = quadratic_spline(&nodes, &pts, &start).unwrap();
+        prop_assert!(c.is_c(1, &qi(0)));
+        prop_assert_eq!(&c.derivative_at(&nodes[0], 1).unwrap(), &start);
+        for (u, p) in nodes.iter().zip(&pts) {
+            prop_assert_eq!(&c.eval(u).unwrap(), p);
+        }
+        prop_assume!(nodes.len() >= 3);
+        let first = pts[0].clone();
+        *pts.last_mut().unwrap() = first;
+        match closed_quadratic_spline(&nodes, &pts) {
+            Ok(c) => {
+                let m = c.pieces().len();
+                prop_assert!(c.is_c(1, &qi(0)));
+                prop_assert_eq!(c.end_derivatives(0, false, 1), c.end_derivatives(m - 1, true, 1));
+            }
+            Err(_) => prop_assert!((nodes.len() - 1) % 2 == 0, "an odd number of pieces is regular"),
+        }
+        if (nodes.len() - 1) % 2 == 0 {
+            prop_assert!(closed_quadratic_spline(&nodes, &pts).is_err());
+        }
+    }
+
+    #[test]
+    fn least_squares_recovers_curves_and_leaves_orthogonal_residuals(
+        ctrl in points_strategy(4),
+        (params, pts) in nodes_and_points(9),
+        degree in 1usize..=3,
+        clamp in any::<bool>(),
+        w in proptest::collection::vec(1i64..4, 9),
+    ) {
+        // Parameters in [0, 1]: rescale the distinct nodes.
+        let lo = params[0].clone();
+        let span = params[params.len() - 1].clone() - &lo;
+        let u: Vec<Q> = params.iter().map(|x| (x.clone() - &lo) / &span).collect();
+        prop_assume!(u.len() > degree);
+        let weights: Vec<Q> = w[..u.len()].iter().map(|&x| qi(x)).collect();
+        let options = FitOptions { weights: Some(weights.clone()), clamp_ends: clamp };
+        // Points on a curve of the fitted degree are recovered exactly.
+        let truth = Bezier::new(ctrl[..=degree].to_vec()).unwrap();
+        let on: Vec<_> = u.iter().map(|t| truth.eval(t).unwrap()).collect();
+        prop_assert_eq!(fit_bezier(&u, &on, degree, &options).unwrap(), truth);
+        // Arbitrary points: the weighted residual is orthogonal to every free column.
+        let fit = fit_bezier(&u, &pts, degree, &options).unwrap();
+        let free = if clamp { 1..degree } else { 0..degree + 1 };
+        for j in free {
+            let mut acc = Point::<Q, 2>::zero();
+            for ((t, p), wi) in u.iter().zip(&pts).zip(&weights) {
+                let r = fit.eval(t).unwrap() - p;
+                let b = bernstein_all(degree, t).unwrap()[j].clone() * wi * wi;
+                acc += &(r * &b);
+            }
+            prop_assert_eq!(acc, Point::zero());
+        }
+        if clamp {
+            prop_assert_eq!(&fit.control()[0], &pts[0]);
+            prop_assert_eq!(&fit.control()[degree], pts.last().unwrap());
+        }
+    }
+
     #[test]
     fn cr_joins_are_cr_exactly(
         pts in points_strategy(4),
@@ -664,6 +730,62 @@ fn seed_003_g1_curve_is_neither_c1_nor_g2_and_splines_are_g2() {
         .collect();
     let s = cubic_spline(&knots, &pts, &EndCondition::Natural).unwrap();
     assert!(is_g2(&s, &qi(0)));
+}
+
+#[test]
+fn quadratic_splines_follow_seed_001_section_2() {
+    // The open spline reproduces a parabola from its start slope.
+    let par = Polynomial::new(vec![
+        p2(qi(1), qi(2)),
+        p2(qi(-1), qi(3)),
+        p2(q(3, 2), qi(-1)),
+    ]);
+    let knots = vec![qi(0), q(1, 2), qi(2), q(9, 4), qi(3)];
+    let pts: Vec<_> = knots.iter().map(|u| par.eval(u)).collect();
+    let c = quadratic_spline(&knots, &pts, &par.derivative().eval(&knots[0])).unwrap();
+    for k in 0..=12 {
+        let u = q(k, 4);
+        assert_eq!(c.eval(&u).unwrap(), par.eval(&u));
+    }
+    // Closed: an odd number of pieces is always regular, an even one never (B_i telescopes).
+    let square = [(0, 0), (2, 0), (2, 2), (0, 2), (0, 0)].map(|(x, y)| p2(qi(x), qi(y)));
+    let uniform = vec![qi(0), qi(1), qi(2), qi(3), qi(4)];
+    let uneven = vec![qi(0), qi(1), qi(3), qi(4), qi(7)];
+    for knots in [&uniform, &uneven] {
+        let e = closed_quadratic_spline(knots, &square).unwrap_err();
+        assert!(e.to_string().contains("even number of pieces"), "{e}");
+    }
+    let triangle = [(0, 0), (2, 0), (2, 2), (0, 0)].map(|(x, y)| p2(qi(x), qi(y)));
+    let c = closed_quadratic_spline(&uneven[..4], &triangle).unwrap();
+    assert!(c.is_c(1, &qi(0)));
+    assert_eq!(
+        c.end_derivatives(0, false, 1),
+        c.end_derivatives(2, true, 1)
+    );
+    let open = [(0, 0), (2, 0), (2, 2)].map(|(x, y)| p2(qi(x), qi(y)));
+    assert!(closed_quadratic_spline(&uniform[..3], &open).is_err());
+}
+
+#[test]
+fn least_squares_fit_rejects_underdetermined_data() {
+    let pts = [Point::new([0.0]), Point::new([1.0]), Point::new([2.0])];
+    // Three points at two distinct parameters cannot fix a parabola.
+    let e = fit_bezier(&[0.0, 0.5, 0.5], &pts, 2, &FitOptions::default()).unwrap_err();
+    assert!(
+        matches!(e, Error::InvalidParameter { name: "params", .. }),
+        "{e}"
+    );
+    let bad_weights = FitOptions {
+        weights: Some(vec![1.0, f64::NAN, 1.0]),
+        clamp_ends: false,
+    };
+    assert!(fit_bezier(&[0.0, 0.5, 1.0], &pts, 1, &bad_weights).is_err());
+    let short = FitOptions {
+        weights: Some(vec![1.0]),
+        clamp_ends: false,
+    };
+    assert!(fit_bezier(&[0.0, 0.5, 1.0], &pts, 1, &short).is_err());
+    assert!(fit_bezier::<f64, 1>(&[], &[], 1, &FitOptions::default()).is_err());
 }
 
 #[cfg(feature = "cli")]

@@ -18,6 +18,8 @@
 //! | `interpolate.rs` | [`Polynomial`], [`vandermonde`], [`vandermonde_hermite`] |
 //! | `lagrange.rs` | [`lagrange_basis`], [`lagrange`], [`aitken`] |
 //! | `newton.rs` | divided differences: [`newton`], [`newton_hermite`] (confluent nodes) |
+//! | `quadratic_spline.rs` | C¹ parabolic splines: [`quadratic_spline`], [`closed_quadratic_spline`] |
+//! | `least_squares.rs` | least-squares Bézier fitting, weighted and end-clamped: [`fit_bezier`] |
 //! | `cubic_spline.rs` | C² [`cubic_spline`]: natural, clamped, Bessel, periodic ([`EndCondition`]) |
 
 mod bernstein;
@@ -29,7 +31,9 @@ mod frenet;
 mod hermite;
 mod interpolate;
 mod lagrange;
+mod least_squares;
 mod newton;
+mod quadratic_spline;
 mod scalar;
 
 pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
@@ -43,7 +47,9 @@ pub use frenet::{bezier_frenet, curvature_vector, frenet_frame, is_g2, is_g2_joi
 pub use hermite::{estimate_tangents, hermite, parameterise, Parameterisation};
 pub use interpolate::{vandermonde, vandermonde_hermite, HermiteNode, Polynomial};
 pub use lagrange::{aitken, lagrange, lagrange_basis};
+pub use least_squares::{fit_bezier, FitOptions};
 pub use newton::{newton, newton_hermite, NewtonForm};
+pub use quadratic_spline::{closed_quadratic_spline, quadratic_spline};
 pub use scalar::{
     binomial, parse_scalar, validate_parameter, validate_points, ParseScalar, Point, Scalar,
 };
