@@ -128,7 +128,7 @@ pub(super) fn run(args: BezierArgs) -> Result<(), CliError> {
 }
 
 /// A scalar the command line can print: `f64` as a JSON number, rationals as strings.
-trait JsonScalar: Scalar + ParseScalar {
+pub(super) trait JsonScalar: Scalar + ParseScalar {
     fn to_json(&self) -> Result<Value, CliError>;
 }
 
@@ -206,7 +206,7 @@ fn run_typed<S: JsonScalar, const D: usize>(
     })
 }
 
-fn point<S: JsonScalar, const D: usize>(p: &Point<S, D>) -> Result<Value, CliError> {
+pub(super) fn point<S: JsonScalar, const D: usize>(p: &Point<S, D>) -> Result<Value, CliError> {
     Ok(Value::Array(
         p.coords()
             .iter()
@@ -215,7 +215,7 @@ fn point<S: JsonScalar, const D: usize>(p: &Point<S, D>) -> Result<Value, CliErr
     ))
 }
 
-fn points<S: JsonScalar, const D: usize>(ps: &[Point<S, D>]) -> Result<Value, CliError> {
+pub(super) fn points<S: JsonScalar, const D: usize>(ps: &[Point<S, D>]) -> Result<Value, CliError> {
     Ok(Value::Array(
         ps.iter().map(point).collect::<Result<_, _>>()?,
     ))

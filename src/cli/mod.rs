@@ -17,6 +17,7 @@ mod gen;
 mod graph;
 mod hull;
 pub mod input;
+mod interpolate;
 pub mod output;
 mod report;
 mod sort;
@@ -61,6 +62,8 @@ enum Command {
     Diameter(diameter::DiameterArgs),
     /// Bézier curves: evaluate, split, elevate or differentiate, in f64 or exact rationals
     Bezier(bezier::BezierArgs),
+    /// Interpolation: cubic Hermite, C² cubic spline, Lagrange or Newton, in f64 or exact
+    Interpolate(interpolate::InterpolateArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -91,6 +94,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Hull(args) => hull::run(args),
         Command::Diameter(args) => diameter::run(args),
         Command::Bezier(args) => bezier::run(args),
+        Command::Interpolate(args) => interpolate::run(args),
     }
 }
 

@@ -12,15 +12,44 @@
 //! | `bernstein.rs` | [`bernstein`], [`bernstein_all`], [`bernstein_derivative`] |
 //! | `bezier.rs` | [`Bezier`]: de Casteljau, Horner, derivatives, split, restrict, blossom, box; [`Reparametrised`] |
 //! | `bezier_ops.rs` | degree elevation (Zhou), monomial conversion, integral, flattening, forward differences |
+//! | `composite.rs` | [`CompositeBezier`]: pieces over a partition, C⁰/G¹/Cʳ join checks, Cʳ builder, [`c1_partition`] |
+//! | `frenet.rs` | [`FrenetFrame`], [`frenet_frame`], [`bezier_frenet`], [`curvature_vector`], G² checks [`is_g2_join`], [`is_g2`] |
+//! | `hermite.rs` | piecewise cubic [`hermite`] interpolation, [`estimate_tangents`], [`parameterise`] |
+//! | `interpolate.rs` | [`Polynomial`], [`vandermonde`], [`vandermonde_hermite`] |
+//! | `lagrange.rs` | [`lagrange_basis`], [`lagrange`], [`aitken`] |
+//! | `newton.rs` | divided differences: [`newton`], [`newton_hermite`] (confluent nodes) |
+//! | `quadratic_spline.rs` | C¹ parabolic splines: [`quadratic_spline`], [`closed_quadratic_spline`] |
+//! | `least_squares.rs` | least-squares Bézier fitting, weighted and end-clamped: [`fit_bezier`] |
+//! | `cubic_spline.rs` | C² [`cubic_spline`]: natural, clamped, Bessel, periodic ([`EndCondition`]) |
 
 mod bernstein;
 mod bezier;
 mod bezier_ops;
+mod composite;
+mod cubic_spline;
+mod frenet;
+mod hermite;
+mod interpolate;
+mod lagrange;
+mod least_squares;
+mod newton;
+mod quadratic_spline;
 mod scalar;
 
 pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
 pub use bezier::{Bezier, Reparametrised};
 pub use bezier_ops::MAX_FLATTEN_SEGMENTS;
+pub use composite::{c1_partition, CompositeBezier, Join};
+pub use cubic_spline::{
+    cubic_spline, cubic_spline_tangents, cubic_spline_tangents_with, EndCondition,
+};
+pub use frenet::{bezier_frenet, curvature_vector, frenet_frame, is_g2, is_g2_join, FrenetFrame};
+pub use hermite::{estimate_tangents, hermite, parameterise, Parameterisation};
+pub use interpolate::{vandermonde, vandermonde_hermite, HermiteNode, Polynomial};
+pub use lagrange::{aitken, lagrange, lagrange_basis};
+pub use least_squares::{fit_bezier, FitOptions};
+pub use newton::{newton, newton_hermite, NewtonForm};
+pub use quadratic_spline::{closed_quadratic_spline, quadratic_spline};
 pub use scalar::{
     binomial, parse_scalar, validate_parameter, validate_points, ParseScalar, Point, Scalar,
 };

@@ -1,6 +1,7 @@
 //! Catalog entries of [`crate::spline`]: one evaluation of a Bézier curve of degree n, by de
 //! Casteljau's algorithm (n(n + 1)/2 affine combinations, Θ(n²)) and by the Horner-type
-//! scheme of 000 §2.3 Obs. 4 (n + 1 point operations, Θ(n)).
+//! scheme of 000 §2.3 Obs. 4 (n + 1 point operations, Θ(n)); C² cubic spline interpolation of
+//! n points (natural and periodic end conditions, Θ(n) by a tridiagonal solve).
 //!
 //! The counted operation is the arithmetic step on points
 //! ([`Operation::ArithmeticOperations`]). Control points are uniform in the unit square and
@@ -11,7 +12,7 @@ use crate::complexity::{Bound, Entry, Workload};
 use crate::count::{Counter, Operation};
 use crate::error::Result;
 use crate::gen::{points, PointKind};
-use crate::spline::{Bezier, Point};
+use crate::spline::{cubic_spline_tangents_with, Bezier, EndCondition, Point};
 
 /// The evaluation schemes measured.
 #[derive(Clone, Copy)]
@@ -44,7 +45,60 @@ pub(super) fn entries() -> Vec<Entry> {
         .input(PointKind::UniformSquare.name())
         .quick(8, 256)
         .full(8, 512),
+        Entry::new(
+            "spline/cubic-natural",
+            Bound::Linear,
+            Operation::ArithmeticOperations,
+            Interpolate { periodic: false },
+        )
+        .input(PointKind::UniformSquare.name())
+        .quick(64, 1 << 12)
+        .full(64, 1 << 16),
+        Entry::new(
+            "spline/cubic-periodic",
+            Bound::Linear,
+            Operation::ArithmeticOperations,
+            Interpolate { periodic: true },
+        )
+        .input(PointKind::UniformSquare.name())
+        .quick(64, 1 << 12)
+        .full(64, 1 << 16),
     ]
+}
+
+/// The tangents of the C² cubic spline through n random points at the knots 0, 1, ..., n − 1
+/// (a periodic spline repeats the first point at the end).
+struct Interpolate {
+    periodic: bool,
+}
+
+impl Workload for Interpolate {
+    type Input = (Vec<f64>, Vec<Point<f64, 2>>);
+    type Output = Vec<Point<f64, 2>>;
+
+    fn prepare(&self, n: usize, seed: u64) -> Result<Self::Input> {
+        let mut pts: Vec<Point<f64, 2>> = points(PointKind::UniformSquare, n, seed)?
+            .into_iter()
+            .map(Point::from)
+            .collect();
+        if self.periodic {
+            if let Some(&first) = pts.first() {
+                pts.push(first);
+            }
+        }
+        let knots = (0..pts.len()).map(|i| i as f64).collect();
+        Ok((knots, pts))
+    }
+
+    fn run<C: Counter>(&self, input: &mut Self::Input, c: &mut C) -> Result<Self::Output> {
+        let (knots, pts) = input;
+        let end = if self.periodic {
+            EndCondition::Periodic
+        } else {
+            EndCondition::Natural
+        };
+        cubic_spline_tangents_with(knots, pts, &end, c)
+    }
 }
 
 impl Workload for Evaluate {

@@ -1,0 +1,348 @@
+//! `compgeo interpolate hermite|spline|lagrange|newton`: interpolation of points given as JSON,
+//! in `f64` or (with `--exact`) in exact rationals.
+//!
+//! Points are `[[x, y], ...]` in any dimension from 1 to 4 (or `[x, ...]` for one coordinate);
+//! knots, nodes and parameters are flat lists `[0, "1/2", 1]`. Numbers are JSON numbers or
+//! strings such as `"47/18"`. With `--exact` every number is read as the exact rational it
+//! writes and printed as a string; without it numbers are `f64` in and out. Composite curves
+//! are printed as `{"knots": [...], "tangents": [...], "pieces": [[b_0, b_1, b_2, b_3], ...]}`
+//! (the cubic Bézier points of each piece).
+
+use super::bezier::{point, points, JsonScalar};
+use super::input::parse_number_arrays;
+use super::output::print_json;
+use super::CliError;
+use crate::spline::{
+    aitken, cubic_spline_tangents, estimate_tangents, hermite, lagrange, lagrange_basis, newton,
+    parameterise, parse_scalar, CompositeBezier, EndCondition, Parameterisation, Point,
+};
+use clap::{Args, Subcommand, ValueEnum};
+use num_rational::BigRational;
+use serde_json::{json, Value};
+
+/// Arguments of `compgeo interpolate`.
+#[derive(Debug, Args)]
+pub(super) struct InterpolateArgs {
+    #[command(subcommand)]
+    method: Method,
+}
+
+/// The interpolation methods.
+#[derive(Debug, Subcommand)]
+enum Method {
+    /// Piecewise cubic C¹ Hermite curve through points with given (or estimated) tangents
+    Hermite {
+        #[command(flatten)]
+        data: CurveData,
+        /// Tangents at the points, JSON [[x, y], ...] [default: estimated from parabolas
+        /// through three consecutive points, 000 §4.5]
+        #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+        tangents: Option<String>,
+    },
+    /// C² cubic spline through the points with an end condition
+    Spline {
+        #[command(flatten)]
+        data: CurveData,
+        /// natural, clamped (needs --start-tangent and --end-tangent), bessel or periodic
+        /// (first and last points equal)
+        #[arg(long, value_enum, default_value = "natural")]
+        end: End,
+        /// The first derivative at the first knot (clamped), JSON [x, y]
+        #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+        start_tangent: Option<String>,
+        /// The first derivative at the last knot (clamped), JSON [x, y]
+        #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+        end_tangent: Option<String>,
+    },
+    /// The interpolating polynomial in Lagrange form, evaluated at parameters
+    Lagrange {
+        #[command(flatten)]
+        data: PolyData,
+        /// Evaluate by Aitken's repeated linear interpolation instead of the Lagrange basis
+        #[arg(long)]
+        aitken: bool,
+    },
+    /// The interpolating polynomial by divided differences: Newton and power coefficients
+    Newton {
+        #[command(flatten)]
+        data: PolyData,
+    },
+}
+
+/// Points and knots of a composite interpolant.
+#[derive(Debug, Args)]
+struct CurveData {
+    /// The points, JSON [[x, y], ...] (dimension 1 to 4)
+    #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+    points: String,
+    /// The knots u_0 < u_1 < ..., JSON [0, "1/2", 1] [default: from --parameterisation]
+    #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+    knots: Option<String>,
+    /// How to choose the knots when --knots is not given
+    #[arg(long, value_enum, default_value = "uniform")]
+    parameterisation: Knots,
+    /// Compute in exact rationals and print every number as a string such as "47/18"
+    #[arg(long)]
+    exact: bool,
+}
+
+/// Points, nodes and evaluation parameters of a polynomial interpolant.
+#[derive(Debug, Args)]
+struct PolyData {
+    /// The points, JSON [[x, y], ...] (dimension 1 to 4)
+    #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+    points: String,
+    /// The distinct nodes, JSON [0, "1/2", 1] (any order)
+    #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+    nodes: String,
+    /// Parameters to evaluate the polynomial at, JSON [u, ...]
+    #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+    at: Option<String>,
+    /// Compute in exact rationals and print every number as a string such as "47/18"
+    #[arg(long)]
+    exact: bool,
+}
+
+/// The spline end conditions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum End {
+    /// Zero second derivative at both ends
+    Natural,
+    /// Given first derivatives at both ends
+    Clamped,
+    /// End tangents of the parabolas through the first and last three points
+    Bessel,
+    /// Closed curve, C² where it closes
+    Periodic,
+}
+
+/// The parameterisations.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Knots {
+    /// 0, 1, 2, ...
+    Uniform,
+    /// Knot gaps equal to the chord lengths
+    ChordLength,
+    /// Knot gaps equal to the square roots of the chord lengths
+    Centripetal,
+}
+
+/// Runs `compgeo interpolate`.
+pub(super) fn run(args: InterpolateArgs) -> Result<(), CliError> {
+    let (points_text, exact) = match &args.method {
+        Method::Hermite { data, .. } | Method::Spline { data, .. } => (&data.points, data.exact),
+        Method::Lagrange { data, .. } | Method::Newton { data } => (&data.points, data.exact),
+    };
+    let rows = parse_number_arrays(points_text)?;
+    let d = rows[0].len();
+    let value = match (exact, d) {
+        (false, 1) => run_typed::<f64, 1>(&args.method, &rows)?,
+        (false, 2) => run_typed::<f64, 2>(&args.method, &rows)?,
+        (false, 3) => run_typed::<f64, 3>(&args.method, &rows)?,
+        (false, 4) => run_typed::<f64, 4>(&args.method, &rows)?,
+        (true, 1) => run_typed::<BigRational, 1>(&args.method, &rows)?,
+        (true, 2) => run_typed::<BigRational, 2>(&args.method, &rows)?,
+        (true, 3) => run_typed::<BigRational, 3>(&args.method, &rows)?,
+        (true, 4) => run_typed::<BigRational, 4>(&args.method, &rows)?,
+        _ => {
+            return Err(CliError::Shape(format!(
+                "points have {d} coordinates; 1 to 4 are supported"
+            )))
+        }
+    };
+    print_json(&value)
+}
+
+fn run_typed<S: JsonScalar, const D: usize>(
+    method: &Method,
+    rows: &[Vec<String>],
+) -> Result<Value, CliError> {
+    let pts: Vec<Point<S, D>> = to_points(rows, "point coordinate")?;
+    Ok(match method {
+        Method::Hermite { data, tangents } => {
+            let knots = knots_of(data, &pts)?;
+            let tangents = match tangents {
+                Some(text) => read_points::<S, D>(text, "tangent coordinate")?,
+                None => estimate_tangents(&pts, &knots)?,
+            };
+            let curve = hermite(&pts, &tangents, &knots)?;
+            composite_json(&curve, &tangents)?
+        }
+        Method::Spline {
+            data,
+            end,
+            start_tangent,
+            end_tangent,
+        } => {
+            let knots = knots_of(data, &pts)?;
+            let condition = match (end, start_tangent, end_tangent) {
+                (End::Natural, None, None) => EndCondition::Natural,
+                (End::Bessel, None, None) => EndCondition::Bessel,
+                (End::Periodic, None, None) => EndCondition::Periodic,
+                (End::Clamped, Some(a), Some(b)) => EndCondition::Clamped {
+                    start: read_one::<S, D>(a, "--start-tangent")?,
+                    end: read_one::<S, D>(b, "--end-tangent")?,
+                },
+                (End::Clamped, _, _) => {
+                    return Err(CliError::Usage(
+                        "--end clamped needs --start-tangent and --end-tangent".to_string(),
+                    ))
+                }
+                _ => {
+                    return Err(CliError::Usage(
+                        "--start-tangent and --end-tangent go with --end clamped only".to_string(),
+                    ))
+                }
+            };
+            let tangents = cubic_spline_tangents(&knots, &pts, &condition)?;
+            let curve = hermite(&pts, &tangents, &knots)?;
+            composite_json(&curve, &tangents)?
+        }
+        Method::Lagrange {
+            data,
+            aitken: use_aitken,
+        } => {
+            let nodes = read_scalars::<S>(&data.nodes, "node")?;
+            let at = match &data.at {
+                Some(text) => read_scalars::<S>(text, "u")?,
+                None => Vec::new(),
+            };
+            let mut values = Vec::with_capacity(at.len());
+            let mut bases = Vec::with_capacity(at.len());
+            for u in &at {
+                let p = if *use_aitken {
+                    aitken(&nodes, &pts, u)?
+                } else {
+                    lagrange(&nodes, &pts, u)?
+                };
+                values.push(point(&p)?);
+                let basis = lagrange_basis(&nodes, u)?;
+                bases.push(scalars(&basis)?);
+            }
+            if at.is_empty() {
+                // Validate the data even when nothing is evaluated.
+                newton(&nodes, &pts)?;
+            }
+            json!({
+                "algorithm": if *use_aitken { "aitken" } else { "lagrange" },
+                "nodes": scalars(&nodes)?,
+                "at": scalars(&at)?,
+                "values": values,
+                "basis": bases,
+            })
+        }
+        Method::Newton { data } => {
+            let nodes = read_scalars::<S>(&data.nodes, "node")?;
+            let form = newton(&nodes, &pts)?;
+            let at = match &data.at {
+                Some(text) => read_scalars::<S>(text, "u")?,
+                None => Vec::new(),
+            };
+            let values = at
+                .iter()
+                .map(|u| point(&form.eval(u)))
+                .collect::<Result<Vec<_>, _>>()?;
+            json!({
+                "nodes": scalars(form.nodes())?,
+                "divided_differences": points(form.coefficients())?,
+                "monomial": points(form.to_polynomial().coefficients())?,
+                "at": scalars(&at)?,
+                "values": values,
+            })
+        }
+    })
+}
+
+/// The knots from `--knots`, or from the parameterisation.
+fn knots_of<S: JsonScalar, const D: usize>(
+    data: &CurveData,
+    pts: &[Point<S, D>],
+) -> Result<Vec<S>, CliError> {
+    match &data.knots {
+        Some(text) => read_scalars(text, "knot"),
+        None => {
+            let kind = match data.parameterisation {
+                Knots::Uniform => Parameterisation::Uniform,
+                Knots::ChordLength => Parameterisation::ChordLength,
+                Knots::Centripetal => Parameterisation::Centripetal,
+            };
+            Ok(parameterise(pts, kind)?)
+        }
+    }
+}
+
+fn composite_json<S: JsonScalar, const D: usize>(
+    curve: &CompositeBezier<S, D>,
+    tangents: &[Point<S, D>],
+) -> Result<Value, CliError> {
+    let pieces = curve
+        .pieces()
+        .iter()
+        .map(|b| points(b.control()))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(json!({
+        "knots": scalars(curve.partition())?,
+        "tangents": points(tangents)?,
+        "pieces": pieces,
+    }))
+}
+
+fn scalars<S: JsonScalar>(values: &[S]) -> Result<Value, CliError> {
+    Ok(Value::Array(
+        values
+            .iter()
+            .map(JsonScalar::to_json)
+            .collect::<Result<_, _>>()?,
+    ))
+}
+
+fn to_points<S: JsonScalar, const D: usize>(
+    rows: &[Vec<String>],
+    name: &'static str,
+) -> Result<Vec<Point<S, D>>, CliError> {
+    rows.iter()
+        .enumerate()
+        .map(|(index, row)| {
+            if row.len() != D {
+                return Err(CliError::Shape(format!(
+                    "{name}s: point {index} has {} coordinates, expected {D}",
+                    row.len()
+                )));
+            }
+            let mut p = Point::<S, D>::zero();
+            for (j, text) in row.iter().enumerate() {
+                p[j] = parse_scalar(text, name)?;
+            }
+            Ok(p)
+        })
+        .collect()
+}
+
+fn read_points<S: JsonScalar, const D: usize>(
+    text: &str,
+    name: &'static str,
+) -> Result<Vec<Point<S, D>>, CliError> {
+    to_points(&parse_number_arrays(text)?, name)
+}
+
+/// One point written as a flat list `[x, y]`.
+fn read_one<S: JsonScalar, const D: usize>(
+    text: &str,
+    name: &'static str,
+) -> Result<Point<S, D>, CliError> {
+    let rows = parse_number_arrays(text)?;
+    let flat: Vec<String> = rows.into_iter().flatten().collect();
+    to_points(&[flat], name).map(|mut v| v.remove(0))
+}
+
+fn read_scalars<S: JsonScalar>(text: &str, name: &'static str) -> Result<Vec<S>, CliError> {
+    let rows = parse_number_arrays(text)?;
+    rows.iter()
+        .map(|row| match row.as_slice() {
+            [x] => Ok(parse_scalar(x, name)?),
+            _ => Err(CliError::Shape(format!(
+                "expected a flat list of numbers for the {name}s"
+            ))),
+        })
+        .collect()
+}
