@@ -82,6 +82,7 @@
 pub mod calipers;
 pub mod complexity;
 pub mod count;
+pub mod delaunay;
 pub mod error;
 pub mod gen;
 pub mod geometry;
