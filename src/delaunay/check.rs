@@ -47,9 +47,10 @@ use std::cmp::Ordering;
 /// let t = Triangulation::from_triangles(&pts, &[[0, 1, 2], [0, 2, 3]], Vec::new())?;
 /// assert!(check_delaunay(&pts, &t).is_ok());
 ///
-/// // Moving a corner inwards makes the other diagonal the Delaunay one.
+/// // Moving corner 2 inwards puts it inside the circle through 0, 1, 3: only the
+/// // diagonal 0-2 is Delaunay now.
 /// let pts = [(0.0, 0.0), (2.0, 0.0), (1.5, 1.0), (0.0, 1.0)].map(Point2::from);
-/// let t = Triangulation::from_triangles(&pts, &[[0, 1, 2], [0, 2, 3]], Vec::new())?;
+/// let t = Triangulation::from_triangles(&pts, &[[0, 1, 3], [1, 2, 3]], Vec::new())?;
 /// assert!(check_delaunay(&pts, &t).unwrap_err().contains("not locally Delaunay"));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
