@@ -26,7 +26,10 @@
 //! [`check_delaunay`] verifies all of this exactly; the tests run it on every builder.
 
 mod check;
+mod hilbert;
+mod incremental;
 mod triangulation;
 
 pub use check::check_delaunay;
+pub use incremental::{incremental, incremental_with};
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
