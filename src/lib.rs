@@ -83,6 +83,7 @@
 pub mod calipers;
 pub mod complexity;
 pub mod count;
+pub mod delaunay;
 pub mod error;
 pub mod gen;
 pub mod geometry;
