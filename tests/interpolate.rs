@@ -175,8 +175,8 @@ fn periodic_spline_closes_with_c2_continuity() {
     let s = cubic_spline(&knots, &pts, &EndCondition::Periodic).unwrap();
     assert!(s.is_c(2, &qi(0)));
     let m = s.pieces().len();
-    let start = s.end_derivatives(0, false, 2);
-    let end = s.end_derivatives(m - 1, true, 2);
+    let start = s.end_derivatives(0, false, 2).unwrap();
+    let end = s.end_derivatives(m - 1, true, 2).unwrap();
     assert_eq!(start, end, "value, first and second derivatives close up");
     // Two pieces (the smallest closed spline) also close.
     let two = cubic_spline(
@@ -186,8 +186,8 @@ fn periodic_spline_closes_with_c2_continuity() {
     )
     .unwrap();
     assert_eq!(
-        two.end_derivatives(0, false, 2),
-        two.end_derivatives(1, true, 2)
+        two.end_derivatives(0, false, 2).unwrap(),
+        two.end_derivatives(1, true, 2).unwrap()
     );
 }
 
@@ -481,7 +481,7 @@ proptest! {
         let s = cubic_spline(&nodes, &pts, &EndCondition::Periodic).unwrap();
         prop_assert!(s.is_c(2, &qi(0)));
         let m = s.pieces().len();
-        prop_assert_eq!(s.end_derivatives(0, false, 2), s.end_derivatives(m - 1, true, 2));
+        prop_assert_eq!(s.end_derivatives(0, false, 2).unwrap(), s.end_derivatives(m - 1, true, 2).unwrap());
     }
 
     #[test]
@@ -536,7 +536,7 @@ proptest! {
             Ok(c) => {
                 let m = c.pieces().len();
                 prop_assert!(c.is_c(1, &qi(0)));
-                prop_assert_eq!(c.end_derivatives(0, false, 1), c.end_derivatives(m - 1, true, 1));
+                prop_assert_eq!(c.end_derivatives(0, false, 1).unwrap(), c.end_derivatives(m - 1, true, 1).unwrap());
             }
             Err(_) => prop_assert!((nodes.len() - 1) % 2 == 0, "an odd number of pieces is regular"),
         }
@@ -717,7 +717,7 @@ fn seed_003_g1_curve_is_neither_c1_nor_g2_and_splines_are_g2() {
     assert!(join.g1 && join.parametric == Some(0));
     assert!(!is_g2_join(&c, 1, &qi(0)).unwrap());
     // Right of the join α'' = (0, 8, 0), α' = (2, 0, 0): κ n = (0, 2, 0).
-    let right = c.end_derivatives(1, false, 2);
+    let right = c.end_derivatives(1, false, 2).unwrap();
     assert_eq!(
         curvature_vector(&right[1], &right[2]).unwrap(),
         p(qi(0), qi(2))
@@ -759,8 +759,8 @@ fn quadratic_splines_follow_seed_001_section_2() {
     let c = closed_quadratic_spline(&uneven[..4], &triangle).unwrap();
     assert!(c.is_c(1, &qi(0)));
     assert_eq!(
-        c.end_derivatives(0, false, 1),
-        c.end_derivatives(2, true, 1)
+        c.end_derivatives(0, false, 1).unwrap(),
+        c.end_derivatives(2, true, 1).unwrap()
     );
     let open = [(0, 0), (2, 0), (2, 2)].map(|(x, y)| p2(qi(x), qi(y)));
     assert!(closed_quadratic_spline(&uniform[..3], &open).is_err());
@@ -786,6 +786,57 @@ fn least_squares_fit_rejects_underdetermined_data() {
     };
     assert!(fit_bezier(&[0.0, 0.5, 1.0], &pts, 1, &short).is_err());
     assert!(fit_bezier::<f64, 1>(&[], &[], 1, &FitOptions::default()).is_err());
+}
+
+#[test]
+fn extreme_magnitudes_are_computed_or_rejected_cleanly() {
+    // Scaling a curve by 2^k scales its curvature, torsion and curvature vector by 2^−k.
+    let d = [
+        Point::new([0.0, 2.0, 1.0]),
+        Point::new([-2.0, 0.0, 0.0]),
+        Point::new([0.0, -2.0, 0.0]),
+    ];
+    let f = frenet_frame(&d).unwrap();
+    let kn = curvature_vector(&d[0], &d[1]).unwrap();
+    for k in [-1000, -600, 600, 1000] {
+        let s = 2f64.powi(k);
+        let scaled: Vec<_> = d.iter().map(|p| *p * s).collect();
+        let g = frenet_frame(&scaled).unwrap();
+        assert_eq!(g.curvature(), f.curvature() / s, "2^{k}");
+        assert_eq!(g.torsion(), f.torsion() / s, "2^{k}");
+        assert_eq!(g.vectors(), f.vectors());
+        assert_eq!(curvature_vector(&scaled[0], &scaled[1]).unwrap(), kn / s);
+    }
+    // Joins of huge and of tiny pieces are still recognised as G¹ and C¹ within a tolerance.
+    for scale in [1e300, 1e-300] {
+        let p = |x: f64, y: f64| Point::new([x * scale, y * scale]);
+        let c = CompositeBezier::new(
+            vec![0.0, 1.0, 3.0],
+            vec![
+                vec![p(0.0, 0.0), p(1.0, 1.0), p(2.0, 1.0)],
+                vec![p(2.0, 1.0), p(4.0, 1.0), p(5.0, 3.0)],
+            ],
+        )
+        .unwrap();
+        let join = c.join(1, &1e-12).unwrap();
+        assert!(join.g1 && join.parametric == Some(1), "{scale}: {join:?}");
+    }
+    // A spline through points near 1e300 interpolates them; one whose tangents overflow is an
+    // error, not a panic or an infinite curve.
+    let big: Vec<_> = [1.0, -1.5, 2.0, 0.5]
+        .iter()
+        .map(|&y| Point::new([y * 1e300]))
+        .collect();
+    let knots = [0.0, 1.0, 2.0, 3.0];
+    let s = cubic_spline(&knots, &big, &EndCondition::Natural).unwrap();
+    for (u, p) in knots.iter().zip(&big) {
+        assert_eq!(s.eval(u).unwrap(), *p);
+    }
+    let tight = [0.0, 1e-300, 2e-300, 3e-300];
+    let e = cubic_spline(&tight, &big, &EndCondition::Natural).unwrap_err();
+    assert!(e.to_string().contains("overflow"), "{e}");
+    let e = newton(&tight, &big).unwrap_err();
+    assert!(e.to_string().contains("overflow"), "{e}");
 }
 
 #[cfg(feature = "cli")]

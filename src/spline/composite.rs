@@ -160,18 +160,20 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     }
 
     /// The derivatives of orders `0..=order` at the end of piece `i` (`end = true`, at
-    /// `u_{i+1}` from the left) or at its start (at `u_i` from the right), in `u`.
+    /// `u_{i+1}` from the left) or at its start (at `u_i` from the right), in `u`. Orders above
+    /// the piece's degree are left out (they are zero).
     ///
-    /// # Panics
+    /// # Errors
     ///
-    /// If `i` is not a piece index.
-    pub fn end_derivatives(&self, i: usize, end: bool, order: usize) -> Vec<Point<S, D>> {
-        let h = self.partition[i + 1].clone() - &self.partition[i];
-        local_end_derivatives(self.pieces[i].control(), end, order)
-            .into_iter()
-            .enumerate()
-            .map(|(r, d)| d / &power(&h, r))
-            .collect()
+    /// [`Error::InvalidParameter`] (`"piece"`) if `i` is not a piece index.
+    pub fn end_derivatives(&self, i: usize, end: bool, order: usize) -> Result<Vec<Point<S, D>>> {
+        if i >= self.pieces.len() {
+            return Err(Error::InvalidParameter {
+                name: "piece",
+                reason: format!("{i} is not a piece index (0..{})", self.pieces.len()),
+            });
+        }
+        Ok(self.end_derivatives_unchecked(i, end, order))
     }
 
     /// How piece `i − 1` and piece `i` meet at the knot `u_i`, for `i` in `1..m`.
@@ -195,8 +197,8 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
             });
         }
         let max = self.pieces[i - 1].degree().min(self.pieces[i].degree());
-        let left = self.end_derivatives(i - 1, true, max);
-        let right = self.end_derivatives(i, false, max);
+        let left = self.end_derivatives_unchecked(i - 1, true, max);
+        let right = self.end_derivatives_unchecked(i, false, max);
         let parametric = left
             .iter()
             .zip(&right)
@@ -212,8 +214,8 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     pub fn is_c(&self, r: usize, tolerance: &S) -> bool {
         (1..self.pieces.len()).all(|i| {
             let max = self.pieces[i - 1].degree().min(self.pieces[i].degree());
-            let left = self.end_derivatives(i - 1, true, r.min(max));
-            let right = self.end_derivatives(i, false, r.min(max));
+            let left = self.end_derivatives_unchecked(i - 1, true, r.min(max));
+            let right = self.end_derivatives_unchecked(i, false, r.min(max));
             r <= max
                 && left
                     .iter()
@@ -370,7 +372,25 @@ pub fn c1_partition<S: Scalar, const D: usize>(
     Ok(u)
 }
 
-/// `|a − b|² ≤ tol² · max(|a|², |b|²)`; with `tol = 0` exact equality.
+impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
+    /// [`end_derivatives`](Self::end_derivatives) for a valid piece index.
+    pub(crate) fn end_derivatives_unchecked(
+        &self,
+        i: usize,
+        end: bool,
+        order: usize,
+    ) -> Vec<Point<S, D>> {
+        let h = self.partition[i + 1].clone() - &self.partition[i];
+        local_end_derivatives(self.pieces[i].control(), end, order)
+            .into_iter()
+            .enumerate()
+            .map(|(r, d)| d / &power(&h, r))
+            .collect()
+    }
+}
+
+/// `|a − b|² ≤ tol² · max(|a|², |b|²)`; with `tol = 0` exact equality. Rounded scalars are
+/// first scaled by a common power of two so that the squares cannot overflow.
 pub(crate) fn nearly_equal<S: Scalar, const D: usize>(
     a: &Point<S, D>,
     b: &Point<S, D>,
@@ -379,7 +399,9 @@ pub(crate) fn nearly_equal<S: Scalar, const D: usize>(
     if tol.is_zero() {
         return a == b;
     }
-    let diff = (a.clone() - b).norm_squared();
+    let s = pow2_scale(&[a, b]);
+    let (a, b) = (a.clone() * &s, b.clone() * &s);
+    let diff = (a.clone() - &b).norm_squared();
     let (na, nb) = (a.norm_squared(), b.norm_squared());
     let scale = if na > nb { na } else { nb };
     diff <= tol.clone() * tol * &scale
@@ -387,17 +409,40 @@ pub(crate) fn nearly_equal<S: Scalar, const D: usize>(
 
 /// Nonzero vectors pointing the same way: `a·b > 0` and
 /// `|a|²|b|² − (a·b)² ≤ tol² |a|²|b|²` (the squared sine of their angle is at most `tol²`).
+/// Rounded scalars scale each vector by a power of two first (the test is invariant under
+/// positive scaling), so that the degree-4 terms cannot overflow.
 pub(crate) fn same_direction<S: Scalar, const D: usize>(
     a: &Point<S, D>,
     b: &Point<S, D>,
     tol: &S,
 ) -> bool {
-    let dot = a.dot(b);
+    let a = a.clone() * pow2_scale(&[a]);
+    let b = b.clone() * pow2_scale(&[b]);
+    let dot = a.dot(&b);
     if dot <= S::zero() {
         return false;
     }
     let norms = a.norm_squared() * b.norm_squared();
     norms.clone() - &(dot.clone() * &dot) <= tol.clone() * tol * &norms
+}
+
+/// For rounded scalars, the power of two `2^−e` that brings the largest coordinate of
+/// `vectors` into `[1, 2)` (e clamped to ±1020 so the factor is a normal double); one for
+/// exact scalars and for all-zero input. Multiplying by it is exact unless a coordinate
+/// underflows, which only happens to coordinates below 2^−1074 relative to the largest.
+pub(crate) fn pow2_scale<S: Scalar, const D: usize>(vectors: &[&Point<S, D>]) -> S {
+    if S::EXACT {
+        return S::one();
+    }
+    let max = vectors
+        .iter()
+        .flat_map(|v| v.coords().iter())
+        .fold(0.0f64, |m, c| m.max(c.to_f64().abs()));
+    if max == 0.0 || !max.is_finite() {
+        return S::one();
+    }
+    let e = (max.log2().floor() as i32).clamp(-1020, 1020);
+    S::from_f64(2f64.powi(-e)).unwrap_or_else(S::one)
 }
 
 /// `x^k`.

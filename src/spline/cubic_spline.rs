@@ -59,7 +59,8 @@ pub enum EndCondition<S, const D: usize> {
 /// [`Error::InvalidParameter`] (`"partition"`) for a non-finite or non-increasing partition,
 /// (`"points"`) for mismatched lengths or a periodic spline whose first and last points differ;
 /// [`Error::NonFinite`] for a bad coordinate (also of clamped tangents, reported as indices
-/// `n + 1` and `n + 2`).
+/// `n + 1` and `n + 2`); [`Error::InvalidParameter`] (`"points"`) if an `f64` tangent
+/// overflows.
 ///
 /// # Complexity
 ///
@@ -171,7 +172,7 @@ pub fn cubic_spline_tangents_with<S: Scalar, const D: usize, C: Counter>(
         }
         let mut m = solve_cyclic(&sub, &diag, &sup, rhs, counter);
         m.push(m[0].clone());
-        return Ok(m);
+        return finite(m);
     }
     let mut sub = Vec::with_capacity(n + 1);
     let mut diag = Vec::with_capacity(n + 1);
@@ -233,7 +234,7 @@ pub fn cubic_spline_tangents_with<S: Scalar, const D: usize, C: Counter>(
     }
     sup.push(S::zero());
     count(counter, 2);
-    Ok(solve_tridiagonal(&sub, &diag, &sup, rhs, counter))
+    finite(solve_tridiagonal(&sub, &diag, &sup, rhs, counter))
 }
 
 /// The C² cubic spline through `points` at the knots `partition`, as a composite cubic Bézier
@@ -356,6 +357,15 @@ fn solve_cyclic<S: Scalar, const D: usize, C: Counter>(
         .zip(z)
         .map(|(yi, zi)| yi - &(factor.clone() * &zi[0]))
         .collect()
+}
+
+/// The tangents, or an error if an `f64` one overflowed.
+fn finite<S: Scalar, const D: usize>(tangents: Vec<Point<S, D>>) -> Result<Vec<Point<S, D>>> {
+    if tangents.iter().all(Point::is_finite) {
+        Ok(tangents)
+    } else {
+        Err(super::hermite::overflow())
+    }
 }
 
 /// Records `k` arithmetic operations.

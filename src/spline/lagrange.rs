@@ -6,7 +6,7 @@
 //! Aitken's scheme `p_i^{k+1} = α_{i,n−k} p_i^k + (1 − α_{i,n−k}) p_{n−k}^k` with
 //! `α_{ik} = (u − u_k)/(u_i − u_k)`); seed 003 §3.1 ("Lagrange").
 
-use super::interpolate::{check_distinct, check_nodes_and_points};
+use super::interpolate::{check_distinct, check_nodes_and_points, finite};
 use super::{validate_parameter, Point, Scalar};
 use crate::Result;
 
@@ -92,7 +92,7 @@ pub fn lagrange<S: Scalar, const D: usize>(
     for (p, l) in points.iter().zip(&basis) {
         acc += &(p.clone() * l);
     }
-    Ok(acc)
+    Ok(finite(vec![acc])?.swap_remove(0))
 }
 
 /// The value at `u` of the interpolating polynomial by Aitken's algorithm: repeated linear
@@ -139,5 +139,6 @@ pub fn aitken<S: Scalar, const D: usize>(
             p[i] = Point::lerp(&p[last], &p[i], &alpha);
         }
     }
-    Ok(p.swap_remove(0))
+    p.truncate(1);
+    Ok(finite(p)?.swap_remove(0))
 }
