@@ -1,0 +1,160 @@
+//! Cubic Bézier evaluation throughput: compgeo's generic `Bezier<f64, 2>::eval` against a
+//! hand-written `f64` cubic (the same Horner-type scheme of 000 §2.3 Obs. 4 on a fixed array,
+//! and the plain Bernstein sum), kurbo's `CubicBez::eval` and lyon_geom's
+//! `CubicBezierSegment::sample`, over 10⁶ parameters in [0, 1]; then one evaluation by de
+//! Casteljau (Θ(n²)) and by Horner (Θ(n)) over log-spaced degrees n.
+
+use compgeo::count::NoCount;
+use compgeo::gen::{points, PointKind};
+use compgeo::spline::{Bezier, Point};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use kurbo::ParamCurve;
+use std::hint::black_box;
+
+const PARAMETERS: usize = 1_000_000;
+
+/// Seeded parameters in [0, 1) and a seeded cubic in the unit square.
+fn inputs() -> (Vec<f64>, [[f64; 2]; 4]) {
+    let ts = points(PointKind::UniformSquare, PARAMETERS, 11)
+        .expect("generator")
+        .into_iter()
+        .map(|p| p.x)
+        .collect();
+    let c = points(PointKind::UniformSquare, 4, 3).expect("generator");
+    (ts, [0, 1, 2, 3].map(|i| [c[i].x, c[i].y]))
+}
+
+/// The Horner-type scheme written out for one cubic in f64, as a reference for what the
+/// generic code should compile to.
+#[inline]
+fn horner_cubic(p: &[[f64; 2]; 4], t: f64) -> [f64; 2] {
+    let u = 1.0 - t;
+    let (s, scale, q) = if t > 0.5 {
+        (u / t, t, [p[3], p[2], p[1], p[0]])
+    } else {
+        (t / u, u, *p)
+    };
+    let mut out = [0.0; 2];
+    for j in 0..2 {
+        let acc = ((q[3][j] * s + 3.0 * q[2][j]) * s + 3.0 * q[1][j]) * s + q[0][j];
+        out[j] = acc * (scale * scale * scale);
+    }
+    out
+}
+
+/// The Bernstein sum written out: (1 − t)³ b₀ + 3(1 − t)² t b₁ + 3(1 − t) t² b₂ + t³ b₃.
+#[inline]
+fn bernstein_cubic(p: &[[f64; 2]; 4], t: f64) -> [f64; 2] {
+    let u = 1.0 - t;
+    let w = [u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t];
+    [0, 1].map(|j| w[0] * p[0][j] + w[1] * p[1][j] + w[2] * p[2][j] + w[3] * p[3][j])
+}
+
+fn bench_cubic(c: &mut Criterion) {
+    let (ts, p) = inputs();
+    let curve = Bezier::new(p.iter().map(|&q| Point::new(q)).collect()).expect("finite");
+    let kp = |q: [f64; 2]| kurbo::Point::new(q[0], q[1]);
+    let kurbo_curve = kurbo::CubicBez::new(kp(p[0]), kp(p[1]), kp(p[2]), kp(p[3]));
+    let pt = |q: [f64; 2]| lyon_geom::point(q[0], q[1]);
+    let lyon_curve = lyon_geom::CubicBezierSegment {
+        from: pt(p[0]),
+        ctrl1: pt(p[1]),
+        ctrl2: pt(p[2]),
+        to: pt(p[3]),
+    };
+
+    let mut group = c.benchmark_group("cubic_eval");
+    group.throughput(Throughput::Elements(PARAMETERS as u64));
+    group.sample_size(20);
+    group.bench_function("compgeo_generic", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for t in black_box(&ts) {
+                let q = curve.eval(t).expect("finite parameter");
+                acc += q[0] + q[1];
+            }
+            acc
+        })
+    });
+    group.bench_function("compgeo_horner_nocount", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for t in black_box(&ts) {
+                let q = curve
+                    .horner_with(t, &mut NoCount)
+                    .expect("finite parameter");
+                acc += q[0] + q[1];
+            }
+            acc
+        })
+    });
+    group.bench_function("hand_written_horner", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for &t in black_box(&ts) {
+                let q = horner_cubic(&p, t);
+                acc += q[0] + q[1];
+            }
+            acc
+        })
+    });
+    group.bench_function("hand_written_bernstein", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for &t in black_box(&ts) {
+                let q = bernstein_cubic(&p, t);
+                acc += q[0] + q[1];
+            }
+            acc
+        })
+    });
+    group.bench_function("kurbo", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for &t in black_box(&ts) {
+                let q = kurbo_curve.eval(t);
+                acc += q.x + q.y;
+            }
+            acc
+        })
+    });
+    group.bench_function("lyon_geom", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for &t in black_box(&ts) {
+                let q = lyon_curve.sample(t);
+                acc += q.x + q.y;
+            }
+            acc
+        })
+    });
+    group.finish();
+}
+
+fn bench_degree(c: &mut Criterion) {
+    let mut group = c.benchmark_group("bezier_eval_degree");
+    for n in [4usize, 16, 64, 256] {
+        for (kind, name) in [
+            (PointKind::UniformSquare, "uniform"),
+            (PointKind::Cocircular, "cocircular"),
+        ] {
+            let pts = points(kind, n + 1, 5).expect("generator");
+            let curve = Bezier::new(pts.into_iter().map(Point::from).collect()).expect("finite");
+            group.throughput(Throughput::Elements(n as u64));
+            group.bench_with_input(
+                BenchmarkId::new(format!("de_casteljau/{name}"), n),
+                &curve,
+                |b, c| b.iter(|| c.de_casteljau(black_box(&0.3)).expect("finite")),
+            );
+            group.bench_with_input(
+                BenchmarkId::new(format!("horner/{name}"), n),
+                &curve,
+                |b, c| b.iter(|| c.horner(black_box(&0.3)).expect("finite")),
+            );
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_cubic, bench_degree);
+criterion_main!(benches);
