@@ -582,6 +582,29 @@ proptest! {
         }
     }
 
+
+    #[test]
+    fn f64_splines_agree_with_the_exact_ones((nodes, pts) in nodes_and_points(8), kind in 0usize..2) {
+        prop_assume!(nodes.len() >= 3);
+        let end_q = if kind == 0 { EndCondition::Natural } else { EndCondition::Bessel };
+        let end_f = if kind == 0 { EndCondition::Natural } else { EndCondition::Bessel };
+        let exact = cubic_spline(&nodes, &pts, &end_q).unwrap();
+        let nodes_f: Vec<f64> = nodes.iter().map(Scalar::to_f64).collect();
+        let pts_f: Vec<Point<f64, 2>> = pts.iter().map(Point::to_f64).collect();
+        let rounded = cubic_spline(&nodes_f, &pts_f, &end_f).unwrap();
+        let scale = exact
+            .pieces()
+            .iter()
+            .flat_map(|b| b.control().iter())
+            .fold(1.0f64, |m, p| m.max(p[0].to_f64().abs()).max(p[1].to_f64().abs()));
+        for (a, b) in exact.pieces().iter().zip(rounded.pieces()) {
+            for (p, q) in a.control().iter().zip(b.control()) {
+                let p = p.to_f64();
+                prop_assert!((p[0] - q[0]).abs() <= 1e-10 * scale && (p[1] - q[1]).abs() <= 1e-10 * scale);
+            }
+        }
+    }
+
     #[test]
     fn cr_joins_are_cr_exactly(
         pts in points_strategy(4),
@@ -1040,6 +1063,30 @@ mod cli {
         )
         .unwrap();
         assert_eq!(exact_points(&n["values"])[0], v.eval(&q(1, 3)));
+    }
+
+    #[test]
+    fn hermite_without_tangents_uses_the_parabola_estimates() {
+        let out = run_json(
+            &[
+                "interpolate",
+                "hermite",
+                "--points",
+                "[[0,0],[1,2],[3,3],[4,0]]",
+                "--parameterisation",
+                "uniform",
+                "--exact",
+            ],
+            None,
+        );
+        let pts = [(0, 0), (1, 2), (3, 3), (4, 0)].map(|(x, y)| p2(qi(x), qi(y)));
+        let knots = [qi(0), qi(1), qi(2), qi(3)];
+        let want = estimate_tangents(&pts, &knots).unwrap();
+        assert_eq!(exact_points(&out["tangents"]), want);
+        let curve = hermite(&pts, &want, &knots).unwrap();
+        for (piece, b) in out["pieces"].as_array().unwrap().iter().zip(curve.pieces()) {
+            assert_eq!(exact_points(piece), b.control());
+        }
     }
 
     #[test]
