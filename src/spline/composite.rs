@@ -50,7 +50,7 @@ pub struct CompositeBezier<S, const D: usize> {
 pub struct Join {
     /// The largest `r` such that the derivatives of orders `0..=r` agree (parametric
     /// continuity Cʳ), or `None` if the pieces do not even meet (not C⁰). Capped at the
-    /// smaller degree of the two pieces.
+    /// larger degree n of the two pieces: `Some(n)` means they are one polynomial (C^∞).
     pub parametric: Option<usize>,
     /// Whether the join is G¹: C⁰ and nonzero end tangents pointing the same way (seed 003
     /// Def. 3.2).
@@ -160,8 +160,8 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     }
 
     /// The derivatives of orders `0..=order` at the end of piece `i` (`end = true`, at
-    /// `u_{i+1}` from the left) or at its start (at `u_i` from the right), in `u`. Orders above
-    /// the piece's degree are left out (they are zero).
+    /// `u_{i+1}` from the left) or at its start (at `u_i` from the right), in `u`; those above
+    /// the piece's degree are zero.
     ///
     /// # Errors
     ///
@@ -196,7 +196,8 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
                 ),
             });
         }
-        let max = self.pieces[i - 1].degree().min(self.pieces[i].degree());
+        // Above the larger degree every derivative of both pieces is zero.
+        let max = self.pieces[i - 1].degree().max(self.pieces[i].degree());
         let left = self.end_derivatives_unchecked(i - 1, true, max);
         let right = self.end_derivatives_unchecked(i, false, max);
         let parametric = left
@@ -210,17 +211,16 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     }
 
     /// `true` if every join is Cʳ (derivatives of orders `0..=r` agree) within `tolerance`.
-    /// A single piece is C^∞.
+    /// A single piece is C^∞, and so is a join where the derivatives agree up to the larger
+    /// degree of its pieces (they are one polynomial).
     pub fn is_c(&self, r: usize, tolerance: &S) -> bool {
         (1..self.pieces.len()).all(|i| {
-            let max = self.pieces[i - 1].degree().min(self.pieces[i].degree());
+            let max = self.pieces[i - 1].degree().max(self.pieces[i].degree());
             let left = self.end_derivatives_unchecked(i - 1, true, r.min(max));
             let right = self.end_derivatives_unchecked(i, false, r.min(max));
-            r <= max
-                && left
-                    .iter()
-                    .zip(&right)
-                    .all(|(a, b)| nearly_equal(a, b, tolerance))
+            left.iter()
+                .zip(&right)
+                .all(|(a, b)| nearly_equal(a, b, tolerance))
         })
     }
 
@@ -454,14 +454,15 @@ pub(crate) fn power<S: Scalar>(x: &S, k: usize) -> S {
     p
 }
 
-/// The derivatives of orders `0..=order` (capped at the degree) of a Bézier curve at `t = 1`
-/// (`end`) or `t = 0`: `n!/(n−k)! Δᵏ b_{n−k}` or `n!/(n−k)! Δᵏ b_0`.
+/// The derivatives of orders `0..=order` of a Bézier curve at `t = 1` (`end`) or `t = 0`:
+/// `n!/(n−k)! Δᵏ b_{n−k}` or `n!/(n−k)! Δᵏ b_0`, and zero above the degree n.
 fn local_end_derivatives<S: Scalar, const D: usize>(
     control: &[Point<S, D>],
     end: bool,
     order: usize,
 ) -> Vec<Point<S, D>> {
     let n = control.len() - 1;
+    let wanted = order;
     let order = order.min(n);
     // The k+1 points nearest the end, as Δᵏ needs them.
     let mut diffs: Vec<Point<S, D>> = if end {
@@ -484,5 +485,7 @@ fn local_end_derivatives<S: Scalar, const D: usize>(
         }
         diffs.pop();
     }
+    // Derivatives above the degree are zero.
+    out.resize(wanted + 1, Point::zero());
     out
 }
