@@ -299,15 +299,16 @@ fn solve_tridiagonal<S: Scalar, const D: usize, C: Counter>(
     // One scaling of the first row, a multiply-add and a scaling per later row, one
     // multiply-add per row back.
     count(counter, 3 * n - 1);
+    // One division per row: points are scaled by the pivot's reciprocal.
     let mut c = Vec::with_capacity(n);
-    let mut pivot = diag[0].clone();
-    c.push(sup[0].clone() / &pivot);
-    rhs[0] = rhs[0].clone() / &pivot;
+    let mut inverse = S::one() / &diag[0];
+    c.push(sup[0].clone() * &inverse);
+    rhs[0] = rhs[0].clone() * &inverse;
     for i in 1..n {
-        pivot = diag[i].clone() - &(sub[i].clone() * &c[i - 1]);
-        c.push(sup[i].clone() / &pivot);
+        inverse = S::one() / (diag[i].clone() - &(sub[i].clone() * &c[i - 1]));
+        c.push(sup[i].clone() * &inverse);
         let prev = rhs[i - 1].clone() * &sub[i];
-        rhs[i] = (rhs[i].clone() - &prev) / &pivot;
+        rhs[i] = (rhs[i].clone() - &prev) * &inverse;
     }
     for i in (0..n - 1).rev() {
         let next = rhs[i + 1].clone() * &c[i];
