@@ -76,6 +76,12 @@ fn plane_curvature_is_signed_by_the_turn() {
         }
     ));
     assert!(frenet_frame::<f64, 2>(&[]).is_err());
+    // On the line the frame is the unit tangent, whichever way the curve runs.
+    let back = frenet_frame(&[Point::new([-3.0]), Point::new([5.0])]).unwrap();
+    assert_eq!(
+        (back.tangent(), back.curvatures()),
+        (Point::new([-1.0]), &[][..])
+    );
 }
 
 #[test]

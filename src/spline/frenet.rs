@@ -135,8 +135,9 @@ pub fn frenet_frame<S: Scalar, const D: usize>(
         squares.push(s);
     }
     let k = residuals.len();
-    // With a full frame the last vector completes a positive orientation.
-    let sign = if k == D && determinant_is_negative(&derivatives) {
+    // With a full frame (D ≥ 2) the last vector completes a positive orientation; on a line
+    // the frame is just the unit tangent.
+    let sign = if D >= 2 && k == D && determinant_is_negative(&derivatives) {
         -1.0
     } else {
         1.0
