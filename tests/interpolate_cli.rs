@@ -7,7 +7,10 @@ mod common;
 mod spline_common;
 
 use common::{assert_rejected, run_json};
-use compgeo::spline::{cubic_spline, estimate_tangents, hermite, vandermonde, EndCondition, Point};
+use compgeo::spline::{
+    cubic_spline, estimate_tangents, hermite, vandermonde, vandermonde_hermite, EndCondition,
+    HermiteNode, Point,
+};
 use serde_json::Value;
 use spline_common::{p2, pairs, q, qi, Q};
 
@@ -225,6 +228,39 @@ fn hermite_without_tangents_uses_the_parabola_estimates() {
     for (piece, b) in out["pieces"].as_array().unwrap().iter().zip(curve.pieces()) {
         assert_eq!(exact_points(piece), b.control());
     }
+}
+
+#[test]
+fn newton_with_derivatives_is_the_hermite_interpolant() {
+    let out = run_json(
+        &[
+            "interpolate",
+            "newton",
+            "--points",
+            "[[0,1],[2,0],[1,1]]",
+            "--nodes",
+            r#"[0,"1/2",2]"#,
+            "--derivatives",
+            r#"[[1,0],[0,"-3/2"],[2,2]]"#,
+            "--at",
+            r#"["1/3"]"#,
+            "--exact",
+        ],
+        None,
+    );
+    let nodes = [qi(0), q(1, 2), qi(2)];
+    let pts = [p2(qi(0), qi(1)), p2(qi(2), qi(0)), p2(qi(1), qi(1))];
+    let slopes = [p2(qi(1), qi(0)), p2(qi(0), q(-3, 2)), p2(qi(2), qi(2))];
+    let data: Vec<HermiteNode<Q, 2>> = (0..3)
+        .map(|i| HermiteNode {
+            u: nodes[i].clone(),
+            values: vec![pts[i].clone(), slopes[i].clone()],
+        })
+        .collect();
+    let want = vandermonde_hermite(&data).unwrap();
+    assert_eq!(exact_points(&out["monomial"]), want.coefficients());
+    assert_eq!(exact_points(&out["values"])[0], want.eval(&q(1, 3)));
+    assert_eq!(out["nodes"].as_array().unwrap().len(), 6, "each node twice");
 }
 
 #[test]
