@@ -24,22 +24,16 @@ fn inputs() -> (Vec<f64>, [[f64; 2]; 4]) {
     (ts, [0, 1, 2, 3].map(|i| [c[i].x, c[i].y]))
 }
 
-/// The Horner-type scheme written out for one cubic in f64, as a reference for what the
-/// generic code should compile to.
+/// The Horner-type scheme written out for one cubic in f64 (the same nesting as the generic
+/// code: one factor 1 − t per step, no division), as a reference for what the generic code
+/// should compile to.
 #[inline]
 fn horner_cubic(p: &[[f64; 2]; 4], t: f64) -> [f64; 2] {
     let u = 1.0 - t;
-    let (s, scale, q) = if t > 0.5 {
-        (u / t, t, [p[3], p[2], p[1], p[0]])
-    } else {
-        (t / u, u, *p)
-    };
-    let mut out = [0.0; 2];
-    for j in 0..2 {
-        let acc = ((q[3][j] * s + 3.0 * q[2][j]) * s + 3.0 * q[1][j]) * s + q[0][j];
-        out[j] = acc * (scale * scale * scale);
-    }
-    out
+    let t2 = t * t;
+    [0, 1].map(|j| {
+        ((p[0][j] * u + 3.0 * t * p[1][j]) * u + 3.0 * t2 * p[2][j]) * u + t2 * t * p[3][j]
+    })
 }
 
 /// The Bernstein sum written out: (1 − t)³ b₀ + 3(1 − t)² t b₁ + 3(1 − t) t² b₂ + t³ b₃.

@@ -53,6 +53,13 @@
 //! | [`calipers::antipodal_pairs`] | Θ(n) on a convex polygon of n vertices, at most 3n/2 pairs |
 //! | [`calipers::diameter`] | the hull's time plus Θ(h) |
 //! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |
+//! | [`spline::vandermonde`], [`spline::vandermonde_hermite`] | Θ(n³) for n conditions (dense elimination) |
+//! | [`spline::lagrange`], [`spline::aitken`] | Θ(n²) per evaluation, n nodes |
+//! | [`spline::newton`], [`spline::newton_hermite`] | Θ(n²) divided differences, Θ(n) per evaluation |
+//! | [`spline::cubic_spline`] (natural, clamped, Bessel, periodic) | Θ(n), exactly 7n + 4 point operations (open ends) |
+//! | [`spline::hermite`], [`spline::quadratic_spline`], [`spline::closed_quadratic_spline`] | Θ(n) |
+//! | [`spline::fit_bezier`] | Θ(m n² + n³) for m points, degree n |
+//! | [`spline::frenet_frame`] | Θ(d³) in R^d |
 //!
 //! ## A first example
 //!

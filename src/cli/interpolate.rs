@@ -6,7 +6,9 @@
 //! strings such as `"47/18"`. With `--exact` every number is read as the exact rational it
 //! writes and printed as a string; without it numbers are `f64` in and out. Composite curves
 //! are printed as `{"knots": [...], "tangents": [...], "pieces": [[b_0, b_1, b_2, b_3], ...]}`
-//! (the cubic Bézier points of each piece).
+//! (the cubic Bézier points of each piece). `newton` prints the nodes of the Newton basis, the
+//! divided differences and the power-basis coefficients; with `--derivatives` (first
+//! derivatives at the nodes) it is Hermite interpolation, every node counted twice.
 
 use super::bezier::{point, points, JsonScalar};
 use super::input::parse_number_arrays;
@@ -14,7 +16,8 @@ use super::output::print_json;
 use super::CliError;
 use crate::spline::{
     aitken, cubic_spline_tangents, estimate_tangents, hermite, lagrange, lagrange_basis, newton,
-    parameterise, parse_scalar, CompositeBezier, EndCondition, Parameterisation, Point,
+    newton_hermite, parameterise, parse_scalar, CompositeBezier, EndCondition, HermiteNode,
+    Parameterisation, Point,
 };
 use clap::{Args, Subcommand, ValueEnum};
 use num_rational::BigRational;
@@ -66,6 +69,10 @@ enum Method {
     Newton {
         #[command(flatten)]
         data: PolyData,
+        /// First derivatives at the nodes, JSON [[x, y], ...]: Hermite interpolation by
+        /// divided differences at doubled nodes
+        #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+        derivatives: Option<String>,
     },
 }
 
@@ -131,7 +138,7 @@ enum Knots {
 pub(super) fn run(args: InterpolateArgs) -> Result<(), CliError> {
     let (points_text, exact) = match &args.method {
         Method::Hermite { data, .. } | Method::Spline { data, .. } => (&data.points, data.exact),
-        Method::Lagrange { data, .. } | Method::Newton { data } => (&data.points, data.exact),
+        Method::Lagrange { data, .. } | Method::Newton { data, .. } => (&data.points, data.exact),
     };
     let rows = parse_number_arrays(points_text)?;
     let d = rows[0].len();
@@ -231,9 +238,32 @@ fn run_typed<S: JsonScalar, const D: usize>(
                 "basis": bases,
             })
         }
-        Method::Newton { data } => {
+        Method::Newton { data, derivatives } => {
             let nodes = read_scalars::<S>(&data.nodes, "node")?;
-            let form = newton(&nodes, &pts)?;
+            let form = match derivatives {
+                None => newton(&nodes, &pts)?,
+                Some(text) => {
+                    let slopes = read_points::<S, D>(text, "derivative coordinate")?;
+                    if slopes.len() != nodes.len() || pts.len() != nodes.len() {
+                        return Err(CliError::Usage(format!(
+                            "{} nodes, {} points and {} derivatives: give one of each per node",
+                            nodes.len(),
+                            pts.len(),
+                            slopes.len()
+                        )));
+                    }
+                    let data: Vec<HermiteNode<S, D>> = nodes
+                        .iter()
+                        .zip(&pts)
+                        .zip(slopes)
+                        .map(|((u, p), d)| HermiteNode {
+                            u: u.clone(),
+                            values: vec![p.clone(), d],
+                        })
+                        .collect();
+                    newton_hermite(&data)?
+                }
+            };
             let at = match &data.at {
                 Some(text) => read_scalars::<S>(text, "u")?,
                 None => Vec::new(),

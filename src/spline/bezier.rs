@@ -132,13 +132,29 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// Θ(nD) time, O(D) auxiliary space (Θ(n²D) time and O(nD) space in the overflow case).
     #[inline]
     pub fn eval(&self, t: &S) -> Result<Point<S, D>> {
-        validate_parameter(t, "t")?;
+        // A non-finite t makes every step of degree ≥ 1 non-finite (no step divides by t),
+        // so one check of the result covers the parameter too; degree 0 ignores t.
         let p = self.horner_unchecked(t, &mut NoCount);
-        if p.is_finite() {
+        if p.is_finite() && (self.control.len() > 1 || t.is_finite()) {
             Ok(p)
         } else {
-            self.de_casteljau(t)
+            self.eval_slow(t)
         }
+    }
+
+    /// [`Bezier::eval`]'s rare path, out of line: a bad parameter, or an overflow of
+    /// Horner's binomials recomputed by de Casteljau's algorithm.
+    #[cold]
+    #[inline(never)]
+    fn eval_slow(&self, t: &S) -> Result<Point<S, D>> {
+        validate_parameter(t, "t")?;
+        let mut q = self.control.clone();
+        for k in 1..q.len() {
+            for i in 0..q.len() - k {
+                q[i] = Point::lerp(&q[i], &q[i + 1], t);
+            }
+        }
+        Ok(q.swap_remove(0))
     }
 
     /// The point b(t) by de Casteljau's algorithm. See [`Bezier::de_casteljau_with`].
@@ -215,10 +231,13 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
 
     /// The point b(t) by the Horner-type scheme of the seed, counting its point operations.
     ///
-    /// Idea: `b(t) = (1 − t)ⁿ Σᵢ C(n, i) bᵢ sⁱ` with s = t/(1 − t), a polynomial in s that
-    /// Horner's rule evaluates with n multiply-adds. Near t = 1 that quotient blows up, so for
-    /// t > 1/2 the mirrored form `b(t) = tⁿ Σᵢ C(n, i) bₙ₋ᵢ sⁱ` with s = (1 − t)/t is used.
-    /// Either way |s| ≤ 1 for every real t and no division by zero can occur.
+    /// Idea: `b(t) = (1 − t)ⁿ Σᵢ C(n, i) bᵢ sⁱ` with s = t/(1 − t) is a polynomial in s, and
+    /// Horner's rule evaluates it with n multiply-adds. The seed notes that this fails near
+    /// t = 1 and switches to the mirrored form there; here the factor (1 − t)ⁿ is instead
+    /// distributed over the nesting, one factor (1 − t) per step:
+    /// `(⋯((b₀(1 − t) + C(n,1) t b₁)(1 − t) + C(n,2) t² b₂)(1 − t) + ⋯) + tⁿ bₙ`.
+    /// No division remains, so no parameter fails and no branch is taken: every real t,
+    /// also outside [0, 1], costs the same n + 1 steps.
     ///
     /// Follows `000_f3201fe9758fe02a.txt` §2.3, Obs. 4.
     ///
@@ -529,44 +548,66 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         q.swap_remove(0)
     }
 
-    /// Horner's scheme of Obs. 4 without validation (t finite).
-    #[inline]
+    /// Horner's scheme of Obs. 4 without validation (t finite); inlined so that the
+    /// closed forms of degrees 1 to 3 compile into the caller's loop.
+    #[inline(always)]
     fn horner_unchecked<C: Counter>(&self, t: &S, counter: &mut C) -> Point<S, D> {
-        let n = self.degree();
+        let b = &self.control;
+        let n = b.len() - 1;
+        counter.arithmetic_operation();
+        if n == 0 {
+            return b[0].clone();
+        }
         let u = S::one() - t;
-        let mirrored = *t > S::from_ratio(1, 2);
-        // |s| ≤ 1 in both branches; the divisor is ≥ 1/2 in absolute value.
-        let (s, scale) = if mirrored {
-            (u / t, t.clone())
-        } else {
-            (t.clone() / &u, u)
-        };
-        let at = |i: usize| {
-            if mirrored {
-                &self.control[n - i]
-            } else {
-                &self.control[i]
+        // Lines, quadratics and cubics, the common case, get the same nesting unrolled with
+        // their binomials as constants: no loop, no table, no bounds checks.
+        if let [b0, b1] = &b[..] {
+            counter.arithmetic_operation();
+            return b0.clone() * &u + &(b1.clone() * t);
+        }
+        if let [b0, b1, b2] = &b[..] {
+            counter.arithmetic_operation();
+            counter.arithmetic_operation();
+            let two_t = S::from_i64(2) * t;
+            return (b0.clone() * &u + &(b1.clone() * two_t)) * &u
+                + &(b2.clone() * (t.clone() * t));
+        }
+        if let [b0, b1, b2, b3] = &b[..] {
+            for _ in 0..3 {
+                counter.arithmetic_operation();
             }
-        };
-        let mut acc = at(n).clone();
-        // Past the table, C(n, i) = C(n, i + 1)·(i + 1)/(n − i) keeps each step O(1).
+            let t2 = t.clone() * t;
+            let three = S::from_i64(3);
+            return ((b0.clone() * &u + &(b1.clone() * (three.clone() * t))) * &u
+                + &(b2.clone() * (three * &t2)))
+                * &u
+                + &(b3.clone() * (t2 * t));
+        }
+        self.horner_loop(t, u, counter)
+    }
+
+    /// Horner's nesting for degree n ≥ 4 (one counted step is already recorded).
+    fn horner_loop<C: Counter>(&self, t: &S, u: S, counter: &mut C) -> Point<S, D> {
+        let b = &self.control;
+        let n = b.len() - 1;
+        // acc = Σ_{j<i} C(n, j) tʲ uⁱ⁻ʲ bⱼ after step i; tᵢ = tⁱ.
+        let mut ti = S::one();
+        let mut acc = b[0].clone() * &u;
+        // Past the table, C(n, i) = C(n, i − 1)·(n − i + 1)/i keeps each step O(1).
         let mut c = S::one();
-        for i in (0..n).rev() {
+        for (i, bi) in b.iter().enumerate().take(n).skip(1) {
+            ti = ti * t;
             let coefficient = if n < BINOMIAL_ROWS {
                 binomial_coefficient::<S>(n, i)
             } else {
-                c = c * S::from_i64((i + 1) as i64) / S::from_i64((n - i) as i64);
+                c = c * S::from_i64((n - i + 1) as i64) / S::from_i64(i as i64);
                 c.clone()
             };
-            acc = acc * &s + &(at(i).clone() * coefficient);
+            acc = (acc + &(bi.clone() * (ti.clone() * coefficient))) * &u;
             counter.arithmetic_operation();
         }
-        let mut power = S::one();
-        for _ in 0..n {
-            power = power * &scale;
-        }
         counter.arithmetic_operation();
-        acc * power
+        acc + &(b[n].clone() * (ti * t))
     }
 }
 

@@ -50,7 +50,7 @@ pub struct CompositeBezier<S, const D: usize> {
 pub struct Join {
     /// The largest `r` such that the derivatives of orders `0..=r` agree (parametric
     /// continuity Cʳ), or `None` if the pieces do not even meet (not C⁰). Capped at the
-    /// smaller degree of the two pieces.
+    /// larger degree n of the two pieces: `Some(n)` means they are one polynomial (C^∞).
     pub parametric: Option<usize>,
     /// Whether the join is G¹: C⁰ and nonzero end tangents pointing the same way (seed 003
     /// Def. 3.2).
@@ -160,18 +160,20 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     }
 
     /// The derivatives of orders `0..=order` at the end of piece `i` (`end = true`, at
-    /// `u_{i+1}` from the left) or at its start (at `u_i` from the right), in `u`.
+    /// `u_{i+1}` from the left) or at its start (at `u_i` from the right), in `u`; those above
+    /// the piece's degree are zero.
     ///
-    /// # Panics
+    /// # Errors
     ///
-    /// If `i` is not a piece index.
-    pub fn end_derivatives(&self, i: usize, end: bool, order: usize) -> Vec<Point<S, D>> {
-        let h = self.partition[i + 1].clone() - &self.partition[i];
-        local_end_derivatives(self.pieces[i].control(), end, order)
-            .into_iter()
-            .enumerate()
-            .map(|(r, d)| d / &power(&h, r))
-            .collect()
+    /// [`Error::InvalidParameter`] (`"piece"`) if `i` is not a piece index.
+    pub fn end_derivatives(&self, i: usize, end: bool, order: usize) -> Result<Vec<Point<S, D>>> {
+        if i >= self.pieces.len() {
+            return Err(Error::InvalidParameter {
+                name: "piece",
+                reason: format!("{i} is not a piece index (0..{})", self.pieces.len()),
+            });
+        }
+        Ok(self.end_derivatives_unchecked(i, end, order))
     }
 
     /// How piece `i − 1` and piece `i` meet at the knot `u_i`, for `i` in `1..m`.
@@ -184,6 +186,23 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     /// # Errors
     ///
     /// [`Error::InvalidParameter`] (`"join"`) if `i` is not an interior knot index.
+    ///
+    /// # Complexity
+    ///
+    /// Θ(n²·D) for pieces of degree at most n (forward differences at the two ends).
+    ///
+    /// ```
+    /// use compgeo::spline::{CompositeBezier, Join, Point};
+    ///
+    /// let p = |x: f64, y: f64| Point::new([x, y]);
+    /// // The tangent turns by a factor 3 in length but not in direction: G¹, not C¹.
+    /// let c = CompositeBezier::new(
+    ///     vec![0.0, 1.0, 2.0],
+    ///     vec![vec![p(0.0, 0.0), p(1.0, 1.0)], vec![p(1.0, 1.0), p(4.0, 4.0)]],
+    /// )?;
+    /// assert_eq!(c.join(1, &0.0)?, Join { parametric: Some(0), g1: true });
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
     pub fn join(&self, i: usize, tolerance: &S) -> Result<Join> {
         if i == 0 || i >= self.pieces.len() {
             return Err(Error::InvalidParameter {
@@ -194,9 +213,10 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
                 ),
             });
         }
-        let max = self.pieces[i - 1].degree().min(self.pieces[i].degree());
-        let left = self.end_derivatives(i - 1, true, max);
-        let right = self.end_derivatives(i, false, max);
+        // Above the larger degree every derivative of both pieces is zero.
+        let max = self.pieces[i - 1].degree().max(self.pieces[i].degree());
+        let left = self.end_derivatives_unchecked(i - 1, true, max);
+        let right = self.end_derivatives_unchecked(i, false, max);
         let parametric = left
             .iter()
             .zip(&right)
@@ -208,17 +228,16 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     }
 
     /// `true` if every join is Cʳ (derivatives of orders `0..=r` agree) within `tolerance`.
-    /// A single piece is C^∞.
+    /// A single piece is C^∞, and so is a join where the derivatives agree up to the larger
+    /// degree of its pieces (they are one polynomial).
     pub fn is_c(&self, r: usize, tolerance: &S) -> bool {
         (1..self.pieces.len()).all(|i| {
-            let max = self.pieces[i - 1].degree().min(self.pieces[i].degree());
-            let left = self.end_derivatives(i - 1, true, r.min(max));
-            let right = self.end_derivatives(i, false, r.min(max));
-            r <= max
-                && left
-                    .iter()
-                    .zip(&right)
-                    .all(|(a, b)| nearly_equal(a, b, tolerance))
+            let max = self.pieces[i - 1].degree().max(self.pieces[i].degree());
+            let left = self.end_derivatives_unchecked(i - 1, true, r.min(max));
+            let right = self.end_derivatives_unchecked(i, false, r.min(max));
+            left.iter()
+                .zip(&right)
+                .all(|(a, b)| nearly_equal(a, b, tolerance))
         })
     }
 
@@ -243,7 +262,19 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ(n²·D) for degree n (a de Casteljau scheme per determined point).
+    /// Θ(r·n²·D) for degree n (a blossom, that is a de Casteljau scheme, per determined point).
+    ///
+    /// ```
+    /// use compgeo::spline::{CompositeBezier, Point};
+    ///
+    /// let p = |x: f64, y: f64| Point::new([x, y]);
+    /// let mut c = CompositeBezier::new(vec![0.0, 1.0], vec![vec![p(0.0, 0.0), p(1.0, 2.0), p(3.0, 2.0), p(4.0, 0.0)]])?;
+    /// c.push_cr(2, 2.0, &[p(6.0, 1.0)])?; // C² over [1, 2], one free point
+    /// assert!(c.is_c(2, &1e-12) && !c.is_c(3, &1e-12));
+    /// // Its second point continues the first piece's last leg: Q₁ = Q₀ + λ (P₃ − P₂), λ = 1.
+    /// assert_eq!(c.pieces()[1].control()[1], p(5.0, -2.0));
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
     pub fn push_cr(&mut self, r: usize, next_knot: S, free: &[Point<S, D>]) -> Result<()> {
         let last = self.pieces.last().expect("a composite curve has a piece");
         let n = last.degree();
@@ -370,7 +401,25 @@ pub fn c1_partition<S: Scalar, const D: usize>(
     Ok(u)
 }
 
-/// `|a − b|² ≤ tol² · max(|a|², |b|²)`; with `tol = 0` exact equality.
+impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
+    /// [`end_derivatives`](Self::end_derivatives) for a valid piece index.
+    pub(crate) fn end_derivatives_unchecked(
+        &self,
+        i: usize,
+        end: bool,
+        order: usize,
+    ) -> Vec<Point<S, D>> {
+        let h = self.partition[i + 1].clone() - &self.partition[i];
+        local_end_derivatives(self.pieces[i].control(), end, order)
+            .into_iter()
+            .enumerate()
+            .map(|(r, d)| d / &power(&h, r))
+            .collect()
+    }
+}
+
+/// `|a − b|² ≤ tol² · max(|a|², |b|²)`; with `tol = 0` exact equality. Rounded scalars are
+/// first scaled by a common power of two so that the squares cannot overflow.
 pub(crate) fn nearly_equal<S: Scalar, const D: usize>(
     a: &Point<S, D>,
     b: &Point<S, D>,
@@ -379,7 +428,9 @@ pub(crate) fn nearly_equal<S: Scalar, const D: usize>(
     if tol.is_zero() {
         return a == b;
     }
-    let diff = (a.clone() - b).norm_squared();
+    let s = pow2_scale(&[a, b]);
+    let (a, b) = (a.clone() * &s, b.clone() * &s);
+    let diff = (a.clone() - &b).norm_squared();
     let (na, nb) = (a.norm_squared(), b.norm_squared());
     let scale = if na > nb { na } else { nb };
     diff <= tol.clone() * tol * &scale
@@ -387,17 +438,40 @@ pub(crate) fn nearly_equal<S: Scalar, const D: usize>(
 
 /// Nonzero vectors pointing the same way: `a·b > 0` and
 /// `|a|²|b|² − (a·b)² ≤ tol² |a|²|b|²` (the squared sine of their angle is at most `tol²`).
+/// Rounded scalars scale each vector by a power of two first (the test is invariant under
+/// positive scaling), so that the degree-4 terms cannot overflow.
 pub(crate) fn same_direction<S: Scalar, const D: usize>(
     a: &Point<S, D>,
     b: &Point<S, D>,
     tol: &S,
 ) -> bool {
-    let dot = a.dot(b);
+    let a = a.clone() * pow2_scale(&[a]);
+    let b = b.clone() * pow2_scale(&[b]);
+    let dot = a.dot(&b);
     if dot <= S::zero() {
         return false;
     }
     let norms = a.norm_squared() * b.norm_squared();
     norms.clone() - &(dot.clone() * &dot) <= tol.clone() * tol * &norms
+}
+
+/// For rounded scalars, the power of two `2^−e` that brings the largest coordinate of
+/// `vectors` into `[1, 2)` (e clamped to ±1020 so the factor is a normal double); one for
+/// exact scalars and for all-zero input. Multiplying by it is exact unless a coordinate
+/// underflows, which only happens to coordinates below 2^−1074 relative to the largest.
+pub(crate) fn pow2_scale<S: Scalar, const D: usize>(vectors: &[&Point<S, D>]) -> S {
+    if S::EXACT {
+        return S::one();
+    }
+    let max = vectors
+        .iter()
+        .flat_map(|v| v.coords().iter())
+        .fold(0.0f64, |m, c| m.max(c.to_f64().abs()));
+    if max == 0.0 || !max.is_finite() {
+        return S::one();
+    }
+    let e = (max.log2().floor() as i32).clamp(-1020, 1020);
+    S::from_f64(2f64.powi(-e)).unwrap_or_else(S::one)
 }
 
 /// `x^k`.
@@ -409,14 +483,15 @@ pub(crate) fn power<S: Scalar>(x: &S, k: usize) -> S {
     p
 }
 
-/// The derivatives of orders `0..=order` (capped at the degree) of a Bézier curve at `t = 1`
-/// (`end`) or `t = 0`: `n!/(n−k)! Δᵏ b_{n−k}` or `n!/(n−k)! Δᵏ b_0`.
+/// The derivatives of orders `0..=order` of a Bézier curve at `t = 1` (`end`) or `t = 0`:
+/// `n!/(n−k)! Δᵏ b_{n−k}` or `n!/(n−k)! Δᵏ b_0`, and zero above the degree n.
 fn local_end_derivatives<S: Scalar, const D: usize>(
     control: &[Point<S, D>],
     end: bool,
     order: usize,
 ) -> Vec<Point<S, D>> {
     let n = control.len() - 1;
+    let wanted = order;
     let order = order.min(n);
     // The k+1 points nearest the end, as Δᵏ needs them.
     let mut diffs: Vec<Point<S, D>> = if end {
@@ -439,5 +514,7 @@ fn local_end_derivatives<S: Scalar, const D: usize>(
         }
         diffs.pop();
     }
+    // Derivatives above the degree are zero.
+    out.resize(wanted + 1, Point::zero());
     out
 }

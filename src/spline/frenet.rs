@@ -20,7 +20,7 @@
 //! The curvature vector `κ n = (‖x'‖² x'' − (x'·x'') x') / ‖x'‖⁴` needs no square root, so
 //! [`curvature_vector`] is exact with rationals and the G² check built on it too.
 
-use super::composite::nearly_equal;
+use super::composite::{nearly_equal, pow2_scale};
 use super::{Bezier, CompositeBezier, Point, Scalar};
 use crate::{Error, Result};
 
@@ -110,10 +110,14 @@ pub fn frenet_frame<S: Scalar, const D: usize>(
     derivatives: &[Point<S, D>],
 ) -> Result<FrenetFrame<D>> {
     super::validate_points(derivatives, "derivatives")?;
+    let r = derivatives.len().min(D);
+    // Scaling the curve by s scales every curvature by 1/s: work at unit scale in f64.
+    let refs: Vec<&Point<S, D>> = derivatives[..r].iter().collect();
+    let s = pow2_scale(&refs);
+    let derivatives: Vec<Point<S, D>> = derivatives[..r].iter().map(|d| d.clone() * &s).collect();
     if derivatives[0].norm_squared().is_zero() {
         return Err(not_regular());
     }
-    let r = derivatives.len().min(D);
     // Orthogonal residuals e_i and their squared lengths, in S.
     let mut residuals: Vec<Point<S, D>> = Vec::with_capacity(r);
     let mut squares: Vec<S> = Vec::with_capacity(r);
@@ -131,8 +135,9 @@ pub fn frenet_frame<S: Scalar, const D: usize>(
         squares.push(s);
     }
     let k = residuals.len();
-    // With a full frame the last vector completes a positive orientation.
-    let sign = if k == D && determinant_is_negative(&derivatives[..D]) {
+    // With a full frame (D ≥ 2) the last vector completes a positive orientation; on a line
+    // the frame is just the unit tangent.
+    let sign = if D >= 2 && k == D && determinant_is_negative(&derivatives) {
         -1.0
     } else {
         1.0
@@ -142,10 +147,11 @@ pub fn frenet_frame<S: Scalar, const D: usize>(
         .zip(&squares)
         .map(|(e, s)| e.to_f64() / s.to_f64().sqrt())
         .collect();
+    let unscale = s.to_f64();
     let mut curvatures: Vec<f64> = (1..k)
         .map(|i| {
             let ratio = squares[i].clone() / (squares[0].clone() * &squares[i - 1]);
-            ratio.to_f64().sqrt()
+            ratio.to_f64().sqrt() * unscale
         })
         .collect();
     if sign < 0.0 {
@@ -212,12 +218,15 @@ pub fn curvature_vector<S: Scalar, const D: usize>(
     second: &Point<S, D>,
 ) -> Result<Point<S, D>> {
     super::validate_points(&[first.clone(), second.clone()], "derivatives")?;
+    // κn of the curve scaled by s is κn / s: compute at unit scale (f64), then scale back.
+    let s = pow2_scale(&[first, second]);
+    let (first, second) = (first.clone() * &s, second.clone() * &s);
     let speed2 = first.norm_squared();
     if speed2.is_zero() {
         return Err(not_regular());
     }
-    let normal_part = second.clone() * &speed2 - &(first.clone() * first.dot(second));
-    Ok(normal_part / (speed2.clone() * &speed2))
+    let normal_part = second.clone() * &speed2 - &(first.clone() * first.dot(&second));
+    Ok(normal_part / (speed2.clone() * &speed2) * &s)
 }
 
 /// Whether pieces `i − 1` and `i` of a composite curve meet with G² continuity at `u_i`
@@ -251,8 +260,8 @@ pub fn is_g2_join<S: Scalar, const D: usize>(
     if !curve.join(i, tolerance)?.g1 {
         return Ok(false);
     }
-    let left = curve.end_derivatives(i - 1, true, 2);
-    let right = curve.end_derivatives(i, false, 2);
+    let left = curve.end_derivatives(i - 1, true, 2)?;
+    let right = curve.end_derivatives(i, false, 2)?;
     let second = |d: &[Point<S, D>]| d.get(2).cloned().unwrap_or_else(Point::zero);
     let kl = curvature_vector(&left[1], &second(&left))?;
     let kr = curvature_vector(&right[1], &second(&right))?;

@@ -38,7 +38,8 @@ pub enum Parameterisation {
 ///
 /// [`Error::TooFew`] for fewer than two points; [`Error::InvalidParameter`] for mismatched
 /// lengths (`"points"`, `"tangents"`) or a non-finite, non-increasing partition
-/// (`"partition"`); [`Error::NonFinite`] for a bad coordinate.
+/// (`"partition"`), and (`"points"`) when an `f64` control point overflows;
+/// [`Error::NonFinite`] for a bad coordinate.
 ///
 /// # Complexity
 ///
@@ -66,7 +67,7 @@ pub fn hermite<S: Scalar, const D: usize>(
     }
     super::validate_points(tangents, "tangents")?;
     let three = S::from_i64(3);
-    let pieces = (0..points.len() - 1)
+    let pieces: Vec<Vec<Point<S, D>>> = (0..points.len() - 1)
         .map(|i| {
             let third = (partition[i + 1].clone() - &partition[i]) / &three;
             vec![
@@ -77,6 +78,9 @@ pub fn hermite<S: Scalar, const D: usize>(
             ]
         })
         .collect();
+    if pieces.iter().flatten().any(|p| !p.is_finite()) {
+        return Err(overflow());
+    }
     CompositeBezier::new(partition.to_vec(), pieces)
 }
 
@@ -202,6 +206,16 @@ pub fn parameterise<S: Scalar, const D: usize>(
         knots.push(knot);
     }
     Ok(knots)
+}
+
+/// The error for finite data whose Bézier points are beyond the `f64` range.
+pub(crate) fn overflow() -> Error {
+    Error::InvalidParameter {
+        name: "points",
+        reason: "the control points overflow f64 (large coordinates, tangents or knot gaps); \
+                 use exact rationals"
+            .to_string(),
+    }
 }
 
 /// Points and partition of an interpolant: at least two, equal lengths, finite, increasing.

@@ -132,7 +132,7 @@ pub fn vandermonde<S: Scalar, const D: usize>(
         .collect();
     let coefficients = solve_dense(matrix, points.to_vec())
         .ok_or_else(|| singular("nodes", "the Vandermonde matrix is singular"))?;
-    Ok(Polynomial::new(coefficients))
+    Ok(Polynomial::new(finite(coefficients)?))
 }
 
 /// The Hermite interpolating polynomial through values and derivatives, by solving the
@@ -187,7 +187,7 @@ pub fn vandermonde_hermite<S: Scalar, const D: usize>(
     }
     let coefficients = solve_dense(matrix, rhs)
         .ok_or_else(|| singular("nodes", "the confluent Vandermonde matrix is singular"))?;
-    Ok(Polynomial::new(coefficients))
+    Ok(Polynomial::new(finite(coefficients)?))
 }
 
 /// Checks that `nodes` and `points` are non-empty, of equal length and finite.
@@ -301,6 +301,22 @@ pub(crate) fn check_hermite<S: Scalar, const D: usize>(
     check_finite_nodes(&nodes, "nodes")?;
     check_distinct(&nodes)?;
     Ok(index)
+}
+
+/// The points, or an error if an `f64` one overflowed (finite data, result out of range).
+pub(crate) fn finite<S: Scalar, const D: usize>(
+    points: Vec<Point<S, D>>,
+) -> Result<Vec<Point<S, D>>> {
+    if points.iter().all(Point::is_finite) {
+        Ok(points)
+    } else {
+        Err(Error::InvalidParameter {
+            name: "points",
+            reason: "the result overflows f64 (large values or nearly equal nodes); use exact \
+                     rationals"
+                .to_string(),
+        })
+    }
 }
 
 /// The error for singular interpolation data.

@@ -6,7 +6,9 @@
 //! §4.4 (Hermite interpolation as the confluent case); seed 003 §3.1 ("Newton": the nodes need
 //! not be in increasing order).
 
-use super::interpolate::{check_distinct, check_hermite, check_nodes_and_points, HermiteNode};
+use super::interpolate::{
+    check_distinct, check_hermite, check_nodes_and_points, finite, HermiteNode,
+};
 use super::{Point, Polynomial, Scalar};
 use crate::Result;
 
@@ -101,7 +103,7 @@ pub fn newton<S: Scalar, const D: usize>(
             values: vec![p.clone()],
         })
         .collect();
-    Ok(divided_differences(&data))
+    checked(divided_differences(&data))
 }
 
 /// The Newton form of the Hermite interpolant: values and derivatives at distinct nodes, by
@@ -140,7 +142,16 @@ pub fn newton_hermite<S: Scalar, const D: usize>(
     data: &[HermiteNode<S, D>],
 ) -> Result<NewtonForm<S, D>> {
     check_hermite(data)?;
-    Ok(divided_differences(data))
+    checked(divided_differences(data))
+}
+
+/// The form, or an error if an `f64` divided difference overflowed.
+fn checked<S: Scalar, const D: usize>(form: NewtonForm<S, D>) -> Result<NewtonForm<S, D>> {
+    let coefficients = finite(form.coefficients)?;
+    Ok(NewtonForm {
+        nodes: form.nodes,
+        coefficients,
+    })
 }
 
 /// The divided-difference table over validated data, kept one column at a time.

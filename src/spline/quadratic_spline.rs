@@ -14,7 +14,7 @@
 //! the start tangent travels along the whole curve.
 
 use super::interpolate::{check_nodes_and_points, check_partition, singular};
-use super::{validate_points, CompositeBezier, Point, Scalar};
+use super::{CompositeBezier, Point, Scalar};
 use crate::{Error, Result};
 
 /// The C¹ quadratic spline through `points` at the knots `partition` whose first derivative at
@@ -169,7 +169,9 @@ fn build<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
     inner: Vec<Point<S, D>>,
 ) -> Result<CompositeBezier<S, D>> {
-    validate_points(&inner, "inner control points")?;
+    if inner.iter().any(|p| !p.is_finite()) {
+        return Err(super::hermite::overflow());
+    }
     let pieces = inner
         .into_iter()
         .enumerate()

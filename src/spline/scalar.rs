@@ -499,14 +499,22 @@ pub fn validate_points<S: Scalar, const D: usize>(
 /// # Errors
 ///
 /// [`Error::InvalidParameter`] naming `name` if the value is NaN or infinite.
+#[inline]
 pub fn validate_parameter<S: Scalar>(t: &S, name: &'static str) -> Result<()> {
     if t.is_finite() {
         Ok(())
     } else {
-        Err(Error::InvalidParameter {
-            name,
-            reason: format!("must be finite, got {}", t.to_f64()),
-        })
+        Err(non_finite_parameter(name, t.to_f64()))
+    }
+}
+
+/// The error of [`validate_parameter`], out of line so the check stays small in hot loops.
+#[cold]
+#[inline(never)]
+fn non_finite_parameter(name: &'static str, value: f64) -> Error {
+    Error::InvalidParameter {
+        name,
+        reason: format!("must be finite, got {value}"),
     }
 }
 

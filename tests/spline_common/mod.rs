@@ -1,0 +1,48 @@
+//! Exact-rational helpers shared by the spline tests: short constructors and a reader for
+//! the integer pairs printed in the seeds.
+// Each test crate compiles its own copy and uses only some of the helpers.
+#![allow(dead_code)]
+
+use compgeo::spline::Point;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+
+/// The exact scalar of the spline tests.
+pub type Q = BigRational;
+
+/// The rational n/d.
+pub fn q(n: i64, d: i64) -> Q {
+    Q::new(BigInt::from(n), BigInt::from(d))
+}
+
+/// The integer n as a rational.
+pub fn qi(n: i64) -> Q {
+    q(n, 1)
+}
+
+/// A point of the plane with rational coordinates.
+pub fn p2(x: Q, y: Q) -> Point<Q, 2> {
+    Point::new([x, y])
+}
+/// Reads "(a, b)" or "[a, b]" pairs of integers out of a line of the seed.
+pub fn pairs(line: &str) -> Vec<Point<Q, 2>> {
+    let mut out = Vec::new();
+    let mut rest = line;
+    while let Some(start) = rest.find(['(', '[']) {
+        let close = if rest.as_bytes()[start] == b'(' {
+            ')'
+        } else {
+            ']'
+        };
+        let end = start + rest[start..].find(close).unwrap();
+        let inner = &rest[start + 1..end];
+        let nums: Vec<i64> = inner
+            .split(',')
+            .map(|s| s.trim().parse().unwrap())
+            .collect();
+        assert_eq!(nums.len(), 2, "{inner}");
+        out.push(p2(qi(nums[0]), qi(nums[1])));
+        rest = &rest[end + 1..];
+    }
+    out
+}
