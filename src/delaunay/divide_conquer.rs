@@ -185,7 +185,11 @@ impl<C: Counter> Builder<'_, C> {
             if self.valid(lcand, basel) {
                 loop {
                     let next = self.mesh.onext(lcand);
-                    if !self.in_basel_circle(basel, self.mesh.dest(lcand), self.mesh.dest(next)) {
+                    // Back at the base line: its own endpoint is on the circle, and the
+                    // exact stage would be needed to say so.
+                    if next == Mesh::sym(basel)
+                        || !self.in_basel_circle(basel, self.mesh.dest(lcand), self.mesh.dest(next))
+                    {
                         break;
                     }
                     self.mesh.delete_edge(lcand);
@@ -196,7 +200,9 @@ impl<C: Counter> Builder<'_, C> {
             if self.valid(rcand, basel) {
                 loop {
                     let next = self.mesh.oprev(rcand);
-                    if !self.in_basel_circle(basel, self.mesh.dest(rcand), self.mesh.dest(next)) {
+                    if next == basel
+                        || !self.in_basel_circle(basel, self.mesh.dest(rcand), self.mesh.dest(next))
+                    {
                         break;
                     }
                     self.mesh.delete_edge(rcand);
