@@ -27,11 +27,14 @@
 
 mod check;
 mod divide_conquer;
+mod hilbert;
+mod incremental;
 mod lawson;
 mod quad_edge;
 mod triangulation;
 
 pub use check::check_delaunay;
 pub use divide_conquer::{divide_and_conquer, divide_and_conquer_with};
+pub use incremental::{incremental, incremental_with};
 pub use lawson::{lawson, lawson_with};
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};

@@ -1,0 +1,60 @@
+//! Benchmarks of `compgeo::delaunay` against `delaunator` and `spade`'s bulk load, in the
+//! same groups, over log-spaced sizes: uniform points in a square, clustered points, and an
+//! integer grid (cocircular quadruples everywhere, the degenerate case).
+//!
+//! Run one group with e.g. `cargo bench --bench delaunay -- delaunay/uniform-square`.
+
+use compgeo::delaunay::incremental;
+use compgeo::gen::{points, PointKind};
+use compgeo::geometry::Point2;
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use std::hint::black_box;
+use std::time::Duration;
+
+const SEED: u64 = 0x5EED_0006;
+
+fn triangulations(c: &mut Criterion) {
+    let groups: [(PointKind, &[usize]); 3] = [
+        (
+            PointKind::UniformSquare,
+            &[1_000, 10_000, 100_000, 1_000_000],
+        ),
+        (PointKind::Clustered, &[10_000, 100_000, 1_000_000]),
+        (PointKind::Grid, &[10_000, 100_000, 1_000_000]),
+    ];
+    for (kind, sizes) in groups {
+        let mut group = c.benchmark_group(format!("delaunay/{kind}"));
+        group
+            .sample_size(10)
+            .warm_up_time(Duration::from_millis(500))
+            .measurement_time(Duration::from_secs(3));
+        for &n in sizes {
+            let pts = points(kind, n, SEED).unwrap();
+            group.throughput(Throughput::Elements(n as u64));
+            group.bench_with_input(BenchmarkId::new("incremental", n), &pts, |b, pts| {
+                b.iter(|| incremental(black_box(pts)).unwrap())
+            });
+            let dpts: Vec<delaunator::Point> = pts
+                .iter()
+                .map(|p| delaunator::Point { x: p.x, y: p.y })
+                .collect();
+            group.bench_with_input(BenchmarkId::new("delaunator", n), &dpts, |b, pts| {
+                b.iter(|| delaunator::triangulate(black_box(pts)))
+            });
+            group.bench_with_input(BenchmarkId::new("spade-bulk-load", n), &pts, |b, pts| {
+                b.iter(|| spade_bulk_load(black_box(pts)))
+            });
+        }
+        group.finish();
+    }
+}
+
+/// Spade's bulk load, from our points (the conversion is part of its input preparation,
+/// as delaunator's is not: it is cheap next to either triangulation).
+fn spade_bulk_load(pts: &[Point2]) -> spade::DelaunayTriangulation<spade::Point2<f64>> {
+    let input: Vec<spade::Point2<f64>> = pts.iter().map(|p| spade::Point2::new(p.x, p.y)).collect();
+    spade::DelaunayTriangulation::bulk_load(input).unwrap()
+}
+
+criterion_group!(benches, triangulations);
+criterion_main!(benches);

@@ -1,0 +1,151 @@
+//! The insertion order of the incremental builder: biased randomized insertion order (BRIO)
+//! with a Hilbert-curve sort inside each round.
+//!
+//! Each point draws a round from a geometric distribution (half of the points in the last
+//! round, a quarter in the one before, ...), so every round is a random sample about twice
+//! the size of everything before it: Amenta, Choi and Rote's BRIO, which keeps the expected
+//! number of flips O(n) on every input, including points on a parabola in x order. Inside a
+//! round the points follow a Hilbert curve over their bounding box, so consecutive points
+//! are close and the walk from one to the next is short. The order only affects speed;
+//! correctness never depends on it.
+
+use crate::geometry::Point2;
+
+/// Bits per axis of the Hilbert grid: 2^32 cells, far more than the points of any round.
+const BITS: u32 = 16;
+
+/// The local ids `0..points.len()` in insertion order.
+///
+/// O(n log n) time (one sort of 64-bit keys), O(n) auxiliary space. Deterministic: the
+/// rounds come from a fixed-seed generator.
+pub(super) fn brio_order(points: &[Point2]) -> Vec<u32> {
+    let n = points.len();
+    if n == 0 {
+        return Vec::new();
+    }
+    let (mut min_x, mut min_y, mut max_x, mut max_y) =
+        (points[0].x, points[0].y, points[0].x, points[0].y);
+    for p in points {
+        min_x = min_x.min(p.x);
+        max_x = max_x.max(p.x);
+        min_y = min_y.min(p.y);
+        max_y = max_y.max(p.y);
+    }
+    let cells = f64::from((1u32 << BITS) - 1);
+    // Halved coordinates: the width of [-MAX, MAX] would overflow.
+    let scale_x = grid_scale(min_x, max_x, cells);
+    let scale_y = grid_scale(min_y, max_y, cells);
+    let (half_min_x, half_min_y) = (0.5 * min_x, 0.5 * min_y);
+    // Rounds: the last one holds about n/2 points, the first one about 32.
+    let rounds = (usize::BITS - n.leading_zeros()).saturating_sub(5);
+    let mut rng = SplitMix(0x5EED_DE1A_0000_0001);
+    let mut keyed: Vec<(u64, u32)> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            // `as` saturates, so rounding past the grid's ends stays on it.
+            let gx = ((0.5 * p.x - half_min_x) * scale_x) as u32;
+            let gy = ((0.5 * p.y - half_min_y) * scale_y) as u32;
+            let level = (rng.next() as u32).trailing_zeros().min(rounds);
+            let round = u64::from(rounds - level);
+            ((round << (2 * BITS)) | hilbert_index(gx, gy), i as u32)
+        })
+        .collect();
+    keyed.sort_unstable_by_key(|&(key, _)| key);
+    keyed.into_iter().map(|(_, i)| i).collect()
+}
+
+/// The factor that maps `0.5 * (v - min)` onto `[0, cells]`, 0 for an empty range.
+fn grid_scale(min: f64, max: f64, cells: f64) -> f64 {
+    let half_width = 0.5 * max - 0.5 * min;
+    if half_width > 0.0 {
+        let scale = cells / half_width;
+        // A subnormal width makes the quotient infinite; the largest finite scale still
+        // spreads the points as far as doubles allow.
+        if scale.is_finite() {
+            scale
+        } else {
+            f64::MAX
+        }
+    } else {
+        0.0
+    }
+}
+
+/// The position of cell `(x, y)` along the Hilbert curve over the `2^BITS` by `2^BITS` grid.
+fn hilbert_index(mut x: u32, mut y: u32) -> u64 {
+    let last = (1u32 << BITS) - 1;
+    let mut d = 0u64;
+    let mut s = 1u32 << (BITS - 1);
+    while s > 0 {
+        let rx = u32::from(x & s != 0);
+        let ry = u32::from(y & s != 0);
+        d += u64::from(s) * u64::from(s) * u64::from((3 * rx) ^ ry);
+        if ry == 0 {
+            if rx == 1 {
+                x = last - x;
+                y = last - y;
+            }
+            std::mem::swap(&mut x, &mut y);
+        }
+        s >>= 1;
+    }
+    d
+}
+
+/// SplitMix64: a tiny, good-enough generator for the rounds (and the walk's coin flips).
+#[derive(Debug, Clone)]
+pub(super) struct SplitMix(pub(super) u64);
+
+impl SplitMix {
+    #[inline]
+    pub(super) fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hilbert_index_visits_neighbouring_cells_in_turn() {
+        // Along the curve, consecutive indices are cells one step apart.
+        let side = 1u32 << 4;
+        let scale = 1u32 << (BITS - 4);
+        let mut cells: Vec<(u64, u32, u32)> = (0..side)
+            .flat_map(|x| (0..side).map(move |y| (x, y)))
+            .map(|(x, y)| (hilbert_index(x * scale, y * scale), x, y))
+            .collect();
+        cells.sort_unstable();
+        for w in cells.windows(2) {
+            let (dx, dy) = (w[0].1.abs_diff(w[1].1), w[0].2.abs_diff(w[1].2));
+            assert_eq!(dx + dy, 1, "{w:?}");
+        }
+    }
+
+    #[test]
+    fn order_is_a_permutation_even_for_extreme_ranges() {
+        let pts = [
+            Point2::new(f64::MAX, -f64::MAX),
+            Point2::new(-f64::MAX, f64::MAX),
+            Point2::new(5e-324, 0.0),
+            Point2::new(0.0, -5e-324),
+        ];
+        let mut order = brio_order(&pts);
+        order.sort_unstable();
+        assert_eq!(order, [0, 1, 2, 3]);
+        let tiny = [
+            Point2::new(5e-324, 0.0),
+            Point2::new(0.0, 1e-323),
+            Point2::new(0.0, 0.0),
+        ];
+        let mut order = brio_order(&tiny);
+        order.sort_unstable();
+        assert_eq!(order, [0, 1, 2]);
+    }
+}

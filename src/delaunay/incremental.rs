@@ -1,0 +1,493 @@
+//! The fast builder: incremental insertion in a spatial order, with a walk to locate each
+//! point and Lawson flips to restore the Delaunay property.
+
+use super::hilbert::{brio_order, SplitMix};
+use super::triangulation::{find_duplicates, rotate_to_lex_min, Triangulation, EMPTY};
+use crate::count::{Counter, NoCount};
+use crate::error::{Error, Result};
+use crate::geometry::{validate, CountedPredicates, InCircle, Orientation, Point2};
+
+/// The Delaunay triangulation of `points` by incremental insertion (Lawson's flips), the
+/// crate's fast builder.
+///
+/// The idea: keep a Delaunay triangulation of the points inserted so far and add the
+/// others one at a time. A walk from the previous point's triangle finds the triangle that
+/// holds the new point; it is split into three (or, on an edge, the two neighbours into
+/// four); then every edge opposite the new point whose far vertex sees it inside its
+/// circumcircle is flipped, the two new edges opposite it are tested in turn, and so on.
+/// Points outside the current hull use the same code: the hull's outside is covered by
+/// "ghost" triangles with a vertex at infinity, whose circumcircle is the open half-plane
+/// beyond their hull edge (an orientation test). The insertion order is a biased
+/// randomized order (BRIO) sorted along a Hilbert curve in each round, so the walks are
+/// short and the expected number of flips is O(n) on every input.
+///
+/// It computes the triangulation the seed defines (`003_5b666ee3e15e6353.txt`, §2.4
+/// "Triangulación de Delaunay", Definition 2.34 and Theorem 2.35) without building the
+/// Voronoi diagram; the seed's own construction is the divide and conquer.
+///
+/// Degenerate input follows the [module conventions](super): duplicates are merged and
+/// reported, collinear input and fewer than three distinct points give no triangles, and
+/// cocircular points get one of their valid triangulations.
+///
+/// # Errors
+/// [`Error::NonFinite`] naming the first point with a NaN or infinite coordinate;
+/// [`Error::InvalidParameter`] (name `"points"`) for more than 2^29 points (the builder
+/// stores 32-bit indices).
+///
+/// # Complexity
+/// O(n log n) expected time on every input for n points (the sort; walks and flips are
+/// O(n) expected for uniform-like input after the Hilbert sort, and the BRIO keeps the
+/// flips O(n) expected in the worst case), O(n) auxiliary space.
+///
+/// # Counts
+/// Orientation tests (the walk, the hull side of ghost triangles) and in-circle tests (the
+/// flips); see [`incremental_with`].
+///
+/// ```
+/// use compgeo::delaunay::{check_delaunay, incremental};
+/// use compgeo::geometry::Point2;
+///
+/// let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (0.0, 3.0), (1.0, 1.0), (4.0, 0.0)]
+///     .map(Point2::from);
+/// let t = incremental(&pts)?;
+/// assert_eq!(t.triangle_count(), 4); // 2n - 2 - h with n = 5 distinct points, h = 4
+/// assert_eq!(t.hull, [0, 1, 2, 3]);
+/// assert_eq!(t.duplicates, [[5, 1]]);
+/// assert!(check_delaunay(&pts, &t).is_ok());
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn incremental(points: &[Point2]) -> Result<Triangulation> {
+    incremental_with(points, &mut NoCount)
+}
+
+/// [`incremental`], recording its orientation tests and in-circle tests in `counter`.
+///
+/// # Errors
+/// As [`incremental`].
+///
+/// # Complexity
+/// As [`incremental`]. On uniform input about 3 orientation tests and 4 to 5 in-circle
+/// tests per point.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::delaunay::incremental_with;
+/// use compgeo::gen::{points, PointKind};
+///
+/// let pts = points(PointKind::UniformSquare, 1000, 1)?;
+/// let mut counts = Counts::default();
+/// let t = incremental_with(&pts, &mut counts)?;
+/// assert!(counts.incircle_tests > 0 && counts.incircle_tests < 20 * 1000);
+/// assert_eq!(t.triangle_count(), 2 * 1000 - 2 - t.hull.len());
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn incremental_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Triangulation> {
+    validate(points)?;
+    if points.len() > MAX_POINTS {
+        return Err(Error::InvalidParameter {
+            name: "points",
+            reason: format!(
+                "{} points; the incremental builder takes at most {MAX_POINTS}",
+                points.len()
+            ),
+        });
+    }
+    let mut order = brio_order(points);
+    let Some(first) = first_triangle(points, &mut order, counter) else {
+        return Triangulation::from_triangles(points, &[], find_duplicates(points));
+    };
+    let local: Vec<Point2> = order.iter().map(|&i| points[i as usize]).collect();
+    let mut mesh = Mesh::new(local, first, counter);
+    for k in 3..order.len() as u32 {
+        mesh.insert(k);
+    }
+    Ok(mesh.finish(points, &order))
+}
+
+/// More points than this would overflow the 32-bit half-edge ids (about 6n half-edges).
+const MAX_POINTS: usize = 1 << 29;
+
+/// The vertex at infinity of the ghost triangles.
+const GHOST: u32 = u32::MAX;
+
+/// Where the walk ended.
+enum Location {
+    /// Strictly inside this real triangle.
+    Inside(u32),
+    /// In the interior of this half-edge of a real triangle.
+    OnEdge(u32),
+    /// Strictly beyond the hull edge of this ghost triangle.
+    Outside(u32),
+    /// Equal to this vertex.
+    Vertex(u32),
+}
+
+/// The triangulation under construction: a closed surface of real and ghost triangles, so
+/// every half-edge has an opposite.
+struct Mesh<'c, C> {
+    /// The points in insertion order; vertex ids index this.
+    points: Vec<Point2>,
+    /// Three vertex ids per triangle, counter-clockwise; [`GHOST`] for the vertex at infinity.
+    triangles: Vec<u32>,
+    /// The opposite of every half-edge.
+    halfedges: Vec<u32>,
+    /// Triangles whose edge opposite the new point (at position 0) awaits its flip test.
+    stack: Vec<u32>,
+    /// A triangle that had the last inserted point as a vertex: the walk starts there.
+    last: u32,
+    /// Coin flips of the walk.
+    rng: SplitMix,
+    /// `[dropped vertex id, kept vertex id]`.
+    duplicates: Vec<[u32; 2]>,
+    counter: &'c mut C,
+}
+
+impl<'c, C: Counter> Mesh<'c, C> {
+    /// The triangle of the first three vertices (ids 0, 1, 2, counter-clockwise) and its three
+    /// ghosts.
+    fn new(points: Vec<Point2>, [a, b, c]: [u32; 3], counter: &'c mut C) -> Self {
+        let n = points.len();
+        let mut triangles = Vec::with_capacity(6 * n + 12);
+        let mut halfedges = Vec::with_capacity(6 * n + 12);
+        // Real (a, b, c); ghosts (b, a, G), (c, b, G), (a, c, G) beyond a->b, b->c, c->a.
+        triangles.extend_from_slice(&[a, b, c, b, a, GHOST, c, b, GHOST, a, c, GHOST]);
+        halfedges.extend_from_slice(&[3, 6, 9, 0, 11, 7, 1, 5, 10, 2, 8, 4]);
+        Mesh {
+            points,
+            triangles,
+            halfedges,
+            stack: Vec::with_capacity(64),
+            last: 0,
+            rng: SplitMix(0x0DE1_A0A7),
+            duplicates: Vec::new(),
+            counter,
+        }
+    }
+
+    /// Inserts vertex `v` (a point not inserted yet) and restores the Delaunay property.
+    fn insert(&mut self, v: u32) {
+        let p = self.points[v as usize];
+        match self.locate(p) {
+            Location::Vertex(kept) => {
+                self.duplicates.push([v, kept]);
+                return;
+            }
+            Location::Inside(t) | Location::Outside(t) => self.split_triangle(t, v),
+            Location::OnEdge(e) => self.split_edge(e, v),
+        }
+        self.legalize(v);
+    }
+
+    #[inline(always)]
+    fn point(&self, v: u32) -> Point2 {
+        self.points[v as usize]
+    }
+
+    #[inline(always)]
+    fn is_ghost(&self, t: u32) -> bool {
+        let b = 3 * t as usize;
+        self.triangles[b] == GHOST
+            || self.triangles[b + 1] == GHOST
+            || self.triangles[b + 2] == GHOST
+    }
+
+    /// A visibility walk from `self.last`: cross an edge that has `p` strictly on its far side
+    /// (trying the edges from a random one, so the walk cannot cycle) until none has.
+    fn locate(&mut self, p: Point2) -> Location {
+        let mut t = self.last;
+        if self.is_ghost(t) {
+            t = self.halfedges[3 * t as usize + self.ghost_real_edge(t)] / 3;
+        }
+        let mut entered = u32::MAX;
+        'walk: loop {
+            let base = 3 * t;
+            let start = (((self.rng.next() >> 32) * 3) >> 32) as u32;
+            let mut collinear = 0u32;
+            for k in 0..3 {
+                let e = base + (start + k) % 3;
+                if e == entered {
+                    continue;
+                }
+                let a = self.triangles[e as usize];
+                let b = self.triangles[next(e) as usize];
+                match self.counter.orient2d(self.point(a), self.point(b), p) {
+                    Orientation::Clockwise => {
+                        let f = self.halfedges[e as usize];
+                        t = f / 3;
+                        if self.is_ghost(t) {
+                            return Location::Outside(t);
+                        }
+                        entered = f;
+                        continue 'walk;
+                    }
+                    Orientation::Collinear => collinear = collinear * 4 + 1 + e - base,
+                    Orientation::CounterClockwise => {}
+                }
+            }
+            // At most one collinear edge unless `p` is a vertex; `collinear` encodes it as
+            // 1 + its position.
+            if collinear == 0 {
+                return Location::Inside(t);
+            }
+            for e in base..base + 3 {
+                let v = self.triangles[e as usize];
+                if self.point(v) == p {
+                    return Location::Vertex(v);
+                }
+            }
+            return Location::OnEdge(base + collinear - 1);
+        }
+    }
+
+    /// The position (0, 1 or 2) of the half-edge of ghost `t` that joins two real vertices.
+    fn ghost_real_edge(&self, t: u32) -> usize {
+        let b = 3 * t as usize;
+        let g = (0..3)
+            .find(|&k| self.triangles[b + k] == GHOST)
+            .unwrap_or(0);
+        (g + 1) % 3
+    }
+
+    /// Splits triangle `t` = (a, b, c) into (v, a, b), (v, b, c), (v, c, a).
+    fn split_triangle(&mut self, t: u32, v: u32) {
+        let b0 = 3 * t as usize;
+        let [a, b, c] = [
+            self.triangles[b0],
+            self.triangles[b0 + 1],
+            self.triangles[b0 + 2],
+        ];
+        let [ha, hb, hc] = [
+            self.halfedges[b0],
+            self.halfedges[b0 + 1],
+            self.halfedges[b0 + 2],
+        ];
+        let t1 = (self.triangles.len() / 3) as u32;
+        let t2 = t1 + 1;
+        let (e0, e1, e2) = (3 * t, 3 * t1, 3 * t2);
+        self.set(t, [v, a, b], [e2 + 2, ha, e1]);
+        self.push(t1, [v, b, c], [e0 + 2, hb, e2]);
+        self.push(t2, [v, c, a], [e1 + 2, hc, e0]);
+        self.halfedges[ha as usize] = e0 + 1;
+        self.halfedges[hb as usize] = e1 + 1;
+        self.halfedges[hc as usize] = e2 + 1;
+        self.stack.extend_from_slice(&[t, t1, t2]);
+        self.last = t;
+    }
+
+    /// Splits the two triangles of half-edge `e` = u -> v, with `p` in its interior:
+    /// (u, v, w) and (v, u, x) become (p, v, w), (p, w, u), (p, u, x), (p, x, v).
+    fn split_edge(&mut self, e: u32, p: u32) {
+        let f = self.halfedges[e as usize];
+        let (ta, tc) = (e / 3, f / 3);
+        let u = self.triangles[e as usize];
+        let v = self.triangles[next(e) as usize];
+        let w = self.triangles[prev(e) as usize];
+        let x = self.triangles[prev(f) as usize];
+        let h_vw = self.halfedges[next(e) as usize];
+        let h_wu = self.halfedges[prev(e) as usize];
+        let h_ux = self.halfedges[next(f) as usize];
+        let h_xv = self.halfedges[prev(f) as usize];
+        let tb = (self.triangles.len() / 3) as u32;
+        let td = tb + 1;
+        let (a, b, c, d) = (3 * ta, 3 * tb, 3 * tc, 3 * td);
+        self.set(ta, [p, v, w], [d + 2, h_vw, b]);
+        self.push(tb, [p, w, u], [a + 2, h_wu, c]);
+        self.set(tc, [p, u, x], [b + 2, h_ux, d]);
+        self.push(td, [p, x, v], [c + 2, h_xv, a]);
+        self.halfedges[h_vw as usize] = a + 1;
+        self.halfedges[h_wu as usize] = b + 1;
+        self.halfedges[h_ux as usize] = c + 1;
+        self.halfedges[h_xv as usize] = d + 1;
+        self.stack.extend_from_slice(&[ta, tb, tc, td]);
+        self.last = ta;
+    }
+
+    /// Lawson's flips: every stacked triangle (p, u, v) has the new point `p` at position 0;
+    /// if `p` conflicts with the triangle across u -> v, that edge flips to p -> w.
+    fn legalize(&mut self, p: u32) {
+        let pp = self.point(p);
+        while let Some(t1) = self.stack.pop() {
+            let b1 = 3 * t1;
+            let e = b1 + 1;
+            let f = self.halfedges[e as usize];
+            let u = self.triangles[e as usize];
+            let v = self.triangles[b1 as usize + 2];
+            let w = self.triangles[prev(f) as usize];
+            if !self.conflicts(u, v, w, pp) {
+                continue;
+            }
+            // (p, u, v) and (v, u, w) become (p, u, w) and (p, w, v).
+            let t2 = f / 3;
+            let b2 = 3 * t2;
+            let h_uw = self.halfedges[next(f) as usize];
+            let h_wv = self.halfedges[prev(f) as usize];
+            let h_vp = self.halfedges[b1 as usize + 2];
+            self.triangles[e as usize] = u;
+            self.triangles[b1 as usize + 2] = w;
+            self.halfedges[e as usize] = h_uw;
+            self.halfedges[b1 as usize + 2] = b2;
+            self.set(t2, [p, w, v], [b1 + 2, h_wv, h_vp]);
+            self.halfedges[h_uw as usize] = e;
+            self.halfedges[h_wv as usize] = b2 + 1;
+            self.halfedges[h_vp as usize] = b2 + 2;
+            self.stack.push(t1);
+            self.stack.push(t2);
+        }
+    }
+
+    /// Whether `p`, at the apex of a triangle (p, u, v), conflicts with the triangle
+    /// (v, u, w) across u -> v: for a real one, `p` strictly inside its circumcircle; for a
+    /// ghost, `p` strictly beyond its hull edge. A ghost across a real triangle's edge never
+    /// conflicts: `p` is strictly inside that edge's half-plane.
+    #[inline]
+    fn conflicts(&mut self, u: u32, v: u32, w: u32, p: Point2) -> bool {
+        if u == GHOST {
+            // Ghost (w, v, G): hull edge v -> w.
+            let (pv, pw) = (self.point(v), self.point(w));
+            self.counter.orient2d(pv, pw, p) == Orientation::Clockwise
+        } else if v == GHOST {
+            // Ghost (u, w, G): hull edge w -> u.
+            let (pw, pu) = (self.point(w), self.point(u));
+            self.counter.orient2d(pw, pu, p) == Orientation::Clockwise
+        } else if w == GHOST {
+            false
+        } else {
+            let (pv, pu, pw) = (self.point(v), self.point(u), self.point(w));
+            self.counter.incircle(pv, pu, pw, p) == InCircle::Inside
+        }
+    }
+
+    /// Overwrites triangle `t`.
+    #[inline(always)]
+    fn set(&mut self, t: u32, vertices: [u32; 3], opposite: [u32; 3]) {
+        let b = 3 * t as usize;
+        self.triangles[b..b + 3].copy_from_slice(&vertices);
+        self.halfedges[b..b + 3].copy_from_slice(&opposite);
+    }
+
+    /// Appends triangle `t` (the next free id).
+    #[inline(always)]
+    fn push(&mut self, t: u32, vertices: [u32; 3], opposite: [u32; 3]) {
+        debug_assert_eq!(self.triangles.len(), 3 * t as usize);
+        self.triangles.extend_from_slice(&vertices);
+        self.halfedges.extend_from_slice(&opposite);
+    }
+
+    /// Drops the ghosts, maps vertex ids back to input indices (`order[id]`, or the smallest
+    /// index of a merged group) and reads the hull off the ghosts.
+    fn finish(self, points: &[Point2], order: &[u32]) -> Triangulation {
+        let mut index: Vec<usize> = order.iter().map(|&i| i as usize).collect();
+        let mut duplicates: Vec<[usize; 2]> = Vec::with_capacity(self.duplicates.len());
+        for &[dropped, kept] in &self.duplicates {
+            let (d, k) = (index[dropped as usize], index[kept as usize]);
+            // Keep the smallest input index of each group of equal points.
+            if d < k {
+                index[kept as usize] = d;
+            }
+            duplicates.push([dropped as usize, kept as usize]);
+        }
+        for pair in &mut duplicates {
+            let [d, k] = *pair;
+            let (di, ki) = (order[d] as usize, index[k]);
+            *pair = if di == ki {
+                [order[k] as usize, ki]
+            } else {
+                [di, ki]
+            };
+        }
+        duplicates.sort_unstable();
+
+        let count = self.triangles.len() / 3;
+        let mut renumber = vec![u32::MAX; count];
+        let mut real = 0u32;
+        let mut a_ghost = u32::MAX;
+        for t in 0..count as u32 {
+            if self.is_ghost(t) {
+                a_ghost = t;
+            } else {
+                renumber[t as usize] = real;
+                real += 1;
+            }
+        }
+        let mut triangles = Vec::with_capacity(3 * real as usize);
+        let mut halfedges = Vec::with_capacity(3 * real as usize);
+        for t in 0..count {
+            if renumber[t] == u32::MAX {
+                continue;
+            }
+            for e in 3 * t..3 * t + 3 {
+                triangles.push(index[self.triangles[e] as usize]);
+                let f = self.halfedges[e] as usize;
+                let tf = renumber[f / 3];
+                halfedges.push(if tf == u32::MAX {
+                    EMPTY
+                } else {
+                    3 * tf as usize + f % 3
+                });
+            }
+        }
+        // Ghost (x, y, G) lies beyond hull edge y -> x; the opposite of its half-edge G -> x
+        // is in the ghost of the next hull edge x -> z.
+        let mut hull = Vec::new();
+        let mut g = a_ghost;
+        loop {
+            let r = self.ghost_real_edge(g);
+            let b = 3 * g as usize;
+            hull.push(index[self.triangles[b + (r + 1) % 3] as usize]);
+            g = self.halfedges[b + (r + 2) % 3] / 3;
+            if g == a_ghost {
+                break;
+            }
+        }
+        rotate_to_lex_min(points, &mut hull);
+        Triangulation {
+            triangles,
+            halfedges,
+            hull,
+            duplicates,
+        }
+    }
+}
+
+#[inline(always)]
+fn next(e: u32) -> u32 {
+    if e % 3 == 2 {
+        e - 2
+    } else {
+        e + 1
+    }
+}
+
+#[inline(always)]
+fn prev(e: u32) -> u32 {
+    if e % 3 == 0 {
+        e + 2
+    } else {
+        e - 1
+    }
+}
+
+/// Moves three points that form a triangle to the front of `order` (counter-clockwise) and
+/// returns them as vertex ids `[0, 1, 2]` in counter-clockwise order; `None` if there are no
+/// three non-collinear points.
+fn first_triangle<C: Counter>(
+    points: &[Point2],
+    order: &mut [u32],
+    counter: &mut C,
+) -> Option<[u32; 3]> {
+    if order.len() < 3 {
+        return None;
+    }
+    let at = |order: &[u32], k: usize| points[order[k] as usize];
+    let a = at(order, 0);
+    let ib = (1..order.len()).find(|&k| at(order, k) != a)?;
+    order.swap(1, ib);
+    let b = at(order, 1);
+    let ic = (2..order.len())
+        .find(|&k| counter.orient2d(a, b, at(order, k)) != Orientation::Collinear)?;
+    order.swap(2, ic);
+    if counter.orient2d(a, b, at(order, 2)) == Orientation::Clockwise {
+        order.swap(1, 2);
+    }
+    Some([0, 1, 2])
+}
