@@ -386,7 +386,10 @@ impl<'c, C: Counter> Mesh<'c, C> {
             })
             .collect();
         self.compact(&ghosts);
-        let mut hull: Vec<usize> = hull_ids.iter().map(|&v| order[v as usize] as usize).collect();
+        let mut hull: Vec<usize> = hull_ids
+            .iter()
+            .map(|&v| order[v as usize] as usize)
+            .collect();
         rotate_to_lex_min(points, &mut hull);
         let triangles = self
             .triangles
@@ -422,7 +425,11 @@ impl<'c, C: Counter> Mesh<'c, C> {
         for group in members.chunk_by(|a, b| a.0 == b.0) {
             let (vertex, smallest) = group[0];
             order[vertex as usize] = smallest;
-            out.extend(group[1..].iter().map(|&(_, i)| [i as usize, smallest as usize]));
+            out.extend(
+                group[1..]
+                    .iter()
+                    .map(|&(_, i)| [i as usize, smallest as usize]),
+            );
         }
         out.sort_unstable();
         out
@@ -462,7 +469,10 @@ impl<'c, C: Counter> Mesh<'c, C> {
             if self.is_ghost(t as u32) {
                 continue;
             }
-            let hole = *holes.next().expect("as many holes below as real triangles above") as usize;
+            let hole = *holes
+                .next()
+                .expect("as many holes below as real triangles above")
+                as usize;
             for k in 0..3 {
                 let (from, to) = (3 * t + k, 3 * hole + k);
                 self.triangles[to] = self.triangles[from];
