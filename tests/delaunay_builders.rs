@@ -345,6 +345,38 @@ fn lawson_is_quadratic_on_the_parabola_and_divide_and_conquer_is_not() {
     assert!(dc2 / dc1 < 2.5, "divide and conquer: {dc1} then {dc2}");
 }
 
+#[cfg(feature = "cli")]
+#[test]
+fn cli_runs_each_builder_and_rejects_bad_input() {
+    use common::{assert_rejected, run_json};
+    let mut pts = points(PointKind::UniformDisk, 40, 2).unwrap();
+    pts.push(pts[7]);
+    let input = serde_json::to_string(&pts.iter().map(|p| [p.x, p.y]).collect::<Vec<_>>()).unwrap();
+    for (name, build) in &BUILDERS[..2] {
+        let v = run_json(&["delaunay", "--algorithm", name, "-"], Some(&input));
+        assert_eq!(v["algorithm"], *name);
+        let want = build(&pts).unwrap();
+        let tris: Vec<[usize; 3]> = serde_json::from_value(v["triangles"].clone()).unwrap();
+        let printed = Triangulation::from_triangles(&pts, &tris, want.duplicates.clone()).unwrap();
+        assert_eq!(triangle_set(&printed), triangle_set(&want), "{name}");
+        assert_eq!(v["hull"], serde_json::json!(want.hull), "{name}");
+        assert_eq!(v["duplicates"], serde_json::json!([[40, 7]]), "{name}");
+        assert!(
+            v["counts"]["incircle_tests"].as_u64().unwrap() > 0,
+            "{name}"
+        );
+        assert!(
+            v["counts"]["orientation_tests"].as_u64().unwrap() > 0,
+            "{name}"
+        );
+        let err = assert_rejected(
+            &["delaunay", "--algorithm", name, "-"],
+            Some("[[0, 0], [1, 1], [2, 0], [1e999, 1]]"),
+        );
+        assert!(err.contains('3'), "{name}: {err}");
+    }
+}
+
 /// Small integer coordinates: many duplicates, collinear triples and cocircular quadruples.
 fn lattice_points() -> impl Strategy<Value = Vec<Point2>> {
     prop::collection::vec((-4i32..=4, -4i32..=4), 0..40).prop_map(|v| {

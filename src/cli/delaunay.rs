@@ -11,7 +11,7 @@ use serde::Serialize;
 /// Arguments of `compgeo delaunay`.
 #[derive(Debug, Args)]
 pub(super) struct DelaunayArgs {
-    /// The builder: incremental
+    /// The builder: incremental, divide-and-conquer, lawson
     #[arg(long, short, default_value = "incremental")]
     algorithm: Algorithm,
     #[command(flatten)]

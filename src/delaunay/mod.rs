@@ -28,6 +28,8 @@
 //! | builder | time | file |
 //! |---|---|---|
 //! | [`incremental`] | O(n log n) expected on every input | `incremental.rs` (+ `hilbert.rs`, its insertion order) |
+//! | [`divide_and_conquer`] | O(n log n) worst case (the seed's algorithm) | `divide_conquer.rs` (+ `quad_edge.rs`, its working structure) |
+//! | [`lawson`] | O(n²) worst case (flips from a sweep triangulation; for teaching) | `lawson.rs` |
 //!
 //! ```
 //! use compgeo::delaunay::{check_delaunay, triangulate, Algorithm};
@@ -77,6 +79,10 @@ use std::str::FromStr;
 pub enum Algorithm {
     /// [`incremental`]: BRIO + Hilbert order, walking location, Lawson flips.
     Incremental,
+    /// [`divide_and_conquer`]: the seed's divide and conquer with Guibas and Stolfi's merge.
+    DivideAndConquer,
+    /// [`lawson`]: a sweep triangulation, then Lawson's flips (O(n²), for teaching).
+    Lawson,
 }
 
 /// Runs `algorithm` on `points`: the same as calling its function.
@@ -101,12 +107,19 @@ pub fn triangulate(points: &[Point2], algorithm: Algorithm) -> Result<Triangulat
 
 impl Algorithm {
     /// Every builder.
-    pub const ALL: [Algorithm; 1] = [Algorithm::Incremental];
+    pub const ALL: [Algorithm; 3] = [
+        Algorithm::Incremental,
+        Algorithm::DivideAndConquer,
+        Algorithm::Lawson,
+    ];
 
-    /// The kebab-case name used on the command line: `"incremental"`.
+    /// The kebab-case name used on the command line: `"incremental"`,
+    /// `"divide-and-conquer"`, `"lawson"`.
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Incremental => "incremental",
+            Algorithm::DivideAndConquer => "divide-and-conquer",
+            Algorithm::Lawson => "lawson",
         }
     }
 
@@ -121,6 +134,8 @@ impl Algorithm {
     ) -> Result<Triangulation> {
         match self {
             Algorithm::Incremental => incremental_with(points, counter),
+            Algorithm::DivideAndConquer => divide_and_conquer_with(points, counter),
+            Algorithm::Lawson => lawson_with(points, counter),
         }
     }
 }
