@@ -181,8 +181,12 @@ impl<C: Counter> Builder<'_, C> {
         }
 
         loop {
+            // A deletion only happens when the next candidate is strictly inside the circle,
+            // so strictly above the base line (see `in_basel_circle`): a valid candidate
+            // stays valid and needs no second test.
             let mut lcand = self.mesh.onext(Mesh::sym(basel));
-            if self.valid(lcand, basel) {
+            let left_ok = self.valid(lcand, basel);
+            if left_ok {
                 loop {
                     let next = self.mesh.onext(lcand);
                     // Back at the base line: its own endpoint is on the circle, and the
@@ -197,7 +201,8 @@ impl<C: Counter> Builder<'_, C> {
                 }
             }
             let mut rcand = self.mesh.oprev(basel);
-            if self.valid(rcand, basel) {
+            let right_ok = self.valid(rcand, basel);
+            if right_ok {
                 loop {
                     let next = self.mesh.oprev(rcand);
                     if next == basel
@@ -209,8 +214,6 @@ impl<C: Counter> Builder<'_, C> {
                     rcand = next;
                 }
             }
-            let left_ok = self.valid(lcand, basel);
-            let right_ok = self.valid(rcand, basel);
             if !left_ok && !right_ok {
                 break;
             }
