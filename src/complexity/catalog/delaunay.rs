@@ -1,6 +1,8 @@
-//! Catalog entries of [`crate::delaunay`]: each builder on uniform, clustered, grid
-//! (cocircular quadruples everywhere) and parabola input (points in convex position in x
-//! order, the order that makes naive incremental insertion quadratic).
+//! Catalog entries of [`crate::delaunay`]: the incremental builder on uniform, clustered,
+//! grid (cocircular quadruples everywhere) and parabola input (points in convex position in
+//! x order, the order that makes naive incremental insertion quadratic); the seed's divide
+//! and conquer on uniform and parabola input; Lawson's flips, quadratic on the parabola, at
+//! small sizes.
 //!
 //! The counted operation is the in-circle test, the Delaunay builders' characteristic
 //! predicate (the flips' test).
@@ -20,7 +22,7 @@ struct Delaunay {
 
 /// The Delaunay entries.
 pub(super) fn entries() -> Vec<Entry> {
-    [
+    let mut out: Vec<Entry> = [
         PointKind::UniformSquare,
         PointKind::Clustered,
         PointKind::Grid,
@@ -28,19 +30,40 @@ pub(super) fn entries() -> Vec<Entry> {
     ]
     .into_iter()
     .map(|kind| {
-        let algorithm = Algorithm::Incremental;
-        let id = format!("delaunay/{}", algorithm.name());
-        Entry::new(
-            &id,
-            Bound::NLogN,
-            Operation::IncircleTests,
-            Delaunay { algorithm, kind },
-        )
-        .input(kind.name())
-        .quick(256, 1 << 15)
-        .full(256, 1 << 20)
+        delaunay(Algorithm::Incremental, kind, Bound::NLogN)
+            .quick(256, 1 << 15)
+            .full(256, 1 << 20)
     })
-    .collect()
+    .collect();
+    // The seed's divide and conquer: O(n log n) in the worst case, also on the parabola.
+    for kind in [PointKind::UniformSquare, PointKind::Parabola] {
+        out.push(
+            delaunay(Algorithm::DivideAndConquer, kind, Bound::NLogN)
+                .quick(256, 1 << 15)
+                .full(256, 1 << 20),
+        );
+    }
+    // Lawson's flips from a sweep triangulation: quadratic on the parabola (the sweep fans
+    // every point from the first one), far less on uniform input.
+    for kind in [PointKind::Parabola, PointKind::UniformSquare] {
+        out.push(
+            delaunay(Algorithm::Lawson, kind, Bound::Quadratic)
+                .quick(64, 4096)
+                .full(64, 1 << 14),
+        );
+    }
+    out
+}
+
+fn delaunay(algorithm: Algorithm, kind: PointKind, bound: Bound) -> Entry {
+    let id = format!("delaunay/{}", algorithm.name());
+    Entry::new(
+        &id,
+        bound,
+        Operation::IncircleTests,
+        Delaunay { algorithm, kind },
+    )
+    .input(kind.name())
 }
 
 impl Workload for Delaunay {
