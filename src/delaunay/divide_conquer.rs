@@ -49,7 +49,8 @@ pub fn divide_and_conquer(points: &[Point2]) -> Result<Triangulation> {
 /// for every finite input: duplicates are merged (reported in `duplicates`, the smallest
 /// index kept), collinear input gives no triangles and the hull as the sorted distinct
 /// points, and among cocircular points (grids, lattice circles) one valid triangulation is
-/// chosen (a cross edge is only replaced when a candidate is strictly inside its circle).
+/// chosen (an edge is deleted, and the right candidate preferred, only when a point is
+/// strictly inside the circle in question).
 /// The ordering of the lexicographic sort stands in for a vertical split line, so points
 /// with equal x need no special case.
 ///
@@ -69,7 +70,9 @@ pub fn divide_and_conquer(points: &[Point2]) -> Result<Triangulation> {
 /// Comparisons of the lexicographic sort (O(n log n)) and of the duplicate merge (n − 1);
 /// orientation tests of the tangent walks and of the candidates' validity; in-circle tests
 /// of the candidate deletions and choices. Both test counts are O(n log n) in the worst
-/// case, about linear per level on uniform input.
+/// case. On uniform input the vertical cuts make thin strips whose merges are as long as
+/// the strips are tall, so the counts keep their log n factor: about 29 in-circle and 19
+/// orientation tests per point at n = 10^5, 36 and 23 at n = 10^6.
 ///
 /// ```
 /// use compgeo::count::Counts;
