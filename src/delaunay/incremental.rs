@@ -101,7 +101,14 @@ pub fn incremental_with<C: Counter>(points: &[Point2], counter: &mut C) -> Resul
     for k in 3..order.len() as u32 {
         mesh.insert(k);
     }
-    Ok(mesh.finish(points, order))
+    let t = mesh.finish(points, order);
+    // The cheap postcondition; tests run the full exact checker.
+    debug_assert!(t
+        .halfedges
+        .iter()
+        .enumerate()
+        .all(|(e, &f)| f == EMPTY || t.halfedges[f] == e));
+    Ok(t)
 }
 
 /// More points than this would overflow the 32-bit half-edge ids (about 6n half-edges).
