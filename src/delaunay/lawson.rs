@@ -41,9 +41,10 @@ pub fn lawson(points: &[Point2]) -> Result<Triangulation> {
 /// the chains. This gives a triangulation of the hull with every boundary point on it.
 /// Then flip: an interior edge whose opposite vertex lies strictly inside the circle through
 /// the other triangle is not locally Delaunay; replacing it by the other diagonal of its
-/// (then convex) quadrilateral and re-checking the four edges around it ends, since every
-/// flip raises the sorted vector of the triangles' smallest angles. When no edge is left to
-/// flip, every edge is locally Delaunay, so the triangulation is Delaunay.
+/// (then convex) quadrilateral and re-checking the four edges around it ends: lift every
+/// point to (x, y, x² + y²); each flip strictly lowers the lifted surface of the
+/// triangulation, so no triangulation comes back, and there are finitely many. When no edge
+/// is left to flip, every edge is locally Delaunay, so the triangulation is Delaunay.
 ///
 /// Not in the seed as an algorithm: `003_5b666ee3e15e6353.txt`, §2.4 "Triangulación" asks
 /// for a triangulation and answers "Considerar la Triangulación de Delaunay"; the sweep is
