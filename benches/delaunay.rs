@@ -4,10 +4,11 @@
 //!
 //! Run one group with e.g. `cargo bench --bench delaunay -- delaunay/uniform-square`.
 
-use compgeo::delaunay::incremental;
+use compgeo::delaunay::{divide_and_conquer, incremental};
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::Point2;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use spade::Triangulation as _;
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -33,6 +34,9 @@ fn triangulations(c: &mut Criterion) {
             group.throughput(Throughput::Elements(n as u64));
             group.bench_with_input(BenchmarkId::new("incremental", n), &pts, |b, pts| {
                 b.iter(|| incremental(black_box(pts)).unwrap())
+            });
+            group.bench_with_input(BenchmarkId::new("divide-and-conquer", n), &pts, |b, pts| {
+                b.iter(|| divide_and_conquer(black_box(pts)).unwrap())
             });
             let dpts: Vec<delaunator::Point> = pts
                 .iter()

@@ -16,6 +16,7 @@
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
 //! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
 //! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
+//! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the seed's divide and conquer, Lawson's flips), exact checker |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
 //! ## Algorithms and their bounds
@@ -60,6 +61,10 @@
 //! | [`spline::hermite`], [`spline::quadratic_spline`], [`spline::closed_quadratic_spline`] | Θ(n) |
 //! | [`spline::fit_bezier`] | Θ(m n² + n³) for m points, degree n |
 //! | [`spline::frenet_frame`] | Θ(d³) in R^d |
+//! | [`delaunay::incremental`] | O(n log n) expected on every input (BRIO + Hilbert order) |
+//! | [`delaunay::divide_and_conquer`] | O(n log n) worst case (Guibas–Stolfi merge) |
+//! | [`delaunay::lawson`] | O(n²) worst case: Θ(n²) in-circle tests on a parabola |
+//! | [`delaunay::check_delaunay`] | O(n log n + t), exact |
 //!
 //! ## A first example
 //!

@@ -11,6 +11,7 @@
 //! [`output::print_json`], and report problems as [`CliError`].
 
 mod bezier;
+mod delaunay;
 mod diameter;
 pub mod error;
 mod gen;
@@ -64,6 +65,8 @@ enum Command {
     Bezier(bezier::BezierArgs),
     /// Interpolation: cubic Hermite, C² cubic spline, Lagrange or Newton, in f64 or exact
     Interpolate(interpolate::InterpolateArgs),
+    /// Delaunay triangulation of a point set: CCW triangles, hull, merged duplicates
+    Delaunay(delaunay::DelaunayArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -95,6 +98,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Diameter(args) => diameter::run(args),
         Command::Bezier(args) => bezier::run(args),
         Command::Interpolate(args) => interpolate::run(args),
+        Command::Delaunay(args) => delaunay::run(args),
     }
 }
 

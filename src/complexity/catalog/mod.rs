@@ -146,9 +146,11 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(graph::entries());
     all.extend(hull::entries());
     all.extend(spline::entries());
+    all.extend(delaunay::entries());
     all
 }
 
+mod delaunay;
 mod graph;
 mod hull;
 mod sort;
