@@ -464,6 +464,9 @@ fn line_distance_and_area_ties_at_every_scale() {
             p(0.0, 0.0),
         ];
         assert_eq!(cmp_rect_area(legs, upright), Ordering::Equal, "{s:e}");
+    }
+}
+
 /// Integers near the edge of the kernel's small-integer stage (magnitude below 2^29) and
 /// just past it, plus small ones that make ties (collinear and cocircular sets) common.
 fn integer_coordinate() -> impl Strategy<Value = f64> {
