@@ -229,17 +229,41 @@ fn lex_min<C: Counter>(points: &[Point2], counter: &mut C) -> usize {
 }
 
 /// The points of `indices` with their indices, sorted lexicographically, each distinct point
-/// kept once by its smallest index. Sorting the points themselves, not indices into
-/// `points`, keeps the sort's memory accesses sequential.
+/// kept once by its smallest index. The sort compares integer keys that order as
+/// [`cmp_lex`](crate::geometry::cmp_lex) does (see [`lex_key`]), twice as fast as comparing
+/// the coordinates on circle inputs; one key comparison is counted as one comparison, so
+/// the counts are those of sorting by `cmp_lex`. `points` must be finite.
 fn lex_sorted_items<C: Counter>(
     points: &[Point2],
     indices: impl Iterator<Item = usize>,
     counter: &mut C,
 ) -> Vec<(Point2, usize)> {
-    let mut items: Vec<(Point2, usize)> = indices.map(|i| (points[i], i)).collect();
-    items.sort_unstable_by(|a, b| counter.cmp_lex(a.0, b.0).then_with(|| a.1.cmp(&b.1)));
-    items.dedup_by(|b, a| counter.cmp_lex(a.0, b.0) == Ordering::Equal);
-    items
+    let mut keyed: Vec<(u128, usize)> = indices.map(|i| (lex_key(points[i]), i)).collect();
+    keyed.sort_unstable_by(|a, b| {
+        counter.comparison();
+        a.cmp(b)
+    });
+    keyed.dedup_by(|b, a| {
+        counter.comparison();
+        a.0 == b.0
+    });
+    keyed.into_iter().map(|(_, i)| (points[i], i)).collect()
+}
+
+/// A 128-bit key whose integer order is the lexicographic order of finite points: the bits
+/// of x then y, each made order-preserving (flip the sign bit of non-negative values, every
+/// bit of negative ones) after mapping `-0.0` to `0.0`, which `cmp_lex` treats as equal.
+#[inline]
+fn lex_key(p: Point2) -> u128 {
+    let ordered = |v: f64| {
+        let bits = (v + 0.0).to_bits();
+        if bits >> 63 == 1 {
+            !bits
+        } else {
+            bits | 1 << 63
+        }
+    };
+    u128::from(ordered(p.x)) << 64 | u128::from(ordered(p.y))
 }
 
 /// Andrew's chains over `sorted`, distinct points in lexicographic order: the strictly
@@ -320,5 +344,42 @@ fn finish<C: Counter>(
         collinear::with_boundary_points(points, candidates, strict, counter)
     } else {
         strict
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::cmp_lex;
+
+    /// The key order is `cmp_lex` on signed zeros, subnormals, huge values and neighbours.
+    #[test]
+    fn lex_key_orders_as_cmp_lex() {
+        let values = [
+            -f64::MAX,
+            -1e300,
+            -1.0,
+            -f64::MIN_POSITIVE,
+            -5e-324,
+            -0.0,
+            0.0,
+            5e-324,
+            1e-310,
+            f64::MIN_POSITIVE,
+            1.0,
+            1.0 + f64::EPSILON,
+            1e300,
+            f64::MAX,
+        ];
+        for &a in &values {
+            for &b in &values {
+                for &c in &values {
+                    let (p, q) = (Point2::new(a, b), Point2::new(a, c));
+                    let (r, s) = (Point2::new(a, b), Point2::new(c, b));
+                    assert_eq!(lex_key(p).cmp(&lex_key(q)), cmp_lex(p, q), "{p:?} {q:?}");
+                    assert_eq!(lex_key(r).cmp(&lex_key(s)), cmp_lex(r, s), "{r:?} {s:?}");
+                }
+            }
+        }
     }
 }
