@@ -304,7 +304,7 @@ pub fn diameter_brute_force_with<C: Counter>(
 ///
 /// let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (0.0, 3.0), (2.0, 1.0)].map(Point2::from);
 /// let w = width(&pts)?.unwrap();
-/// assert_eq!((w.edge, w.vertex, w.width), ([1, 2], 3, 4.0));
+/// assert_eq!((w.edge, w.vertex, w.width), ([0, 1], 2, 3.0)); // the bottom edge, height 3
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn width(points: &[Point2]) -> Result<Option<Width>> {
