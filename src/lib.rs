@@ -53,6 +53,7 @@
 //! | [`calipers::antipodal_pairs`] | Θ(n) on a convex polygon of n vertices, at most 3n/2 pairs |
 //! | [`calipers::diameter`] | the hull's time plus Θ(h) |
 //! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |
+//! | [`calipers::width`], [`calipers::min_area_rectangle`] | the hull's time plus Θ(h) |
 //!
 //! ## A first example
 //!
