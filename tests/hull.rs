@@ -271,7 +271,9 @@ fn chan_makes_o_n_log_h_orientation_tests() {
         for n in [1000, 8000] {
             let pts = points(kind, n, 3).unwrap();
             let mut counts = Counts::default();
-            let hull = Algorithm::Chan.hull_with(&pts, STRICT, &mut counts).unwrap();
+            let hull = Algorithm::Chan
+                .hull_with(&pts, STRICT, &mut counts)
+                .unwrap();
             let lg_h = (hull.len().max(2) as f64).log2();
             let bound = 16.0 * n as f64 * lg_h + 16.0 * n as f64;
             assert!(
