@@ -278,8 +278,11 @@ fn chains<C: Counter>(sorted: &[(Point2, usize)], counter: &mut C) -> Vec<usize>
         return sorted.iter().map(|s| s.1).collect();
     }
     let (a, b) = (sorted[0].0, sorted[m - 1].0);
-    let mut lower = vec![sorted[0]];
-    let mut upper = vec![sorted[m - 1]];
+    // Sized up front: growing by pushes reallocates, which dominates on Chan's small groups.
+    let mut lower = Vec::with_capacity(m);
+    let mut upper = Vec::with_capacity(m);
+    lower.push(sorted[0]);
+    upper.push(sorted[m - 1]);
     for &item in &sorted[1..m - 1] {
         match counter.orient2d(a, b, item.0) {
             Orientation::Clockwise => lower.push(item),
