@@ -303,34 +303,35 @@ fn chains<C: Counter>(sorted: &[(Point2, usize)], counter: &mut C) -> Vec<usize>
 }
 
 /// Graham's scan over one chain whose points are all on one side of its end-to-end line:
-/// the chain's strictly convex vertices, both ends included.
+/// the chain's strictly convex vertices, both ends included. The stack holds the points
+/// themselves, so the scan reads them sequentially.
 fn scan_chain<C: Counter>(chain: &[(Point2, usize)], counter: &mut C) -> Vec<usize> {
-    let local: Vec<Point2> = chain.iter().map(|s| s.0).collect();
-    let mut stack: Vec<usize> = Vec::with_capacity(chain.len());
-    for k in 0..local.len() {
-        push_left_turn(&local, &mut stack, 2, k, counter);
+    let mut stack: Vec<(Point2, usize)> = Vec::with_capacity(chain.len());
+    for &item in chain {
+        push_left_turn(&mut stack, 2, item, |s| s.0, counter);
     }
-    stack.into_iter().map(|k| chain[k].1).collect()
+    stack.into_iter().map(|s| s.1).collect()
 }
 
-/// Pops from `stack` while it holds at least `floor` indices and its last two do not turn
-/// strictly left towards `i`, then pushes `i`.
+/// Pops from `stack` while it holds at least `floor` items and the points (`point`) of its
+/// last two do not turn strictly left towards `item`'s, then pushes `item`.
 #[inline]
-fn push_left_turn<C: Counter>(
-    points: &[Point2],
-    stack: &mut Vec<usize>,
+fn push_left_turn<T: Copy, C: Counter>(
+    stack: &mut Vec<T>,
     floor: usize,
-    i: usize,
+    item: T,
+    point: impl Fn(T) -> Point2,
     counter: &mut C,
 ) {
+    let p = point(item);
     while stack.len() >= floor {
         let (a, b) = (stack[stack.len() - 2], stack[stack.len() - 1]);
-        if counter.orient2d(points[a], points[b], points[i]) == Orientation::CounterClockwise {
+        if counter.orient2d(point(a), point(b), p) == Orientation::CounterClockwise {
             break;
         }
         stack.pop();
     }
-    stack.push(i);
+    stack.push(item);
 }
 
 /// Applies the options to a strictly convex hull computed from `candidates` (a superset of
