@@ -56,8 +56,9 @@ pub struct Width {
     pub edge: [usize; 2],
     /// The vertex on the other supporting line (the edge's start when the width is zero).
     pub vertex: usize,
-    /// The distance between the lines, rounded (within a few ulps; `inf` if it exceeds
-    /// `f64::MAX`). The edge and the vertex are exact: chosen by exact comparisons.
+    /// The distance between the lines, rounded (from the vertex's difference to the edge, so
+    /// it keeps its relative accuracy even when tiny; `inf` if it exceeds `f64::MAX`). The
+    /// edge and the vertex are exact: chosen by exact comparisons.
     pub width: f64,
 }
 
@@ -77,7 +78,8 @@ pub struct Rectangle {
     /// constructions (projections onto the lines), rounded to within a few ulps of the
     /// hull's largest coordinate; the edge and the support vertices are exact.
     pub corners: [Point2; 4],
-    /// The area, rounded (`inf` if it exceeds `f64::MAX`).
+    /// The area, rounded: height times length, each from the support vertices' own
+    /// differences (`inf` if it exceeds `f64::MAX`; 0 for collinear input).
     pub area: f64,
 }
 
@@ -304,7 +306,7 @@ pub fn diameter_brute_force_with<C: Counter>(
 ///
 /// let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (0.0, 3.0), (2.0, 1.0)].map(Point2::from);
 /// let w = width(&pts)?.unwrap();
-/// assert_eq!((w.edge, w.vertex, w.width), ([1, 2], 3, 4.0));
+/// assert_eq!((w.edge, w.vertex, w.width), ([0, 1], 2, 3.0)); // the bottom edge, height 3
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn width(points: &[Point2]) -> Result<Option<Width>> {
@@ -384,14 +386,11 @@ pub fn width_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Opti
         }
     });
     let s = best.expect("a polygon has edges");
-    let frame = Frame::new([v(s.edge), v(s.edge + 1), v(s.top)]);
-    let [a, b, p] = frame.points;
-    let u = unit(b.x - a.x, b.y - a.y);
-    let height = (u.0 * (p.y - a.y) - u.1 * (p.x - a.x)).abs();
+    let u = direction(v(s.edge), v(s.edge + 1));
     Ok(Some(Width {
         edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
         vertex: hull[s.top % h],
-        width: frame.unscale(height),
+        width: across(u, v(s.top), v(s.edge)).abs(),
     }))
 }
 
@@ -484,8 +483,8 @@ pub fn min_area_rectangle_with<C: Counter>(
     });
     let s = best.expect("a polygon has edges");
     let frame = Frame::new([v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)]);
-    let [a, b, top, left, right] = frame.points;
-    let u = unit(b.x - a.x, b.y - a.y);
+    let [a, _, top, left, right] = frame.points;
+    let u = direction(v(s.edge), v(s.edge + 1));
     let along = |p: Point2| u.0 * (p.x - a.x) + u.1 * (p.y - a.y);
     let height = u.0 * (top.y - a.y) - u.1 * (top.x - a.x);
     let (lo, hi) = (along(left), along(right));
@@ -501,7 +500,7 @@ pub fn min_area_rectangle_with<C: Counter>(
         edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
         support: [s.right, s.top, s.left].map(|k| hull[k % h]),
         corners: corners.map(|c| Point2::new(frame.unscale(c.x), frame.unscale(c.y))),
-        area: frame.unscale(frame.unscale((hi - lo) * height)),
+        area: area(u, [v(s.edge), v(s.top), v(s.left), v(s.right)]),
     }))
 }
 
@@ -592,8 +591,45 @@ fn scale(v: f64, e: i32) -> f64 {
     v * 2f64.powi(half) * 2f64.powi(e - half)
 }
 
-/// The unit vector along `(x, y)` (not both zero, neither huge).
-fn unit(x: f64, y: f64) -> (f64, f64) {
+/// `p - a`, rounded, as a vector and a factor (1, or 2 when the difference overflows and its
+/// half is returned).
+fn difference(p: Point2, a: Point2) -> ((f64, f64), f64) {
+    let (x, y) = (p.x - a.x, p.y - a.y);
+    if x.is_finite() && y.is_finite() {
+        ((x, y), 1.0)
+    } else {
+        ((p.x / 2.0 - a.x / 2.0, p.y / 2.0 - a.y / 2.0), 2.0)
+    }
+}
+
+/// The signed distance of `p` from the line through `a` along the unit vector `u`, rounded
+/// (computed from the difference itself, so it keeps its relative accuracy when tiny).
+fn across(u: (f64, f64), p: Point2, a: Point2) -> f64 {
+    let ((x, y), k) = difference(p, a);
+    (u.0 * y - u.1 * x) * k
+}
+
+/// The area of the rectangle with a side on the line through `a` along `u`, the opposite side
+/// through `top`, and the others through `left` and `right`, rounded: height times length,
+/// each from its own differences.
+fn area(u: (f64, f64), [a, top, left, right]: [Point2; 4]) -> f64 {
+    let height = across(u, top, a).abs();
+    let ((x, y), k) = difference(right, left);
+    let length = ((u.0 * x + u.1 * y) * k).abs();
+    if height == 0.0 || length == 0.0 {
+        0.0
+    } else {
+        height * length
+    }
+}
+
+/// The unit vector from `a` towards `b` (distinct points), rounded. Taken from the points
+/// themselves, not from a common frame: the edge may be tiny next to the frame's largest
+/// coordinate (a difference of distinct doubles is never zero), and halves avoid overflow.
+fn direction(a: Point2, b: Point2) -> (f64, f64) {
+    let ((x, y), _) = difference(b, a);
+    let largest = x.abs().max(y.abs());
+    let (x, y) = (x / largest, y / largest);
     let length = x.hypot(y);
     (x / length, y / length)
 }

@@ -54,6 +54,7 @@
 //! | [`calipers::antipodal_pairs`] | Θ(n) on a convex polygon of n vertices, at most 3n/2 pairs |
 //! | [`calipers::diameter`] | the hull's time plus Θ(h) |
 //! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |
+//! | [`calipers::width`], [`calipers::min_area_rectangle`] | the hull's time plus Θ(h) |
 //! | [`spline::vandermonde`], [`spline::vandermonde_hermite`] | Θ(n³) for n conditions (dense elimination) |
 //! | [`spline::lagrange`], [`spline::aitken`] | Θ(n²) per evaluation, n nodes |
 //! | [`spline::newton`], [`spline::newton_hermite`] | Θ(n²) divided differences, Θ(n) per evaluation |

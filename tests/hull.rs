@@ -255,6 +255,37 @@ fn jarvis_is_quadratic_on_cocircular_points_and_linear_per_vertex_otherwise() {
     }
 }
 
+/// Chan's count: per round with group size m, at most 3n tests for the group hulls and
+/// m (n/m + 1)(2 log₂ m + 4) for the march; log₂ m doubles from round to round and the last
+/// round has m < h², so the sum is below 8 n lg h plus lower-order terms. The test allows
+/// 16 n lg h + 16 n.
+#[test]
+fn chan_makes_o_n_log_h_orientation_tests() {
+    for kind in [
+        PointKind::UniformSquare,
+        PointKind::UniformDisk,
+        PointKind::Cocircular,
+        PointKind::Grid,
+        PointKind::Collinear,
+    ] {
+        for n in [1000, 8000] {
+            let pts = points(kind, n, 3).unwrap();
+            let mut counts = Counts::default();
+            let hull = Algorithm::Chan
+                .hull_with(&pts, STRICT, &mut counts)
+                .unwrap();
+            let lg_h = (hull.len().max(2) as f64).log2();
+            let bound = 16.0 * n as f64 * lg_h + 16.0 * n as f64;
+            assert!(
+                (counts.orientation_tests as f64) <= bound,
+                "{kind} n={n} h={}: {} tests",
+                hull.len(),
+                counts.orientation_tests
+            );
+        }
+    }
+}
+
 #[test]
 fn algorithm_names_round_trip() {
     for a in Algorithm::ALL {

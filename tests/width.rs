@@ -178,6 +178,27 @@ proptest! {
         check(&pts)?;
     }
 
+    /// Every point picks its own magnitude, from subnormal to near `f64::MAX`: the exact
+    /// choices still equal brute force, and no rounded value is NaN.
+    #[test]
+    fn mixed_magnitudes_in_one_set(
+        pts in prop::collection::vec(
+            ((-6i32..=6, -6i32..=6), prop::sample::select(vec![5e-324, 1e-300, 1.0, 1e300, 2.5e307])),
+            0..20,
+        ),
+    ) {
+        let pts: Vec<Point2> = pts
+            .iter()
+            .map(|&((x, y), s)| Point2::new(f64::from(x) * s, f64::from(y) * s))
+            .collect();
+        check(&pts)?;
+        if let (Some(w), Some(r)) = (width(&pts).unwrap(), min_area_rectangle(&pts).unwrap()) {
+            prop_assert!(w.width >= 0.0, "{:?}", w);
+            prop_assert!(!r.area.is_nan(), "{:?}", r);
+            prop_assert!(r.corners.iter().all(|c| !c.x.is_nan() && !c.y.is_nan()), "{:?}", r);
+        }
+    }
+
     /// Scaling by a power of two scales the width exactly in the exact choice and up to
     /// rounding in the value, even near the ends of the double range.
     #[test]
@@ -245,6 +266,12 @@ fn known_shapes() {
     let w = width(&tri).unwrap().unwrap();
     assert_eq!((w.edge, w.vertex), ([1, 2], 0));
     assert!((w.width - 2.4).abs() < 1e-15);
+    // A hull edge one subnormal step long next to 1e300: the direction comes from the edge
+    // itself, so the rounded values are finite.
+    let needle = [p(0.0, 0.0), p(1e300, 0.0), p(1e300, 5e-324)];
+    let r = min_area_rectangle(&needle).unwrap().unwrap();
+    assert!(r.area > 0.0 && r.area.is_finite(), "{r:?}");
+    assert!(width(&needle).unwrap().unwrap().width > 0.0);
     // One point and a segment.
     let r = min_area_rectangle(&[p(1.0, 2.0)]).unwrap().unwrap();
     assert_eq!((r.edge, r.area, r.corners), ([0, 0], 0.0, [p(1.0, 2.0); 4]));

@@ -147,7 +147,7 @@ impl Form {
         let value = (t1 - t2).abs();
         let err = FORM_ERRBOUND * (t1.abs() + t2.abs()) + UNDERFLOW_SLACK;
         // Written so that NaN fails every test.
-        let usable = value >= 8.0 * err && value >= FORM_MIN && value <= FORM_MAX;
+        let usable = value >= 8.0 * err && (FORM_MIN..=FORM_MAX).contains(&value);
         usable.then(|| (value, err / value))
     }
 

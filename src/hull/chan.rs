@@ -179,7 +179,7 @@ impl Groups {
                 falls && under_0
             } else {
                 // 0 is on the rising arc: after the minimum they rise below key(0).
-                !(!falls && under_0)
+                falls || !under_0
             }
         });
         Some(v[min % k])

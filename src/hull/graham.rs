@@ -109,7 +109,7 @@ fn angular_order<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
 fn scan<C: Counter>(points: &[Point2], order: &[usize], counter: &mut C) -> Vec<usize> {
     let mut stack: Vec<usize> = order.iter().copied().take(2).collect();
     for &i in order.iter().skip(2) {
-        push_left_turn(points, &mut stack, 2, i, counter);
+        push_left_turn(&mut stack, 2, i, |k| points[k], counter);
     }
     stack
 }
