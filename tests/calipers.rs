@@ -201,7 +201,19 @@ fn cli_diameter_by_calipers_and_by_brute_force() {
         args.extend(flag);
         let v = run_json(&args, Some(input));
         assert_eq!(v["pair"], serde_json::json!([1, 3]), "{flag:?}");
-        assert_eq!(v["length"], serde_json::json!(5.0));
+        assert_eq!(v["distance"], serde_json::json!(5.0));
+        // The library's antipodal pairs of the hull.
+        let pts: Vec<Point2> = [[1.0, 1.0], [0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [2.0, 1.0]]
+            .map(Point2::from)
+            .to_vec();
+        let hull = compgeo::hull::akl_toussaint(&pts, Default::default()).unwrap();
+        let expected: Vec<[usize; 2]> = antipodal_pairs(&pts, &hull)
+            .unwrap()
+            .into_iter()
+            .map(|(i, j)| [i, j])
+            .collect();
+        assert_eq!(v["antipodal_pairs"], serde_json::json!(expected));
+        assert_eq!(expected.len(), 4, "the hull 1, 2, 3, 0 is a quadrilateral");
         assert_eq!(v["points"], serde_json::json!([[0.0, 0.0], [4.0, 3.0]]));
     }
     // A 4 x 3 box and an interior point: width 3 on the bottom edge, rectangle the box.
@@ -215,6 +227,7 @@ fn cli_diameter_by_calipers_and_by_brute_force() {
         serde_json::json!({"x": 4.0, "y": 3.0})
     );
     let v = run_json(&["diameter", "-"], Some("[]"));
-    assert!(v["pair"].is_null() && v["length"].is_null());
+    assert!(v["pair"].is_null() && v["distance"].is_null());
+    assert_eq!(v["antipodal_pairs"], serde_json::json!([]));
     assert!(v["width"].is_null() && v["rectangle"].is_null());
 }

@@ -6,9 +6,11 @@ use super::input::PointInput;
 use super::output::print_json;
 use super::CliError;
 use crate::calipers::{
-    diameter_brute_force_with, diameter_with, min_area_rectangle, width, Rectangle, Width,
+    antipodal_pairs, diameter_brute_force_with, diameter_with, min_area_rectangle, width,
+    Rectangle, Width,
 };
 use crate::count::Counts;
+use crate::hull::{akl_toussaint, HullOptions};
 use clap::Args;
 use serde::Serialize;
 
@@ -22,15 +24,18 @@ pub(super) struct DiameterArgs {
     input: PointInput,
 }
 
-/// `{"pair": [a, b] or null, "points": [[x, y], [x, y]], "length": d, "counts": {...},
+/// `{"pair": [a, b] or null, "points": [[x, y], [x, y]], "distance": d or null,
+/// "antipodal_pairs": [[i, j], ...], "counts": {...},
 /// "width": {"edge": [i, j], "vertex": k, "width": w} or null, "rectangle": {"edge": [i, j],
 /// "support": [right, top, left], "corners": [{"x": .., "y": ..}, ...], "area": a} or null}`.
-/// The counts are the diameter's.
+/// The counts are the diameter's; the antipodal pairs are those of the hull (ARCHITECTURE's
+/// contract: `pair`, `distance`, `antipodal_pairs`).
 #[derive(Debug, Serialize)]
 struct DiameterOutput {
     pair: Option<[usize; 2]>,
     points: Vec<[f64; 2]>,
-    length: Option<f64>,
+    distance: Option<f64>,
+    antipodal_pairs: Vec<[usize; 2]>,
     counts: Counts,
     width: Option<Width>,
     rectangle: Option<Rectangle>,
@@ -45,12 +50,17 @@ pub(super) fn run(args: DiameterArgs) -> Result<(), CliError> {
     } else {
         diameter_with(&points, &mut counts)?
     };
+    let hull = akl_toussaint(&points, HullOptions::default())?;
     print_json(&DiameterOutput {
         pair: d.map(|d| [d.a, d.b]),
         points: d
             .map(|d| [d.a, d.b].map(|i| [points[i].x, points[i].y]).to_vec())
             .unwrap_or_default(),
-        length: d.map(|d| d.length),
+        distance: d.map(|d| d.length),
+        antipodal_pairs: antipodal_pairs(&points, &hull)?
+            .into_iter()
+            .map(|(i, j)| [i, j])
+            .collect(),
         counts,
         width: width(&points)?,
         rectangle: min_area_rectangle(&points)?,
