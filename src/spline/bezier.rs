@@ -142,19 +142,26 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         }
     }
 
-    /// [`Bezier::eval`]'s rare path, out of line: a bad parameter, or an overflow of
-    /// Horner's binomials recomputed by de Casteljau's algorithm.
+    /// de Casteljau's algorithm for the overflow case of the evaluations, out of line.
     #[cold]
     #[inline(never)]
-    fn eval_slow(&self, t: &S) -> Result<Point<S, D>> {
-        validate_parameter(t, "t")?;
+    fn de_casteljau_cold(&self, t: &S) -> Point<S, D> {
         let mut q = self.control.clone();
         for k in 1..q.len() {
             for i in 0..q.len() - k {
                 q[i] = Point::lerp(&q[i], &q[i + 1], t);
             }
         }
-        Ok(q.swap_remove(0))
+        q.swap_remove(0)
+    }
+
+    /// [`Bezier::eval`]'s rare path, out of line: a bad parameter, or an overflow of
+    /// Horner's binomials recomputed by de Casteljau's algorithm.
+    #[cold]
+    #[inline(never)]
+    fn eval_slow(&self, t: &S) -> Result<Point<S, D>> {
+        validate_parameter(t, "t")?;
+        Ok(self.de_casteljau_cold(t))
     }
 
     /// The point b(t) by de Casteljau's algorithm. See [`Bezier::de_casteljau_with`].
