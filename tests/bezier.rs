@@ -8,7 +8,8 @@ use compgeo::count::Counts;
 use compgeo::geometry::Point2;
 use compgeo::hull::{monotone_chain, HullOptions};
 use compgeo::spline::{
-    bernstein, bernstein_all, bernstein_derivative, Bezier, Point, Scalar, MAX_FLATTEN_SEGMENTS,
+    bernstein, bernstein_all, bernstein_derivative, intersections, Bezier, Point, Scalar,
+    MAX_FLATTEN_SEGMENTS,
 };
 use compgeo::Error;
 use num_bigint::BigInt;
@@ -305,6 +306,86 @@ proptest! {
             let d = if poly.len() == 1 { segment_distance(p, poly[0], poly[0]) } else { d };
             prop_assert!(d <= tol * std::f64::consts::SQRT_2 * (1.0 + 1e-9) + 1e-9, "distance {d} > {tol}");
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// A cubic against a horizontal line: every reported hit is on both curves, and every
+    /// clear sign change of b_y − y₀ on a grid (an oracle independent of subdivision) has a
+    /// hit in its cell.
+    #[test]
+    fn intersections_with_a_line_are_found_and_lie_on_both_curves(
+        b in f64_curve(4).prop_filter("degree ≥ 1", |b| b.degree() >= 1),
+        y0 in -500.0f64..500.0,
+    ) {
+        let line = Bezier::new(vec![Point::new([-2e3, y0]), Point::new([2e3, y0])]).unwrap();
+        let tol = 1e-7;
+        let hits = intersections(&b, &line, tol).unwrap();
+        for h in &hits {
+            let p = b.eval(&h.s).unwrap();
+            prop_assert!((p[1] - y0).abs() <= 1e-4, "hit off the line: {p:?} vs {y0}");
+            let q = line.eval(&h.t).unwrap();
+            prop_assert!((q[0] - p[0]).abs() <= 1e-4, "{q:?} vs {p:?}");
+        }
+        let grid = 400;
+        let f = |k: usize| b.eval(&(k as f64 / grid as f64)).unwrap()[1] - y0;
+        for k in 0..grid {
+            let (a, z) = (f(k), f(k + 1));
+            if a.abs() > 1e-3 && z.abs() > 1e-3 && (a < 0.0) != (z < 0.0) {
+                let (lo, hi) = (k as f64 / grid as f64, (k + 1) as f64 / grid as f64);
+                prop_assert!(
+                    hits.iter().any(|h| h.s >= lo - 1e-6 && h.s <= hi + 1e-6),
+                    "no hit in [{lo}, {hi}]: {hits:?}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn intersections_of_lines_boxes_and_overlaps() {
+    let l1 = Bezier::new(vec![Point::new([0.0, 0.0]), Point::new([4.0, 4.0])]).unwrap();
+    let l2 = Bezier::new(vec![Point::new([0.0, 4.0]), Point::new([4.0, 0.0])]).unwrap();
+    let hits = intersections(&l1, &l2, 1e-9).unwrap();
+    assert_eq!(hits.len(), 1);
+    assert_eq!((hits[0].s, hits[0].t), (0.5, 0.5));
+    assert_eq!(hits[0].point, Point::new([2.0, 2.0]));
+    // Disjoint boxes: nothing, even for curved pieces.
+    let far = Bezier::new(vec![
+        Point::new([10.0, 0.0]),
+        Point::new([11.0, 5.0]),
+        Point::new([12.0, 0.0]),
+    ])
+    .unwrap();
+    assert!(intersections(&l1, &far, 1e-9).unwrap().is_empty());
+    // Two cubics crossing in three points: the S-curve and the diagonal through its middle.
+    let s_curve = Bezier::new(vec![
+        Point::new([0.0, 0.0]),
+        Point::new([0.0, 3.0]),
+        Point::new([3.0, -3.0]),
+        Point::new([3.0, 0.0]),
+    ])
+    .unwrap();
+    let axis = Bezier::new(vec![Point::new([-1.0, 0.0]), Point::new([4.0, 0.0])]).unwrap();
+    let hits = intersections(&s_curve, &axis, 1e-12).unwrap();
+    let s: Vec<f64> = hits.iter().map(|h| h.s).collect();
+    // y(s) = 9s(1−s)² − 9s²(1−s) = 9s(1−s)(1−2s): roots 0, 1/2, 1.
+    assert_eq!(s.len(), 3, "{hits:?}");
+    for (got, want) in s.iter().zip([0.0, 0.5, 1.0]) {
+        assert!((got - want).abs() < 1e-9, "{s:?}");
+    }
+    // A curve against itself overlaps everywhere: an error, not an endless search.
+    assert!(matches!(
+        intersections(&s_curve, &s_curve, 1e-12),
+        Err(Error::InvalidParameter {
+            name: "tolerance",
+            ..
+        })
+    ));
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert!(intersections(&l1, &l2, bad).is_err());
     }
 }
 

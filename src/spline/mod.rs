@@ -12,15 +12,18 @@
 //! | `bernstein.rs` | [`bernstein`], [`bernstein_all`], [`bernstein_derivative`] |
 //! | `bezier.rs` | [`Bezier`]: de Casteljau, Horner, derivatives, split, restrict, blossom, box; [`Reparametrised`] |
 //! | `bezier_ops.rs` | degree elevation (Zhou), monomial conversion, integral, flattening, forward differences |
+//! | `intersect.rs` | [`intersections`] of two planar curves by subdivision with box pruning |
 
 mod bernstein;
 mod bezier;
 mod bezier_ops;
+mod intersect;
 mod scalar;
 
 pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
 pub use bezier::{Bezier, Reparametrised};
 pub use bezier_ops::MAX_FLATTEN_SEGMENTS;
+pub use intersect::{intersections, Intersection, MAX_INTERSECTION_PAIRS};
 pub use scalar::{
     binomial, parse_scalar, validate_parameter, validate_points, ParseScalar, Point, Scalar,
 };
