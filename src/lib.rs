@@ -16,6 +16,7 @@
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
 //! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
 //! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
+//! | [`spline`] | Bernstein basis and Bézier curves, generic over the scalar (`f64`, exact rationals) and the dimension |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
 //! ## Algorithms and their bounds
@@ -52,6 +53,12 @@
 //! | [`calipers::antipodal_pairs`] | Θ(n) on a convex polygon of n vertices, at most 3n/2 pairs |
 //! | [`calipers::diameter`] | the hull's time plus Θ(h) |
 //! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |
+//! | [`spline::Bezier::de_casteljau`] (degree n) | Θ(n²): exactly n(n+1)/2 affine combinations per point |
+//! | [`spline::Bezier::horner`], [`spline::Bezier::eval`] | Θ(n): n + 1 point operations per point |
+//! | [`spline::Bezier::split`], [`spline::Bezier::blossom`], [`spline::Bezier::derivative_at`] | Θ(n²) |
+//! | [`spline::Bezier::elevate_to`] (degree n to m) | Θ(mn) |
+//! | [`spline::Bezier::flatten`] | Θ(s·n²) for s segments, s = O(√(bound/tolerance)) |
+//! | [`spline::intersections`] | O(k·d·(m² + n²)) for k crossings found at depth d |
 //!
 //! ## A first example
 //!

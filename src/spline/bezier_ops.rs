@@ -209,7 +209,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         let mut c = start;
         control.push(c.clone());
         for b in self.control() {
-            c = c + &(b.clone() / &den);
+            c += &(b.clone() / &den);
             control.push(c.clone());
         }
         Ok(Bezier::from_control_unchecked(control))
