@@ -8,7 +8,7 @@ use compgeo::count::Counts;
 use compgeo::geometry::Point2;
 use compgeo::hull::{monotone_chain, HullOptions};
 use compgeo::spline::{
-    bernstein, bernstein_all, bernstein_derivative, intersections, Bezier, Point, Scalar,
+    bernstein, bernstein_all, bernstein_derivative, intersections, Bezier, Finite, Point, Scalar,
 };
 use compgeo::Error;
 use num_bigint::BigInt;
@@ -97,6 +97,23 @@ proptest! {
         prop_assert_eq!(&b.eval(&t).unwrap(), &direct);
         prop_assert_eq!(dc.arithmetic_operations, (n * (n + 1) / 2) as u64);
         prop_assert_eq!(ho.arithmetic_operations, (n + 1) as u64);
+    }
+
+    #[test]
+    fn batch_and_prevalidated_evaluation_equal_eval(
+        b in rational_curve(5), ts in prop::collection::vec(parameter(), 0..12),
+        fb in f64_curve(5), fts in prop::collection::vec(-3.0f64..4.0, 0..12),
+    ) {
+        let mut got = Vec::new();
+        b.eval_each(&ts, |p| got.push(p)).unwrap();
+        let want: Vec<_> = ts.iter().map(|t| b.eval(t).unwrap()).collect();
+        prop_assert_eq!(got, want);
+        let mut got = Vec::new();
+        fb.eval_each(&fts, |p| got.push(p)).unwrap();
+        for (p, t) in got.iter().zip(&fts) {
+            prop_assert_eq!(*p, fb.eval(t).unwrap());
+            prop_assert_eq!(*p, fb.at(&Finite::new(*t, "t").unwrap()));
+        }
     }
 
     #[test]
@@ -462,6 +479,28 @@ fn huge_and_subnormal_coordinates_evaluate_finitely() {
     }
     assert_eq!(b.eval(&0.0).unwrap(), b.control()[0]);
     assert_eq!(b.eval(&1.0).unwrap(), b.control()[7]);
+    // A cubic whose Horner steps overflow (3·1.7e308): the batch path must notice.
+    let big = Bezier::new(vec![
+        Point::new([0.0, 1.7e308]),
+        Point::new([1.7e308, -1.7e308]),
+        Point::new([-1.7e308, 1.7e308]),
+        Point::new([1.0, 0.0]),
+    ])
+    .unwrap();
+    let ts = [0.0, 0.25, 0.5, 0.75, 1.0];
+    let mut got = Vec::new();
+    big.eval_each(&ts, |p| got.push(p)).unwrap();
+    for (p, t) in got.iter().zip(ts) {
+        assert!(p.is_finite(), "t = {t}: {p:?}");
+        assert_eq!(*p, big.de_casteljau(&t).unwrap());
+        assert_eq!(*p, big.eval(&t).unwrap());
+    }
+    match big.eval_each(&[0.5, f64::NAN], |_| {}) {
+        Err(Error::InvalidParameter { name: "t", reason }) => {
+            assert!(reason.contains("parameter 1"))
+        }
+        other => panic!("{other:?}"),
+    }
 }
 
 #[test]
