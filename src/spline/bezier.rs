@@ -100,10 +100,12 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     }
 
     /// The same curve with `f64` coordinates (each rounded to the nearest double).
-    pub fn to_f64(&self) -> Bezier<f64, D> {
-        Bezier {
-            control: self.control.iter().map(Point::to_f64).collect(),
-        }
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Overflow`] if a coordinate is beyond the range of `f64`.
+    pub fn to_f64(&self) -> Result<Bezier<f64, D>> {
+        Bezier::derived(self.control.iter().map(Point::to_f64).collect(), "to_f64")
     }
 
     /// The curve of an `f64` curve's exact values in `S` (exact for rationals).
@@ -420,7 +422,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// # Errors
     ///
-    /// [`Error::InvalidParameter`] if `c` is NaN or infinite.
+    /// [`Error::InvalidParameter`] if `c` is NaN or infinite; [`Error::Overflow`] if c is so
+    /// far outside [0, 1] that a control point is beyond the range of `f64`.
     ///
     /// # Complexity
     ///
@@ -437,7 +440,11 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// ```
     pub fn split(&self, c: &S) -> Result<(Self, Self)> {
         validate_parameter(c, "c")?;
-        Ok(self.split_unchecked(c))
+        let (left, right) = self.split_unchecked(c);
+        Ok((
+            Bezier::derived(left.control, "split")?,
+            Bezier::derived(right.control, "split")?,
+        ))
     }
 
     /// The control points of the same polynomial over the oriented interval [a, b]: the
@@ -451,7 +458,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// # Errors
     ///
-    /// [`Error::InvalidParameter`] if `a` or `b` is NaN or infinite.
+    /// [`Error::InvalidParameter`] if `a` or `b` is NaN or infinite; [`Error::Overflow`] if
+    /// a new control point is beyond the range of `f64`.
     ///
     /// # Complexity
     ///
@@ -476,7 +484,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             args[n - i] = b.clone();
             control.push(self.blossom_unchecked(&args));
         }
-        Ok(Bezier { control })
+        Bezier::derived(control, "restrict")
     }
 
     /// The same curve traversed backwards: control points in reverse order, so the new curve
@@ -512,7 +520,11 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
 
     /// The hodograph: the first derivative as a Bézier curve of degree n − 1 with control
     /// points n·Δbᵢ = n(bᵢ₊₁ − bᵢ). See [`Bezier::derivative`].
-    pub fn hodograph(&self) -> Self {
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Overflow`] as for [`Bezier::derivative`].
+    pub fn hodograph(&self) -> Result<Self> {
         self.derivative(1)
     }
 
@@ -521,6 +533,11 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// Follows `000_f3201fe9758fe02a.txt` §2.4 and `003_5b666ee3e15e6353.txt` §3.2
     /// ("Derivadas").
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Overflow`] if a control point of the derivative is beyond the range of `f64`
+    /// (differences of coordinates near ±1.8e308).
     ///
     /// # Complexity
     ///
@@ -531,17 +548,17 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// // b(t) = t² has Bézier points 0, 0, 1; b' = 2t has 0, 2; b'' = 2.
     /// let b = Bezier::new(vec![Point::new([0.0]), Point::new([0.0]), Point::new([1.0])])?;
-    /// assert_eq!(b.derivative(1).control(), [Point::new([0.0]), Point::new([2.0])]);
-    /// assert_eq!(b.derivative(2).control(), [Point::new([2.0])]);
-    /// assert_eq!(b.derivative(3).control(), [Point::new([0.0])]);
+    /// assert_eq!(b.derivative(1)?.control(), [Point::new([0.0]), Point::new([2.0])]);
+    /// assert_eq!(b.derivative(2)?.control(), [Point::new([2.0])]);
+    /// assert_eq!(b.derivative(3)?.control(), [Point::new([0.0])]);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
-    pub fn derivative(&self, r: usize) -> Self {
+    pub fn derivative(&self, r: usize) -> Result<Self> {
         let n = self.degree();
         if r > n {
-            return Bezier {
+            return Ok(Bezier {
                 control: vec![Point::zero()],
-            };
+            });
         }
         let mut q = self.control.clone();
         forward_differences_in_place(&mut q, r);
@@ -549,7 +566,18 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         for p in &mut q {
             *p = p.clone() * &factor;
         }
-        Bezier { control: q }
+        Bezier::derived(q, "derivative")
+    }
+
+    /// A curve computed from a valid one: non-empty by construction, finite unless the
+    /// computation overflowed `f64`.
+    pub(crate) fn derived(control: Vec<Point<S, D>>, what: &'static str) -> Result<Self> {
+        debug_assert!(!control.is_empty());
+        if control.iter().all(Point::is_finite) {
+            Ok(Bezier { control })
+        } else {
+            Err(Error::Overflow { what })
+        }
     }
 
     /// The r-th derivative b⁽ʳ⁾(t) at one parameter, by the tetrahedral algorithm.
@@ -889,7 +917,7 @@ mod tests {
             assert_eq!(b.eval(&t).unwrap(), Point::new([2.0, -1.0]));
             assert_eq!(b.de_casteljau(&t).unwrap(), Point::new([2.0, -1.0]));
         }
-        assert_eq!(b.hodograph().control(), [Point::new([0.0, 0.0])]);
+        assert_eq!(b.hodograph().unwrap().control(), [Point::new([0.0, 0.0])]);
         assert_eq!(b.blossom(&[]).unwrap(), Point::new([2.0, -1.0]));
     }
 

@@ -31,15 +31,20 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// Θ(nD) time and space for the result.
     ///
+    /// # Errors
+    ///
+    /// [`Error::Overflow`] if rounding carries a new point beyond the range of `f64` (only
+    /// for coordinates within an ulp of ±`f64::MAX`).
+    ///
     /// ```
     /// use compgeo::spline::{Bezier, Point};
     ///
     /// let line = Bezier::new(vec![Point::new([0.0]), Point::new([2.0])])?;
-    /// let q = line.elevate();
+    /// let q = line.elevate()?;
     /// assert_eq!(q.control(), [Point::new([0.0]), Point::new([1.0]), Point::new([2.0])]);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
-    pub fn elevate(&self) -> Self {
+    pub fn elevate(&self) -> Result<Self> {
         let b = self.control();
         let n = self.degree();
         let den = (n + 1) as i64;
@@ -51,7 +56,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             control.push(Point::combine(&b[i - 1], &w, &b[i], &v));
         }
         control.push(b[n].clone());
-        Bezier::from_control_unchecked(control)
+        Bezier::derived(control, "degree elevation")
     }
 
     /// The same curve with degree m ≥ n, in one step by Zhou's formula
@@ -63,7 +68,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Errors
     ///
     /// [`Error::InvalidParameter`] if `m < n` (that would be degree reduction, an
-    /// approximation).
+    /// approximation); [`Error::Overflow`] as for [`Bezier::elevate`].
     ///
     /// # Complexity
     ///
@@ -102,7 +107,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             }
             control.push(d);
         }
-        Ok(Bezier::from_control_unchecked(control))
+        Bezier::derived(control, "degree elevation")
     }
 
     /// The coefficients a₀, …, aₙ of the power form `b(t) = Σᵢ aᵢ tⁱ`:
@@ -147,7 +152,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Errors
     ///
     /// [`Error::Empty`] for no coefficients; [`Error::NonFinite`] naming the first
-    /// coefficient with a NaN or infinite coordinate.
+    /// coefficient with a NaN or infinite coordinate; [`Error::Overflow`] if a control point
+    /// is beyond the range of `f64`.
     ///
     /// # Complexity
     ///
@@ -177,7 +183,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
                 b
             })
             .collect();
-        Ok(Bezier::from_control_unchecked(control))
+        Bezier::derived(control, "conversion from the monomial form")
     }
 
     /// The antiderivative with value `start` at t = 0, a curve of degree n + 1:
@@ -187,7 +193,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// # Errors
     ///
-    /// [`Error::NonFinite`] if `start` has a NaN or infinite coordinate.
+    /// [`Error::NonFinite`] if `start` has a NaN or infinite coordinate; [`Error::Overflow`]
+    /// if a control point is beyond the range of `f64`.
     ///
     /// # Complexity
     ///
@@ -212,7 +219,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             c += &(b.clone() / &den);
             control.push(c.clone());
         }
-        Ok(Bezier::from_control_unchecked(control))
+        Bezier::derived(control, "integration")
     }
 
     /// `∫₀¹ b(t) dt = (b₀ + ⋯ + bₙ)/(n + 1)`.
@@ -348,12 +355,6 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             out.push(e[0].clone());
         }
         Ok(out)
-    }
-
-    /// A curve from control points known to be non-empty and finite.
-    pub(crate) fn from_control_unchecked(control: Vec<Point<S, D>>) -> Self {
-        debug_assert!(!control.is_empty());
-        Bezier::new(control).expect("control points derived from a valid curve")
     }
 }
 
