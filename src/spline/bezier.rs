@@ -4,9 +4,10 @@
 //! A curve of degree n in R^D is `b(t) = Σᵢ bᵢ Bᵢⁿ(t)` with control points b₀, …, bₙ
 //! ([`Point<S, D>`]) and the Bernstein polynomials of [`bernstein`](super::bernstein()). The
 //! parameter t is the local one: b₀ = b(0) and bₙ = b(1), and every method accepts any real t,
-//! also outside [0, 1]. [`Reparametrised`] carries a curve over a global interval [a, b].
-//! Degree elevation, monomial conversion, integration, flattening and forward differencing
-//! are in `bezier_ops.rs`; curve/curve intersection in `intersect.rs`.
+//! also outside [0, 1]. [`Reparametrised`] (in `reparametrised.rs`) carries a curve over a
+//! global interval [a, b]. Batch evaluation, degree elevation, monomial conversion,
+//! integration, flattening and forward differencing are in `bezier_ops.rs`; curve/curve
+//! intersection in `intersect.rs`.
 //!
 //! Follows `000_f3201fe9758fe02a.txt` ch. 2 (§2.2 Bézier representation, §2.3 de Casteljau and
 //! Obs. 4 Horner, §2.4 derivatives, §2.6 the tetrahedral algorithm) and ch. 3 (§3.1–3.3
@@ -18,6 +19,7 @@
 //! equals the curve on its diagonal, derivative identities.
 
 use super::bernstein::falling_factorial;
+use super::reparametrised::Reparametrised;
 use super::scalar::{binomial, validate_parameter, validate_points, Finite, Point, Scalar};
 use crate::count::{Counter, NoCount};
 use crate::{Error, Result};
@@ -43,29 +45,6 @@ use crate::{Error, Result};
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bezier<S, const D: usize> {
     control: Vec<Point<S, D>>,
-}
-
-/// A Bézier curve over a global parameter interval [a, b], a < b: the point at u is the
-/// curve's point at the local parameter t = (u − a)/(b − a), and its r-th derivative with
-/// respect to u is the local one divided by (b − a)ʳ.
-///
-/// Follows `003_5b666ee3e15e6353.txt` §3.2 ("Reparametrización") and
-/// `000_f3201fe9758fe02a.txt` §2.2 (local and global parameter) and §2.4.
-///
-/// ```
-/// use compgeo::spline::{Bezier, Point};
-///
-/// let line = Bezier::new(vec![Point::new([0.0]), Point::new([10.0])])?;
-/// let on = line.reparametrise(2.0, 4.0)?;
-/// assert_eq!(on.eval(&3.0)?, Point::new([5.0]));
-/// assert_eq!(on.derivative_at(&3.0, 1)?, Point::new([5.0])); // 10 / (4 − 2)
-/// # Ok::<(), compgeo::Error>(())
-/// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct Reparametrised<S, const D: usize> {
-    curve: Bezier<S, D>,
-    a: S,
-    b: S,
 }
 
 impl<S: Scalar, const D: usize> Bezier<S, D> {
@@ -147,7 +126,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// de Casteljau's algorithm for the overflow case of the evaluations, out of line.
     #[cold]
     #[inline(never)]
-    fn de_casteljau_cold(&self, t: &S) -> Point<S, D> {
+    pub(crate) fn de_casteljau_cold(&self, t: &S) -> Point<S, D> {
         let mut q = self.control.clone();
         for k in 1..q.len() {
             for i in 0..q.len() - k {
@@ -182,109 +161,6 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         } else {
             self.de_casteljau_cold(t)
         }
-    }
-
-    /// Calls `f(b(tᵢ))` for every parameter tᵢ in order: [`Bezier::eval`] over a batch, with
-    /// the checks hoisted out of the loop, for sampling a curve densely (plotting, tables).
-    ///
-    /// Idea: one pass validates the parameters and bounds |t| + |1 − t| by w; for degree
-    /// n ≤ 3 every intermediate of the Horner nesting is at most 8·M·wⁿ in absolute value
-    /// (M the largest control coordinate), so when that bound is finite no result can
-    /// overflow and the closed form runs in a loop with no branch at all. Otherwise (and for
-    /// n ≥ 4) each point is evaluated as [`Bezier::at`] does.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::InvalidParameter`] naming the index of the first NaN or infinite parameter,
-    /// before `f` is called at all.
-    ///
-    /// # Complexity
-    ///
-    /// Θ(m·nD) time for m parameters, O(D) auxiliary space.
-    ///
-    /// ```
-    /// use compgeo::spline::{Bezier, Point};
-    ///
-    /// let b = Bezier::new(vec![Point::new([0.0]), Point::new([0.0]), Point::new([1.0])])?;
-    /// let mut ys = Vec::new();
-    /// b.eval_each(&[0.0, 0.5, 2.0], |p| ys.push(p[0]))?;
-    /// assert_eq!(ys, [0.0, 0.25, 4.0]);
-    /// # Ok::<(), compgeo::Error>(())
-    /// ```
-    pub fn eval_each<F: FnMut(Point<S, D>)>(&self, ts: &[S], mut f: F) -> Result<()> {
-        // One pass: are all parameters finite, and how large is |t| + |1 − t|?
-        let mut finite = true;
-        let mut w = 1.0f64;
-        for t in ts {
-            finite &= t.is_finite();
-            if !S::EXACT {
-                let x = t.to_f64();
-                let a = x.abs() + (1.0 - x).abs();
-                w = if a > w { a } else { w };
-            }
-        }
-        if !finite {
-            let i = ts.iter().position(|t| !t.is_finite()).unwrap_or(0);
-            return Err(Error::InvalidParameter {
-                name: "t",
-                reason: format!("parameter {i} must be finite, got {}", ts[i].to_f64()),
-            });
-        }
-        let n = self.degree();
-        let safe = S::EXACT || (n <= 3 && self.no_overflow_bound(w));
-        let b = &self.control;
-        match (safe, &b[..]) {
-            (true, [b0, b1]) => {
-                for t in ts {
-                    f(b0.clone() * (S::one() - t) + &(b1.clone() * t));
-                }
-            }
-            (true, [b0, b1, b2]) => {
-                let two = S::from_i64(2);
-                for t in ts {
-                    let u = S::one() - t;
-                    f((b0.clone() * &u + &(b1.clone() * (two.clone() * t))) * &u
-                        + &(b2.clone() * (t.clone() * t)));
-                }
-            }
-            (true, [b0, b1, b2, b3]) => {
-                let three = S::from_i64(3);
-                for t in ts {
-                    let u = S::one() - t;
-                    let t2 = t.clone() * t;
-                    f(
-                        ((b0.clone() * &u + &(b1.clone() * (three.clone() * t))) * &u
-                            + &(b2.clone() * (three.clone() * &t2)))
-                            * &u
-                            + &(b3.clone() * (t2 * t)),
-                    );
-                }
-            }
-            _ => {
-                for t in ts {
-                    let p = self.horner_unchecked(t, &mut NoCount);
-                    f(if p.is_finite() {
-                        p
-                    } else {
-                        self.de_casteljau_cold(t)
-                    });
-                }
-            }
-        }
-        Ok(())
-    }
-
-    /// `8·M·wⁿ` is finite (with a factor 2 of slack for rounding), for M the largest control
-    /// coordinate and w a bound on |t| + |1 − t|: then no Horner step of degree n ≤ 3
-    /// overflows.
-    fn no_overflow_bound(&self, w: f64) -> bool {
-        let mut m = 0.0f64;
-        for p in &self.control {
-            for c in p.coords() {
-                m = m.max(c.to_f64().abs());
-            }
-        }
-        (16.0 * m * w.powi(self.degree() as i32)).is_finite()
     }
 
     /// [`Bezier::eval`]'s rare path, out of line: a bad parameter, or an overflow of
@@ -515,7 +391,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
                 reason: format!("needs a < b, got a = {} and b = {}", a.to_f64(), b.to_f64()),
             });
         }
-        Ok(Reparametrised { curve: self, a, b })
+        Ok(Reparametrised::new_unchecked(self, a, b))
     }
 
     /// The hodograph: the first derivative as a Bézier curve of degree n − 1 with control
@@ -716,7 +592,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// Horner's scheme of Obs. 4 without validation (t finite); inlined so that the
     /// closed forms of degrees 1 to 3 compile into the caller's loop.
     #[inline(always)]
-    fn horner_unchecked<C: Counter>(&self, t: &S, counter: &mut C) -> Point<S, D> {
+    pub(crate) fn horner_unchecked<C: Counter>(&self, t: &S, counter: &mut C) -> Point<S, D> {
         let b = &self.control;
         let n = b.len() - 1;
         counter.arithmetic_operation();
@@ -773,58 +649,6 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         }
         counter.arithmetic_operation();
         acc + &(b[n].clone() * (ti * t))
-    }
-}
-
-impl<S: Scalar, const D: usize> Reparametrised<S, D> {
-    /// The curve in its local parameter t ∈ [0, 1].
-    pub fn curve(&self) -> &Bezier<S, D> {
-        &self.curve
-    }
-
-    /// The interval [a, b].
-    pub fn interval(&self) -> (&S, &S) {
-        (&self.a, &self.b)
-    }
-
-    /// The local parameter t = (u − a)/(b − a) of the global parameter u.
-    pub fn local(&self, u: &S) -> S {
-        (u.clone() - &self.a) / (self.b.clone() - &self.a)
-    }
-
-    /// The point at the global parameter u (any u, also outside [a, b]).
-    ///
-    /// # Errors
-    ///
-    /// [`Error::InvalidParameter`] if `u` is NaN or infinite.
-    ///
-    /// # Complexity
-    ///
-    /// Θ(nD) time (Horner), O(D) auxiliary space.
-    pub fn eval(&self, u: &S) -> Result<Point<S, D>> {
-        validate_parameter(u, "u")?;
-        self.curve.eval(&self.local(u))
-    }
-
-    /// The r-th derivative with respect to the global parameter u: the local derivative
-    /// divided by (b − a)ʳ.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::InvalidParameter`] if `u` is NaN or infinite.
-    ///
-    /// # Complexity
-    ///
-    /// Θ(n²D + r) time, O(nD) auxiliary space.
-    pub fn derivative_at(&self, u: &S, r: usize) -> Result<Point<S, D>> {
-        validate_parameter(u, "u")?;
-        let local = self.curve.derivative_at(&self.local(u), r)?;
-        let width = self.b.clone() - &self.a;
-        let mut scale = S::one();
-        for _ in 0..r {
-            scale = scale * &width;
-        }
-        Ok(local / scale)
     }
 }
 

@@ -10,20 +10,23 @@
 //! |---|---|
 //! | `scalar.rs` | [`Scalar`], [`Point`], exact parsing of numbers, validation helpers |
 //! | `bernstein.rs` | [`bernstein`], [`bernstein_all`], [`bernstein_derivative`] |
-//! | `bezier.rs` | [`Bezier`]: de Casteljau, Horner, derivatives, split, restrict, blossom, box; [`Reparametrised`] |
-//! | `bezier_ops.rs` | degree elevation (Zhou), monomial conversion, integral, flattening, forward differences |
+//! | `bezier.rs` | [`Bezier`]: de Casteljau, Horner, derivatives, split, restrict, blossom, box |
+//! | `reparametrised.rs` | [`Reparametrised`]: a curve over a global interval [a, b] |
+//! | `bezier_ops.rs` | batch evaluation, degree elevation (Zhou), monomial conversion, integral, flattening, forward differences |
 //! | `intersect.rs` | [`intersections`] of two planar curves by subdivision with box pruning |
 
 mod bernstein;
 mod bezier;
 mod bezier_ops;
 mod intersect;
+mod reparametrised;
 mod scalar;
 
 pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
-pub use bezier::{Bezier, Reparametrised};
+pub use bezier::Bezier;
 pub use bezier_ops::MAX_FLATTEN_SEGMENTS;
 pub use intersect::{intersections, Intersection, MAX_INTERSECTION_PAIRS};
+pub use reparametrised::Reparametrised;
 pub use scalar::{
     binomial, parse_scalar, validate_parameter, validate_points, Finite, ParseScalar, Point, Scalar,
 };
