@@ -6,7 +6,7 @@
 
 use compgeo::count::NoCount;
 use compgeo::gen::{points, PointKind};
-use compgeo::spline::{Bezier, Point};
+use compgeo::spline::{Bezier, Finite, Point};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use kurbo::ParamCurve;
 use std::hint::black_box;
@@ -67,6 +67,29 @@ fn bench_cubic(c: &mut Criterion) {
                 let q = curve.eval(t).expect("finite parameter");
                 acc += q[0] + q[1];
             }
+            acc
+        })
+    });
+    let finite: Vec<Finite<f64>> = ts
+        .iter()
+        .map(|&t| Finite::new(t, "t").expect("finite"))
+        .collect();
+    group.bench_function("compgeo_generic_at", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for t in black_box(&finite) {
+                let q = curve.at(t);
+                acc += q[0] + q[1];
+            }
+            acc
+        })
+    });
+    group.bench_function("compgeo_generic_eval_each", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            curve
+                .eval_each(black_box(&ts), |q| acc += q[0] + q[1])
+                .expect("finite parameters");
             acc
         })
     });

@@ -57,6 +57,13 @@ pub enum Error {
         /// The offending weight.
         value: f64,
     },
+    /// A result is finite mathematically but beyond the range of `f64` (a derivative or a
+    /// restriction of a curve whose coordinates are near the top of the double range).
+    #[error("the result of {what} is beyond the range of f64")]
+    Overflow {
+        /// The operation, e.g. "derivative".
+        what: &'static str,
+    },
     /// A parameter is outside its valid domain (a knot vector that decreases, a size of zero,
     /// a Beta-spline parameter that makes the basis degenerate, ...).
     #[error("invalid {name}: {reason}")]

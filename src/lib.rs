@@ -17,6 +17,7 @@
 //! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
 //! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
 //! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the seed's divide and conquer, Lawson's flips), exact checker |
+//! | [`spline`] | Bernstein basis and Bézier curves, generic over the scalar (`f64`, exact rationals) and the dimension |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
 //! ## Algorithms and their bounds
@@ -66,6 +67,12 @@
 //! | [`delaunay::divide_and_conquer`] | O(n log n) worst case (Guibas–Stolfi merge) |
 //! | [`delaunay::lawson`] | O(n²) worst case: Θ(n²) in-circle tests on a parabola |
 //! | [`delaunay::check_delaunay`] | O(n log n + t), exact |
+//! | [`spline::Bezier::de_casteljau`] (degree n) | Θ(n²): exactly n(n+1)/2 affine combinations per point |
+//! | [`spline::Bezier::horner`], [`spline::Bezier::eval`] | Θ(n): n + 1 point operations per point |
+//! | [`spline::Bezier::split`], [`spline::Bezier::blossom`], [`spline::Bezier::derivative_at`] | Θ(n²) |
+//! | [`spline::Bezier::elevate_to`] (degree n to m) | Θ(mn) |
+//! | [`spline::Bezier::flatten`] | Θ(s·n²) for s segments, s = O(√(bound/tolerance)) |
+//! | [`spline::intersections`] | O(k·d·(m² + n²)) for k crossings found at depth d |
 //!
 //! ## A first example
 //!

@@ -191,7 +191,7 @@ fn run_typed<S: JsonScalar, const D: usize>(
             json!({"control": points(e.control())?, "degree": m})
         }
         Op::Derivative { order, t, .. } => {
-            let dcurve = b.derivative(*order);
+            let dcurve = b.derivative(*order)?;
             let mut out = json!({
                 "control": points(dcurve.control())?,
                 "degree": dcurve.degree(),

@@ -4,9 +4,10 @@
 //! A curve of degree n in R^D is `b(t) = Σᵢ bᵢ Bᵢⁿ(t)` with control points b₀, …, bₙ
 //! ([`Point<S, D>`]) and the Bernstein polynomials of [`bernstein`](super::bernstein()). The
 //! parameter t is the local one: b₀ = b(0) and bₙ = b(1), and every method accepts any real t,
-//! also outside [0, 1]. [`Reparametrised`] carries a curve over a global interval [a, b].
-//! Degree elevation, monomial conversion, integration, flattening and forward differencing
-//! are in `bezier_ops.rs`; curve/curve intersection in `intersect.rs`.
+//! also outside [0, 1]. [`Reparametrised`] (in `reparametrised.rs`) carries a curve over a
+//! global interval [a, b]. Batch evaluation, degree elevation, monomial conversion,
+//! integration, flattening and forward differencing are in `bezier_ops.rs`; curve/curve
+//! intersection in `intersect.rs`.
 //!
 //! Follows `000_f3201fe9758fe02a.txt` ch. 2 (§2.2 Bézier representation, §2.3 de Casteljau and
 //! Obs. 4 Horner, §2.4 derivatives, §2.6 the tetrahedral algorithm) and ch. 3 (§3.1–3.3
@@ -18,7 +19,8 @@
 //! equals the curve on its diagonal, derivative identities.
 
 use super::bernstein::falling_factorial;
-use super::scalar::{binomial, validate_parameter, validate_points, Point, Scalar};
+use super::reparametrised::Reparametrised;
+use super::scalar::{binomial, validate_parameter, validate_points, Finite, Point, Scalar};
 use crate::count::{Counter, NoCount};
 use crate::{Error, Result};
 
@@ -43,29 +45,6 @@ use crate::{Error, Result};
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bezier<S, const D: usize> {
     control: Vec<Point<S, D>>,
-}
-
-/// A Bézier curve over a global parameter interval [a, b], a < b: the point at u is the
-/// curve's point at the local parameter t = (u − a)/(b − a), and its r-th derivative with
-/// respect to u is the local one divided by (b − a)ʳ.
-///
-/// Follows `003_5b666ee3e15e6353.txt` §3.2 ("Reparametrización") and
-/// `000_f3201fe9758fe02a.txt` §2.2 (local and global parameter) and §2.4.
-///
-/// ```
-/// use compgeo::spline::{Bezier, Point};
-///
-/// let line = Bezier::new(vec![Point::new([0.0]), Point::new([10.0])])?;
-/// let on = line.reparametrise(2.0, 4.0)?;
-/// assert_eq!(on.eval(&3.0)?, Point::new([5.0]));
-/// assert_eq!(on.derivative_at(&3.0, 1)?, Point::new([5.0])); // 10 / (4 − 2)
-/// # Ok::<(), compgeo::Error>(())
-/// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct Reparametrised<S, const D: usize> {
-    curve: Bezier<S, D>,
-    a: S,
-    b: S,
 }
 
 impl<S: Scalar, const D: usize> Bezier<S, D> {
@@ -100,10 +79,12 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     }
 
     /// The same curve with `f64` coordinates (each rounded to the nearest double).
-    pub fn to_f64(&self) -> Bezier<f64, D> {
-        Bezier {
-            control: self.control.iter().map(Point::to_f64).collect(),
-        }
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Overflow`] if a coordinate is beyond the range of `f64`.
+    pub fn to_f64(&self) -> Result<Bezier<f64, D>> {
+        Bezier::derived(self.control.iter().map(Point::to_f64).collect(), "to_f64")
     }
 
     /// The curve of an `f64` curve's exact values in `S` (exact for rationals).
@@ -142,19 +123,53 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         }
     }
 
-    /// [`Bezier::eval`]'s rare path, out of line: a bad parameter, or an overflow of
-    /// Horner's binomials recomputed by de Casteljau's algorithm.
+    /// de Casteljau's algorithm for the overflow case of the evaluations, out of line.
     #[cold]
     #[inline(never)]
-    fn eval_slow(&self, t: &S) -> Result<Point<S, D>> {
-        validate_parameter(t, "t")?;
+    pub(crate) fn de_casteljau_cold(&self, t: &S) -> Point<S, D> {
         let mut q = self.control.clone();
         for k in 1..q.len() {
             for i in 0..q.len() - k {
                 q[i] = Point::lerp(&q[i], &q[i + 1], t);
             }
         }
-        Ok(q.swap_remove(0))
+        q.swap_remove(0)
+    }
+
+    /// The point b(t) at a parameter validated beforehand: [`Bezier::eval`] without the
+    /// `Result`, for loops over many parameters checked once (or generated finite).
+    ///
+    /// # Complexity
+    ///
+    /// As [`Bezier::eval`]: Θ(nD) time, O(D) auxiliary space.
+    ///
+    /// ```
+    /// use compgeo::spline::{Bezier, Finite, Point};
+    ///
+    /// let b = Bezier::new(vec![Point::new([0.0]), Point::new([0.0]), Point::new([1.0])])?;
+    /// let ts = [0.0, 0.5, 2.0].map(|t| Finite::new(t, "t")).into_iter().collect::<Result<Vec<_>, _>>()?;
+    /// let ys: Vec<_> = ts.iter().map(|t| b.at(t)[0]).collect();
+    /// assert_eq!(ys, [0.0, 0.25, 4.0]);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    #[inline]
+    pub fn at(&self, t: &Finite<S>) -> Point<S, D> {
+        let t = t.get();
+        let p = self.horner_unchecked(t, &mut NoCount);
+        if p.is_finite() {
+            p
+        } else {
+            self.de_casteljau_cold(t)
+        }
+    }
+
+    /// [`Bezier::eval`]'s rare path, out of line: a bad parameter, or an overflow of
+    /// Horner's binomials recomputed by de Casteljau's algorithm.
+    #[cold]
+    #[inline(never)]
+    fn eval_slow(&self, t: &S) -> Result<Point<S, D>> {
+        validate_parameter(t, "t")?;
+        Ok(self.de_casteljau_cold(t))
     }
 
     /// The point b(t) by de Casteljau's algorithm. See [`Bezier::de_casteljau_with`].
@@ -283,7 +298,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// # Errors
     ///
-    /// [`Error::InvalidParameter`] if `c` is NaN or infinite.
+    /// [`Error::InvalidParameter`] if `c` is NaN or infinite; [`Error::Overflow`] if c is so
+    /// far outside [0, 1] that a control point is beyond the range of `f64`.
     ///
     /// # Complexity
     ///
@@ -300,7 +316,11 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// ```
     pub fn split(&self, c: &S) -> Result<(Self, Self)> {
         validate_parameter(c, "c")?;
-        Ok(self.split_unchecked(c))
+        let (left, right) = self.split_unchecked(c);
+        Ok((
+            Bezier::derived(left.control, "split")?,
+            Bezier::derived(right.control, "split")?,
+        ))
     }
 
     /// The control points of the same polynomial over the oriented interval [a, b]: the
@@ -314,7 +334,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// # Errors
     ///
-    /// [`Error::InvalidParameter`] if `a` or `b` is NaN or infinite.
+    /// [`Error::InvalidParameter`] if `a` or `b` is NaN or infinite; [`Error::Overflow`] if
+    /// a new control point is beyond the range of `f64`.
     ///
     /// # Complexity
     ///
@@ -339,7 +360,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             args[n - i] = b.clone();
             control.push(self.blossom_unchecked(&args));
         }
-        Ok(Bezier { control })
+        Bezier::derived(control, "restrict")
     }
 
     /// The same curve traversed backwards: control points in reverse order, so the new curve
@@ -370,12 +391,16 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
                 reason: format!("needs a < b, got a = {} and b = {}", a.to_f64(), b.to_f64()),
             });
         }
-        Ok(Reparametrised { curve: self, a, b })
+        Ok(Reparametrised::new_unchecked(self, a, b))
     }
 
     /// The hodograph: the first derivative as a Bézier curve of degree n − 1 with control
     /// points n·Δbᵢ = n(bᵢ₊₁ − bᵢ). See [`Bezier::derivative`].
-    pub fn hodograph(&self) -> Self {
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Overflow`] as for [`Bezier::derivative`].
+    pub fn hodograph(&self) -> Result<Self> {
         self.derivative(1)
     }
 
@@ -384,6 +409,11 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// Follows `000_f3201fe9758fe02a.txt` §2.4 and `003_5b666ee3e15e6353.txt` §3.2
     /// ("Derivadas").
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Overflow`] if a control point of the derivative is beyond the range of `f64`
+    /// (differences of coordinates near ±1.8e308).
     ///
     /// # Complexity
     ///
@@ -394,17 +424,17 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// // b(t) = t² has Bézier points 0, 0, 1; b' = 2t has 0, 2; b'' = 2.
     /// let b = Bezier::new(vec![Point::new([0.0]), Point::new([0.0]), Point::new([1.0])])?;
-    /// assert_eq!(b.derivative(1).control(), [Point::new([0.0]), Point::new([2.0])]);
-    /// assert_eq!(b.derivative(2).control(), [Point::new([2.0])]);
-    /// assert_eq!(b.derivative(3).control(), [Point::new([0.0])]);
+    /// assert_eq!(b.derivative(1)?.control(), [Point::new([0.0]), Point::new([2.0])]);
+    /// assert_eq!(b.derivative(2)?.control(), [Point::new([2.0])]);
+    /// assert_eq!(b.derivative(3)?.control(), [Point::new([0.0])]);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
-    pub fn derivative(&self, r: usize) -> Self {
+    pub fn derivative(&self, r: usize) -> Result<Self> {
         let n = self.degree();
         if r > n {
-            return Bezier {
+            return Ok(Bezier {
                 control: vec![Point::zero()],
-            };
+            });
         }
         let mut q = self.control.clone();
         forward_differences_in_place(&mut q, r);
@@ -412,7 +442,18 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         for p in &mut q {
             *p = p.clone() * &factor;
         }
-        Bezier { control: q }
+        Bezier::derived(q, "derivative")
+    }
+
+    /// A curve computed from a valid one: non-empty by construction, finite unless the
+    /// computation overflowed `f64`.
+    pub(crate) fn derived(control: Vec<Point<S, D>>, what: &'static str) -> Result<Self> {
+        debug_assert!(!control.is_empty());
+        if control.iter().all(Point::is_finite) {
+            Ok(Bezier { control })
+        } else {
+            Err(Error::Overflow { what })
+        }
     }
 
     /// The r-th derivative b⁽ʳ⁾(t) at one parameter, by the tetrahedral algorithm.
@@ -551,7 +592,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// Horner's scheme of Obs. 4 without validation (t finite); inlined so that the
     /// closed forms of degrees 1 to 3 compile into the caller's loop.
     #[inline(always)]
-    fn horner_unchecked<C: Counter>(&self, t: &S, counter: &mut C) -> Point<S, D> {
+    pub(crate) fn horner_unchecked<C: Counter>(&self, t: &S, counter: &mut C) -> Point<S, D> {
         let b = &self.control;
         let n = b.len() - 1;
         counter.arithmetic_operation();
@@ -608,58 +649,6 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         }
         counter.arithmetic_operation();
         acc + &(b[n].clone() * (ti * t))
-    }
-}
-
-impl<S: Scalar, const D: usize> Reparametrised<S, D> {
-    /// The curve in its local parameter t ∈ [0, 1].
-    pub fn curve(&self) -> &Bezier<S, D> {
-        &self.curve
-    }
-
-    /// The interval [a, b].
-    pub fn interval(&self) -> (&S, &S) {
-        (&self.a, &self.b)
-    }
-
-    /// The local parameter t = (u − a)/(b − a) of the global parameter u.
-    pub fn local(&self, u: &S) -> S {
-        (u.clone() - &self.a) / (self.b.clone() - &self.a)
-    }
-
-    /// The point at the global parameter u (any u, also outside [a, b]).
-    ///
-    /// # Errors
-    ///
-    /// [`Error::InvalidParameter`] if `u` is NaN or infinite.
-    ///
-    /// # Complexity
-    ///
-    /// Θ(nD) time (Horner), O(D) auxiliary space.
-    pub fn eval(&self, u: &S) -> Result<Point<S, D>> {
-        validate_parameter(u, "u")?;
-        self.curve.eval(&self.local(u))
-    }
-
-    /// The r-th derivative with respect to the global parameter u: the local derivative
-    /// divided by (b − a)ʳ.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::InvalidParameter`] if `u` is NaN or infinite.
-    ///
-    /// # Complexity
-    ///
-    /// Θ(n²D + r) time, O(nD) auxiliary space.
-    pub fn derivative_at(&self, u: &S, r: usize) -> Result<Point<S, D>> {
-        validate_parameter(u, "u")?;
-        let local = self.curve.derivative_at(&self.local(u), r)?;
-        let width = self.b.clone() - &self.a;
-        let mut scale = S::one();
-        for _ in 0..r {
-            scale = scale * &width;
-        }
-        Ok(local / scale)
     }
 }
 
@@ -752,7 +741,7 @@ mod tests {
             assert_eq!(b.eval(&t).unwrap(), Point::new([2.0, -1.0]));
             assert_eq!(b.de_casteljau(&t).unwrap(), Point::new([2.0, -1.0]));
         }
-        assert_eq!(b.hodograph().control(), [Point::new([0.0, 0.0])]);
+        assert_eq!(b.hodograph().unwrap().control(), [Point::new([0.0, 0.0])]);
         assert_eq!(b.blossom(&[]).unwrap(), Point::new([2.0, -1.0]));
     }
 

@@ -1,4 +1,5 @@
-//! Operations that change a Bézier curve's representation or sample it: degree elevation
+//! Operations that change a Bézier curve's representation or sample it: batch evaluation,
+//! degree elevation
 //! (by one and, by Zhou's formula, to any degree), monomial ↔ Bézier conversion, integration,
 //! flattening by recursive subdivision and evaluation on a uniform grid by forward
 //! differences.
@@ -9,6 +10,7 @@
 
 use super::bezier::{binomial_coefficient, Bezier};
 use super::scalar::{validate_parameter, validate_points, Point, Scalar};
+use crate::count::NoCount;
 use crate::{Error, Result};
 
 /// The largest number of segments [`Bezier::flatten`] produces before it reports that the
@@ -19,6 +21,109 @@ pub const MAX_FLATTEN_SEGMENTS: usize = 1 << 20;
 const MAX_FLATTEN_DEPTH: usize = 40;
 
 impl<S: Scalar, const D: usize> Bezier<S, D> {
+    /// Calls `f(b(tᵢ))` for every parameter tᵢ in order: [`Bezier::eval`] over a batch, with
+    /// the checks hoisted out of the loop, for sampling a curve densely (plotting, tables).
+    ///
+    /// Idea: one pass validates the parameters and bounds |t| + |1 − t| by w; for degree
+    /// n ≤ 3 every intermediate of the Horner nesting is at most 8·M·wⁿ in absolute value
+    /// (M the largest control coordinate), so when that bound is finite no result can
+    /// overflow and the closed form runs in a loop with no branch at all. Otherwise (and for
+    /// n ≥ 4) each point is evaluated as [`Bezier::at`] does.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidParameter`] naming the index of the first NaN or infinite parameter,
+    /// before `f` is called at all.
+    ///
+    /// # Complexity
+    ///
+    /// Θ(m·nD) time for m parameters, O(D) auxiliary space.
+    ///
+    /// ```
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// let b = Bezier::new(vec![Point::new([0.0]), Point::new([0.0]), Point::new([1.0])])?;
+    /// let mut ys = Vec::new();
+    /// b.eval_each(&[0.0, 0.5, 2.0], |p| ys.push(p[0]))?;
+    /// assert_eq!(ys, [0.0, 0.25, 4.0]);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn eval_each<F: FnMut(Point<S, D>)>(&self, ts: &[S], mut f: F) -> Result<()> {
+        // One pass: are all parameters finite, and how large is |t| + |1 − t|?
+        let mut finite = true;
+        let mut w = 1.0f64;
+        for t in ts {
+            finite &= t.is_finite();
+            if !S::EXACT {
+                let x = t.to_f64();
+                let a = x.abs() + (1.0 - x).abs();
+                w = if a > w { a } else { w };
+            }
+        }
+        if !finite {
+            let i = ts.iter().position(|t| !t.is_finite()).unwrap_or(0);
+            return Err(Error::InvalidParameter {
+                name: "t",
+                reason: format!("parameter {i} must be finite, got {}", ts[i].to_f64()),
+            });
+        }
+        let n = self.degree();
+        let safe = S::EXACT || (n <= 3 && self.no_overflow_bound(w));
+        let b = self.control();
+        match (safe, b) {
+            (true, [b0, b1]) => {
+                for t in ts {
+                    f(b0.clone() * (S::one() - t) + &(b1.clone() * t));
+                }
+            }
+            (true, [b0, b1, b2]) => {
+                let two = S::from_i64(2);
+                for t in ts {
+                    let u = S::one() - t;
+                    f((b0.clone() * &u + &(b1.clone() * (two.clone() * t))) * &u
+                        + &(b2.clone() * (t.clone() * t)));
+                }
+            }
+            (true, [b0, b1, b2, b3]) => {
+                let three = S::from_i64(3);
+                for t in ts {
+                    let u = S::one() - t;
+                    let t2 = t.clone() * t;
+                    f(
+                        ((b0.clone() * &u + &(b1.clone() * (three.clone() * t))) * &u
+                            + &(b2.clone() * (three.clone() * &t2)))
+                            * &u
+                            + &(b3.clone() * (t2 * t)),
+                    );
+                }
+            }
+            _ => {
+                for t in ts {
+                    let p = self.horner_unchecked(t, &mut NoCount);
+                    f(if p.is_finite() {
+                        p
+                    } else {
+                        self.de_casteljau_cold(t)
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// `8·M·wⁿ` is finite (with a factor 2 of slack for rounding), for M the largest control
+    /// coordinate and w a bound on |t| + |1 − t|: then no Horner step of degree n ≤ 3
+    /// overflows.
+    fn no_overflow_bound(&self, w: f64) -> bool {
+        let mut m = 0.0f64;
+        for p in self.control() {
+            for c in p.coords() {
+                m = m.max(c.to_f64().abs());
+            }
+        }
+        (16.0 * m * w.powi(self.degree() as i32)).is_finite()
+    }
+
     /// The same curve with degree n + 1: `cᵢ = i/(n+1) bᵢ₋₁ + (1 − i/(n+1)) bᵢ`.
     ///
     /// Idea: the blossom of degree n + 1 that averages the degree-n blossom over the argument
@@ -31,15 +136,20 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// Θ(nD) time and space for the result.
     ///
+    /// # Errors
+    ///
+    /// [`Error::Overflow`] if rounding carries a new point beyond the range of `f64` (only
+    /// for coordinates within an ulp of ±`f64::MAX`).
+    ///
     /// ```
     /// use compgeo::spline::{Bezier, Point};
     ///
     /// let line = Bezier::new(vec![Point::new([0.0]), Point::new([2.0])])?;
-    /// let q = line.elevate();
+    /// let q = line.elevate()?;
     /// assert_eq!(q.control(), [Point::new([0.0]), Point::new([1.0]), Point::new([2.0])]);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
-    pub fn elevate(&self) -> Self {
+    pub fn elevate(&self) -> Result<Self> {
         let b = self.control();
         let n = self.degree();
         let den = (n + 1) as i64;
@@ -51,7 +161,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             control.push(Point::combine(&b[i - 1], &w, &b[i], &v));
         }
         control.push(b[n].clone());
-        Bezier::from_control_unchecked(control)
+        Bezier::derived(control, "degree elevation")
     }
 
     /// The same curve with degree m ≥ n, in one step by Zhou's formula
@@ -63,7 +173,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Errors
     ///
     /// [`Error::InvalidParameter`] if `m < n` (that would be degree reduction, an
-    /// approximation).
+    /// approximation); [`Error::Overflow`] as for [`Bezier::elevate`].
     ///
     /// # Complexity
     ///
@@ -102,7 +212,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             }
             control.push(d);
         }
-        Ok(Bezier::from_control_unchecked(control))
+        Bezier::derived(control, "degree elevation")
     }
 
     /// The coefficients a₀, …, aₙ of the power form `b(t) = Σᵢ aᵢ tⁱ`:
@@ -147,7 +257,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Errors
     ///
     /// [`Error::Empty`] for no coefficients; [`Error::NonFinite`] naming the first
-    /// coefficient with a NaN or infinite coordinate.
+    /// coefficient with a NaN or infinite coordinate; [`Error::Overflow`] if a control point
+    /// is beyond the range of `f64`.
     ///
     /// # Complexity
     ///
@@ -177,7 +288,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
                 b
             })
             .collect();
-        Ok(Bezier::from_control_unchecked(control))
+        Bezier::derived(control, "conversion from the monomial form")
     }
 
     /// The antiderivative with value `start` at t = 0, a curve of degree n + 1:
@@ -187,7 +298,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// # Errors
     ///
-    /// [`Error::NonFinite`] if `start` has a NaN or infinite coordinate.
+    /// [`Error::NonFinite`] if `start` has a NaN or infinite coordinate; [`Error::Overflow`]
+    /// if a control point is beyond the range of `f64`.
     ///
     /// # Complexity
     ///
@@ -209,10 +321,10 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         let mut c = start;
         control.push(c.clone());
         for b in self.control() {
-            c = c + &(b.clone() / &den);
+            c += &(b.clone() / &den);
             control.push(c.clone());
         }
-        Ok(Bezier::from_control_unchecked(control))
+        Bezier::derived(control, "integration")
     }
 
     /// `∫₀¹ b(t) dt = (b₀ + ⋯ + bₙ)/(n + 1)`.
@@ -348,12 +460,6 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             out.push(e[0].clone());
         }
         Ok(out)
-    }
-
-    /// A curve from control points known to be non-empty and finite.
-    pub(crate) fn from_control_unchecked(control: Vec<Point<S, D>>) -> Self {
-        debug_assert!(!control.is_empty());
-        Bezier::new(control).expect("control points derived from a valid curve")
     }
 }
 
