@@ -26,10 +26,13 @@
 //! [`check_delaunay`] verifies all of this exactly; the tests run it on every builder.
 
 mod check;
+mod construct;
 mod hilbert;
 mod incremental;
 mod triangulation;
+mod voronoi;
 
 pub use check::check_delaunay;
 pub use incremental::{incremental, incremental_with};
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
+pub use voronoi::{dual, voronoi, voronoi_with, Cell, ClipBox, Ray, Voronoi};

@@ -1,0 +1,678 @@
+//! The Voronoi diagram as the dual of the Delaunay triangulation, and its clipping to a box.
+
+use super::construct::{circumcentre, midpoint, scale_of, unit_direction};
+use super::incremental::incremental_with;
+use super::triangulation::{next_halfedge, prev_halfedge, Triangulation, EMPTY};
+use crate::count::{Counter, NoCount};
+use crate::error::{Error, Result};
+use crate::geometry::Point2;
+
+/// The Voronoi diagram of a point set: one cell per distinct site.
+///
+/// Cell `k` belongs to site `sites[k]` (an index into the caller's points; sites ascend).
+/// Its boundary, counter-clockwise around the site, is stored as
+/// [`cell_vertices(k)`](Voronoi::cell_vertices) (indices into `vertices`) and
+/// [`cell_rays(k)`](Voronoi::cell_rays); see [`Cell`] for how the two combine.
+/// Every input point has a cell: [`cell_of`](Voronoi::cell_of) maps a duplicate to the cell
+/// of the point it was merged into.
+///
+/// `vertices[t]` is the circumcentre of triangle `t` of the triangulation the diagram was
+/// built from, so cocircular sites give several equal vertices (one per triangle).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Voronoi {
+    /// The Voronoi vertices: the circumcentre of every Delaunay triangle, in triangle order
+    /// (rounded constructions, see [`voronoi`]).
+    pub vertices: Vec<Point2>,
+    /// The site of each cell, ascending.
+    pub sites: Vec<usize>,
+    vertex_start: Vec<usize>,
+    vertex_ids: Vec<usize>,
+    ray_start: Vec<usize>,
+    rays: Vec<Ray>,
+    cell_of: Vec<usize>,
+}
+
+/// One cell of a [`Voronoi`] diagram, borrowed from it.
+///
+/// The boundary, counter-clockwise around `site`, is made of chains. A bounded cell is one
+/// closed chain: the polygon `vertices`. An unbounded cell of a triangulated point set has
+/// one chain: it arrives from infinity along `rays[0]` (which starts at `vertices[0]` and
+/// points away, to infinity), passes through `vertices` and leaves along `rays[1]` (from the
+/// last vertex). For collinear sites there are no vertices: each bisector line of the
+/// cell's boundary is a chain of two opposite rays from the midpoint of the two sites
+/// (`rays[2k]` arriving, `rays[2k + 1]` leaving). A single site's cell is the whole plane:
+/// no vertices, no rays, unbounded.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cell<'a> {
+    /// The site (an index into the caller's points).
+    pub site: usize,
+    /// The finite vertices, counter-clockwise, as indices into [`Voronoi::vertices`].
+    pub vertices: &'a [usize],
+    /// The rays, in pairs (arriving, leaving) per chain of the boundary; empty iff bounded
+    /// or the only site.
+    pub rays: &'a [Ray],
+    /// Whether the cell is a bounded polygon: exactly when the site is not on the convex
+    /// hull's boundary (Theorem 2.32), decided from the triangulation's topology.
+    pub bounded: bool,
+}
+
+/// A half-line of a cell's boundary, on the bisector of two sites.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Ray {
+    /// Where it starts: a Voronoi vertex, or for collinear sites the midpoint of the two.
+    pub origin: Point2,
+    /// A unit vector pointing to infinity (rounded), perpendicular to `sites[1] - sites[0]`.
+    pub direction: Point2,
+    /// The cell's site and the site across the ray.
+    pub sites: [usize; 2],
+}
+
+/// An axis-parallel box to clip Voronoi cells to: `min.x < max.x`, `min.y < max.y`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ClipBox {
+    /// The lower-left corner.
+    pub min: Point2,
+    /// The upper-right corner.
+    pub max: Point2,
+}
+
+impl ClipBox {
+    /// The box `[x0, x1] × [y0, y1]`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] (name `"box"`) if a coordinate is not finite or the box is
+    /// empty or flat (`x0 >= x1` or `y0 >= y1`).
+    ///
+    /// ```
+    /// use compgeo::delaunay::ClipBox;
+    ///
+    /// assert!(ClipBox::new(0.0, 0.0, 1.0, 2.0).is_ok());
+    /// assert!(ClipBox::new(0.0, 0.0, 0.0, 2.0).is_err());
+    /// assert!(ClipBox::new(0.0, f64::NAN, 1.0, 2.0).is_err());
+    /// ```
+    pub fn new(x0: f64, y0: f64, x1: f64, y1: f64) -> Result<ClipBox> {
+        if ![x0, y0, x1, y1].iter().all(|v| v.is_finite()) || x0 >= x1 || y0 >= y1 {
+            return Err(Error::InvalidParameter {
+                name: "box",
+                reason: format!(
+                    "[{x0}, {y0}, {x1}, {y1}] is not a box x0 < x1, y0 < y1 of finite numbers"
+                ),
+            });
+        }
+        Ok(ClipBox {
+            min: Point2::new(x0, y0),
+            max: Point2::new(x1, y1),
+        })
+    }
+
+    /// The default box for `points`: their bounding box grown by a quarter of its larger side
+    /// on every side (by a quarter of the largest coordinate, or 1, if the points coincide),
+    /// clamped to the finite range.
+    ///
+    /// # Errors
+    /// [`Error::Empty`] for no points; [`Error::NonFinite`] for a NaN or infinite coordinate.
+    ///
+    /// ```
+    /// use compgeo::delaunay::ClipBox;
+    /// use compgeo::geometry::Point2;
+    ///
+    /// let b = ClipBox::around(&[Point2::new(0.0, 0.0), Point2::new(4.0, 2.0)])?;
+    /// assert_eq!((b.min, b.max), (Point2::new(-1.0, -1.0), Point2::new(5.0, 3.0)));
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn around(points: &[Point2]) -> Result<ClipBox> {
+        crate::geometry::validate(points)?;
+        let Some(&first) = points.first() else {
+            return Err(Error::Empty { what: "point set" });
+        };
+        let (mut lo, mut hi) = (first, first);
+        for p in points {
+            lo = Point2::new(lo.x.min(p.x), lo.y.min(p.y));
+            hi = Point2::new(hi.x.max(p.x), hi.y.max(p.y));
+        }
+        let side = (hi.x / 4.0 - lo.x / 4.0).max(hi.y / 4.0 - lo.y / 4.0);
+        let margin = if side > 0.0 {
+            side
+        } else {
+            let m = lo.x.abs().max(lo.y.abs()) / 4.0;
+            if m > 0.0 {
+                m
+            } else {
+                1.0
+            }
+        };
+        let grow = |v: f64, d: f64| (v + d).clamp(-f64::MAX, f64::MAX);
+        Ok(ClipBox {
+            min: Point2::new(grow(lo.x, -margin), grow(lo.y, -margin)),
+            max: Point2::new(grow(hi.x, margin), grow(hi.y, margin)),
+        })
+    }
+}
+
+impl Voronoi {
+    /// The number of cells (distinct sites).
+    pub fn cell_count(&self) -> usize {
+        self.sites.len()
+    }
+
+    /// Cell `k`. Panics if `k >= cell_count()`.
+    pub fn cell(&self, k: usize) -> Cell<'_> {
+        let rays = self.cell_rays(k);
+        Cell {
+            site: self.sites[k],
+            vertices: self.cell_vertices(k),
+            rays,
+            bounded: rays.is_empty() && self.sites.len() > 1,
+        }
+    }
+
+    /// The cells in site order.
+    pub fn cells(&self) -> impl ExactSizeIterator<Item = Cell<'_>> + '_ {
+        (0..self.cell_count()).map(|k| self.cell(k))
+    }
+
+    /// The finite vertices of cell `k`, counter-clockwise. Panics if `k` is out of range.
+    pub fn cell_vertices(&self, k: usize) -> &[usize] {
+        &self.vertex_ids[self.vertex_start[k]..self.vertex_start[k + 1]]
+    }
+
+    /// The rays of cell `k` (see [`Cell`]). Panics if `k` is out of range.
+    pub fn cell_rays(&self, k: usize) -> &[Ray] {
+        &self.rays[self.ray_start[k]..self.ray_start[k + 1]]
+    }
+
+    /// The cell holding input point `i` (a duplicate shares the cell of the point it was
+    /// merged into). Panics if `i` is not an index of the input.
+    pub fn cell_of(&self, i: usize) -> usize {
+        self.cell_of[i]
+    }
+
+    /// Cell `k` intersected with `bounds`, as a counter-clockwise polygon (empty if they do
+    /// not overlap in an area). Panics if `k` is out of range.
+    ///
+    /// The cell's rays are cut at points far enough that the cut cannot reach the box, and
+    /// the polygon is clipped to the box's four sides (Sutherland–Hodgman); the crossing
+    /// points lie exactly on the box's sides. Coordinates are rounded constructions. The
+    /// computation runs in a frame scaled by a power of two to the box's magnitude; Voronoi
+    /// vertices more than 2^600 times the box's largest coordinate away are pulled in to
+    /// that distance, which only matters for cells whose shape inside the box is then
+    /// below the precision of `f64` anyway.
+    ///
+    /// # Complexity
+    /// O(k) time and space for a cell with k vertices.
+    pub fn clip_cell(&self, k: usize, bounds: &ClipBox) -> Vec<Point2> {
+        let s = scale_of(
+            bounds
+                .min
+                .x
+                .abs()
+                .max(bounds.min.y.abs())
+                .max(bounds.max.x.abs())
+                .max(bounds.max.y.abs()),
+        ) * 2.0;
+        let scaled = |p: Point2| {
+            let c = |v: f64| (v / s).clamp(-FAR, FAR);
+            Point2::new(c(p.x), c(p.y))
+        };
+        let cell = self.cell(k);
+        let mut poly: Vec<Point2> = cell
+            .vertices
+            .iter()
+            .map(|&v| scaled(self.vertices[v]))
+            .collect();
+        if !cell.bounded {
+            poly = unbounded_polygon(&poly, cell.rays, scaled);
+        }
+        let lo = Point2::new(bounds.min.x / s, bounds.min.y / s);
+        let hi = Point2::new(bounds.max.x / s, bounds.max.y / s);
+        for side in [
+            Side::Right(hi.x),
+            Side::Top(hi.y),
+            Side::Left(lo.x),
+            Side::Bottom(lo.y),
+        ] {
+            poly = clip_side(&poly, side);
+        }
+        let mut out: Vec<Point2> = Vec::with_capacity(poly.len());
+        for p in poly {
+            let q = Point2::new(
+                (p.x * s).clamp(bounds.min.x, bounds.max.x),
+                (p.y * s).clamp(bounds.min.y, bounds.max.y),
+            );
+            if out.last() != Some(&q) {
+                out.push(q);
+            }
+        }
+        while out.len() > 1 && out.first() == out.last() {
+            out.pop();
+        }
+        if out.len() < 3 {
+            out.clear();
+        }
+        out
+    }
+
+    /// Every cell intersected with `bounds` ([`clip_cell`](Voronoi::clip_cell)), in cell
+    /// order.
+    ///
+    /// # Complexity
+    /// O(n) time and space for n sites (the cells' vertex counts sum to less than 6n).
+    ///
+    /// ```
+    /// use compgeo::delaunay::{voronoi, ClipBox};
+    /// use compgeo::geometry::Point2;
+    ///
+    /// let pts = [(0.0, 0.0), (2.0, 0.0)].map(Point2::from);
+    /// let v = voronoi(&pts)?;
+    /// let cells = v.clip(&ClipBox::new(-1.0, -1.0, 3.0, 1.0)?);
+    /// // The bisector x = 1 splits the box in two.
+    /// assert_eq!(cells[0], [(1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0)].map(Point2::from));
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn clip(&self, bounds: &ClipBox) -> Vec<Vec<Point2>> {
+        (0..self.cell_count())
+            .map(|k| self.clip_cell(k, bounds))
+            .collect()
+    }
+}
+
+/// The Voronoi diagram of `points`, computed as the dual of their Delaunay triangulation
+/// (the crate's [`incremental`](super::incremental) builder).
+///
+/// The idea (`003_5b666ee3e15e6353.txt`, §2.4 "Diagrama de Voronoi", Observations 2.29 and
+/// Theorems 2.30–2.32, Corollary 2.33 and Definition 2.34): the Voronoi vertices are the
+/// centres of the empty circles through three sites, i.e. the circumcentres of the Delaunay
+/// triangles, and the cell of a site is the polygon of the circumcentres of the triangles
+/// around it, in the same rotational order. A site on the hull has an unbounded cell whose
+/// two rays lie on the bisectors of its two hull edges, pointing outwards.
+///
+/// Exact and rounded parts: every decision is topological, taken from the exact
+/// triangulation: which cells are bounded (the site is not on the hull), the cyclic order
+/// of a cell's vertices (the triangles around the site), which hull edge a ray is
+/// perpendicular to. The *coordinates* of the vertices, ray origins and ray directions are
+/// constructions, rounded to `f64` (computed on differences scaled by a power of two, so
+/// they neither overflow nor vanish for any finite input; a circumcentre beyond `f64`'s
+/// range, from a nearly flat triangle at a huge scale, is clamped to `±f64::MAX`).
+///
+/// Degenerate input: cocircular sites give coincident vertices (one per triangle);
+/// duplicates share the cell of the point they were merged into; collinear sites (no
+/// triangles) give strips and two half-planes bounded by the perpendicular bisectors of
+/// consecutive sites, with no vertices; a single site's cell is the whole plane.
+///
+/// # Errors
+/// [`Error::Empty`] for no points; the errors of [`incremental`](super::incremental)
+/// ([`Error::NonFinite`] naming a NaN or infinite coordinate).
+///
+/// # Complexity
+/// O(n log n) expected time (the triangulation) and O(n) time and space for the dual,
+/// for n points.
+///
+/// # Counts
+/// See [`voronoi_with`]: the triangulation's orientation and in-circle tests.
+///
+/// ```
+/// use compgeo::delaunay::voronoi;
+/// use compgeo::geometry::Point2;
+///
+/// // A square with its centre: the centre's cell is the bounded diamond.
+/// let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (1.0, 1.0)].map(Point2::from);
+/// let v = voronoi(&pts)?;
+/// assert_eq!(v.cell_count(), 5);
+/// let centre = v.cell(4);
+/// assert!(centre.bounded);
+/// let diamond: Vec<Point2> = centre.vertices.iter().map(|&k| v.vertices[k]).collect();
+/// assert_eq!(diamond.len(), 4);
+/// assert!(diamond.contains(&Point2::new(1.0, 0.0)) && diamond.contains(&Point2::new(0.0, 1.0)));
+/// assert!(v.cells().take(4).all(|c| !c.bounded && c.rays.len() == 2));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn voronoi(points: &[Point2]) -> Result<Voronoi> {
+    voronoi_with(points, &mut NoCount)
+}
+
+/// [`voronoi`], recording the triangulation's orientation and in-circle tests in `counter`
+/// (the dual itself makes no geometric decision).
+///
+/// # Errors
+/// As [`voronoi`].
+///
+/// # Complexity
+/// As [`voronoi`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::delaunay::voronoi_with;
+/// use compgeo::gen::{points, PointKind};
+///
+/// let pts = points(PointKind::UniformSquare, 500, 3)?;
+/// let mut counts = Counts::default();
+/// let v = voronoi_with(&pts, &mut counts)?;
+/// assert_eq!(v.cell_count(), 500);
+/// assert!(counts.incircle_tests > 0);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn voronoi_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Voronoi> {
+    if points.is_empty() {
+        return Err(Error::Empty { what: "point set" });
+    }
+    let t = incremental_with(points, counter)?;
+    Ok(dual(points, &t))
+}
+
+/// The Voronoi diagram dual to `t`, a Delaunay triangulation of `points` from one of the
+/// crate's builders (see [`voronoi`] for what is exact and what is rounded).
+///
+/// If `t` is not a Delaunay triangulation of `points` the result is the dual of whatever
+/// it is (circumcentres and cells around its vertices), which is not a Voronoi diagram.
+///
+/// # Complexity
+/// O(n + t) time and space for n points and t triangles.
+///
+/// ```
+/// use compgeo::delaunay::{dual, incremental};
+/// use compgeo::geometry::Point2;
+///
+/// let pts = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.0)].map(Point2::from);
+/// let v = dual(&pts, &incremental(&pts)?);
+/// // Collinear sites: two half-planes and a strip, bounded by the bisectors x = 0.5, 1.5.
+/// assert!(v.vertices.is_empty());
+/// assert_eq!(v.cell(1).rays.len(), 4);
+/// assert_eq!(v.cell(1).rays[0].origin, Point2::new(1.5, 0.0));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn dual(points: &[Point2], t: &Triangulation) -> Voronoi {
+    let n = points.len();
+    let mut cell_of = vec![usize::MAX; n];
+    let mut is_site = vec![true; n];
+    for &[dropped, _] in &t.duplicates {
+        is_site[dropped] = false;
+    }
+    let sites: Vec<usize> = (0..n).filter(|&i| is_site[i]).collect();
+    for (k, &s) in sites.iter().enumerate() {
+        cell_of[s] = k;
+    }
+    for &[dropped, kept] in &t.duplicates {
+        cell_of[dropped] = cell_of[kept];
+    }
+    let mut v = Voronoi {
+        vertices: Vec::new(),
+        sites,
+        vertex_start: vec![0],
+        vertex_ids: Vec::new(),
+        ray_start: vec![0],
+        rays: Vec::new(),
+        cell_of,
+    };
+    if t.is_empty() {
+        collinear_cells(points, t, &mut v);
+    } else {
+        triangulated_cells(points, t, &mut v);
+    }
+    v
+}
+
+/// `FAR` bounds scaled coordinates, keeping every product in the clipper finite.
+const FAR: f64 = 4.149515568880993e180; // 2^600
+
+/// The cells of a triangulated point set: walk counter-clockwise around every site.
+fn triangulated_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
+    let tri = &t.triangles;
+    v.vertices = tri
+        .chunks_exact(3)
+        .map(|c| circumcentre(points[c[0]], points[c[1]], points[c[2]]))
+        .collect();
+    // One outgoing half-edge per vertex, the hull edge for hull vertices, so the walk
+    // around a hull vertex starts at its clockwise-most triangle.
+    let mut out_edge = vec![EMPTY; points.len()];
+    for (e, &a) in tri.iter().enumerate() {
+        if out_edge[a] == EMPTY || t.halfedges[e] == EMPTY {
+            out_edge[a] = e;
+        }
+    }
+    v.vertex_ids.reserve(tri.len());
+    v.vertex_start.reserve(v.sites.len());
+    v.ray_start.reserve(v.sites.len());
+    for &site in &v.sites {
+        let first = out_edge[site];
+        let mut e = first;
+        loop {
+            v.vertex_ids.push(e / 3);
+            // The previous half-edge ends at `site`; its twin leaves `site` in the next
+            // triangle counter-clockwise.
+            let twin = t.halfedges[prev_halfedge(e)];
+            if twin == EMPTY {
+                // Arrive along the bisector of the outgoing hull edge `site -> q`, leave
+                // along that of the incoming one `r -> site`; both point outwards.
+                let q = tri[next_halfedge(first)];
+                let r = tri[prev_halfedge(e)];
+                v.rays.push(Ray {
+                    origin: v.vertices[first / 3],
+                    direction: outward_normal(points[site], points[q]),
+                    sites: [site, q],
+                });
+                v.rays.push(Ray {
+                    origin: v.vertices[e / 3],
+                    direction: outward_normal(points[r], points[site]),
+                    sites: [site, r],
+                });
+                break;
+            }
+            e = twin;
+            if e == first {
+                break;
+            }
+        }
+        v.vertex_start.push(v.vertex_ids.len());
+        v.ray_start.push(v.rays.len());
+    }
+}
+
+/// The cells of collinear sites (or of one site): the hull lists them along their line.
+fn collinear_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
+    let line = &t.hull;
+    let mut rays_of: Vec<Vec<Ray>> = vec![Vec::new(); line.len()];
+    for (k, pair) in line.windows(2).enumerate() {
+        let (a, b) = (pair[0], pair[1]);
+        let m = midpoint(points[a], points[b]);
+        let u = unit_direction(points[a], points[b]);
+        let n = Point2::new(-u.y, u.x);
+        let minus = Point2::new(u.y, -u.x);
+        // For `a` the bisector is on its `+u` side, traversed counter-clockwise along `+n`;
+        // for `b` on its `-u` side, traversed along `-n`.
+        rays_of[k].extend([
+            Ray {
+                origin: m,
+                direction: minus,
+                sites: [a, b],
+            },
+            Ray {
+                origin: m,
+                direction: n,
+                sites: [a, b],
+            },
+        ]);
+        rays_of[k + 1].extend([
+            Ray {
+                origin: m,
+                direction: n,
+                sites: [b, a],
+            },
+            Ray {
+                origin: m,
+                direction: minus,
+                sites: [b, a],
+            },
+        ]);
+    }
+    let mut by_site: Vec<(usize, Vec<Ray>)> = line.iter().copied().zip(rays_of).collect();
+    by_site.sort_unstable_by_key(|&(s, _)| s);
+    for (_, rays) in by_site {
+        v.rays.extend(rays);
+        v.vertex_start.push(0);
+        v.ray_start.push(v.rays.len());
+    }
+}
+
+/// The unit normal of the hull edge `a -> b` pointing out of the hull (to its right).
+fn outward_normal(a: Point2, b: Point2) -> Point2 {
+    let d = unit_direction(a, b);
+    Point2::new(d.y, -d.x)
+}
+
+/// The polygon of an unbounded cell (scaled coordinates) with its rays cut far away: past
+/// every chain's leaving ray comes the next chain's arriving ray, and far points at most a
+/// quarter turn apart close the gap, so the closing edges stay out of the box.
+fn unbounded_polygon(
+    vertices: &[Point2],
+    rays: &[Ray],
+    scaled: impl Fn(Point2) -> Point2,
+) -> Vec<Point2> {
+    if rays.is_empty() {
+        // The whole plane: a square around the box.
+        return [(-4.0, -4.0), (4.0, -4.0), (4.0, 4.0), (-4.0, 4.0)]
+            .map(Point2::from)
+            .to_vec();
+    }
+    let origins: Vec<Point2> = rays.iter().map(|r| scaled(r.origin)).collect();
+    // The box lies within radius sqrt(2) < 2 of the origin in the scaled frame; every
+    // polygon point before the far ones within `m` (1-norm).
+    let m = vertices
+        .iter()
+        .chain(&origins)
+        .map(|p| p.x.abs() + p.y.abs())
+        .fold(0.0, f64::max);
+    let reach = 4.0 * (m + 2.0);
+    let far = |o: Point2, d: Point2| Point2::new(o.x + reach * d.x, o.y + reach * d.y);
+    let mut poly = Vec::with_capacity(vertices.len() + 3 * rays.len());
+    let chains = rays.len() / 2;
+    for c in 0..chains {
+        let (arrive, leave) = (&rays[2 * c], &rays[2 * c + 1]);
+        poly.push(far(origins[2 * c], arrive.direction));
+        if chains == 1 {
+            poly.extend_from_slice(vertices);
+        }
+        let out = far(origins[2 * c + 1], leave.direction);
+        poly.push(out);
+        let next = &rays[(2 * c + 2) % rays.len()];
+        let (d0, d1) = (leave.direction, next.direction);
+        let cross = d0.x * d1.y - d0.y * d1.x;
+        let dot = d0.x * d1.x + d0.y * d1.y;
+        if dot < 0.0 {
+            // More than a quarter turn (at most a half turn, the cell being convex) to the
+            // next ray: add the far point halfway round, counter-clockwise from `d0`.
+            let mid = if cross > 0.0 {
+                let (x, y) = (d0.x + d1.x, d0.y + d1.y);
+                let len = x.hypot(y);
+                Point2::new(x / len, y / len)
+            } else {
+                Point2::new(-d0.y, d0.x)
+            };
+            poly.push(far(origins[2 * c + 1], mid));
+        }
+    }
+    poly
+}
+
+/// One side of the box, as the half-plane that is kept.
+#[derive(Debug, Clone, Copy)]
+enum Side {
+    Right(f64),
+    Top(f64),
+    Left(f64),
+    Bottom(f64),
+}
+
+impl Side {
+    fn inside(self, p: Point2) -> bool {
+        match self {
+            Side::Right(x) => p.x <= x,
+            Side::Top(y) => p.y <= y,
+            Side::Left(x) => p.x >= x,
+            Side::Bottom(y) => p.y >= y,
+        }
+    }
+
+    /// Where the segment `p q` (one end inside, one outside) crosses the side's line.
+    fn crossing(self, p: Point2, q: Point2) -> Point2 {
+        let along = |c: f64, p0: f64, q0: f64, p1: f64, q1: f64| {
+            let t = (c - p0) / (q0 - p0);
+            let v = p1 + t * (q1 - p1);
+            v.clamp(p1.min(q1), p1.max(q1))
+        };
+        match self {
+            Side::Right(x) | Side::Left(x) => Point2::new(x, along(x, p.x, q.x, p.y, q.y)),
+            Side::Top(y) | Side::Bottom(y) => Point2::new(along(y, p.y, q.y, p.x, q.x), y),
+        }
+    }
+}
+
+/// Sutherland–Hodgman against one side.
+fn clip_side(poly: &[Point2], side: Side) -> Vec<Point2> {
+    let mut out = Vec::with_capacity(poly.len() + 2);
+    for (i, &q) in poly.iter().enumerate() {
+        let p = poly[(i + poly.len() - 1) % poly.len()];
+        match (side.inside(p), side.inside(q)) {
+            (true, true) => out.push(q),
+            (true, false) => out.push(side.crossing(p, q)),
+            (false, true) => {
+                out.push(side.crossing(q, p));
+                out.push(q);
+            }
+            (false, false) => {}
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pts(v: &[(f64, f64)]) -> Vec<Point2> {
+        v.iter().map(|&p| Point2::from(p)).collect()
+    }
+
+    fn area(poly: &[Point2]) -> f64 {
+        (0..poly.len())
+            .map(|i| {
+                let (p, q) = (poly[i], poly[(i + 1) % poly.len()]);
+                p.x * q.y - p.y * q.x
+            })
+            .sum::<f64>()
+            / 2.0
+    }
+
+    #[test]
+    fn one_site_owns_the_whole_box() {
+        let p = pts(&[(5.0, 5.0), (5.0, 5.0)]);
+        let v = voronoi(&p).unwrap();
+        assert_eq!(v.cell_count(), 1);
+        assert_eq!(v.cell_of(1), 0);
+        assert!(!v.cell(0).bounded);
+        let b = ClipBox::new(0.0, 0.0, 2.0, 3.0).unwrap();
+        assert_eq!(area(&v.clip_cell(0, &b)), 6.0);
+    }
+
+    #[test]
+    fn collinear_sites_split_the_box_into_strips() {
+        let p = pts(&[(2.0, 0.0), (0.0, 0.0), (6.0, 0.0)]);
+        let v = voronoi(&p).unwrap();
+        let b = ClipBox::new(-1.0, -1.0, 7.0, 1.0).unwrap();
+        let cells = v.clip(&b);
+        // Bisectors at x = 1 and x = 4.
+        assert_eq!(area(&cells[v.cell_of(1)]), 4.0);
+        assert_eq!(area(&cells[v.cell_of(0)]), 6.0);
+        assert_eq!(area(&cells[v.cell_of(2)]), 6.0);
+    }
+
+    #[test]
+    fn a_box_away_from_a_cell_clips_it_to_nothing() {
+        let p = pts(&[(0.0, 0.0), (10.0, 0.0), (0.0, 10.0), (10.0, 10.0), (5.0, 5.0)]);
+        let v = voronoi(&p).unwrap();
+        let b = ClipBox::new(8.0, 8.0, 9.0, 9.0).unwrap();
+        let cells = v.clip(&b);
+        assert_eq!(area(&cells[3]), 1.0);
+        assert!(cells[0].is_empty() && cells[4].is_empty());
+    }
+}
