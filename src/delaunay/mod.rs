@@ -26,13 +26,22 @@
 //! [`check_delaunay`] verifies all of this exactly; the tests run it on every builder.
 
 mod check;
+mod closest_pair;
 mod construct;
+mod empty_circle;
 mod hilbert;
 mod incremental;
+mod proximity;
 mod triangulation;
 mod voronoi;
 
 pub use check::check_delaunay;
+pub use closest_pair::{closest_pair_divide_and_conquer, closest_pair_divide_and_conquer_with};
+pub use empty_circle::{largest_empty_circle, largest_empty_circle_with, EmptyCircle};
 pub use incremental::{incremental, incremental_with};
+pub use proximity::{
+    all_nearest_neighbours, all_nearest_neighbours_with, closest_pair, closest_pair_with,
+    euclidean_mst, euclidean_mst_with, nearest, ClosestPair, Emst, NearestSearch,
+};
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
 pub use voronoi::{dual, voronoi, voronoi_with, Cell, ClipBox, Ray, Voronoi};

@@ -668,7 +668,13 @@ mod tests {
 
     #[test]
     fn a_box_away_from_a_cell_clips_it_to_nothing() {
-        let p = pts(&[(0.0, 0.0), (10.0, 0.0), (0.0, 10.0), (10.0, 10.0), (5.0, 5.0)]);
+        let p = pts(&[
+            (0.0, 0.0),
+            (10.0, 0.0),
+            (0.0, 10.0),
+            (10.0, 10.0),
+            (5.0, 5.0),
+        ]);
         let v = voronoi(&p).unwrap();
         let b = ClipBox::new(8.0, 8.0, 9.0, 9.0).unwrap();
         let cells = v.clip(&b);
