@@ -8,6 +8,7 @@ use compgeo::delaunay::incremental;
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::Point2;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use spade::Triangulation as _;
 use std::hint::black_box;
 use std::time::Duration;
 

@@ -16,6 +16,7 @@
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
 //! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
 //! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
+//! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder), exact checker |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
 //! ## Algorithms and their bounds
@@ -52,6 +53,8 @@
 //! | [`calipers::antipodal_pairs`] | Θ(n) on a convex polygon of n vertices, at most 3n/2 pairs |
 //! | [`calipers::diameter`] | the hull's time plus Θ(h) |
 //! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |
+//! | [`delaunay::incremental`] | O(n log n) expected on every input (BRIO + Hilbert order) |
+//! | [`delaunay::check_delaunay`] | O(n log n + t), exact |
 //!
 //! ## A first example
 //!

@@ -1,9 +1,11 @@
 //! Delaunay triangulations: every result passes the exact checker; the incremental builder
 //! agrees with spade on general-position input; degenerate and bad input.
 
+mod common;
+
 use compgeo::count::Counts;
 use compgeo::delaunay::{
-    check_delaunay, find_duplicates, incremental, incremental_with, Triangulation,
+    check_delaunay, find_duplicates, incremental, incremental_with, Algorithm, Triangulation,
 };
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::Point2;
@@ -276,6 +278,40 @@ fn parabola_in_x_order_stays_near_linear_in_flips() {
         large < 3.0 * small,
         "{small} -> {large} in-circle tests per point"
     );
+}
+
+#[test]
+fn cli_prints_the_triangulation_and_rejects_bad_input() {
+    use common::{assert_rejected, run_json};
+    let pts = points(PointKind::Grid, 30, 3).unwrap();
+    let mut with_copy = pts.clone();
+    with_copy.push(pts[4]);
+    let input =
+        serde_json::to_string(&with_copy.iter().map(|p| [p.x, p.y]).collect::<Vec<_>>()).unwrap();
+    for algorithm in Algorithm::ALL {
+        let v = run_json(
+            &["delaunay", "--algorithm", algorithm.name(), "-"],
+            Some(&input),
+        );
+        let tris: Vec<[usize; 3]> = serde_json::from_value(v["triangles"].clone()).unwrap();
+        let hull: Vec<usize> = serde_json::from_value(v["hull"].clone()).unwrap();
+        let duplicates: Vec<[usize; 2]> = serde_json::from_value(v["duplicates"].clone()).unwrap();
+        // The printed triangles, relinked, pass the exact checker on the printed input.
+        let t = Triangulation::from_triangles(&with_copy, &tris, duplicates).unwrap();
+        assert_eq!(t.hull, hull);
+        assert_eq!(check_delaunay(&with_copy, &t), Ok(()));
+        assert_eq!(t.duplicates, [[30, 4]]);
+        assert!(v["counts"]["incircle_tests"].as_u64().unwrap() > 0);
+    }
+    // Collinear input: no triangles, the hull along the line.
+    let v = run_json(&["delaunay", "-"], Some("[[2, 2], [0, 0], [1, 1]]"));
+    assert_eq!(v["triangles"], serde_json::json!([]));
+    assert_eq!(v["hull"], serde_json::json!([1, 2, 0]));
+    let err = assert_rejected(&["delaunay", "--algorithm", "sweep", "-"], Some(&input));
+    assert!(err.contains("incremental"), "{err}");
+    let err = assert_rejected(&["delaunay", "-"], Some("[[0, 0], [1, 1], [1e999, 1]]"));
+    assert!(err.contains("2"), "{err}");
+    assert_rejected(&["delaunay", "-"], Some("[[0, 0], [1, "));
 }
 
 fn small_coords() -> impl Strategy<Value = Vec<Point2>> {

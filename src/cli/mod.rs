@@ -10,6 +10,7 @@
 //! Commands read their input with [`input`] (points and graphs), print with
 //! [`output::print_json`], and report problems as [`CliError`].
 
+mod delaunay;
 mod diameter;
 pub mod error;
 mod gen;
@@ -58,6 +59,8 @@ enum Command {
     Hull(hull::HullArgs),
     /// Diameter of a point set: the farthest pair, by rotating calipers or brute force
     Diameter(diameter::DiameterArgs),
+    /// Delaunay triangulation of a point set: CCW triangles, hull, merged duplicates
+    Delaunay(delaunay::DelaunayArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -87,6 +90,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Mst(args) => graph::run_mst(args),
         Command::Hull(args) => hull::run(args),
         Command::Diameter(args) => diameter::run(args),
+        Command::Delaunay(args) => delaunay::run(args),
     }
 }
 

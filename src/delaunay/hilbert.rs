@@ -16,7 +16,7 @@ const BITS: u32 = 16;
 
 /// The local ids `0..points.len()` in insertion order.
 ///
-/// O(n log n) time (one sort of 64-bit keys), O(n) auxiliary space. Deterministic: the
+/// O(n log n) time (sorts of 64-bit keys), O(n) auxiliary space. Deterministic: the
 /// rounds come from a fixed-seed generator.
 pub(super) fn brio_order(points: &[Point2]) -> Vec<u32> {
     let n = points.len();
@@ -37,22 +37,41 @@ pub(super) fn brio_order(points: &[Point2]) -> Vec<u32> {
     let scale_y = grid_scale(min_y, max_y, cells);
     let (half_min_x, half_min_y) = (0.5 * min_x, 0.5 * min_y);
     // Rounds: the last one holds about n/2 points, the first one about 32.
-    let rounds = (usize::BITS - n.leading_zeros()).saturating_sub(5);
+    let rounds = (usize::BITS - n.leading_zeros()).saturating_sub(5) as usize;
     let mut rng = SplitMix(0x5EED_DE1A_0000_0001);
-    let mut keyed: Vec<(u64, u32)> = points
+    // Per point: its round and (Hilbert index << 32 | id); then a counting sort by round
+    // and a sort of plain u64 keys inside each round.
+    let mut round_of = Vec::with_capacity(n);
+    let mut sizes = vec![0usize; rounds + 1];
+    let keys: Vec<u64> = points
         .iter()
         .enumerate()
         .map(|(i, p)| {
             // `as` saturates, so rounding past the grid's ends stays on it.
             let gx = ((0.5 * p.x - half_min_x) * scale_x) as u32;
             let gy = ((0.5 * p.y - half_min_y) * scale_y) as u32;
-            let level = (rng.next() as u32).trailing_zeros().min(rounds);
-            let round = u64::from(rounds - level);
-            ((round << (2 * BITS)) | hilbert_index(gx, gy), i as u32)
+            let level = ((rng.next() as u32).trailing_zeros() as usize).min(rounds);
+            let round = rounds - level;
+            round_of.push(round as u8);
+            sizes[round] += 1;
+            (hilbert_index(gx, gy) << 32) | i as u64
         })
         .collect();
-    keyed.sort_unstable_by_key(|&(key, _)| key);
-    keyed.into_iter().map(|(_, i)| i).collect()
+    let mut start = Vec::with_capacity(rounds + 2);
+    start.push(0);
+    for size in &sizes {
+        start.push(start.last().copied().unwrap_or(0) + size);
+    }
+    let mut fill = start.clone();
+    let mut sorted = vec![0u64; n];
+    for (key, &round) in keys.iter().zip(&round_of) {
+        sorted[fill[round as usize]] = *key;
+        fill[round as usize] += 1;
+    }
+    for r in 0..=rounds {
+        sorted[start[r]..start[r + 1]].sort_unstable();
+    }
+    sorted.into_iter().map(|key| key as u32).collect()
 }
 
 /// The factor that maps `0.5 * (v - min)` onto `[0, cells]`, 0 for an empty range.

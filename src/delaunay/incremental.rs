@@ -101,7 +101,7 @@ pub fn incremental_with<C: Counter>(points: &[Point2], counter: &mut C) -> Resul
     for k in 3..order.len() as u32 {
         mesh.insert(k);
     }
-    Ok(mesh.finish(points, &order))
+    Ok(mesh.finish(points, order))
 }
 
 /// More points than this would overflow the 32-bit half-edge ids (about 6n half-edges).
@@ -375,77 +375,116 @@ impl<'c, C: Counter> Mesh<'c, C> {
 
     /// Drops the ghosts, maps vertex ids back to input indices (`order[id]`, or the smallest
     /// index of a merged group) and reads the hull off the ghosts.
-    fn finish(self, points: &[Point2], order: &[u32]) -> Triangulation {
-        let mut index: Vec<usize> = order.iter().map(|&i| i as usize).collect();
-        let mut duplicates: Vec<[usize; 2]> = Vec::with_capacity(self.duplicates.len());
-        for &[dropped, kept] in &self.duplicates {
-            let (d, k) = (index[dropped as usize], index[kept as usize]);
-            // Keep the smallest input index of each group of equal points.
-            if d < k {
-                index[kept as usize] = d;
-            }
-            duplicates.push([dropped as usize, kept as usize]);
-        }
-        for pair in &mut duplicates {
-            let [d, k] = *pair;
-            let (di, ki) = (order[d] as usize, index[k]);
-            *pair = if di == ki {
-                [order[k] as usize, ki]
-            } else {
-                [di, ki]
-            };
-        }
-        duplicates.sort_unstable();
-
-        let count = self.triangles.len() / 3;
-        let mut renumber = vec![u32::MAX; count];
-        let mut real = 0u32;
-        let mut a_ghost = u32::MAX;
-        for t in 0..count as u32 {
-            if self.is_ghost(t) {
-                a_ghost = t;
-            } else {
-                renumber[t as usize] = real;
-                real += 1;
-            }
-        }
-        let mut triangles = Vec::with_capacity(3 * real as usize);
-        let mut halfedges = Vec::with_capacity(3 * real as usize);
-        for t in 0..count {
-            if renumber[t] == u32::MAX {
-                continue;
-            }
-            for e in 3 * t..3 * t + 3 {
-                triangles.push(index[self.triangles[e] as usize]);
-                let f = self.halfedges[e] as usize;
-                let tf = renumber[f / 3];
-                halfedges.push(if tf == u32::MAX {
-                    EMPTY
-                } else {
-                    3 * tf as usize + f % 3
-                });
-            }
-        }
-        // Ghost (x, y, G) lies beyond hull edge y -> x; the opposite of its half-edge G -> x
-        // is in the ghost of the next hull edge x -> z.
-        let mut hull = Vec::new();
-        let mut g = a_ghost;
-        loop {
-            let r = self.ghost_real_edge(g);
-            let b = 3 * g as usize;
-            hull.push(index[self.triangles[b + (r + 1) % 3] as usize]);
-            g = self.halfedges[b + (r + 2) % 3] / 3;
-            if g == a_ghost {
-                break;
-            }
-        }
+    fn finish(mut self, points: &[Point2], mut order: Vec<u32>) -> Triangulation {
+        let duplicates = self.resolve_duplicates(&mut order);
+        let ghosts = self.ghost_ring();
+        let hull_ids: Vec<u32> = ghosts
+            .iter()
+            .map(|&g| {
+                let b = 3 * g as usize;
+                self.triangles[b + (self.ghost_real_edge(g) + 1) % 3]
+            })
+            .collect();
+        self.compact(&ghosts);
+        let mut hull: Vec<usize> = hull_ids
+            .iter()
+            .map(|&v| order[v as usize] as usize)
+            .collect();
         rotate_to_lex_min(points, &mut hull);
+        let triangles = self
+            .triangles
+            .iter()
+            .map(|&v| order[v as usize] as usize)
+            .collect();
+        let halfedges = self
+            .halfedges
+            .iter()
+            .map(|&f| if f == u32::MAX { EMPTY } else { f as usize })
+            .collect();
         Triangulation {
             triangles,
             halfedges,
             hull,
             duplicates,
         }
+    }
+
+    /// The `[dropped, kept]` input indices of the merged points, sorted by `dropped`;
+    /// `order` is updated so that each kept vertex maps to the smallest input index of its
+    /// group (the vertex was inserted first, but a copy may come earlier in the input).
+    fn resolve_duplicates(&self, order: &mut [u32]) -> Vec<[usize; 2]> {
+        // (vertex, input index) for every member of every group, the vertex's own included.
+        let mut members: Vec<(u32, u32)> = self
+            .duplicates
+            .iter()
+            .flat_map(|&[d, k]| [(k, order[d as usize]), (k, order[k as usize])])
+            .collect();
+        members.sort_unstable();
+        members.dedup();
+        let mut out = Vec::with_capacity(self.duplicates.len());
+        for group in members.chunk_by(|a, b| a.0 == b.0) {
+            let (vertex, smallest) = group[0];
+            order[vertex as usize] = smallest;
+            out.extend(
+                group[1..]
+                    .iter()
+                    .map(|&(_, i)| [i as usize, smallest as usize]),
+            );
+        }
+        out.sort_unstable();
+        out
+    }
+
+    /// The ghost triangles in hull order: ghost (x, y, G) lies beyond hull edge y -> x, and
+    /// the opposite of its half-edge G -> x is in the ghost of the next hull edge x -> z.
+    fn ghost_ring(&self) -> Vec<u32> {
+        let count = (self.triangles.len() / 3) as u32;
+        let first = (0..count)
+            .find(|&t| self.is_ghost(t))
+            .expect("a triangulation with triangles has ghosts");
+        let mut ring = vec![first];
+        loop {
+            let g = *ring.last().expect("the ring starts non-empty");
+            let b = 3 * g as usize;
+            let next = self.halfedges[b + (self.ghost_real_edge(g) + 2) % 3] / 3;
+            if next == first {
+                return ring;
+            }
+            ring.push(next);
+        }
+    }
+
+    /// Removes the ghosts in O(h) moves: real triangles' links to ghosts become `u32::MAX`,
+    /// then real triangles from the tail fill the ghosts' slots below the real count.
+    fn compact(&mut self, ghosts: &[u32]) {
+        let count = self.triangles.len() / 3;
+        let real = count - ghosts.len();
+        for &g in ghosts {
+            let r = 3 * g as usize + self.ghost_real_edge(g);
+            let twin = self.halfedges[r] as usize;
+            self.halfedges[twin] = u32::MAX;
+        }
+        let mut holes = ghosts.iter().filter(|&&g| (g as usize) < real);
+        for t in real..count {
+            if self.is_ghost(t as u32) {
+                continue;
+            }
+            let hole = *holes
+                .next()
+                .expect("as many holes below as real triangles above")
+                as usize;
+            for k in 0..3 {
+                let (from, to) = (3 * t + k, 3 * hole + k);
+                self.triangles[to] = self.triangles[from];
+                let f = self.halfedges[from];
+                self.halfedges[to] = f;
+                if f != u32::MAX {
+                    self.halfedges[f as usize] = to as u32;
+                }
+            }
+        }
+        self.triangles.truncate(3 * real);
+        self.halfedges.truncate(3 * real);
     }
 }
 

@@ -24,6 +24,22 @@
 //! | otherwise | `2n - 2 - h` triangles for n distinct points, h of them on the hull boundary |
 //!
 //! [`check_delaunay`] verifies all of this exactly; the tests run it on every builder.
+//!
+//! | builder | time | file |
+//! |---|---|---|
+//! | [`incremental`] | O(n log n) expected on every input | `incremental.rs` (+ `hilbert.rs`, its insertion order) |
+//!
+//! ```
+//! use compgeo::delaunay::{check_delaunay, triangulate, Algorithm};
+//! use compgeo::geometry::Point2;
+//!
+//! let pts = [(0.0, 0.0), (3.0, 0.0), (0.0, 3.0), (3.0, 3.0), (1.0, 2.0)].map(Point2::from);
+//! let t = triangulate(&pts, Algorithm::Incremental)?;
+//! assert_eq!(t.triangle_count(), 4);
+//! assert_eq!(t.hull, [0, 1, 3, 2]);
+//! assert!(check_delaunay(&pts, &t).is_ok());
+//! # Ok::<(), compgeo::Error>(())
+//! ```
 
 mod check;
 mod closest_pair;
@@ -45,3 +61,98 @@ pub use proximity::{
 };
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
 pub use voronoi::{dual, voronoi, voronoi_with, Cell, ClipBox, Ray, Voronoi};
+
+use crate::count::{Counter, NoCount};
+use crate::error::{Error, Result};
+use crate::geometry::Point2;
+use std::fmt;
+use std::str::FromStr;
+
+/// The Delaunay builders, for callers that choose one at run time.
+///
+/// ```
+/// use compgeo::delaunay::Algorithm;
+///
+/// let a: Algorithm = "incremental".parse()?;
+/// assert_eq!(a, Algorithm::Incremental);
+/// assert_eq!(a.name(), "incremental");
+/// assert!("sweep".parse::<Algorithm>().is_err());
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Algorithm {
+    /// [`incremental`]: BRIO + Hilbert order, walking location, Lawson flips.
+    Incremental,
+}
+
+/// Runs `algorithm` on `points`: the same as calling its function.
+///
+/// # Errors
+/// [`Error::NonFinite`] naming the first point with a NaN or infinite coordinate (and the
+/// builder's own errors, see its docs).
+///
+/// # Complexity
+/// That of the chosen builder (see the [module docs](self)).
+///
+/// ```
+/// use compgeo::delaunay::{triangulate, Algorithm};
+/// use compgeo::geometry::Point2;
+///
+/// let pts = [Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(f64::NAN, 0.0)];
+/// assert!(triangulate(&pts, Algorithm::Incremental).is_err());
+/// ```
+pub fn triangulate(points: &[Point2], algorithm: Algorithm) -> Result<Triangulation> {
+    algorithm.triangulate_with(points, &mut NoCount)
+}
+
+impl Algorithm {
+    /// Every builder.
+    pub const ALL: [Algorithm; 1] = [Algorithm::Incremental];
+
+    /// The kebab-case name used on the command line: `"incremental"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Algorithm::Incremental => "incremental",
+        }
+    }
+
+    /// Runs this builder, recording its orientation and in-circle tests in `counter`.
+    ///
+    /// # Errors
+    /// As [`triangulate`].
+    pub fn triangulate_with<C: Counter>(
+        self,
+        points: &[Point2],
+        counter: &mut C,
+    ) -> Result<Triangulation> {
+        match self {
+            Algorithm::Incremental => incremental_with(points, counter),
+        }
+    }
+}
+
+impl fmt::Display for Algorithm {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Algorithm {
+    type Err = Error;
+
+    /// Parses a kebab-case name; an unknown name gives [`Error::InvalidParameter`] listing the
+    /// valid ones.
+    fn from_str(s: &str) -> Result<Self> {
+        Algorithm::ALL
+            .into_iter()
+            .find(|a| a.name() == s)
+            .ok_or_else(|| Error::InvalidParameter {
+                name: "algorithm",
+                reason: format!(
+                    "unknown Delaunay algorithm `{s}`; valid names: {}",
+                    Algorithm::ALL.map(Algorithm::name).join(", ")
+                ),
+            })
+    }
+}

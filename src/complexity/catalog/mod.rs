@@ -145,9 +145,11 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(sort::entries());
     all.extend(graph::entries());
     all.extend(hull::entries());
+    all.extend(delaunay::entries());
     all
 }
 
+mod delaunay;
 mod graph;
 mod hull;
 mod sort;
