@@ -18,6 +18,7 @@ mod graph;
 mod hull;
 pub mod input;
 pub mod output;
+mod proximity;
 mod report;
 mod sort;
 mod stats;
@@ -61,6 +62,16 @@ enum Command {
     Diameter(diameter::DiameterArgs),
     /// Delaunay triangulation of a point set: CCW triangles, hull, merged duplicates
     Delaunay(delaunay::DelaunayArgs),
+    /// Voronoi diagram: cells per site (vertices, rays), or cells clipped to a box
+    Voronoi(proximity::VoronoiArgs),
+    /// Closest pair of points, via Delaunay or by divide and conquer
+    ClosestPair(proximity::ClosestPairArgs),
+    /// Nearest point to a query, by a walk on the Delaunay triangulation
+    Nearest(proximity::NearestArgs),
+    /// Euclidean minimum spanning tree from the Delaunay edges
+    Emst(proximity::PointsArgs),
+    /// Largest empty circle centred in the convex hull
+    EmptyCircle(proximity::PointsArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -91,6 +102,11 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Hull(args) => hull::run(args),
         Command::Diameter(args) => diameter::run(args),
         Command::Delaunay(args) => delaunay::run(args),
+        Command::Voronoi(args) => proximity::run_voronoi(args),
+        Command::ClosestPair(args) => proximity::run_closest_pair(args),
+        Command::Nearest(args) => proximity::run_nearest(args),
+        Command::Emst(args) => proximity::run_emst(args),
+        Command::EmptyCircle(args) => proximity::run_empty_circle(args),
     }
 }
 
