@@ -92,10 +92,15 @@ pub fn largest_empty_circle_with<C: Counter>(
     if t.is_empty() {
         return Ok(widest_gap(points, &t.hull, counter));
     }
-    let mut best: Option<EmptyCircle> = None;
+    // A hull vertex (f = 0) is the fallback candidate.
+    let mut best = EmptyCircle {
+        centre: points[t.hull[0]],
+        radius: 0.0,
+        sites: vec![t.hull[0]],
+    };
     let mut offer = |c: EmptyCircle| {
-        if best.as_ref().is_none_or(|b| c.radius > b.radius) {
-            best = Some(c);
+        if c.radius > best.radius {
+            best = c;
         }
     };
     for tri in t.triangles.chunks_exact(3) {
@@ -112,7 +117,7 @@ pub fn largest_empty_circle_with<C: Counter>(
     for c in boundary_crossings(points, &t) {
         offer(c);
     }
-    Ok(best.expect("a triangulation has a triangle"))
+    Ok(best)
 }
 
 /// Collinear points (or one): the midpoint of the widest gap along the line.
