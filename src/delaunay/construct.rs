@@ -7,13 +7,26 @@
 //! everything to underflow for subnormal differences: the result carries a few rounding
 //! errors relative to the size of the configuration.
 
-use crate::geometry::Point2;
+use crate::geometry::{cmp_dist, Point2};
 
 /// The circumcentre of the counter-clockwise (strictly) triangle `a, b, c`.
 ///
-/// A centre beyond the range of `f64` (a nearly flat triangle at a large scale) is clamped
-/// to `±f64::MAX` coordinate by coordinate.
+/// The formula runs on the two edges at the vertex opposite the longest edge (chosen with
+/// the exact [`cmp_dist`]): their cross product, the denominator, then loses at most a few
+/// units in the last place relative to its size however short one edge is, so a triangle
+/// with two nearly coincident vertices still gets an accurate centre. A centre beyond the
+/// range of `f64` (a nearly flat triangle at a large scale) is clamped to `±f64::MAX`
+/// coordinate by coordinate.
 pub(crate) fn circumcentre(a: Point2, b: Point2, c: Point2) -> Point2 {
+    use std::cmp::Ordering::Greater;
+    // Rotations keep the triangle counter-clockwise.
+    let (a, b, c) = if cmp_dist(a, b, b, c) == Greater && cmp_dist(a, b, c, a) == Greater {
+        (c, a, b)
+    } else if cmp_dist(c, a, b, c) == Greater {
+        (b, c, a)
+    } else {
+        (a, b, c)
+    };
     let (bx, by, cx, cy, half) = differences(a, b, c);
     let s = scale_of(bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs()));
     let (bx, by, cx, cy) = (bx / s, by / s, cx / s, cy / s);
