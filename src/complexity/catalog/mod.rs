@@ -146,12 +146,14 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(graph::entries());
     all.extend(hull::entries());
     all.extend(delaunay::entries());
+    all.extend(proximity::entries());
     all
 }
 
 mod delaunay;
 mod graph;
 mod hull;
+mod proximity;
 mod sort;
 
 /// The result of one counted run.
