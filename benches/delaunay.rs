@@ -2,12 +2,16 @@
 //! same groups, over log-spaced sizes: uniform points in a square, clustered points, and an
 //! integer grid (cocircular quadruples everywhere, the degenerate case).
 //!
+//! The `voronoi/*` groups build Voronoi cells from the sites (triangulation included)
+//! against `voronoice` (delaunator, then the dual clipped to a box): compgeo's cells with
+//! rays, and compgeo's cells clipped to the same box as voronoice's.
+//!
 //! Run one group with e.g. `cargo bench --bench delaunay -- delaunay/uniform-square`.
 
-use compgeo::delaunay::incremental;
+use compgeo::delaunay::{incremental, voronoi, ClipBox};
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::Point2;
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion, Throughput};
 use spade::Triangulation as _;
 use std::hint::black_box;
 use std::time::Duration;
@@ -57,5 +61,59 @@ fn spade_bulk_load(pts: &[Point2]) -> spade::DelaunayTriangulation<spade::Point2
     spade::DelaunayTriangulation::bulk_load(input).unwrap()
 }
 
-criterion_group!(benches, triangulations);
+fn voronoi_cells(c: &mut Criterion) {
+    let groups: [(PointKind, &[usize]); 2] = [
+        (PointKind::UniformSquare, &[10_000, 100_000, 1_000_000]),
+        (PointKind::Clustered, &[10_000, 100_000, 1_000_000]),
+    ];
+    for (kind, sizes) in groups {
+        let mut group = c.benchmark_group(format!("voronoi/{kind}"));
+        group
+            .sample_size(10)
+            .warm_up_time(Duration::from_millis(500))
+            .measurement_time(Duration::from_secs(4));
+        for &n in sizes {
+            let pts = points(kind, n, SEED).unwrap();
+            // One box for both crates: the sites' bounding box grown by a quarter.
+            let bounds = ClipBox::around(&pts).unwrap();
+            group.throughput(Throughput::Elements(n as u64));
+            group.bench_with_input(BenchmarkId::new("compgeo-cells", n), &pts, |b, pts| {
+                b.iter(|| voronoi(black_box(pts)).unwrap())
+            });
+            group.bench_with_input(BenchmarkId::new("compgeo-clipped", n), &pts, |b, pts| {
+                b.iter(|| voronoi(black_box(pts)).unwrap().clip(&bounds))
+            });
+            let sites: Vec<voronoice::Point> = pts
+                .iter()
+                .map(|p| voronoice::Point { x: p.x, y: p.y })
+                .collect();
+            let centre = voronoice::Point {
+                x: (bounds.min.x + bounds.max.x) / 2.0,
+                y: (bounds.min.y + bounds.max.y) / 2.0,
+            };
+            let vbox = voronoice::BoundingBox::new(
+                centre,
+                bounds.max.x - bounds.min.x,
+                bounds.max.y - bounds.min.y,
+            );
+            group.bench_with_input(BenchmarkId::new("voronoice", n), &sites, |b, sites| {
+                b.iter_batched(
+                    || sites.clone(),
+                    |sites| {
+                        voronoice::VoronoiBuilder::default()
+                            .set_sites(sites)
+                            .set_bounding_box(vbox.clone())
+                            .set_lloyd_relaxation_iterations(0)
+                            .build()
+                            .unwrap()
+                    },
+                    BatchSize::LargeInput,
+                )
+            });
+        }
+        group.finish();
+    }
+}
+
+criterion_group!(benches, triangulations, voronoi_cells);
 criterion_main!(benches);

@@ -216,6 +216,23 @@ impl Voronoi {
             Point2::new(c(p.x), c(p.y))
         };
         let cell = self.cell(k);
+        let inside = |p: Point2| {
+            p.x >= bounds.min.x && p.x <= bounds.max.x && p.y >= bounds.min.y && p.y <= bounds.max.y
+        };
+        if cell.bounded && cell.vertices.iter().all(|&i| inside(self.vertices[i])) {
+            // The box is convex: a cell whose vertices are all in it is its own clip.
+            let mut out: Vec<Point2> = Vec::with_capacity(cell.vertices.len());
+            for &i in cell.vertices {
+                let q = self.vertices[i];
+                if out.last() != Some(&q) && (out.first() != Some(&q)) {
+                    out.push(q);
+                }
+            }
+            if out.len() < 3 {
+                out.clear();
+            }
+            return out;
+        }
         let mut poly: Vec<Point2> = cell
             .vertices
             .iter()
@@ -416,28 +433,58 @@ pub fn dual(points: &[Point2], t: &Triangulation) -> Voronoi {
 const FAR: f64 = 4.149515568880993e180; // 2^600
 
 /// The cells of a triangulated point set: walk counter-clockwise around every site.
+///
+/// The rows are sized first (a site's vertex count is its number of triangles, its ray
+/// count 2 on the hull), then filled with the sites taken in the order they appear in the
+/// triangle array, which the builder leaves spatially coherent, so each walk reads
+/// half-edges that are close in memory.
 fn triangulated_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
     let tri = &t.triangles;
     v.vertices = tri
         .chunks_exact(3)
         .map(|c| circumcentre(points[c[0]], points[c[1]], points[c[2]]))
         .collect();
-    // One outgoing half-edge per vertex, the hull edge for hull vertices, so the walk
-    // around a hull vertex starts at its clockwise-most triangle.
-    let mut out_edge = vec![EMPTY; points.len()];
-    for (e, &a) in tri.iter().enumerate() {
-        if out_edge[a] == EMPTY || t.halfedges[e] == EMPTY {
-            out_edge[a] = e;
-        }
+    let cells = v.sites.len();
+    let mut vertex_start = vec![0usize; cells + 1];
+    for &a in tri {
+        vertex_start[v.cell_of[a] + 1] += 1;
     }
-    v.vertex_ids.reserve(tri.len());
-    v.vertex_start.reserve(v.sites.len());
-    v.ray_start.reserve(v.sites.len());
-    for &site in &v.sites {
-        let first = out_edge[site];
+    let mut ray_start = vec![0usize; cells + 1];
+    for &h in &t.hull {
+        ray_start[v.cell_of[h] + 1] = 2;
+    }
+    for k in 0..cells {
+        vertex_start[k + 1] += vertex_start[k];
+        ray_start[k + 1] += ray_start[k];
+    }
+    let mut ids = vec![0usize; tri.len()];
+    let unset = Ray {
+        origin: Point2::default(),
+        direction: Point2::default(),
+        sites: [0, 0],
+    };
+    let mut rays = vec![unset; ray_start[cells]];
+    let mut done = vec![false; cells];
+    for e0 in 0..tri.len() {
+        let site = tri[e0];
+        let k = v.cell_of[site];
+        if done[k] {
+            continue;
+        }
+        done[k] = true;
+        // A hull site's walk starts at its outgoing hull edge, its clockwise-most triangle:
+        // step clockwise (into the triangle right of the outgoing edge) until there is none.
+        let mut first = e0;
+        if ray_start[k + 1] > ray_start[k] {
+            while t.halfedges[first] != EMPTY {
+                first = next_halfedge(t.halfedges[first]);
+            }
+        }
         let mut e = first;
+        let mut slot = vertex_start[k];
         loop {
-            v.vertex_ids.push(e / 3);
+            ids[slot] = e / 3;
+            slot += 1;
             // The previous half-edge ends at `site`; its twin leaves `site` in the next
             // triangle counter-clockwise.
             let twin = t.halfedges[prev_halfedge(e)];
@@ -446,16 +493,16 @@ fn triangulated_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
                 // along that of the incoming one `r -> site`; both point outwards.
                 let q = tri[next_halfedge(first)];
                 let r = tri[prev_halfedge(e)];
-                v.rays.push(Ray {
+                rays[ray_start[k]] = Ray {
                     origin: v.vertices[first / 3],
                     direction: outward_normal(points[site], points[q]),
                     sites: [site, q],
-                });
-                v.rays.push(Ray {
+                };
+                rays[ray_start[k] + 1] = Ray {
                     origin: v.vertices[e / 3],
                     direction: outward_normal(points[r], points[site]),
                     sites: [site, r],
-                });
+                };
                 break;
             }
             e = twin;
@@ -463,9 +510,12 @@ fn triangulated_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
                 break;
             }
         }
-        v.vertex_start.push(v.vertex_ids.len());
-        v.ray_start.push(v.rays.len());
+        debug_assert_eq!(slot, vertex_start[k + 1], "the walk covers every triangle");
     }
+    v.vertex_ids = ids;
+    v.vertex_start = vertex_start;
+    v.rays = rays;
+    v.ray_start = ray_start;
 }
 
 /// The cells of collinear sites (or of one site): the hull lists them along their line.
