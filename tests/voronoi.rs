@@ -426,14 +426,18 @@ fn cli_prints_cells_and_clipped_cells() {
     let v = run_json(&["voronoi", "-"], Some(input));
     let cells = v["cells"].as_array().unwrap();
     assert_eq!(cells.len(), 5);
-    assert_eq!(v["cell_of"][5], 4);
-    assert_eq!(cells[4]["bounded"], true);
-    assert_eq!(cells[4]["vertices"].as_array().unwrap().len(), 4);
-    assert_eq!(cells[0]["rays"].as_array().unwrap().len(), 2);
+    let cell_of = |i: usize| v["cell_of"][i].as_u64().unwrap() as usize;
+    assert_eq!(cell_of(5), cell_of(4));
+    let centre = &cells[cell_of(4)];
+    assert_eq!(centre["site"], 4);
+    assert_eq!(centre["bounded"], true);
+    assert_eq!(centre["vertices"].as_array().unwrap().len(), 4);
+    assert_eq!(cells[cell_of(0)]["rays"].as_array().unwrap().len(), 2);
 
     let v = run_json(&["voronoi", "--clip", "0,0,2,2", "-"], Some(input));
     let vertices = v["vertices"].as_array().unwrap();
-    let poly = |k: usize| -> Vec<Point2> {
+    let poly = |site: usize| -> Vec<Point2> {
+        let k = v["cell_of"][site].as_u64().unwrap() as usize;
         v["cells"][k]["vertices"]
             .as_array()
             .unwrap()

@@ -11,15 +11,54 @@ use crate::geometry::{cmp_dist, Point2};
 
 /// The circumcentre of the counter-clockwise (strictly) triangle `a, b, c`.
 ///
-/// The formula runs on the two edges at the vertex opposite the longest edge (chosen with
-/// the exact [`cmp_dist`]): their cross product, the denominator, then loses at most a few
-/// units in the last place relative to its size however short one edge is, so a triangle
-/// with two nearly coincident vertices still gets an accurate centre. A centre beyond the
-/// range of `f64` (a nearly flat triangle at a large scale) is clamped to `±f64::MAX`
-/// coordinate by coordinate.
+/// The formula runs on the two edges at the vertex opposite the longest edge: their cross
+/// product, the denominator, then loses at most a few units in the last place relative to
+/// its size however short one edge is, so a triangle with two nearly coincident vertices
+/// still gets an accurate centre. (Which vertex is a numerical choice, not a geometric
+/// decision: it is made on rounded squared lengths; a near tie means either choice is as
+/// accurate.) A centre beyond the range of `f64` (a nearly flat triangle at a large scale)
+/// is clamped to `±f64::MAX` coordinate by coordinate.
+#[inline]
 pub(crate) fn circumcentre(a: Point2, b: Point2, c: Point2) -> Point2 {
+    let (ab, bc, ca) = (
+        (b.x - a.x, b.y - a.y),
+        (c.x - b.x, c.y - b.y),
+        (a.x - c.x, a.y - c.y),
+    );
+    let len = |(x, y): (f64, f64)| x * x + y * y;
+    let (lab, lbc, lca) = (len(ab), len(bc), len(ca));
+    let m = [ab.0, ab.1, bc.0, bc.1, ca.0, ca.1]
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    // Cubic terms stay normal and finite for differences in [2^-300, 2^300]; elsewhere
+    // (and for NaN from overflowing differences) the scaled path below.
+    if (POW2_M300..=POW2_300).contains(&m) {
+        // Origin o opposite the longest edge, u and w its two edges, counter-clockwise.
+        let neg = |(x, y): (f64, f64)| (-x, -y);
+        let (o, u, w, lu, lw) = if lab >= lbc && lab >= lca {
+            (c, ca, neg(bc), lca, lbc)
+        } else if lca >= lbc {
+            (b, bc, neg(ab), lbc, lab)
+        } else {
+            (a, ab, neg(ca), lab, lca)
+        };
+        let d = 2.0 * (u.0 * w.1 - u.1 * w.0);
+        if d > 0.0 {
+            let x = o.x + (w.1 * lu - u.1 * lw) / d;
+            let y = o.y + (u.0 * lw - w.0 * lu) / d;
+            if x.is_finite() && y.is_finite() {
+                return Point2::new(x, y);
+            }
+        }
+    }
+    circumcentre_scaled(a, b, c)
+}
+
+/// [`circumcentre`] on differences scaled by a power of two, halved first if they
+/// overflow: for every finite input.
+#[cold]
+fn circumcentre_scaled(a: Point2, b: Point2, c: Point2) -> Point2 {
     use std::cmp::Ordering::Greater;
-    // Rotations keep the triangle counter-clockwise.
     let (a, b, c) = if cmp_dist(a, b, b, c) == Greater && cmp_dist(a, b, c, a) == Greater {
         (c, a, b)
     } else if cmp_dist(c, a, b, c) == Greater {
@@ -42,6 +81,10 @@ pub(crate) fn circumcentre(a: Point2, b: Point2, c: Point2) -> Point2 {
         clamp(offset(a.y, uy, s, half)),
     )
 }
+
+/// 2^300 and 2^-300.
+const POW2_300: f64 = 2.037035976334486e90;
+const POW2_M300: f64 = 4.909093465297727e-91;
 
 /// The midpoint of `a` and `b`.
 pub(crate) fn midpoint(a: Point2, b: Point2) -> Point2 {
@@ -170,6 +213,16 @@ mod tests {
         assert!(c.is_finite());
         assert!(c.y < -1e290);
         assert_eq!(c.x, 1.0);
+    }
+
+    #[test]
+    fn the_fast_path_and_the_scaled_path_agree() {
+        let tri = [p(0.1, 0.2), p(3.7, -1.1), p(2.0, 5.5)];
+        let fast = circumcentre(tri[0], tri[1], tri[2]);
+        let scaled = circumcentre_scaled(tri[0], tri[1], tri[2]);
+        assert!((fast.x - scaled.x).abs() < 1e-14 && (fast.y - scaled.y).abs() < 1e-14);
+        assert_eq!(POW2_300, 2f64.powi(300));
+        assert_eq!(POW2_M300, 2f64.powi(-300));
     }
 
     #[test]

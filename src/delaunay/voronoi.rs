@@ -5,11 +5,12 @@ use super::incremental::incremental_with;
 use super::triangulation::{next_halfedge, prev_halfedge, Triangulation, EMPTY};
 use crate::count::{Counter, NoCount};
 use crate::error::{Error, Result};
-use crate::geometry::Point2;
+use crate::geometry::{validate, Point2};
 
 /// The Voronoi diagram of a point set: one cell per distinct site.
 ///
-/// Cell `k` belongs to site `sites[k]` (an index into the caller's points; sites ascend).
+/// Cell `k` belongs to site `sites[k]`, an index into the caller's points. [`voronoi`] lists
+/// the cells in a spatial order (it is faster to build), [`dual`] in site order.
 /// Its boundary, counter-clockwise around the site, is stored as
 /// [`cell_vertices(k)`](Voronoi::cell_vertices) (indices into `vertices`) and
 /// [`cell_rays(k)`](Voronoi::cell_rays); see [`Cell`] for how the two combine.
@@ -23,8 +24,9 @@ pub struct Voronoi {
     /// The Voronoi vertices: the circumcentre of every Delaunay triangle, in triangle order
     /// (rounded constructions, see [`voronoi`]).
     pub vertices: Vec<Point2>,
-    /// The site of each cell, ascending.
+    /// The site of each cell.
     pub sites: Vec<usize>,
+    /// `vertex_ids[vertex_start[k]..vertex_start[k + 1]]` are cell k's vertices.
     vertex_start: Vec<usize>,
     vertex_ids: Vec<usize>,
     ray_start: Vec<usize>,
@@ -151,6 +153,23 @@ impl ClipBox {
 }
 
 impl Voronoi {
+    /// Renames the sites: local point `j` is input point `order[j]`. A cell's site becomes
+    /// the smallest input index among its points, as in the triangulation's duplicates.
+    fn relabel(&mut self, order: &[u32]) {
+        let mut site = vec![usize::MAX; self.sites.len()];
+        let mut cell_of = vec![0usize; order.len()];
+        for (j, &i) in order.iter().enumerate() {
+            let (c, i) = (self.cell_of[j], i as usize);
+            cell_of[i] = c;
+            site[c] = site[c].min(i);
+        }
+        for ray in &mut self.rays {
+            ray.sites = ray.sites.map(|j| site[self.cell_of[j]]);
+        }
+        self.sites = site;
+        self.cell_of = cell_of;
+    }
+
     /// The number of cells (distinct sites).
     pub fn cell_count(&self) -> usize {
         self.sites.len()
@@ -167,7 +186,7 @@ impl Voronoi {
         }
     }
 
-    /// The cells in site order.
+    /// The cells, in the order of [`sites`](Voronoi::sites).
     pub fn cells(&self) -> impl ExactSizeIterator<Item = Cell<'_>> + '_ {
         (0..self.cell_count()).map(|k| self.cell(k))
     }
@@ -224,9 +243,12 @@ impl Voronoi {
             let mut out: Vec<Point2> = Vec::with_capacity(cell.vertices.len());
             for &i in cell.vertices {
                 let q = self.vertices[i];
-                if out.last() != Some(&q) && (out.first() != Some(&q)) {
+                if out.last() != Some(&q) {
                     out.push(q);
                 }
+            }
+            while out.len() > 1 && out.first() == out.last() {
+                out.pop();
             }
             if out.len() < 3 {
                 out.clear();
@@ -284,7 +306,11 @@ impl Voronoi {
     /// let v = voronoi(&pts)?;
     /// let cells = v.clip(&ClipBox::new(-1.0, -1.0, 3.0, 1.0)?);
     /// // The bisector x = 1 splits the box in two.
-    /// assert_eq!(cells[0], [(1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0)].map(Point2::from));
+    /// let left = &cells[v.cell_of(0)];
+    /// assert_eq!(left.len(), 4);
+    /// for corner in [(1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0)] {
+    ///     assert!(left.contains(&Point2::from(corner)));
+    /// }
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn clip(&self, bounds: &ClipBox) -> Vec<Vec<Point2>> {
@@ -336,12 +362,12 @@ impl Voronoi {
 /// let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (1.0, 1.0)].map(Point2::from);
 /// let v = voronoi(&pts)?;
 /// assert_eq!(v.cell_count(), 5);
-/// let centre = v.cell(4);
+/// let centre = v.cell(v.cell_of(4));
 /// assert!(centre.bounded);
 /// let diamond: Vec<Point2> = centre.vertices.iter().map(|&k| v.vertices[k]).collect();
 /// assert_eq!(diamond.len(), 4);
 /// assert!(diamond.contains(&Point2::new(1.0, 0.0)) && diamond.contains(&Point2::new(0.0, 1.0)));
-/// assert!(v.cells().take(4).all(|c| !c.bounded && c.rays.len() == 2));
+/// assert!(v.cells().filter(|c| c.site != 4).all(|c| !c.bounded && c.rays.len() == 2));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn voronoi(points: &[Point2]) -> Result<Voronoi> {
@@ -373,8 +399,19 @@ pub fn voronoi_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Vo
     if points.is_empty() {
         return Err(Error::Empty { what: "point set" });
     }
-    let t = incremental_with(points, counter)?;
-    Ok(dual(points, &t))
+    validate(points)?;
+    if points.len() > u32::MAX as usize {
+        // Beyond the builder's range: let it report the error.
+        incremental_with(points, counter)?;
+    }
+    // Triangulate the points relabelled along a Z-order curve: the dual's passes over the
+    // sites then touch nearby memory, which is most of their cost.
+    let order = morton_order(points);
+    let local: Vec<Point2> = order.iter().map(|&i| points[i as usize]).collect();
+    let t = incremental_with(&local, counter)?;
+    let mut v = dual(&local, &t);
+    v.relabel(&order);
+    Ok(v)
 }
 
 /// The Voronoi diagram dual to `t`, a Delaunay triangulation of `points` from one of the
@@ -395,7 +432,8 @@ pub fn voronoi_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Vo
 /// // Collinear sites: two half-planes and a strip, bounded by the bisectors x = 0.5, 1.5.
 /// assert!(v.vertices.is_empty());
 /// assert_eq!(v.cell(1).rays.len(), 4);
-/// assert_eq!(v.cell(1).rays[0].origin, Point2::new(1.5, 0.0));
+/// assert_eq!(v.cell(1).rays[0].origin, Point2::new(0.5, 0.0));
+/// assert_eq!(v.cell(1).rays[2].origin, Point2::new(1.5, 0.0));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn dual(points: &[Point2], t: &Triangulation) -> Voronoi {
@@ -432,12 +470,17 @@ pub fn dual(points: &[Point2], t: &Triangulation) -> Voronoi {
 /// `FAR` bounds scaled coordinates, keeping every product in the clipper finite.
 const FAR: f64 = 4.149515568880993e180; // 2^600
 
-/// The cells of a triangulated point set: walk counter-clockwise around every site.
+/// The cells of a triangulated point set: the triangles around every site, counter-
+/// clockwise.
 ///
-/// The rows are sized first (a site's vertex count is its number of triangles, its ray
-/// count 2 on the hull), then filled with the sites taken in the order they appear in the
-/// triangle array, which the builder leaves spatially coherent, so each walk reads
-/// half-edges that are close in memory.
+/// Walking around each site from half-edge to half-edge is a chain of dependent loads
+/// that miss the cache when a site's triangles lie far apart in the arrays. Instead, every
+/// corner (half-edge, the vertices after and before the site) is scattered into its cell's
+/// row, a pass of independent memory accesses, and each row is then put in order locally:
+/// the corner after corner `c` is the one whose "after" vertex is `c`'s "before" (a hull
+/// site's row starts at the corner whose "after" vertex no corner has as "before": its
+/// outgoing hull edge). Rows longer than [`LOCAL_ROW`] (fans around one site, from
+/// cocircular input) are walked instead, so the ordering stays linear.
 fn triangulated_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
     let tri = &t.triangles;
     v.vertices = tri
@@ -445,17 +488,44 @@ fn triangulated_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
         .map(|c| circumcentre(points[c[0]], points[c[1]], points[c[2]]))
         .collect();
     let cells = v.sites.len();
-    let mut vertex_start = vec![0usize; cells + 1];
-    for &a in tri {
-        vertex_start[v.cell_of[a] + 1] += 1;
-    }
     let mut ray_start = vec![0usize; cells + 1];
     for &h in &t.hull {
         ray_start[v.cell_of[h] + 1] = 2;
     }
     for k in 0..cells {
-        vertex_start[k + 1] += vertex_start[k];
         ray_start[k + 1] += ray_start[k];
+    }
+    // Without duplicates the cells are the points themselves: skip the lookup.
+    let direct = t.duplicates.is_empty();
+    let cell_of = |site: usize| if direct { site } else { v.cell_of[site] };
+    // Row ends by counting, then the scatter moves each end down to its row's start.
+    let mut start = vec![0usize; cells + 1];
+    for &a in tri {
+        start[cell_of(a)] += 1;
+    }
+    for k in 0..cells {
+        start[k + 1] += start[k];
+    }
+    // 32-bit corners halve the scatter's memory traffic; larger inputs are walked.
+    let compact = tri.len() < u32::MAX as usize && points.len() < u32::MAX as usize;
+    let mut corners = vec![Corner::default(); if compact { tri.len() } else { 0 }];
+    for (e, &a) in tri.iter().enumerate() {
+        let k = cell_of(a);
+        start[k] -= 1;
+        if compact {
+            corners[start[k]] = Corner {
+                edge: e as u32,
+                after: tri[next_halfedge(e)] as u32,
+                before: tri[prev_halfedge(e)] as u32,
+            };
+        }
+    }
+    // Any half-edge leaving the site starts a walk; the scatter's first one per row will do.
+    let mut any_edge = vec![EMPTY; if compact { 0 } else { cells }];
+    if !compact {
+        for (e, &a) in tri.iter().enumerate() {
+            any_edge[cell_of(a)] = e;
+        }
     }
     let mut ids = vec![0usize; tri.len()];
     let unset = Ray {
@@ -464,58 +534,100 @@ fn triangulated_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
         sites: [0, 0],
     };
     let mut rays = vec![unset; ray_start[cells]];
-    let mut done = vec![false; cells];
-    for e0 in 0..tri.len() {
-        let site = tri[e0];
-        let k = v.cell_of[site];
-        if done[k] {
-            continue;
-        }
-        done[k] = true;
-        // A hull site's walk starts at its outgoing hull edge, its clockwise-most triangle:
-        // step clockwise (into the triangle right of the outgoing edge) until there is none.
-        let mut first = e0;
-        if ray_start[k + 1] > ray_start[k] {
-            while t.halfedges[first] != EMPTY {
-                first = next_halfedge(t.halfedges[first]);
+    for k in 0..cells {
+        let out = &mut ids[start[k]..start[k + 1]];
+        let on_hull = ray_start[k + 1] > ray_start[k];
+        let (first, last) = if !compact {
+            walk_row(t, any_edge[k], on_hull, out)
+        } else if out.len() <= LOCAL_ROW {
+            let row = &mut corners[start[k]..start[k + 1]];
+            order_row(row, on_hull);
+            for (slot, c) in out.iter_mut().zip(row.iter()) {
+                *slot = c.edge as usize / 3;
             }
+            (row[0].edge as usize, row[row.len() - 1].edge as usize)
+        } else {
+            walk_row(t, corners[start[k]].edge as usize, on_hull, out)
+        };
+        if on_hull {
+            // Arrive along the bisector of the outgoing hull edge `site -> q`, leave along
+            // that of the incoming one `r -> site`; both point outwards.
+            let site = tri[first];
+            let q = tri[next_halfedge(first)];
+            let r = tri[prev_halfedge(last)];
+            rays[ray_start[k]] = Ray {
+                origin: v.vertices[first / 3],
+                direction: outward_normal(points[site], points[q]),
+                sites: [site, q],
+            };
+            rays[ray_start[k] + 1] = Ray {
+                origin: v.vertices[last / 3],
+                direction: outward_normal(points[r], points[site]),
+                sites: [site, r],
+            };
         }
-        let mut e = first;
-        let mut slot = vertex_start[k];
-        loop {
-            ids[slot] = e / 3;
-            slot += 1;
-            // The previous half-edge ends at `site`; its twin leaves `site` in the next
-            // triangle counter-clockwise.
-            let twin = t.halfedges[prev_halfedge(e)];
-            if twin == EMPTY {
-                // Arrive along the bisector of the outgoing hull edge `site -> q`, leave
-                // along that of the incoming one `r -> site`; both point outwards.
-                let q = tri[next_halfedge(first)];
-                let r = tri[prev_halfedge(e)];
-                rays[ray_start[k]] = Ray {
-                    origin: v.vertices[first / 3],
-                    direction: outward_normal(points[site], points[q]),
-                    sites: [site, q],
-                };
-                rays[ray_start[k] + 1] = Ray {
-                    origin: v.vertices[e / 3],
-                    direction: outward_normal(points[r], points[site]),
-                    sites: [site, r],
-                };
-                break;
-            }
-            e = twin;
-            if e == first {
-                break;
-            }
-        }
-        debug_assert_eq!(slot, vertex_start[k + 1], "the walk covers every triangle");
     }
     v.vertex_ids = ids;
-    v.vertex_start = vertex_start;
+    v.vertex_start = start;
     v.rays = rays;
     v.ray_start = ray_start;
+}
+
+/// Rows up to this long are ordered by pairwise search (at most 32² cheap comparisons on
+/// data in cache); longer ones by walking the half-edges.
+const LOCAL_ROW: usize = 32;
+
+/// A triangle corner at a site: the half-edge leaving the site, and the triangle's other
+/// two vertices, counter-clockwise after the site.
+#[derive(Debug, Clone, Copy, Default)]
+struct Corner {
+    edge: u32,
+    after: u32,
+    before: u32,
+}
+
+/// Orders one site's corners counter-clockwise, from the outgoing hull edge if `on_hull`.
+fn order_row(row: &mut [Corner], on_hull: bool) {
+    if on_hull {
+        let first = (0..row.len())
+            .find(|&i| row.iter().all(|c| c.before != row[i].after))
+            .expect("a hull site has an outgoing hull edge");
+        row.swap(0, first);
+    }
+    for m in 0..row.len().saturating_sub(1) {
+        let want = row[m].before;
+        let next = (m + 1..row.len())
+            .find(|&j| row[j].after == want)
+            .expect("the triangles around a site form one fan");
+        row.swap(m + 1, next);
+    }
+}
+
+/// Writes the triangles around the site of half-edge `start` into `out`, counter-clockwise
+/// (from the outgoing hull edge for a hull site), by walking the half-edges; returns the
+/// first and last corners' half-edges.
+fn walk_row(t: &Triangulation, start: usize, on_hull: bool, out: &mut [usize]) -> (usize, usize) {
+    let mut first = start;
+    if on_hull {
+        // Step clockwise (into the triangle right of the outgoing edge) until there is none.
+        while t.halfedges[first] != EMPTY {
+            first = next_halfedge(t.halfedges[first]);
+        }
+    }
+    let mut e = first;
+    let mut slot = 0;
+    loop {
+        out[slot] = e / 3;
+        slot += 1;
+        // The previous half-edge ends at the site; its twin leaves it in the next triangle
+        // counter-clockwise.
+        let twin = t.halfedges[prev_halfedge(e)];
+        if twin == EMPTY || twin == first {
+            debug_assert_eq!(slot, out.len(), "the walk covers every corner");
+            return (first, e);
+        }
+        e = twin;
+    }
 }
 
 /// The cells of collinear sites (or of one site): the hull lists them along their line.
@@ -562,6 +674,42 @@ fn collinear_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
         v.vertex_start.push(0);
         v.ray_start.push(v.rays.len());
     }
+}
+
+/// The indices of `points` (finite, at most 2^32 of them) sorted along a Z-order (Morton)
+/// curve over their bounding box, 16 bits per axis: nearby points get nearby positions.
+fn morton_order(points: &[Point2]) -> Vec<u32> {
+    let (mut lo, mut hi) = (points[0], points[0]);
+    for p in points {
+        lo = Point2::new(lo.x.min(p.x), lo.y.min(p.y));
+        hi = Point2::new(hi.x.max(p.x), hi.y.max(p.y));
+    }
+    // Halves keep the range finite for coordinates of opposite signs near f64::MAX.
+    let cell = |v: f64, lo: f64, hi: f64| {
+        let range = hi / 2.0 - lo / 2.0;
+        if range > 0.0 {
+            ((v / 2.0 - lo / 2.0) / range * 65535.0) as u32
+        } else {
+            0
+        }
+    };
+    let spread = |v: u32| {
+        let mut v = v as u64 & 0xffff;
+        v = (v | (v << 8)) & 0x00ff_00ff;
+        v = (v | (v << 4)) & 0x0f0f_0f0f;
+        v = (v | (v << 2)) & 0x3333_3333;
+        (v | (v << 1)) & 0x5555_5555
+    };
+    let mut keys: Vec<u64> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let z = spread(cell(p.x, lo.x, hi.x)) | (spread(cell(p.y, lo.y, hi.y)) << 1);
+            (z << 32) | i as u64
+        })
+        .collect();
+    keys.sort_unstable();
+    keys.into_iter().map(|k| k as u32).collect()
 }
 
 /// The unit normal of the hull edge `a -> b` pointing out of the hull (to its right).
@@ -728,7 +876,7 @@ mod tests {
         let v = voronoi(&p).unwrap();
         let b = ClipBox::new(8.0, 8.0, 9.0, 9.0).unwrap();
         let cells = v.clip(&b);
-        assert_eq!(area(&cells[3]), 1.0);
-        assert!(cells[0].is_empty() && cells[4].is_empty());
+        assert_eq!(area(&cells[v.cell_of(3)]), 1.0);
+        assert!(cells[v.cell_of(0)].is_empty() && cells[v.cell_of(4)].is_empty());
     }
 }
