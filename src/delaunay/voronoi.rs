@@ -470,17 +470,12 @@ pub fn dual(points: &[Point2], t: &Triangulation) -> Voronoi {
 /// `FAR` bounds scaled coordinates, keeping every product in the clipper finite.
 const FAR: f64 = 4.149515568880993e180; // 2^600
 
-/// The cells of a triangulated point set: the triangles around every site, counter-
-/// clockwise.
+/// The cells of a triangulated point set: walk counter-clockwise around every site.
 ///
-/// Walking around each site from half-edge to half-edge is a chain of dependent loads
-/// that miss the cache when a site's triangles lie far apart in the arrays. Instead, every
-/// corner (half-edge, the vertices after and before the site) is scattered into its cell's
-/// row, a pass of independent memory accesses, and each row is then put in order locally:
-/// the corner after corner `c` is the one whose "after" vertex is `c`'s "before" (a hull
-/// site's row starts at the corner whose "after" vertex no corner has as "before": its
-/// outgoing hull edge). Rows longer than [`LOCAL_ROW`] (fans around one site, from
-/// cocircular input) are walked instead, so the ordering stays linear.
+/// One pass finds a half-edge leaving each site (the outgoing hull edge for a hull site, so
+/// its walk starts at its clockwise-most triangle); then the sites are walked in order and
+/// their rows appended. [`voronoi`] numbers the points along a space-filling curve first,
+/// so consecutive sites, and the triangles around them, are close in memory.
 fn triangulated_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
     let tri = &t.triangles;
     v.vertices = tri
@@ -488,146 +483,59 @@ fn triangulated_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
         .map(|c| circumcentre(points[c[0]], points[c[1]], points[c[2]]))
         .collect();
     let cells = v.sites.len();
-    let mut ray_start = vec![0usize; cells + 1];
-    for &h in &t.hull {
-        ray_start[v.cell_of[h] + 1] = 2;
-    }
-    for k in 0..cells {
-        ray_start[k + 1] += ray_start[k];
-    }
     // Without duplicates the cells are the points themselves: skip the lookup.
     let direct = t.duplicates.is_empty();
     let cell_of = |site: usize| if direct { site } else { v.cell_of[site] };
-    // Row ends by counting, then the scatter moves each end down to its row's start.
-    let mut start = vec![0usize; cells + 1];
-    for &a in tri {
-        start[cell_of(a)] += 1;
-    }
-    for k in 0..cells {
-        start[k + 1] += start[k];
-    }
-    // 32-bit corners halve the scatter's memory traffic; larger inputs are walked.
-    let compact = tri.len() < u32::MAX as usize && points.len() < u32::MAX as usize;
-    let mut corners = vec![Corner::default(); if compact { tri.len() } else { 0 }];
+    let mut out_edge = vec![EMPTY; cells];
     for (e, &a) in tri.iter().enumerate() {
         let k = cell_of(a);
-        start[k] -= 1;
-        if compact {
-            corners[start[k]] = Corner {
-                edge: e as u32,
-                after: tri[next_halfedge(e)] as u32,
-                before: tri[prev_halfedge(e)] as u32,
-            };
+        if out_edge[k] == EMPTY || t.halfedges[e] == EMPTY {
+            out_edge[k] = e;
         }
     }
-    // Any half-edge leaving the site starts a walk; the scatter's first one per row will do.
-    let mut any_edge = vec![EMPTY; if compact { 0 } else { cells }];
-    if !compact {
-        for (e, &a) in tri.iter().enumerate() {
-            any_edge[cell_of(a)] = e;
-        }
-    }
-    let mut ids = vec![0usize; tri.len()];
-    let unset = Ray {
-        origin: Point2::default(),
-        direction: Point2::default(),
-        sites: [0, 0],
-    };
-    let mut rays = vec![unset; ray_start[cells]];
-    for k in 0..cells {
-        let out = &mut ids[start[k]..start[k + 1]];
-        let on_hull = ray_start[k + 1] > ray_start[k];
-        let (first, last) = if !compact {
-            walk_row(t, any_edge[k], on_hull, out)
-        } else if out.len() <= LOCAL_ROW {
-            let row = &mut corners[start[k]..start[k + 1]];
-            order_row(row, on_hull);
-            for (slot, c) in out.iter_mut().zip(row.iter()) {
-                *slot = c.edge as usize / 3;
+    let mut ids = Vec::with_capacity(tri.len());
+    let mut start = Vec::with_capacity(cells + 1);
+    let mut ray_start = Vec::with_capacity(cells + 1);
+    let mut rays = Vec::with_capacity(2 * t.hull.len());
+    start.push(0);
+    ray_start.push(0);
+    for &first in &out_edge {
+        let site = tri[first];
+        let mut e = first;
+        loop {
+            ids.push(e / 3);
+            // The previous half-edge ends at `site`; its twin leaves `site` in the next
+            // triangle counter-clockwise.
+            let twin = t.halfedges[prev_halfedge(e)];
+            if twin == EMPTY {
+                // Arrive along the bisector of the outgoing hull edge `site -> q`, leave
+                // along that of the incoming one `r -> site`; both point outwards.
+                let q = tri[next_halfedge(first)];
+                let r = tri[prev_halfedge(e)];
+                rays.push(Ray {
+                    origin: v.vertices[first / 3],
+                    direction: outward_normal(points[site], points[q]),
+                    sites: [site, q],
+                });
+                rays.push(Ray {
+                    origin: v.vertices[e / 3],
+                    direction: outward_normal(points[r], points[site]),
+                    sites: [site, r],
+                });
+                break;
             }
-            (row[0].edge as usize, row[row.len() - 1].edge as usize)
-        } else {
-            walk_row(t, corners[start[k]].edge as usize, on_hull, out)
-        };
-        if on_hull {
-            // Arrive along the bisector of the outgoing hull edge `site -> q`, leave along
-            // that of the incoming one `r -> site`; both point outwards.
-            let site = tri[first];
-            let q = tri[next_halfedge(first)];
-            let r = tri[prev_halfedge(last)];
-            rays[ray_start[k]] = Ray {
-                origin: v.vertices[first / 3],
-                direction: outward_normal(points[site], points[q]),
-                sites: [site, q],
-            };
-            rays[ray_start[k] + 1] = Ray {
-                origin: v.vertices[last / 3],
-                direction: outward_normal(points[r], points[site]),
-                sites: [site, r],
-            };
+            e = twin;
+            if e == first {
+                break;
+            }
         }
+        start.push(ids.len());
+        ray_start.push(rays.len());
     }
     v.vertex_ids = ids;
     v.vertex_start = start;
     v.rays = rays;
     v.ray_start = ray_start;
-}
-
-/// Rows up to this long are ordered by pairwise search (at most 32² cheap comparisons on
-/// data in cache); longer ones by walking the half-edges.
-const LOCAL_ROW: usize = 32;
-
-/// A triangle corner at a site: the half-edge leaving the site, and the triangle's other
-/// two vertices, counter-clockwise after the site.
-#[derive(Debug, Clone, Copy, Default)]
-struct Corner {
-    edge: u32,
-    after: u32,
-    before: u32,
-}
-
-/// Orders one site's corners counter-clockwise, from the outgoing hull edge if `on_hull`.
-fn order_row(row: &mut [Corner], on_hull: bool) {
-    if on_hull {
-        let first = (0..row.len())
-            .find(|&i| row.iter().all(|c| c.before != row[i].after))
-            .expect("a hull site has an outgoing hull edge");
-        row.swap(0, first);
-    }
-    for m in 0..row.len().saturating_sub(1) {
-        let want = row[m].before;
-        let next = (m + 1..row.len())
-            .find(|&j| row[j].after == want)
-            .expect("the triangles around a site form one fan");
-        row.swap(m + 1, next);
-    }
-}
-
-/// Writes the triangles around the site of half-edge `start` into `out`, counter-clockwise
-/// (from the outgoing hull edge for a hull site), by walking the half-edges; returns the
-/// first and last corners' half-edges.
-fn walk_row(t: &Triangulation, start: usize, on_hull: bool, out: &mut [usize]) -> (usize, usize) {
-    let mut first = start;
-    if on_hull {
-        // Step clockwise (into the triangle right of the outgoing edge) until there is none.
-        while t.halfedges[first] != EMPTY {
-            first = next_halfedge(t.halfedges[first]);
-        }
-    }
-    let mut e = first;
-    let mut slot = 0;
-    loop {
-        out[slot] = e / 3;
-        slot += 1;
-        // The previous half-edge ends at the site; its twin leaves it in the next triangle
-        // counter-clockwise.
-        let twin = t.halfedges[prev_halfedge(e)];
-        if twin == EMPTY || twin == first {
-            debug_assert_eq!(slot, out.len(), "the walk covers every corner");
-            return (first, e);
-        }
-        e = twin;
-    }
 }
 
 /// The cells of collinear sites (or of one site): the hull lists them along their line.
