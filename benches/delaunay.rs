@@ -7,6 +7,32 @@
 //! rays, and compgeo's cells clipped to the same box as voronoice's.
 //!
 //! Run one group with e.g. `cargo bench --bench delaunay -- delaunay/uniform-square`.
+//!
+//! Measured on the 2-core machine shared with four other builds (load average 4 to 12),
+//! 2026-11-23. Criterion medians (wall time, so inflated and noisy under that load):
+//!
+//! | group, n | incremental | delaunator | spade bulk load | ours / faster peer |
+//! |---|---|---|---|---|
+//! | uniform-square, 10³ | 0.44 ms | 0.28 ms | 0.65 ms | 1.60 |
+//! | uniform-square, 10⁴ | 4.46 ms | 4.66 ms | 8.51 ms | 0.96 |
+//! | uniform-square, 10⁵ | 85.7 ms | 116 ms | 132 ms | 0.74 |
+//! | uniform-square, 10⁶ | 1.14 s | 2.18 s | 1.75 s | 0.65 |
+//! | clustered, 10⁶ | 0.72 s | 0.72 s | 1.09 s | 1.00 |
+//! | grid, 10⁶ | 0.45 s | 0.91 s | 0.93 s | 0.50 |
+//!
+//! The same 10⁶ inputs timed interleaved (ours, delaunator, spade, ours, ...; 7 rounds,
+//! median CPU time of the thread, which the other builds' load does not inflate):
+//!
+//! | input, n = 10⁶ | incremental | delaunator | spade bulk load | ours / faster peer |
+//! |---|---|---|---|---|
+//! | uniform-square | 0.409 s | 0.810 s | 0.694 s | 0.59 |
+//! | clustered | 0.414 s | 0.758 s | 0.731 s | 0.57 |
+//! | grid | 0.453 s | 0.783 s | 0.814 s | 0.58 |
+//!
+//! (uniform-square, 10⁶, interleaved wall time: 0.413 s, 0.862 s, 0.694 s, ratio 0.60.)
+//! Below about 10⁴ points delaunator is faster: its sweep has a smaller constant while
+//! everything fits in cache, and our fixed costs (the BRIO keys, the ghost triangles) weigh
+//! more.
 
 use compgeo::delaunay::{incremental, voronoi, ClipBox};
 use compgeo::gen::{points, PointKind};

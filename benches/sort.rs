@@ -50,7 +50,9 @@ fn quadratic(algorithm: Algorithm) -> bool {
         Algorithm::Bubble
             | Algorithm::Selection
             | Algorithm::Insertion
+            | Algorithm::CourseInsertion
             | Algorithm::BinaryInsertion
+            | Algorithm::CourseBinaryInsertion
     )
 }
 

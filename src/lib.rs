@@ -31,8 +31,8 @@
 //! | [`geometry::incircle`] | O(1), exact for every finite input |
 //! | [`sort::bubble_sort`] | Θ(n²) time, exactly n(n−1)/2 comparisons |
 //! | [`sort::selection_sort`] | Θ(n²) time, exactly n(n−1)/2 comparisons |
-//! | [`sort::insertion_sort`] | Θ(n²) time, at most n(n−1)/2 comparisons |
-//! | [`sort::binary_insertion_sort`] | O(n log n) comparisons, O(n²) time (moves) |
+//! | [`sort::insertion_sort`], [`sort::course_insertion_sort`] | O(n²) time, at most n(n−1)/2 comparisons |
+//! | [`sort::binary_insertion_sort`], [`sort::course_binary_insertion_sort`] | O(n log n) comparisons, O(n²) time (moves) |
 //! | [`sort::merge_sort`] | Θ(n log n) time, at most n⌈log₂ n⌉ comparisons |
 //! | [`sort::heap_sort`] | O(n log n) time, at most 2n log₂ n comparisons |
 //! | [`sort::quick_sort`] | O(n log n) time (introsort), at most 6n log₂ n + n comparisons |

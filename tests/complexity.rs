@@ -708,7 +708,9 @@ fn sort_entries_cover_the_required_inputs() {
         "bubble",
         "selection",
         "insertion",
+        "course-insertion",
         "binary-insertion",
+        "course-binary-insertion",
         "merge",
         "heap",
         "quick",
@@ -718,6 +720,8 @@ fn sort_entries_cover_the_required_inputs() {
     for key in [
         "sort/insertion/sorted",
         "sort/insertion/reversed",
+        "sort/course-insertion/sorted",
+        "sort/course-insertion/reversed",
         "sort/quick/sorted",
     ] {
         assert!(has(key), "{key}");
@@ -766,12 +770,13 @@ mod cli {
         let a = &results["algorithms"][0];
         assert_eq!(a["id"], "sort/insertion");
         assert_eq!(a["input"], "reversed");
-        assert_eq!(a["operation"], "moves");
+        assert_eq!(a["operation"], "comparisons");
         let e = a["exponent_counts"].as_f64().unwrap();
         assert!((e - 2.0).abs() < 0.1, "exponent {e}");
-        // Reversed keys: every pair is an inversion, one move each.
+        // Reversed keys: every pair is an inversion, one comparison and one move each.
         for s in a["samples"].as_array().unwrap() {
             let n = s["n"].as_u64().unwrap();
+            assert_eq!(s["counts"]["comparisons"].as_u64(), Some(n * (n - 1) / 2));
             assert_eq!(s["counts"]["moves"].as_u64(), Some(n * (n - 1) / 2));
         }
         assert!(out_dir.join("sort-insertion-reversed.svg").is_file());

@@ -334,6 +334,30 @@ proptest! {
     }
 }
 
+/// Integers near the edge of the kernel's small-integer stage (magnitude below 2^29) and
+/// just past it, plus small ones that make ties (collinear and cocircular sets) common.
+fn integer_coordinate() -> impl Strategy<Value = f64> {
+    let edge = (1i64 << 29) as f64;
+    prop_oneof![
+        (-3i64..=3).prop_map(|v| v as f64),
+        (-(1i64 << 29) + 1..(1i64 << 29)).prop_map(|v| v as f64),
+        (-4i64..=4).prop_map(move |k| edge + k as f64),
+        (-4i64..=4).prop_map(move |k| -edge + k as f64),
+        Just(-0.0),
+    ]
+}
+
+proptest! {
+    #![proptest_config(cases(2000))]
+
+    #[test]
+    fn orient2d_and_incircle_are_exact_on_integer_coordinates(v in proptest::array::uniform8(integer_coordinate())) {
+        let p = |i: usize| Point2::new(v[2 * i], v[2 * i + 1]);
+        prop_assert_eq!(orient_sign(orient2d(p(0), p(1), p(2))), exact_orient(p(0), p(1), p(2)));
+        prop_assert_eq!(incircle_sign(incircle(p(0), p(1), p(2), p(3))), exact_incircle(p(0), p(1), p(2), p(3)));
+    }
+}
+
 // ---------------------------------------------------------------- hand-picked cases
 
 fn naive_orient(a: Point2, b: Point2, c: Point2) -> f64 {

@@ -4,9 +4,10 @@
 
 use compgeo::count::{Counts, NoCount};
 use compgeo::sort::{
-    binary_insertion_sort_with, bubble_sort, bubble_sort_with, heap_sort_with, insertion_sort_with,
-    merge_sort_with, quick_sort_with, radix_sort_f64, radix_sort_f64_with, selection_sort_with,
-    trace, Algorithm, TRACE_MAX_LEN,
+    binary_insertion_sort_with, bubble_sort, bubble_sort_with, course_binary_insertion_sort_with,
+    course_insertion_sort_with, heap_sort_with, insertion_sort_with, merge_sort_with,
+    quick_sort_with, radix_sort_f64, radix_sort_f64_with, selection_sort_with, trace, Algorithm,
+    TRACE_MAX_LEN,
 };
 use compgeo::Error;
 use proptest::prelude::*;
@@ -163,30 +164,64 @@ fn small_sizes_have_the_seed_counts() {
             assert_eq!(c.comparisons, pairs(n), "selection n={n}");
         }
 
-        // The seed scans the sorted prefix from the front: nondecreasing input compares with
-        // every prefix element, strictly decreasing input stops at the first.
-        let (_, c) = counts_of(Algorithm::Insertion, &increasing);
-        assert_eq!((c.comparisons, c.moves), (pairs(n), 0), "insertion n={n}");
+        // Scanning from the back: reversed input compares with (and shifts) every prefix
+        // element, sorted input stops at the first.
         let (_, c) = counts_of(Algorithm::Insertion, &decreasing);
         assert_eq!(
             (c.comparisons, c.moves),
-            (n.saturating_sub(1), pairs(n)),
+            (pairs(n), pairs(n)),
+            "insertion n={n}"
+        );
+        let (_, c) = counts_of(Algorithm::Insertion, &increasing);
+        assert_eq!(
+            (c.comparisons, c.moves),
+            (n.saturating_sub(1), 0),
             "insertion n={n}"
         );
 
-        let (_, c) = counts_of(Algorithm::BinaryInsertion, &increasing);
+        // The seed's table scans from the front: the mirror image.
+        let (_, c) = counts_of(Algorithm::CourseInsertion, &increasing);
+        assert_eq!(
+            (c.comparisons, c.moves),
+            (pairs(n), 0),
+            "course insertion n={n}"
+        );
+        let (_, c) = counts_of(Algorithm::CourseInsertion, &decreasing);
+        assert_eq!(
+            (c.comparisons, c.moves),
+            (n.saturating_sub(1), pairs(n)),
+            "course insertion n={n}"
+        );
+
+        // Bisection: at most the sum of ceil(log2 k) for k = 2..=n on every input; a
+        // decreasing prefix of size k costs floor(log2 k) + 1 = ceil(log2(k + 1)) per step.
+        let bound: u64 = (2..=n).map(ceil_log2).sum();
+        for v in [&increasing, &decreasing] {
+            let (_, c) = counts_of(Algorithm::BinaryInsertion, v);
+            assert!(c.comparisons <= bound, "bisection n={n}: {c:?}");
+        }
+        let (_, c) = counts_of(Algorithm::BinaryInsertion, &decreasing);
+        let always_left: u64 = (1..n).map(|k| floor_log2(k) + 1).sum();
+        assert_eq!(
+            (c.comparisons, c.moves),
+            (always_left, pairs(n)),
+            "bisection n={n}"
+        );
+        assert_eq!(always_left, bound, "n={n}");
+
+        let (_, c) = counts_of(Algorithm::CourseBinaryInsertion, &increasing);
         let always_right: u64 = (1..n).map(|k| floor_log2(k) + 1).sum();
         assert_eq!(
             (c.comparisons, c.moves),
             (always_right, 0),
             "bisection n={n}"
         );
-        let (_, c) = counts_of(Algorithm::BinaryInsertion, &decreasing);
+        let (_, c) = counts_of(Algorithm::CourseBinaryInsertion, &decreasing);
         let always_left: u64 = (1..n).map(|k| ceil_log2(k) + 1).sum();
         assert_eq!(
             (c.comparisons, c.moves),
             (always_left, pairs(n)),
-            "bisection n={n}"
+            "course bisection n={n}"
         );
 
         let (_, c) = counts_of(Algorithm::Merge, &increasing);
@@ -238,11 +273,29 @@ proptest! {
                 if not_greater < k as u64 { not_greater + 1 } else { k as u64 }
             })
             .sum();
+        let (_, c) = counts_of(Algorithm::CourseInsertion, &v);
+        prop_assert_eq!(c.comparisons, expected);
+        prop_assert_eq!(c.moves, inv);
+
+        // From the back, step k compares with the greater prefix elements, then with the
+        // first not greater one if there is one.
+        let expected: u64 = (1..v.len())
+            .map(|k| {
+                let greater = v[..k].iter().filter(|&&y| y > v[k]).count() as u64;
+                if greater < k as u64 { greater + 1 } else { k as u64 }
+            })
+            .sum();
         let (_, c) = counts_of(Algorithm::Insertion, &v);
         prop_assert_eq!(c.comparisons, expected);
         prop_assert_eq!(c.moves, inv);
 
         let (_, c) = counts_of(Algorithm::BinaryInsertion, &v);
+        let low: u64 = (1..n).map(floor_log2).sum();
+        let high: u64 = (2..=n).map(ceil_log2).sum();
+        prop_assert!(low <= c.comparisons && c.comparisons <= high, "{:?}", c);
+        prop_assert_eq!(c.moves, inv);
+
+        let (_, c) = counts_of(Algorithm::CourseBinaryInsertion, &v);
         let low: u64 = (1..n).map(|k| floor_log2(k) + 1).sum();
         let high: u64 = (1..n).map(|k| ceil_log2(k) + 1).sum();
         prop_assert!(low <= c.comparisons && c.comparisons <= high, "{:?}", c);
@@ -412,7 +465,7 @@ proptest! {
             .count() as u64;
         let mut c = Counts::default();
         radix_sort_f64_with(&mut x, &mut c);
-        let copy_back = if varying % 2 == 1 { n } else { 0 };
+        let copy_back = if varying == 1 { n } else { 0 };
         prop_assert_eq!(c.moves, varying * n + copy_back);
         prop_assert!(x.windows(2).all(|w| w[0].total_cmp(&w[1]) != Ordering::Greater));
     }
@@ -422,11 +475,16 @@ proptest! {
 fn dispatch_matches_the_named_functions() {
     let v: Vec<i64> = (0..97).map(|i| (i * 37) % 41 - 20).collect();
     type Named = fn(&mut [i64], fn(&i64, &i64) -> Ordering, &mut Counts);
-    let named: [(Algorithm, Named); 7] = [
+    let named: [(Algorithm, Named); 9] = [
         (Algorithm::Bubble, bubble_sort_with),
         (Algorithm::Selection, selection_sort_with),
         (Algorithm::Insertion, insertion_sort_with),
+        (Algorithm::CourseInsertion, course_insertion_sort_with),
         (Algorithm::BinaryInsertion, binary_insertion_sort_with),
+        (
+            Algorithm::CourseBinaryInsertion,
+            course_binary_insertion_sort_with,
+        ),
         (Algorithm::Merge, merge_sort_with),
         (Algorithm::Heap, heap_sort_with),
         (Algorithm::Quick, quick_sort_with),
@@ -538,7 +596,7 @@ fn selection_trace_matches_the_seed_table() {
 
 #[test]
 fn sequential_insertion_trace_matches_the_seed_table() {
-    let table = trace(Algorithm::Insertion, &[7, 3, 5, 1, 4, 6]).unwrap();
+    let table = trace(Algorithm::CourseInsertion, &[7, 3, 5, 1, 4, 6]).unwrap();
     let lines: Vec<&str> = table.lines().collect();
     assert_eq!(lines[0], "Insertion sort (sequential) of 7 3 5 1 4 6");
     // The seed: "3 7 pues 3 < 7", "3 5 7 pues 5 > 3 y 5 < 7", ...
@@ -596,11 +654,76 @@ fn bisection_trace_reproduces_the_seed_block() {
 {1 , 3 , 4 , 5 , 6 , 7}
 "
     .replace(" , ", ", ");
-    let table = trace(Algorithm::BinaryInsertion, &[7, 3, 5, 1, 4, 6]).unwrap();
+    let table = trace(Algorithm::CourseBinaryInsertion, &[7, 3, 5, 1, 4, 6]).unwrap();
     let (head, rest) = table.split_once('\n').unwrap();
     assert_eq!(head, "Insertion sort (bisection) of 7 3 5 1 4 6");
     let body = rest.strip_suffix("Comparisons: 12, swaps: 0, moves: 8\n");
     assert_eq!(body, Some(seed.as_str()), "{table}");
+}
+
+/// The usual variants on the seed's list: same rows, their own comparisons.
+#[test]
+fn back_scan_and_optimal_bisection_traces_show_their_own_comparisons() {
+    let table = trace(Algorithm::Insertion, &[7, 3, 5, 1, 4, 6]).unwrap();
+    let lines: Vec<&str> = table.lines().collect();
+    assert_eq!(
+        lines[0],
+        "Insertion sort (sequential, from the back) of 7 3 5 1 4 6"
+    );
+    let rows = [
+        ("7", ""),
+        ("3 7", "3 < 7"),
+        ("3 5 7", "5 < 7 and 5 > 3"),
+        ("1 3 5 7", "1 < 7, 1 < 5 and 1 < 3"),
+        ("1 3 4 5 7", "4 < 7, 4 < 5 and 4 > 3"),
+        ("1 3 4 5 6 7", "6 < 7 and 6 > 5"),
+    ];
+    for (line, (list, since)) in lines[1..].iter().zip(rows) {
+        let (got_list, got_since) = match line.split_once("  since ") {
+            Some((l, s)) => (l.trim(), s),
+            None => (line.trim(), ""),
+        };
+        assert_eq!((got_list, got_since), (list, since), "{line}");
+    }
+    assert_eq!(lines[7], "Comparisons: 11, swaps: 0, moves: 8");
+
+    // The compared element leaves the run: 10 comparisons where the seed's table makes 12.
+    let expected = "\
+{7}
+3 ↦ {7} :
+    3 < 7 ⇒ {3, 7}
+
+{3, 7}
+5 ↦ {3 | 7} :
+    5 < 7 ⇒ 5 ↦ {3} :
+        5 > 3 ⇒ {3, 5}
+
+{3, 5, 7}
+1 ↦ {3 | 5, 7} :
+    1 < 5 ⇒ 1 ↦ {3} :
+        1 < 3 ⇒ {1, 3}
+
+{1, 3, 5, 7}
+4 ↦ {1, 3 | 5, 7} :
+    4 < 5 ⇒ 4 ↦ {1 | 3} :
+        4 > 3 ⇒ {3, 4}
+
+{1, 3, 4, 5, 7}
+6 ↦ {1, 3 | 4, 5, 7} :
+    6 > 4 ⇒ 6 ↦ {5 | 7} :
+        6 < 7 ⇒ 6 ↦ {5} :
+            6 > 5 ⇒ {5, 6}
+
+{1, 3, 4, 5, 6, 7}
+";
+    let table = trace(Algorithm::BinaryInsertion, &[7, 3, 5, 1, 4, 6]).unwrap();
+    let (head, rest) = table.split_once('\n').unwrap();
+    assert_eq!(
+        head,
+        "Insertion sort (bisection, fewest comparisons) of 7 3 5 1 4 6"
+    );
+    let body = rest.strip_suffix("Comparisons: 10, swaps: 0, moves: 8\n");
+    assert_eq!(body, Some(expected), "{table}");
 }
 
 #[test]
@@ -675,6 +798,6 @@ fn unknown_algorithm_name_is_a_clear_error() {
     assert_eq!(
         err.to_string(),
         "invalid algorithm: unknown sorting algorithm `shell`; valid names: bubble, selection, \
-         insertion, binary-insertion, merge, heap, quick"
+         insertion, course-insertion, binary-insertion, course-binary-insertion, merge, heap, quick"
     );
 }

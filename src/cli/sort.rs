@@ -14,7 +14,8 @@ use std::path::Path;
 /// Arguments of `compgeo sort`.
 #[derive(Debug, Args)]
 pub(super) struct SortArgs {
-    /// bubble, selection, insertion, binary-insertion, merge, heap or quick
+    /// bubble, selection, insertion, course-insertion, binary-insertion,
+    /// course-binary-insertion, merge, heap or quick
     #[arg(long, short)]
     algorithm: Algorithm,
     /// Print the algorithm's step table (as the course prints it) instead of JSON

@@ -18,7 +18,7 @@
 //!
 //! | input | result |
 //! |---|---|
-//! | NaN or infinite coordinate | [`Error::NonFinite`](crate::Error::NonFinite) |
+//! | NaN or infinite coordinate | [`Error::NonFinite`] |
 //! | a point equal to an earlier one | merged, listed as `[dropped, kept]` in `duplicates` |
 //! | fewer than 3 distinct points, or all collinear | no triangles; `hull` = the distinct points along their line |
 //! | otherwise | `2n - 2 - h` triangles for n distinct points, h of them on the hull boundary |

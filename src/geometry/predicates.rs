@@ -6,6 +6,8 @@
 //!    (Shewchuk's, plus an absolute slack for products that underflow). If the rounded value
 //!    clears the bound its sign is exact. Overflow gives `inf` or NaN, which never clears the
 //!    bound. Almost every call on ordinary input ends here, at the cost of the bare formula.
+//!    When it fails, `orient2d` and `incircle` first try integer arithmetic: if every coordinate is an
+//!    integer below 2^29 (grids, lattices) the determinant is exact in `i64` / `i128`.
 //! 2. **Exact stage in the safe window.** If every nonzero operand has magnitude in the
 //!    predicate's safe exponent window (see [`DEGREE_2`], [`DEGREE_4`]), floating-point
 //!    expansion arithmetic is exact: `robust`'s adaptive stages for `orient2d` and
@@ -351,10 +353,50 @@ fn cmp_coordinate(a: f64, b: f64) -> Ordering {
 #[cold]
 #[inline(never)]
 fn exact_sign<const N: usize>(predicate: Predicate, coords: &[f64; N]) -> i32 {
+    if let Some(sign) = small_integer_sign(predicate, coords) {
+        return sign;
+    }
     if predicate.window().contains_all(coords) {
         sign_in_window(predicate, coords)
     } else {
         extended::sign(predicate, coords)
+    }
+}
+
+/// Coordinates below this magnitude that are integers make every difference an integer
+/// below 2^30, so `orient2d` fits in `i64` and `incircle` in `i128` exactly.
+const SMALL_INTEGER: f64 = pow2(29);
+
+/// The exact sign of `orient2d` or `incircle` in integer arithmetic when every coordinate is
+/// an integer of magnitude below 2^29 (integer grids and lattices: their ties, which the
+/// filter cannot decide, are common), `None` otherwise. Each difference is then an exact
+/// integer below 2^30: `orient2d`'s products stay below 2^60, `incircle`'s lifts and minors
+/// below 2^61 and its terms below 2^122.
+#[inline(always)]
+fn small_integer_sign(predicate: Predicate, coords: &[f64]) -> Option<i32> {
+    let small = coords
+        .iter()
+        .all(|&v| v.abs() < SMALL_INTEGER && (v as i64) as f64 == v);
+    if !small {
+        return None;
+    }
+    let c = |i: usize| coords[i] as i64;
+    match predicate {
+        Predicate::Orient2d => {
+            let (acx, acy) = (c(0) - c(4), c(1) - c(5));
+            let (bcx, bcy) = (c(2) - c(4), c(3) - c(5));
+            Some((acx * bcy - acy * bcx).signum() as i32)
+        }
+        Predicate::Incircle => {
+            let d = |i: usize| (i128::from(c(2 * i) - c(6)), i128::from(c(2 * i + 1) - c(7)));
+            let ((ax, ay), (bx, by), (cx, cy)) = (d(0), d(1), d(2));
+            let lift = |x: i128, y: i128| x * x + y * y;
+            let det = lift(ax, ay) * (bx * cy - cx * by)
+                + lift(bx, by) * (cx * ay - ax * cy)
+                + lift(cx, cy) * (ax * by - bx * ay);
+            Some(det.signum() as i32)
+        }
+        Predicate::CmpDist | Predicate::CrossSign => None,
     }
 }
 

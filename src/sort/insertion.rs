@@ -1,23 +1,28 @@
-//! Sequential insertion sort, as the seed does it: the sorted prefix is scanned from the front.
+//! Sequential insertion sort, scanning the sorted prefix from the back.
 //!
-//! Step `k` (from 1 to n − 1) inserts `x_{k+1}` into the sorted list `x_1, …, x_k`. The seed
-//! (`003_5b666ee3e15e6353.txt`, §2.1 "Inserción secuencial") finds the place by comparing the
-//! new element with the sorted elements from the smallest up — its table for {7, 3, 5, 1, 4, 6}
-//! reads "1 3 4 5 7 pues 4 > 1, 4 > 3 y 4 < 5" — and stops at the first larger element. This
-//! file follows the seed, so its cost profile is the mirror image of the common textbook
-//! variant that scans from the back: nondecreasing input is its worst case (every element is
-//! compared with the whole prefix, n(n−1)/2 comparisons, no moves) and strictly decreasing
-//! input its best (one comparison per step, n − 1 in total, but n(n−1)/2 moves).
+//! Step `k` (from 1 to n − 1) inserts `x = v[k]` into the sorted prefix `v[..k]` (the seed,
+//! `003_5b666ee3e15e6353.txt`, §2.1 "Inserción secuencial": "se inserta x_{k+1} en la lista
+//! parcialmente ordenada {x_1, …, x_k}"). This is the usual textbook variant: `x` is compared
+//! with the prefix from its largest element down and every larger element is shifted one
+//! place right as soon as it has been compared, so comparisons and moves go together. Its cost
+//! profile is the one the seed's complexity paragraph describes: strictly decreasing input is
+//! the worst case (step `k` compares with all k prefix elements and shifts them all:
+//! n(n−1)/2 comparisons and moves), nondecreasing input the best (n − 1 comparisons, no
+//! moves).
 //!
-//! Invariants the tests check: the comparisons of each step are exactly those the seed lists
-//! (one per prefix element up to and including the first larger one); moves equal the
-//! inversions of the input; stable; the seed's table.
+//! The seed's worked table scans from the front instead ("4 > 1, 4 > 3 y 4 < 5"), which
+//! mirrors the profile; that variant is [`super::course_insertion_sort`], and its trace
+//! reproduces the table with its reasons.
+//!
+//! Invariants the tests check: comparisons are n(n−1)/2 on strictly decreasing input and
+//! n − 1 on nondecreasing input; moves equal the inversions; comparisons exceed moves by at
+//! most n − 1; stable.
 
 use super::{Counted, NoObserver, Observer, Step};
 use crate::count::{Counter, NoCount};
 use std::cmp::Ordering;
 
-/// Sorts `v` in increasing order with the seed's sequential insertion sort.
+/// Sorts `v` in increasing order with sequential insertion sort.
 ///
 /// See [`insertion_sort_with`] for the algorithm, its complexity and what it counts.
 ///
@@ -30,7 +35,7 @@ pub fn insertion_sort<T: Ord>(v: &mut [T]) {
     insertion_sort_with(v, T::cmp, &mut NoCount);
 }
 
-/// Sorts `v` by the comparator `cmp` with the seed's sequential insertion sort; stable.
+/// Sorts `v` by the comparator `cmp` with sequential insertion sort; stable.
 ///
 /// For floats pass `f64::total_cmp`. See [`insertion_sort_with`].
 ///
@@ -46,16 +51,15 @@ where
     insertion_sort_with(v, cmp, &mut NoCount);
 }
 
-/// Sorts `v` by `cmp` with the seed's sequential insertion sort, recording its operations in
-/// `counter`.
+/// Sorts `v` by `cmp` with sequential insertion sort, recording its operations in `counter`.
 ///
 /// Idea: for `k = 1, …, n − 1`, the prefix `v[..k]` is sorted; compare `x = v[k]` with
-/// `v[0], v[1], …` until the first `v[p]` with `x < v[p]` (or the end, `p = k`), then shift
-/// `v[p..k]` one place right and put `x` at `p`. Stopping only at a strictly larger element
-/// keeps equal elements in input order (stable).
+/// `v[k − 1], v[k − 2], …` while `x` is smaller, stopping at the first element not larger
+/// than `x` (or the front), then shift the larger elements one place right and put `x` in the
+/// gap. Stopping at an equal element keeps equal elements in input order (stable).
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.1 "Inserción secuencial" (the scan from the front is
-/// the seed's, see the module docs) and "Complejidad de los algoritmos de ordenación".
+/// Follows `003_5b666ee3e15e6353.txt`, §2.1 "Inserción secuencial" and "Complejidad de los
+/// algoritmos de ordenación" (see the module docs for the direction of the scan).
 ///
 /// # Errors
 ///
@@ -64,28 +68,27 @@ where
 ///
 /// # Complexity
 ///
-/// With n = `v.len()`: time Θ(n²) for every input (step `k` costs k + 1 comparisons and moves
-/// together, or k when `x` goes last); auxiliary space O(1).
+/// With n = `v.len()`: time Θ(n + I) for I the number of inversions of the input, so Θ(n²)
+/// in the worst case and Θ(n) on sorted input; auxiliary space O(1).
 ///
 /// # Counts
 ///
-/// - comparisons: step `k` makes p + 1 comparisons, or k when `x` is not smaller than any
-///   prefix element; in total at most 1 + 2 + … + (n − 1) = n(n−1)/2, the seed's bound,
-///   reached on nondecreasing input; n − 1 on strictly decreasing input;
-/// - moves: one per element shifted one place right (the seed's "desplazar"), k − p in step
-///   `k`; in total the number of inversions of the input, at most n(n−1)/2. Putting `x`
-///   into the gap is not counted.
+/// - comparisons: step `k` makes `k − p + 1` comparisons when `x` lands at position `p > 0`
+///   and `k` when it lands at the front; in total between n − 1 (nondecreasing input) and
+///   1 + 2 + … + (n − 1) = n(n−1)/2 (strictly decreasing input), the seed's bound;
+/// - moves: one per element shifted one place right (the seed's "desplazar"), `k − p` in step
+///   `k`; in total the number of inversions of the input. Putting `x` into the gap is not
+///   counted.
 ///
 /// ```
 /// use compgeo::count::Counts;
 /// use compgeo::sort::insertion_sort_with;
 ///
-/// let mut v = [7, 3, 5, 1, 4, 6];
+/// let mut v = [6, 5, 4, 3, 2, 1];
 /// let mut counts = Counts::default();
 /// insertion_sort_with(&mut v, i32::cmp, &mut counts);
-/// assert_eq!(v, [1, 3, 4, 5, 6, 7]);
-/// assert_eq!(counts.comparisons, 1 + 2 + 1 + 3 + 5); // the seed's "pues" clauses
-/// assert_eq!(counts.moves, 8); // the inversions of 7 3 5 1 4 6
+/// assert_eq!(v, [1, 2, 3, 4, 5, 6]);
+/// assert_eq!((counts.comparisons, counts.moves), (15, 15)); // n(n−1)/2 each
 /// ```
 pub fn insertion_sort_with<T, F, C>(v: &mut [T], cmp: F, counter: &mut C)
 where
@@ -103,9 +106,9 @@ where
     O: Observer<T>,
 {
     for k in 1..v.len() {
-        let mut pos = 0;
-        while pos < k && !ops.less(&v[k], &v[pos]) {
-            pos += 1;
+        let mut pos = k;
+        while pos > 0 && ops.less(&v[k], &v[pos - 1]) {
+            pos -= 1;
         }
         if pos < k {
             v[pos..=k].rotate_right(1);
@@ -121,25 +124,21 @@ mod tests {
     use crate::count::Counts;
 
     #[test]
-    fn nondecreasing_input_is_the_comparison_worst_case() {
-        for n in 0..25u64 {
-            let mut v: Vec<u64> = (0..n).map(|i| i / 3).collect();
-            let mut c = Counts::default();
-            insertion_sort_with(&mut v, u64::cmp, &mut c);
-            assert_eq!(c.comparisons, n * n.saturating_sub(1) / 2);
-            assert_eq!(c.moves, 0);
-        }
-    }
-
-    #[test]
-    fn decreasing_input_is_the_move_worst_case() {
-        for n in 0..25u64 {
-            let mut v: Vec<u64> = (0..n).rev().collect();
-            let mut c = Counts::default();
-            insertion_sort_with(&mut v, u64::cmp, &mut c);
-            assert_eq!(c.comparisons, n.saturating_sub(1));
-            assert_eq!(c.moves, n * n.saturating_sub(1) / 2);
-            assert_eq!(v, (0..n).collect::<Vec<_>>());
+    fn each_step_compares_once_more_than_it_moves_unless_x_goes_first() {
+        for k in 1..30usize {
+            for p in 0..=k {
+                // Prefix 0, 2, 4, ..., then x = 2p - 1 belongs at position p.
+                let mut v: Vec<i64> = (0..k as i64).map(|i| 2 * i).collect();
+                v.push(2 * p as i64 - 1);
+                let mut c = Counts::default();
+                insertion(&mut v, &mut Counted::new(i64::cmp, &mut c), &mut NoObserver);
+                assert!(v.windows(2).all(|w| w[0] <= w[1]));
+                // The increasing prefix costs one comparison per step.
+                let step = c.comparisons - (k as u64 - 1);
+                let expected = if p == 0 { k } else { k - p + 1 };
+                assert_eq!(step, expected as u64, "k={k} p={p}");
+                assert_eq!(c.moves, (k - p) as u64);
+            }
         }
     }
 }

@@ -6,12 +6,20 @@
 //! Merge sort, heap sort and quicksort are here so that growth plots can contrast O(n²) with
 //! O(n log n); [`radix_sort_f64`] sorts `f64` keys without comparing them.
 //!
+//! Insertion comes twice. The seed's worked tables scan the sorted prefix from the front and
+//! bisect with a repeated last comparison; those are the `course_` variants, whose traces
+//! reproduce the tables line by line. [`insertion_sort`] and [`binary_insertion_sort`] are the
+//! usual forms, with the cost profile of the seed's complexity paragraph: sequential insertion
+//! is worst on decreasing input, and bisection makes at most ⌈log₂ k⌉ comparisons per step.
+//!
 //! | algorithm | comparisons (worst) | stable | file |
 //! |---|---|---|---|
 //! | [`bubble_sort`] | n(n−1)/2, always | yes | `bubble.rs` |
 //! | [`selection_sort`] | n(n−1)/2, always | no | `selection.rs` |
-//! | [`insertion_sort`] | n(n−1)/2 | yes | `insertion.rs` |
-//! | [`binary_insertion_sort`] | Σ_{k=1}^{n−1} (⌈log₂ k⌉ + 1) | yes | `binary_insertion.rs` |
+//! | [`insertion_sort`] | n(n−1)/2 (decreasing input) | yes | `insertion.rs` |
+//! | [`course_insertion_sort`] | n(n−1)/2 (nondecreasing input) | yes | `course_insertion.rs` |
+//! | [`binary_insertion_sort`] | Σ_{k=2}^{n} ⌈log₂ k⌉ | yes | `binary_insertion.rs` |
+//! | [`course_binary_insertion_sort`] | Σ_{k=1}^{n−1} (⌈log₂ k⌉ + 1) | yes | `course_binary_insertion.rs` |
 //! | [`merge_sort`] | n⌈log₂ n⌉ − 2^⌈log₂ n⌉ + 1 | yes | `merge.rs` |
 //! | [`heap_sort`] | 2n log₂ n | no | `heap.rs` |
 //! | [`quick_sort`] | 6n log₂ n + n (introsort) | no | `quick.rs` |
@@ -22,7 +30,7 @@
 //! Each comparison sort `X` comes as `X_sort(v)` (by [`Ord`]), `X_sort_by(v, cmp)` and
 //! `X_sort_with(v, cmp, counter)`. The algorithm is written once, behind `X_sort_with`; the
 //! other two call it with [`NoCount`](crate::count::NoCount), which compiles the counting
-//! away. [`Algorithm`] names the seven comparison sorts for callers that pick one at run time
+//! away. [`Algorithm`] names the nine comparison sorts for callers that pick one at run time
 //! (the command line, the complexity report).
 //!
 //! # Counting conventions
@@ -62,6 +70,8 @@ use std::str::FromStr;
 
 mod binary_insertion;
 mod bubble;
+mod course_binary_insertion;
+mod course_insertion;
 mod heap;
 mod insertion;
 mod merge;
@@ -74,6 +84,13 @@ pub use binary_insertion::{
     binary_insertion_sort, binary_insertion_sort_by, binary_insertion_sort_with,
 };
 pub use bubble::{bubble_sort, bubble_sort_by, bubble_sort_with};
+pub use course_binary_insertion::{
+    course_binary_insertion_sort, course_binary_insertion_sort_by,
+    course_binary_insertion_sort_with,
+};
+pub use course_insertion::{
+    course_insertion_sort, course_insertion_sort_by, course_insertion_sort_with,
+};
 pub use heap::{heap_sort, heap_sort_by, heap_sort_with};
 pub use insertion::{insertion_sort, insertion_sort_by, insertion_sort_with};
 pub use merge::{merge_sort, merge_sort_by, merge_sort_with};
@@ -102,10 +119,14 @@ pub enum Algorithm {
     Bubble,
     /// [`selection_sort`]: the seed's selection sort, n(n−1)/2 comparisons.
     Selection,
-    /// [`insertion_sort`]: the seed's sequential insertion sort.
+    /// [`insertion_sort`]: sequential insertion scanning from the back.
     Insertion,
-    /// [`binary_insertion_sort`]: the seed's insertion sort by bisection.
+    /// [`course_insertion_sort`]: sequential insertion as the seed's table does it.
+    CourseInsertion,
+    /// [`binary_insertion_sort`]: insertion by bisection, at most ⌈log₂(k + 1)⌉ comparisons.
     BinaryInsertion,
+    /// [`course_binary_insertion_sort`]: insertion by bisection as the seed's table does it.
+    CourseBinaryInsertion,
     /// [`merge_sort`]: top-down merge sort.
     Merge,
     /// [`heap_sort`]: heap sort on a binary max-heap.
@@ -115,25 +136,30 @@ pub enum Algorithm {
 }
 
 impl Algorithm {
-    /// Every algorithm, the course's four first.
-    pub const ALL: [Algorithm; 7] = [
+    /// Every algorithm, the course's quadratic sorts first.
+    pub const ALL: [Algorithm; 9] = [
         Algorithm::Bubble,
         Algorithm::Selection,
         Algorithm::Insertion,
+        Algorithm::CourseInsertion,
         Algorithm::BinaryInsertion,
+        Algorithm::CourseBinaryInsertion,
         Algorithm::Merge,
         Algorithm::Heap,
         Algorithm::Quick,
     ];
 
     /// The kebab-case name used on the command line: `"bubble"`, `"selection"`, `"insertion"`,
-    /// `"binary-insertion"`, `"merge"`, `"heap"`, `"quick"`.
+    /// `"course-insertion"`, `"binary-insertion"`, `"course-binary-insertion"`, `"merge"`,
+    /// `"heap"`, `"quick"`.
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Bubble => "bubble",
             Algorithm::Selection => "selection",
             Algorithm::Insertion => "insertion",
+            Algorithm::CourseInsertion => "course-insertion",
             Algorithm::BinaryInsertion => "binary-insertion",
+            Algorithm::CourseBinaryInsertion => "course-binary-insertion",
             Algorithm::Merge => "merge",
             Algorithm::Heap => "heap",
             Algorithm::Quick => "quick",
@@ -146,7 +172,9 @@ impl Algorithm {
             self,
             Algorithm::Bubble
                 | Algorithm::Insertion
+                | Algorithm::CourseInsertion
                 | Algorithm::BinaryInsertion
+                | Algorithm::CourseBinaryInsertion
                 | Algorithm::Merge
         )
     }
@@ -162,7 +190,9 @@ impl Algorithm {
             Algorithm::Bubble => bubble_sort_with(v, cmp, counter),
             Algorithm::Selection => selection_sort_with(v, cmp, counter),
             Algorithm::Insertion => insertion_sort_with(v, cmp, counter),
+            Algorithm::CourseInsertion => course_insertion_sort_with(v, cmp, counter),
             Algorithm::BinaryInsertion => binary_insertion_sort_with(v, cmp, counter),
+            Algorithm::CourseBinaryInsertion => course_binary_insertion_sort_with(v, cmp, counter),
             Algorithm::Merge => merge_sort_with(v, cmp, counter),
             Algorithm::Heap => heap_sort_with(v, cmp, counter),
             Algorithm::Quick => quick_sort_with(v, cmp, counter),

@@ -41,7 +41,9 @@ pub fn radix_sort_f64(v: &mut [f64]) {
 /// Idea: map each float to the 64-bit key that orders as [`f64::total_cmp`] (flip the sign
 /// bit of non-negative floats, every bit of negative ones), count the keys' bytes in one
 /// pass, then for each byte from the least significant up distribute the elements stably
-/// into 256 buckets between `v` and a buffer, skipping bytes on which all keys agree.
+/// into 256 buckets, skipping bytes on which all keys agree. The first pass turns floats into
+/// keys, the middle ones move keys between two buffers, and the last turns keys back into
+/// floats as it writes them into `v`, so no pass recomputes keys and no final copy is needed.
 ///
 /// Not in the seed; it sorts what [`super::merge_sort_by`] or [`super::quick_sort_by`] with
 /// `f64::total_cmp` sort, in linear time.
@@ -53,13 +55,13 @@ pub fn radix_sort_f64(v: &mut [f64]) {
 /// # Complexity
 ///
 /// With n = `v.len()`, d = 8 passes of b = 256 buckets: time O(d(n + b)) = O(n); auxiliary
-/// space n floats plus d·b counters.
+/// space 2n keys (n when one pass suffices) plus d·b counters.
 ///
 /// # Counts
 ///
 /// No comparisons. moves: n for every pass made (a pass writes each element once into its
-/// bucket), plus n when an odd number of passes leaves the result in the buffer and it is
-/// copied back; so at most 8n, and 0 when all elements share their bit pattern.
+/// bucket), plus n when a single pass leaves the sorted keys in the buffer and they are
+/// written back; so at most 8n, and 0 when all elements share their bit pattern.
 ///
 /// ```
 /// use compgeo::count::Counts;
@@ -81,37 +83,50 @@ pub fn radix_sort_f64_with<C: Counter>(v: &mut [f64], counter: &mut C) {
     for &x in v.iter() {
         let k = key(x);
         for (pass, histogram) in histograms.iter_mut().enumerate() {
-            histogram[digit(k, pass)] += 1;
+            histogram[digit(k, pass as u32 * DIGIT_BITS)] += 1;
         }
     }
 
-    let mut buffer = vec![0.0; n];
-    let mut in_buffer = false;
-    for (pass, histogram) in histograms.iter().enumerate() {
-        if histogram.contains(&n) {
-            continue;
-        }
-        let mut next = [0usize; BUCKETS];
-        let mut sum = 0;
-        for (slot, &count) in next.iter_mut().zip(histogram) {
-            *slot = sum;
-            sum += count;
-        }
-        if in_buffer {
-            scatter(&buffer, v, pass, &mut next);
+    let passes: Vec<usize> = (0..PASSES)
+        .filter(|&pass| !histograms[pass].contains(&n))
+        .collect();
+    let Some((&last, _)) = passes.split_last() else {
+        return;
+    };
+    let mut keys = vec![0u64; n];
+    let mut spare = if passes.len() > 1 {
+        vec![0u64; n]
+    } else {
+        Vec::new()
+    };
+    for (i, &pass) in passes.iter().enumerate() {
+        let mut next = bucket_starts(&histograms[pass]);
+        let shift = pass as u32 * DIGIT_BITS;
+        if i == 0 {
+            for &x in v.iter() {
+                let k = key(x);
+                scatter(&mut keys, &mut next, shift, k, k);
+            }
+        } else if pass == last {
+            for &k in keys.iter() {
+                scatter(v, &mut next, shift, k, float(k));
+            }
         } else {
-            scatter(v, &mut buffer, pass, &mut next);
+            for &k in keys.iter() {
+                scatter(&mut spare, &mut next, shift, k, k);
+            }
+            std::mem::swap(&mut keys, &mut spare);
         }
-        in_buffer = !in_buffer;
         moves(counter, n);
     }
-    if in_buffer {
-        v.copy_from_slice(&buffer);
+    if passes.len() == 1 {
+        for (x, &k) in v.iter_mut().zip(&keys) {
+            *x = float(k);
+        }
         moves(counter, n);
     }
 }
 
-/// The unsigned key that orders as [`f64::total_cmp`].
 #[inline(always)]
 fn key(x: f64) -> u64 {
     let bits = x.to_bits();
@@ -121,19 +136,34 @@ fn key(x: f64) -> u64 {
 }
 
 #[inline(always)]
-fn digit(key: u64, pass: usize) -> usize {
-    ((key >> (pass as u32 * DIGIT_BITS)) as usize) & (BUCKETS - 1)
+fn float(key: u64) -> f64 {
+    // Keys with the top bit set came from non-negative floats: undo the flips of `key`.
+    let flip = if key >> 63 == 1 { 1 << 63 } else { u64::MAX };
+    f64::from_bits(key ^ flip)
 }
 
-/// Stable distribution of `src` into `dst` by the digit of `pass`; `next[d]` is the next free
-/// slot of bucket `d`.
 #[inline(always)]
-fn scatter(src: &[f64], dst: &mut [f64], pass: usize, next: &mut [usize; BUCKETS]) {
-    for &x in src {
-        let d = digit(key(x), pass);
-        dst[next[d]] = x;
-        next[d] += 1;
+fn digit(key: u64, shift: u32) -> usize {
+    ((key >> shift) as usize) & (BUCKETS - 1)
+}
+
+/// Bucket d's first free slot: the number of keys with a smaller digit.
+fn bucket_starts(histogram: &[usize; BUCKETS]) -> [usize; BUCKETS] {
+    let mut next = [0usize; BUCKETS];
+    let mut sum = 0;
+    for (slot, &count) in next.iter_mut().zip(histogram) {
+        *slot = sum;
+        sum += count;
     }
+    next
+}
+
+/// Writes `value` into the next free slot of `key`'s bucket.
+#[inline(always)]
+fn scatter<T>(dst: &mut [T], next: &mut [usize; BUCKETS], shift: u32, key: u64, value: T) {
+    let d = digit(key, shift);
+    dst[next[d]] = value;
+    next[d] += 1;
 }
 
 fn moves<C: Counter>(counter: &mut C, n: usize) {

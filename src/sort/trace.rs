@@ -6,6 +6,8 @@
 
 use super::binary_insertion::binary_insertion;
 use super::bubble::bubble;
+use super::course_binary_insertion::course_binary_insertion;
+use super::course_insertion::course_insertion;
 use super::heap::heap;
 use super::insertion::insertion;
 use super::merge::merge;
@@ -33,10 +35,12 @@ pub const TRACE_MAX_LEN: usize = 1000;
 ///   after the comparison (and exchange), `After pass i` with the whole list, `Final order`;
 /// - selection: `L = {…}`, then per step the position and value of the minimum, the exchange
 ///   made (or `no exchange`) and the rest of the list `L := {…}`, and `Output: {…}`;
-/// - insertion: the sorted list after each insertion and, after `since`, the comparisons
-///   that placed the new element (the seed's "pues" clauses);
-/// - binary insertion: per step the sorted list `{…}` and the bisection, one indented line
-///   per comparison, written like the seed: `x ↦ {left | right} :` and `x < e ⇒ …`.
+/// - insertion (both kinds): the sorted list after each insertion and, after `since`, the
+///   comparisons that placed the new element (for `CourseInsertion`, the seed's "pues"
+///   clauses);
+/// - binary insertion (both kinds): per step the sorted list `{…}` and the bisection, one
+///   indented line per comparison, written like the seed: `x ↦ {left | right} :` and
+///   `x < e ⇒ …` (`CourseBinaryInsertion` reproduces the seed's table).
 ///
 /// The O(n log n) references get one row per top-level step: merge sort a row per merge
 /// (`Merge {…} + {…} → {…}`), heap sort the heap after construction and after each
@@ -87,8 +91,10 @@ pub fn trace(algorithm: Algorithm, input: &[i64]) -> Result<String> {
     let title = match algorithm {
         Algorithm::Bubble => "Bubble sort",
         Algorithm::Selection => "Selection sort",
-        Algorithm::Insertion => "Insertion sort (sequential)",
-        Algorithm::BinaryInsertion => "Insertion sort (bisection)",
+        Algorithm::Insertion => "Insertion sort (sequential, from the back)",
+        Algorithm::CourseInsertion => "Insertion sort (sequential)",
+        Algorithm::BinaryInsertion => "Insertion sort (bisection, fewest comparisons)",
+        Algorithm::CourseBinaryInsertion => "Insertion sort (bisection)",
         Algorithm::Merge => "Merge sort",
         Algorithm::Heap => "Heap sort",
         Algorithm::Quick => "Quicksort",
@@ -110,9 +116,19 @@ pub fn trace(algorithm: Algorithm, input: &[i64]) -> Result<String> {
             insertion(&mut v, &mut ops, &mut rows);
             rows.table.render(&mut out);
         }
+        Algorithm::CourseInsertion => {
+            let mut rows = InsertionRows::new(input, &log);
+            course_insertion(&mut v, &mut ops, &mut rows);
+            rows.table.render(&mut out);
+        }
         Algorithm::BinaryInsertion => {
             let mut rows = BisectionRows::new(&log);
             binary_insertion(&mut v, &mut ops, &mut rows);
+            rows.finish(&v, &mut out);
+        }
+        Algorithm::CourseBinaryInsertion => {
+            let mut rows = BisectionRows::new(&log);
+            course_binary_insertion(&mut v, &mut ops, &mut rows);
             rows.finish(&v, &mut out);
         }
         Algorithm::Merge => {

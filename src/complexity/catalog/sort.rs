@@ -1,13 +1,15 @@
 //! Catalog entries of [`crate::sort`]: every comparison sort on random keys, plus the inputs
-//! where a sort's behaviour differs (insertion sort on sorted and reversed keys, quicksort on
-//! sorted keys).
+//! where a sort's behaviour differs (both sequential insertion sorts on sorted and reversed
+//! keys, quicksort on sorted keys).
 //!
 //! The counted operation is comparisons, except where the quadratic cost is in the shifts:
-//! insertion by bisection makes O(n log n) comparisons but one move per inversion, and the
-//! seed's sequential insertion sort, which scans the sorted prefix from the front, makes only
-//! n − 1 comparisons on reversed keys but n(n − 1)/2 moves. On sorted keys it is the other way
-//! round (n(n − 1)/2 comparisons, no moves): this insertion sort has no linear best case, so
-//! both its entries claim O(n²), each on the operation that carries the cost.
+//! both insertions by bisection make O(n log n) comparisons but one move per inversion. The
+//! two sequential insertion sorts mirror each other. [`crate::sort::insertion_sort`] scans
+//! from the back: reversed keys cost n(n − 1)/2 comparisons, sorted keys n − 1 (its linear best
+//! case, claimed O(n)). The seed's [`crate::sort::course_insertion_sort`] scans from the front:
+//! n − 1 comparisons on reversed keys but n(n − 1)/2 moves, and n(n − 1)/2 comparisons on
+//! sorted keys, so it has no linear best case and both its entries claim O(n²), each on the
+//! operation that carries the cost.
 //!
 //! The radix sort for `f64` keys makes no comparisons; its entry counts moves (at most eight
 //! passes of n writes each), O(n).
@@ -30,12 +32,15 @@ pub(super) fn entries() -> Vec<Entry> {
         Algorithm::Bubble,
         Algorithm::Selection,
         Algorithm::Insertion,
+        Algorithm::CourseInsertion,
         Algorithm::BinaryInsertion,
+        Algorithm::CourseBinaryInsertion,
     ];
     let mut out: Vec<Entry> = Algorithm::ALL
         .into_iter()
         .map(|algorithm| {
-            let operation = if algorithm == Algorithm::BinaryInsertion {
+            let by_bisection = [Algorithm::BinaryInsertion, Algorithm::CourseBinaryInsertion];
+            let operation = if by_bisection.contains(&algorithm) {
                 Operation::Moves
             } else {
                 Operation::Comparisons
@@ -57,14 +62,26 @@ pub(super) fn entries() -> Vec<Entry> {
             }
         })
         .collect();
+    out.push(n_log_n_sizes(entry(
+        Algorithm::Insertion,
+        SequenceKind::Sorted,
+        Bound::Linear,
+        Operation::Comparisons,
+    )));
     out.push(quadratic_sizes(entry(
         Algorithm::Insertion,
+        SequenceKind::Reversed,
+        Bound::Quadratic,
+        Operation::Comparisons,
+    )));
+    out.push(quadratic_sizes(entry(
+        Algorithm::CourseInsertion,
         SequenceKind::Sorted,
         Bound::Quadratic,
         Operation::Comparisons,
     )));
     out.push(quadratic_sizes(entry(
-        Algorithm::Insertion,
+        Algorithm::CourseInsertion,
         SequenceKind::Reversed,
         Bound::Quadratic,
         Operation::Moves,
