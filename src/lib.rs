@@ -16,7 +16,7 @@
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
 //! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
 //! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
-//! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder), exact checker |
+//! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder), exact checker; the Voronoi diagram and the proximity problems on it |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
 //! ## Algorithms and their bounds
@@ -55,6 +55,13 @@
 //! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |
 //! | [`delaunay::incremental`] | O(n log n) expected on every input (BRIO + Hilbert order) |
 //! | [`delaunay::check_delaunay`] | O(n log n + t), exact |
+//! | [`delaunay::voronoi`] | the triangulation's time, then O(n) for the dual; clipping O(n) |
+//! | [`delaunay::all_nearest_neighbours`] | O(n log n) expected; two distance evaluations per Delaunay edge |
+//! | [`delaunay::closest_pair`] | O(n log n) expected; the shortest Delaunay edge |
+//! | [`delaunay::closest_pair_divide_and_conquer`] | O(n log n) worst case, exact comparisons |
+//! | [`delaunay::NearestSearch`] | O(n log n) to build; a greedy walk per query, O(√n) expected steps on uniform input |
+//! | [`delaunay::euclidean_mst`] | O(n log n) expected; Delaunay edges ranked exactly, then Kruskal |
+//! | [`delaunay::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case |
 //!
 //! ## A first example
 //!
