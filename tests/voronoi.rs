@@ -450,6 +450,9 @@ fn cli_prints_cells_and_clipped_cells() {
     };
     assert_eq!(area(&poly(4)), 2.0);
     assert_eq!(area(&poly(0)), 0.5);
+    // Negative coordinates are values, not flags.
+    let v = run_json(&["voronoi", "--clip", "-1,-1,3,3", "-"], Some(input));
+    assert_eq!(v["clip"], serde_json::json!([-1.0, -1.0, 3.0, 3.0]));
     let v = run_json(&["voronoi", "--clip", "auto", "-"], Some(input));
     assert_eq!(v["clip"], serde_json::json!([-0.5, -0.5, 2.5, 2.5]));
 

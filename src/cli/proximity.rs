@@ -18,7 +18,7 @@ use serde::Serialize;
 pub(super) struct VoronoiArgs {
     /// Clip every cell to the box x0,y0,x1,y1 (or `auto`: the sites' bounding box grown by a
     /// quarter of its larger side) and print the clipped polygons
-    #[arg(long, value_name = "x0,y0,x1,y1")]
+    #[arg(long, value_name = "x0,y0,x1,y1", allow_hyphen_values = true)]
     clip: Option<String>,
     #[command(flatten)]
     input: PointInput,
