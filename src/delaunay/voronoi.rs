@@ -10,15 +10,16 @@ use crate::geometry::{validate, Point2};
 /// The Voronoi diagram of a point set: one cell per distinct site.
 ///
 /// Cell `k` belongs to site `sites[k]`, an index into the caller's points. [`voronoi`] lists
-/// the cells in a spatial order (it is faster to build), [`dual`] in site order.
-/// Its boundary, counter-clockwise around the site, is stored as
+/// the cells in a spatial order (it is faster to build), [`dual`] in site order. A cell's
+/// boundary, counter-clockwise around the site, is stored as
 /// [`cell_vertices(k)`](Voronoi::cell_vertices) (indices into `vertices`) and
 /// [`cell_rays(k)`](Voronoi::cell_rays); see [`Cell`] for how the two combine.
 /// Every input point has a cell: [`cell_of`](Voronoi::cell_of) maps a duplicate to the cell
 /// of the point it was merged into.
 ///
 /// `vertices[t]` is the circumcentre of triangle `t` of the triangulation the diagram was
-/// built from, so cocircular sites give several equal vertices (one per triangle).
+/// built from (for [`voronoi`], its own), so cocircular sites give several equal vertices
+/// (one per triangle).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Voronoi {
     /// The Voronoi vertices: the circumcentre of every Delaunay triangle, in triangle order
@@ -337,6 +338,10 @@ impl Voronoi {
 /// constructions, rounded to `f64` (computed on differences scaled by a power of two, so
 /// they neither overflow nor vanish for any finite input; a circumcentre beyond `f64`'s
 /// range, from a nearly flat triangle at a huge scale, is clamped to `±f64::MAX`).
+///
+/// The cells come in a spatial order: the points are numbered along a Z-order curve before
+/// they are triangulated, which keeps the dual's passes over the sites in nearby memory
+/// (cache misses are most of their cost at large n); [`Voronoi::cell_of`] finds a point's cell.
 ///
 /// Degenerate input: cocircular sites give coincident vertices (one per triangle);
 /// duplicates share the cell of the point they were merged into; collinear sites (no
