@@ -282,7 +282,17 @@ fn every_generator_kind_gives_a_consistent_diagram() {
     for kind in PointKind::ALL {
         for n in [1, 2, 3, 4, 7, 30, 300] {
             for seed in 0..2 {
-                check_vertices(&points(kind, n, seed).unwrap());
+                let pts = points(kind, n, seed).unwrap();
+                check_vertices(&pts);
+                let general = [
+                    PointKind::UniformSquare,
+                    PointKind::UniformDisk,
+                    PointKind::Gaussian,
+                    PointKind::Clustered,
+                ];
+                if general.contains(&kind) {
+                    check_relabelling(&pts);
+                }
             }
         }
     }
@@ -463,6 +473,30 @@ fn cli_prints_cells_and_clipped_cells() {
     assert_rejected(&["voronoi", "-"], Some("[]"));
 }
 
+/// `voronoi` (which triangulates the points renumbered along a curve) and the dual of the
+/// triangulation in input numbering give every site the same cell: the same vertices in
+/// the same cyclic order, bit for bit, and the same rays.
+fn check_relabelling(pts: &[Point2]) {
+    let a = voronoi(pts).unwrap();
+    let b = dual(pts, &incremental(pts).unwrap());
+    assert_eq!(a.cell_count(), b.cell_count());
+    for i in 0..pts.len() {
+        let (ca, cb) = (a.cell(a.cell_of(i)), b.cell(b.cell_of(i)));
+        assert_eq!(ca.site, cb.site);
+        assert_eq!(ca.bounded, cb.bounded);
+        assert_eq!(ca.rays, cb.rays);
+        let va: Vec<Point2> = ca.vertices.iter().map(|&k| a.vertices[k]).collect();
+        let mut vb: Vec<Point2> = cb.vertices.iter().map(|&k| b.vertices[k]).collect();
+        if !ca.bounded || va.is_empty() {
+            assert_eq!(va, vb);
+        } else {
+            let shift = vb.iter().position(|&p| p == va[0]).expect("same vertices");
+            vb.rotate_left(shift);
+            assert_eq!(va, vb);
+        }
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
@@ -479,6 +513,7 @@ proptest! {
     fn random_points(pts in prop::collection::vec((-1e3f64..1e3, -1e3f64..1e3), 1..60)) {
         let pts: Vec<Point2> = pts.into_iter().map(Point2::from).collect();
         check_vertices(&pts);
+        check_relabelling(&pts);
         check_clip(&pts, &ClipBox::around(&pts).unwrap());
     }
 }
