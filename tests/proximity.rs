@@ -276,6 +276,8 @@ fn near_duplicates_one_ulp_apart_and_exact_duplicates() {
     assert_eq!(closest_pair_divide_and_conquer(&pts).unwrap().pair, [0, 4]);
     let nn = all_nearest_neighbours(&pts).unwrap();
     assert_eq!((nn[0], nn[4]), (4, 0));
+    // A query at the duplicated point answers the smallest index of the pair.
+    assert_eq!(nearest(&pts, Point2::new(x, x)).unwrap(), 0);
     // Without the duplicate, the 1-ulp pairs tie exactly: both are accepted by check_all.
     let distinct = &pts[..4];
     check_all(distinct);
