@@ -42,6 +42,7 @@
 //! ```
 
 mod check;
+mod clip;
 mod closest_pair;
 mod construct;
 mod empty_circle;
@@ -52,6 +53,7 @@ mod triangulation;
 mod voronoi;
 
 pub use check::check_delaunay;
+pub use clip::ClipBox;
 pub use closest_pair::{closest_pair_divide_and_conquer, closest_pair_divide_and_conquer_with};
 pub use empty_circle::{largest_empty_circle, largest_empty_circle_with, EmptyCircle};
 pub use incremental::{incremental, incremental_with};
@@ -60,7 +62,7 @@ pub use proximity::{
     euclidean_mst, euclidean_mst_with, nearest, ClosestPair, Emst, NearestSearch,
 };
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
-pub use voronoi::{dual, voronoi, voronoi_with, Cell, ClipBox, Ray, Voronoi};
+pub use voronoi::{dual, voronoi, voronoi_with, Cell, Ray, Voronoi};
 
 use crate::count::{Counter, NoCount};
 use crate::error::{Error, Result};
