@@ -2,12 +2,63 @@
 //! same groups, over log-spaced sizes: uniform points in a square, clustered points, and an
 //! integer grid (cocircular quadruples everywhere, the degenerate case).
 //!
+//! The `voronoi/*` groups build Voronoi cells from the sites (triangulation included)
+//! against `voronoice` (delaunator, then the dual clipped to a box): compgeo's cells with
+//! rays, and compgeo's cells clipped to the same box as voronoice's.
+//!
 //! Run one group with e.g. `cargo bench --bench delaunay -- delaunay/uniform-square`.
+//!
+//! Measured on the 2-core machine shared with four other builds (load average 4 to 12),
+//! 2026-11-23. Criterion medians (wall time, so inflated and noisy under that load):
+//!
+//! | group, n | incremental | delaunator | spade bulk load | ours / faster peer |
+//! |---|---|---|---|---|
+//! | uniform-square, 10³ | 0.44 ms | 0.28 ms | 0.65 ms | 1.60 |
+//! | uniform-square, 10⁴ | 4.46 ms | 4.66 ms | 8.51 ms | 0.96 |
+//! | uniform-square, 10⁵ | 85.7 ms | 116 ms | 132 ms | 0.74 |
+//! | uniform-square, 10⁶ | 1.14 s | 2.18 s | 1.75 s | 0.65 |
+//! | clustered, 10⁶ | 0.72 s | 0.72 s | 1.09 s | 1.00 |
+//! | grid, 10⁶ | 0.45 s | 0.91 s | 0.93 s | 0.50 |
+//!
+//! The same 10⁶ inputs timed interleaved (ours, delaunator, spade, ours, ...; 7 rounds,
+//! median CPU time of the thread, which the other builds' load does not inflate):
+//!
+//! | input, n = 10⁶ | incremental | delaunator | spade bulk load | ours / faster peer |
+//! |---|---|---|---|---|
+//! | uniform-square | 0.409 s | 0.810 s | 0.694 s | 0.59 |
+//! | clustered | 0.414 s | 0.758 s | 0.731 s | 0.57 |
+//! | grid | 0.453 s | 0.783 s | 0.814 s | 0.58 |
+//!
+//! (uniform-square, 10⁶, interleaved wall time: 0.413 s, 0.862 s, 0.694 s, ratio 0.60.)
+//! Below about 10⁴ points delaunator is faster: its sweep has a smaller constant while
+//! everything fits in cache, and our fixed costs (the BRIO keys, the ghost triangles) weigh
+//! more.
+//!
+//! Voronoi cells, same machine and load, 2026-11-23 (`voronoi/uniform-square`, criterion
+//! medians, wall time; "clipped" clips every cell to the box voronoice is given):
+//!
+//! | n | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
+//! |---|---|---|---|---|---|
+//! | 10⁴ | 4.11 ms | 4.68 ms | 5.47 ms | 0.75 | 0.86 |
+//! | 10⁵ | 57.3 ms | 78.2 ms | 94.5 ms | 0.61 | 0.83 |
+//! | 10⁶ | 0.922 s | 1.073 s | 1.822 s | 0.51 | 0.59 |
+//!
+//! The 10⁶ inputs timed interleaved (cells, clipped, voronoice, ...; 7 rounds, median CPU
+//! time of the thread):
+//!
+//! | input, n = 10⁶ | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
+//! |---|---|---|---|---|---|
+//! | uniform-square | 0.586 s | 0.650 s | 1.219 s | 0.48 | 0.53 |
+//! | clustered | 0.608 s | 0.676 s | 1.136 s | 0.54 | 0.59 |
+//!
+//! About two thirds of compgeo's time is the triangulation; the dual walks the sites in a
+//! Z-order numbering (see `compgeo::delaunay::voronoi`), and page faults on the fresh
+//! arrays are a sizeable share of the rest.
 
-use compgeo::delaunay::{divide_and_conquer, incremental};
+use compgeo::delaunay::{divide_and_conquer, incremental, voronoi, ClipBox};
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::Point2;
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion, Throughput};
 use spade::Triangulation as _;
 use std::hint::black_box;
 use std::time::Duration;
@@ -60,5 +111,59 @@ fn spade_bulk_load(pts: &[Point2]) -> spade::DelaunayTriangulation<spade::Point2
     spade::DelaunayTriangulation::bulk_load(input).unwrap()
 }
 
-criterion_group!(benches, triangulations);
+fn voronoi_cells(c: &mut Criterion) {
+    let groups: [(PointKind, &[usize]); 2] = [
+        (PointKind::UniformSquare, &[10_000, 100_000, 1_000_000]),
+        (PointKind::Clustered, &[10_000, 100_000, 1_000_000]),
+    ];
+    for (kind, sizes) in groups {
+        let mut group = c.benchmark_group(format!("voronoi/{kind}"));
+        group
+            .sample_size(10)
+            .warm_up_time(Duration::from_millis(500))
+            .measurement_time(Duration::from_secs(4));
+        for &n in sizes {
+            let pts = points(kind, n, SEED).unwrap();
+            // One box for both crates: the sites' bounding box grown by a quarter.
+            let bounds = ClipBox::around(&pts).unwrap();
+            group.throughput(Throughput::Elements(n as u64));
+            group.bench_with_input(BenchmarkId::new("compgeo-cells", n), &pts, |b, pts| {
+                b.iter(|| voronoi(black_box(pts)).unwrap())
+            });
+            group.bench_with_input(BenchmarkId::new("compgeo-clipped", n), &pts, |b, pts| {
+                b.iter(|| voronoi(black_box(pts)).unwrap().clip(&bounds))
+            });
+            let sites: Vec<voronoice::Point> = pts
+                .iter()
+                .map(|p| voronoice::Point { x: p.x, y: p.y })
+                .collect();
+            let centre = voronoice::Point {
+                x: (bounds.min.x + bounds.max.x) / 2.0,
+                y: (bounds.min.y + bounds.max.y) / 2.0,
+            };
+            let vbox = voronoice::BoundingBox::new(
+                centre,
+                bounds.max.x - bounds.min.x,
+                bounds.max.y - bounds.min.y,
+            );
+            group.bench_with_input(BenchmarkId::new("voronoice", n), &sites, |b, sites| {
+                b.iter_batched(
+                    || sites.clone(),
+                    |sites| {
+                        voronoice::VoronoiBuilder::default()
+                            .set_sites(sites)
+                            .set_bounding_box(vbox.clone())
+                            .set_lloyd_relaxation_iterations(0)
+                            .build()
+                            .unwrap()
+                    },
+                    BatchSize::LargeInput,
+                )
+            });
+        }
+        group.finish();
+    }
+}
+
+criterion_group!(benches, triangulations, voronoi_cells);
 criterion_main!(benches);

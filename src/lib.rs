@@ -16,7 +16,7 @@
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
 //! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
 //! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
-//! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the seed's divide and conquer, Lawson's flips), exact checker |
+//! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the seed's divide and conquer, Lawson's flips), exact checker; the Voronoi diagram and the proximity problems on it |
 //! | [`spline`] | Bernstein basis and Bézier curves, generic over the scalar (`f64`, exact rationals) and the dimension |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
@@ -67,6 +67,13 @@
 //! | [`delaunay::divide_and_conquer`] | O(n log n) worst case (Guibas–Stolfi merge) |
 //! | [`delaunay::lawson`] | O(n²) worst case: Θ(n²) in-circle tests on a parabola |
 //! | [`delaunay::check_delaunay`] | O(n log n + t), exact |
+//! | [`delaunay::voronoi`] | the triangulation's time, then O(n) for the dual; clipping O(n) |
+//! | [`delaunay::all_nearest_neighbours`] | O(n log n) expected; two distance evaluations per Delaunay edge |
+//! | [`delaunay::closest_pair`] | O(n log n) expected; the shortest Delaunay edge |
+//! | [`delaunay::closest_pair_divide_and_conquer`] | O(n log n) worst case, exact comparisons |
+//! | [`delaunay::NearestSearch`] | O(n log n) to build; a greedy walk per query, O(√n) expected steps on uniform input |
+//! | [`delaunay::euclidean_mst`] | O(n log n) expected; Delaunay edges ranked exactly, then Kruskal |
+//! | [`delaunay::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case |
 //! | [`spline::Bezier::de_casteljau`] (degree n) | Θ(n²): exactly n(n+1)/2 affine combinations per point |
 //! | [`spline::Bezier::horner`], [`spline::Bezier::eval`] | Θ(n): n + 1 point operations per point |
 //! | [`spline::Bezier::split`], [`spline::Bezier::blossom`], [`spline::Bezier::derivative_at`] | Θ(n²) |

@@ -20,6 +20,7 @@ mod hull;
 pub mod input;
 mod interpolate;
 pub mod output;
+mod proximity;
 mod report;
 mod sort;
 mod stats;
@@ -67,6 +68,16 @@ enum Command {
     Interpolate(interpolate::InterpolateArgs),
     /// Delaunay triangulation of a point set: CCW triangles, hull, merged duplicates
     Delaunay(delaunay::DelaunayArgs),
+    /// Voronoi diagram: cells per site (vertices, rays), or cells clipped to a box
+    Voronoi(proximity::VoronoiArgs),
+    /// Closest pair of points, via Delaunay or by divide and conquer
+    ClosestPair(proximity::ClosestPairArgs),
+    /// Nearest point to a query, by a walk on the Delaunay triangulation
+    Nearest(proximity::NearestArgs),
+    /// Euclidean minimum spanning tree from the Delaunay edges
+    Emst(proximity::PointsArgs),
+    /// Largest empty circle centred in the convex hull
+    EmptyCircle(proximity::PointsArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -99,6 +110,11 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Bezier(args) => bezier::run(args),
         Command::Interpolate(args) => interpolate::run(args),
         Command::Delaunay(args) => delaunay::run(args),
+        Command::Voronoi(args) => proximity::run_voronoi(args),
+        Command::ClosestPair(args) => proximity::run_closest_pair(args),
+        Command::Nearest(args) => proximity::run_nearest(args),
+        Command::Emst(args) => proximity::run_emst(args),
+        Command::EmptyCircle(args) => proximity::run_empty_circle(args),
     }
 }
 

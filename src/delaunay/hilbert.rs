@@ -91,25 +91,59 @@ fn grid_scale(min: f64, max: f64, cells: f64) -> f64 {
     }
 }
 
-/// The position of cell `(x, y)` along the Hilbert curve over the `2^BITS` by `2^BITS` grid.
-fn hilbert_index(mut x: u32, mut y: u32) -> u64 {
-    let last = (1u32 << BITS) - 1;
+/// The position of cell `(x, y)` along the Hilbert curve over the `2^BITS` by `2^BITS` grid:
+/// four levels (eight bits of the index) per lookup in [`STEP`].
+fn hilbert_index(x: u32, y: u32) -> u64 {
+    let mut state = 0usize;
     let mut d = 0u64;
-    let mut s = 1u32 << (BITS - 1);
-    while s > 0 {
-        let rx = u32::from(x & s != 0);
-        let ry = u32::from(y & s != 0);
-        d += u64::from(s) * u64::from(s) * u64::from((3 * rx) ^ ry);
-        if ry == 0 {
-            if rx == 1 {
-                x = last - x;
-                y = last - y;
-            }
-            std::mem::swap(&mut x, &mut y);
-        }
-        s >>= 1;
+    let mut shift = BITS;
+    while shift > 0 {
+        shift -= 4;
+        let xy = (((x >> shift) & 15) << 4 | ((y >> shift) & 15)) as usize;
+        let entry = STEP[(state << 8) | xy];
+        d = (d << 8) | u64::from(entry & 0xFF);
+        state = usize::from(entry >> 8);
     }
     d
+}
+
+/// For each orientation state (see [`level`]) and four bits of x and of y: the eight index
+/// bits of those four levels (low byte) and the state after them (high byte).
+static STEP: [u16; 4 * 256] = step_table();
+
+const fn step_table() -> [u16; 4 * 256] {
+    let mut table = [0u16; 4 * 256];
+    let mut state = 0;
+    while state < 4 {
+        let mut xy = 0;
+        while xy < 256 {
+            let (mut s, mut d) = (state as u32, 0u32);
+            let mut bit = 4;
+            while bit > 0 {
+                bit -= 1;
+                let (digit, next) = level(s, (xy >> (4 + bit)) & 1, (xy >> bit) & 1);
+                d = (d << 2) | digit;
+                s = next;
+            }
+            table[(state << 8) | xy as usize] = (d | (s << 8)) as u16;
+            xy += 1;
+        }
+        state += 1;
+    }
+    table
+}
+
+/// One level of the curve. The sub-square's orientation is a state of two flags, bit 0
+/// "axes swapped" and bit 1 "both axes reflected" (they commute, so every composition is
+/// one of the four states). Returns the level's two index bits and the next state.
+const fn level(state: u32, bx: u32, by: u32) -> (u32, u32) {
+    let (swapped, reflected) = (state & 1, state >> 1);
+    let cross = (bx ^ by) & swapped;
+    let (tx, ty) = (bx ^ cross ^ reflected, by ^ cross ^ reflected);
+    // The lower half in y turns the sub-square: a swap, plus a reflection on the right.
+    let low = 1 ^ ty;
+    let next = (swapped ^ low) | ((reflected ^ (low & tx)) << 1);
+    ((3 * tx) ^ ty, next)
 }
 
 /// SplitMix64: a tiny, good-enough generator for the rounds (and the walk's coin flips).
@@ -134,8 +168,8 @@ mod tests {
     #[test]
     fn hilbert_index_visits_neighbouring_cells_in_turn() {
         // Along the curve, consecutive indices are cells one step apart.
-        let side = 1u32 << 4;
-        let scale = 1u32 << (BITS - 4);
+        let side = 1u32 << 6;
+        let scale = 1u32 << (BITS - 6);
         let mut cells: Vec<(u64, u32, u32)> = (0..side)
             .flat_map(|x| (0..side).map(move |y| (x, y)))
             .map(|(x, y)| (hilbert_index(x * scale, y * scale), x, y))

@@ -35,9 +35,11 @@ use crate::geometry::{validate, CountedPredicates, InCircle, Orientation, Point2
 /// stores 32-bit indices).
 ///
 /// # Complexity
-/// O(n log n) expected time on every input for n points (the sort; walks and flips are
-/// O(n) expected for uniform-like input after the Hilbert sort, and the BRIO keeps the
-/// flips O(n) expected in the worst case), O(n) auxiliary space.
+/// For n points: O(n log n) for the order (sorts of 64-bit keys); O(n) expected flips and
+/// in-circle tests on every input, because each BRIO round is a random sample (Amenta, Choi
+/// and Rote); the walks take O(1) steps per point on uniform-like input after the Hilbert
+/// sort and are not bounded in the worst case (measured: O(log n) steps per point on points
+/// on a parabola, so O(n log n) there). O(n) auxiliary space.
 ///
 /// # Counts
 /// Orientation tests (the walk, the hull side of ghost triangles) and in-circle tests (the
@@ -66,8 +68,8 @@ pub fn incremental(points: &[Point2]) -> Result<Triangulation> {
 /// As [`incremental`].
 ///
 /// # Complexity
-/// As [`incremental`]. On uniform input about 3 orientation tests and 4 to 5 in-circle
-/// tests per point.
+/// As [`incremental`]. Measured on uniform input: about 7 orientation tests and 9 in-circle
+/// tests per point, at every size from 10^3 to 10^6.
 ///
 /// ```
 /// use compgeo::count::Counts;

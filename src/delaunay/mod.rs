@@ -44,18 +44,32 @@
 //! ```
 
 mod check;
+mod clip;
+mod closest_pair;
+mod construct;
 mod divide_conquer;
+mod empty_circle;
 mod hilbert;
 mod incremental;
 mod lawson;
+mod proximity;
 mod quad_edge;
 mod triangulation;
+mod voronoi;
 
 pub use check::check_delaunay;
+pub use clip::ClipBox;
+pub use closest_pair::{closest_pair_divide_and_conquer, closest_pair_divide_and_conquer_with};
 pub use divide_conquer::{divide_and_conquer, divide_and_conquer_with};
+pub use empty_circle::{largest_empty_circle, largest_empty_circle_with, EmptyCircle};
 pub use incremental::{incremental, incremental_with};
 pub use lawson::{lawson, lawson_with};
+pub use proximity::{
+    all_nearest_neighbours, all_nearest_neighbours_with, closest_pair, closest_pair_with,
+    euclidean_mst, euclidean_mst_with, nearest, ClosestPair, Emst, NearestSearch,
+};
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
+pub use voronoi::{dual, voronoi, voronoi_with, Cell, Ray, Voronoi};
 
 use crate::count::{Counter, NoCount};
 use crate::error::{Error, Result};

@@ -147,12 +147,14 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(hull::entries());
     all.extend(spline::entries());
     all.extend(delaunay::entries());
+    all.extend(proximity::entries());
     all
 }
 
 mod delaunay;
 mod graph;
 mod hull;
+mod proximity;
 mod sort;
 mod spline;
 

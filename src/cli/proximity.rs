@@ -1,0 +1,269 @@
+//! `compgeo voronoi`, `closest-pair`, `nearest`, `emst` and `empty-circle`: the proximity
+//! problems of the Delaunay module.
+
+use super::input::PointInput;
+use super::output::print_json;
+use super::CliError;
+use crate::count::Counts;
+use crate::delaunay::{
+    closest_pair_divide_and_conquer_with, closest_pair_with, euclidean_mst_with,
+    largest_empty_circle_with, voronoi, ClipBox, NearestSearch, Ray,
+};
+use crate::geometry::Point2;
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+
+/// Arguments of `compgeo voronoi`.
+#[derive(Debug, Args)]
+pub(super) struct VoronoiArgs {
+    /// Clip every cell to the box x0,y0,x1,y1 (or `auto`: the sites' bounding box grown by a
+    /// quarter of its larger side) and print the clipped polygons
+    #[arg(long, value_name = "x0,y0,x1,y1", allow_hyphen_values = true)]
+    clip: Option<String>,
+    #[command(flatten)]
+    input: PointInput,
+}
+
+/// Arguments of `compgeo closest-pair`.
+#[derive(Debug, Args)]
+pub(super) struct ClosestPairArgs {
+    /// delaunay (the shortest Delaunay edge) or divide-and-conquer (Shamos's O(n log n))
+    #[arg(long, short, value_enum, default_value = "delaunay")]
+    algorithm: PairAlgorithm,
+    #[command(flatten)]
+    input: PointInput,
+}
+
+/// Arguments of `compgeo nearest`.
+#[derive(Debug, Args)]
+pub(super) struct NearestArgs {
+    /// The query point x,y
+    #[arg(long, value_name = "x,y", allow_hyphen_values = true)]
+    query: String,
+    #[command(flatten)]
+    input: PointInput,
+}
+
+/// Arguments of `compgeo emst` and `compgeo empty-circle`.
+#[derive(Debug, Args)]
+pub(super) struct PointsArgs {
+    #[command(flatten)]
+    input: PointInput,
+}
+
+/// The closest-pair algorithms by their command-line names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum PairAlgorithm {
+    /// The shortest Delaunay edge.
+    Delaunay,
+    /// Shamos's divide and conquer.
+    DivideAndConquer,
+}
+
+/// A ray as printed.
+#[derive(Debug, Serialize)]
+struct RayOutput {
+    origin: [f64; 2],
+    direction: [f64; 2],
+    sites: [usize; 2],
+}
+
+/// One cell as printed: `rays` only without `--clip`.
+#[derive(Debug, Serialize)]
+struct CellOutput {
+    site: usize,
+    vertices: Vec<usize>,
+    bounded: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    rays: Option<Vec<RayOutput>>,
+}
+
+/// `{"vertices": [[x, y], ...], "cells": [...], "cell_of": [k, ...]}`, plus `"clip"` when
+/// clipped.
+#[derive(Debug, Serialize)]
+struct VoronoiOutput {
+    vertices: Vec<[f64; 2]>,
+    cells: Vec<CellOutput>,
+    cell_of: Vec<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    clip: Option<[f64; 4]>,
+}
+
+/// `{"pair": [i, j], "points": [[x, y], [x, y]], "distance": d, "algorithm": "...",
+/// "counts": {...}}`.
+#[derive(Debug, Serialize)]
+struct PairOutput {
+    algorithm: &'static str,
+    pair: [usize; 2],
+    points: [[f64; 2]; 2],
+    distance: f64,
+    counts: Counts,
+}
+
+/// `{"index": i, "point": [x, y], "distance": d, "counts": {...}}`.
+#[derive(Debug, Serialize)]
+struct NearestOutput {
+    index: usize,
+    point: [f64; 2],
+    distance: f64,
+    counts: Counts,
+}
+
+/// `{"edges": [[u, v], ...], "length": l, "counts": {...}}`.
+#[derive(Debug, Serialize)]
+struct EmstOutput {
+    edges: Vec<[usize; 2]>,
+    length: f64,
+    counts: Counts,
+}
+
+/// `{"centre": [x, y], "radius": r, "sites": [i, ...], "counts": {...}}`.
+#[derive(Debug, Serialize)]
+struct CircleOutput {
+    centre: [f64; 2],
+    radius: f64,
+    sites: Vec<usize>,
+    counts: Counts,
+}
+
+/// Runs `compgeo voronoi`.
+pub(super) fn run_voronoi(args: VoronoiArgs) -> Result<(), CliError> {
+    let points = args.input.read()?;
+    let bounds = match args.clip.as_deref() {
+        None => None,
+        Some("auto") => Some(ClipBox::around(&points)?),
+        Some(text) => {
+            let [x0, y0, x1, y1] = parse_numbers::<4>("--clip", text)?;
+            Some(ClipBox::new(x0, y0, x1, y1)?)
+        }
+    };
+    let v = voronoi(&points)?;
+    let cell_of = (0..points.len()).map(|i| v.cell_of(i)).collect();
+    let out = match bounds {
+        None => VoronoiOutput {
+            vertices: v.vertices.iter().map(|&p| p.into()).collect(),
+            cells: v
+                .cells()
+                .map(|c| CellOutput {
+                    site: c.site,
+                    vertices: c.vertices.to_vec(),
+                    bounded: c.bounded,
+                    rays: Some(c.rays.iter().map(ray_output).collect()),
+                })
+                .collect(),
+            cell_of,
+            clip: None,
+        },
+        Some(b) => {
+            let mut vertices = Vec::new();
+            let mut cells = Vec::with_capacity(v.cell_count());
+            for (k, cell) in v.cells().enumerate() {
+                let polygon = v.clip_cell(k, &b);
+                let first = vertices.len();
+                vertices.extend(polygon.iter().map(|&p| <[f64; 2]>::from(p)));
+                cells.push(CellOutput {
+                    site: cell.site,
+                    vertices: (first..vertices.len()).collect(),
+                    bounded: cell.bounded,
+                    rays: None,
+                });
+            }
+            VoronoiOutput {
+                vertices,
+                cells,
+                cell_of,
+                clip: Some([b.min.x, b.min.y, b.max.x, b.max.y]),
+            }
+        }
+    };
+    print_json(&out)
+}
+
+/// Runs `compgeo closest-pair`.
+pub(super) fn run_closest_pair(args: ClosestPairArgs) -> Result<(), CliError> {
+    let points = args.input.read()?;
+    let mut counts = Counts::default();
+    let (name, best) = match args.algorithm {
+        PairAlgorithm::Delaunay => ("delaunay", closest_pair_with(&points, &mut counts)?),
+        PairAlgorithm::DivideAndConquer => (
+            "divide-and-conquer",
+            closest_pair_divide_and_conquer_with(&points, &mut counts)?,
+        ),
+    };
+    print_json(&PairOutput {
+        algorithm: name,
+        pair: best.pair,
+        points: best.pair.map(|i| points[i].into()),
+        distance: best.distance,
+        counts,
+    })
+}
+
+/// Runs `compgeo nearest`.
+pub(super) fn run_nearest(args: NearestArgs) -> Result<(), CliError> {
+    let [x, y] = parse_numbers::<2>("--query", &args.query)?;
+    let points = args.input.read()?;
+    let query = Point2::new(x, y);
+    let search = NearestSearch::new(&points)?;
+    let mut counts = Counts::default();
+    let index = search.nearest_with(query, None, &mut counts)?;
+    let p = points[index];
+    print_json(&NearestOutput {
+        index,
+        point: p.into(),
+        distance: (p.x - x).hypot(p.y - y),
+        counts,
+    })
+}
+
+/// Runs `compgeo emst`.
+pub(super) fn run_emst(args: PointsArgs) -> Result<(), CliError> {
+    let points = args.input.read()?;
+    let mut counts = Counts::default();
+    let tree = euclidean_mst_with(&points, &mut counts)?;
+    print_json(&EmstOutput {
+        edges: tree.edges,
+        length: tree.length,
+        counts,
+    })
+}
+
+/// Runs `compgeo empty-circle`.
+pub(super) fn run_empty_circle(args: PointsArgs) -> Result<(), CliError> {
+    let points = args.input.read()?;
+    let mut counts = Counts::default();
+    let c = largest_empty_circle_with(&points, &mut counts)?;
+    print_json(&CircleOutput {
+        centre: c.centre.into(),
+        radius: c.radius,
+        sites: c.sites,
+        counts,
+    })
+}
+
+fn ray_output(r: &Ray) -> RayOutput {
+    RayOutput {
+        origin: r.origin.into(),
+        direction: r.direction.into(),
+        sites: r.sites,
+    }
+}
+
+/// `N` comma-separated numbers; NaN and infinities parse here and are rejected by the
+/// library with a message naming the parameter.
+fn parse_numbers<const N: usize>(flag: &str, text: &str) -> Result<[f64; N], CliError> {
+    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+    let bad = || {
+        CliError::Usage(format!(
+            "{flag} expects {N} comma-separated numbers, got '{text}'"
+        ))
+    };
+    if parts.len() != N {
+        return Err(bad());
+    }
+    let mut out = [0.0; N];
+    for (slot, part) in out.iter_mut().zip(parts) {
+        *slot = part.parse().map_err(|_| bad())?;
+    }
+    Ok(out)
+}

@@ -1,0 +1,435 @@
+//! The Voronoi diagram as the dual of the Delaunay triangulation (clipping is in `clip.rs`).
+
+use super::construct::{circumcentre, midpoint, unit_direction};
+use super::incremental::incremental_with;
+use super::triangulation::{next_halfedge, prev_halfedge, Triangulation, EMPTY};
+use crate::count::{Counter, NoCount};
+use crate::error::{Error, Result};
+use crate::geometry::{validate, Point2};
+
+/// The Voronoi diagram of a point set: one cell per distinct site.
+///
+/// Cell `k` belongs to site `sites[k]`, an index into the caller's points. [`voronoi`] lists
+/// the cells in a spatial order (it is faster to build), [`dual`] in site order. A cell's
+/// boundary, counter-clockwise around the site, is stored as
+/// [`cell_vertices(k)`](Voronoi::cell_vertices) (indices into `vertices`) and
+/// [`cell_rays(k)`](Voronoi::cell_rays); see [`Cell`] for how the two combine.
+/// Every input point has a cell: [`cell_of`](Voronoi::cell_of) maps a duplicate to the cell
+/// of the point it was merged into.
+///
+/// `vertices[t]` is the circumcentre of triangle `t` of the triangulation the diagram was
+/// built from (for [`voronoi`], its own), so cocircular sites give several equal vertices
+/// (one per triangle).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Voronoi {
+    /// The Voronoi vertices: the circumcentre of every Delaunay triangle, in triangle order
+    /// (rounded constructions, see [`voronoi`]).
+    pub vertices: Vec<Point2>,
+    /// The site of each cell.
+    pub sites: Vec<usize>,
+    /// `vertex_ids[vertex_start[k]..vertex_start[k + 1]]` are cell k's vertices.
+    vertex_start: Vec<usize>,
+    vertex_ids: Vec<usize>,
+    ray_start: Vec<usize>,
+    rays: Vec<Ray>,
+    cell_of: Vec<usize>,
+}
+
+/// One cell of a [`Voronoi`] diagram, borrowed from it.
+///
+/// The boundary, counter-clockwise around `site`, is made of chains. A bounded cell is one
+/// closed chain: the polygon `vertices`. An unbounded cell of a triangulated point set has
+/// one chain: it arrives from infinity along `rays[0]` (which starts at `vertices[0]` and
+/// points away, to infinity), passes through `vertices` and leaves along `rays[1]` (from the
+/// last vertex). For collinear sites there are no vertices: each bisector line of the
+/// cell's boundary is a chain of two opposite rays from the midpoint of the two sites
+/// (`rays[2k]` arriving, `rays[2k + 1]` leaving). A single site's cell is the whole plane:
+/// no vertices, no rays, unbounded.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cell<'a> {
+    /// The site (an index into the caller's points).
+    pub site: usize,
+    /// The finite vertices, counter-clockwise, as indices into [`Voronoi::vertices`].
+    pub vertices: &'a [usize],
+    /// The rays, in pairs (arriving, leaving) per chain of the boundary; empty iff bounded
+    /// or the only site.
+    pub rays: &'a [Ray],
+    /// Whether the cell is a bounded polygon: exactly when the site is not on the convex
+    /// hull's boundary (Theorem 2.32), decided from the triangulation's topology.
+    pub bounded: bool,
+}
+
+/// A half-line of a cell's boundary, on the bisector of two sites.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Ray {
+    /// Where it starts: a Voronoi vertex, or for collinear sites the midpoint of the two.
+    pub origin: Point2,
+    /// A unit vector pointing to infinity (rounded), perpendicular to `sites[1] - sites[0]`.
+    pub direction: Point2,
+    /// The cell's site and the site across the ray.
+    pub sites: [usize; 2],
+}
+
+impl Voronoi {
+    /// Renames the sites: local point `j` is input point `order[j]`. A cell's site becomes
+    /// the smallest input index among its points, as in the triangulation's duplicates.
+    fn relabel(&mut self, order: &[u32]) {
+        let mut site = vec![usize::MAX; self.sites.len()];
+        let mut cell_of = vec![0usize; order.len()];
+        for (j, &i) in order.iter().enumerate() {
+            let (c, i) = (self.cell_of[j], i as usize);
+            cell_of[i] = c;
+            site[c] = site[c].min(i);
+        }
+        for ray in &mut self.rays {
+            ray.sites = ray.sites.map(|j| site[self.cell_of[j]]);
+        }
+        self.sites = site;
+        self.cell_of = cell_of;
+    }
+
+    /// The number of cells (distinct sites).
+    pub fn cell_count(&self) -> usize {
+        self.sites.len()
+    }
+
+    /// Cell `k`. Panics if `k >= cell_count()`.
+    pub fn cell(&self, k: usize) -> Cell<'_> {
+        let rays = self.cell_rays(k);
+        Cell {
+            site: self.sites[k],
+            vertices: self.cell_vertices(k),
+            rays,
+            bounded: rays.is_empty() && self.sites.len() > 1,
+        }
+    }
+
+    /// The cells, in the order of [`sites`](Voronoi::sites).
+    pub fn cells(&self) -> impl ExactSizeIterator<Item = Cell<'_>> + '_ {
+        (0..self.cell_count()).map(|k| self.cell(k))
+    }
+
+    /// The finite vertices of cell `k`, counter-clockwise. Panics if `k` is out of range.
+    pub fn cell_vertices(&self, k: usize) -> &[usize] {
+        &self.vertex_ids[self.vertex_start[k]..self.vertex_start[k + 1]]
+    }
+
+    /// The rays of cell `k` (see [`Cell`]). Panics if `k` is out of range.
+    pub fn cell_rays(&self, k: usize) -> &[Ray] {
+        &self.rays[self.ray_start[k]..self.ray_start[k + 1]]
+    }
+
+    /// The cell holding input point `i` (a duplicate shares the cell of the point it was
+    /// merged into). Panics if `i` is not an index of the input.
+    pub fn cell_of(&self, i: usize) -> usize {
+        self.cell_of[i]
+    }
+}
+
+/// The Voronoi diagram of `points`, computed as the dual of their Delaunay triangulation
+/// (the crate's [`incremental`](super::incremental) builder).
+///
+/// The idea (`003_5b666ee3e15e6353.txt`, §2.4 "Diagrama de Voronoi", Observations 2.29 and
+/// Theorems 2.30–2.32, Corollary 2.33 and Definition 2.34): the Voronoi vertices are the
+/// centres of the empty circles through three sites, i.e. the circumcentres of the Delaunay
+/// triangles, and the cell of a site is the polygon of the circumcentres of the triangles
+/// around it, in the same rotational order. A site on the hull has an unbounded cell whose
+/// two rays lie on the bisectors of its two hull edges, pointing outwards.
+///
+/// Exact and rounded parts: every decision is topological, taken from the exact
+/// triangulation: which cells are bounded (the site is not on the hull), the cyclic order
+/// of a cell's vertices (the triangles around the site), which hull edge a ray is
+/// perpendicular to. The *coordinates* of the vertices, ray origins and ray directions are
+/// constructions, rounded to `f64` (computed on differences scaled by a power of two, so
+/// they neither overflow nor vanish for any finite input; a circumcentre beyond `f64`'s
+/// range, from a nearly flat triangle at a huge scale, is clamped to `±f64::MAX`).
+///
+/// The cells come in a spatial order: the points are numbered along a Z-order curve before
+/// they are triangulated, which keeps the dual's passes over the sites in nearby memory
+/// (cache misses are most of their cost at large n); [`Voronoi::cell_of`] finds a point's cell.
+///
+/// Degenerate input: cocircular sites give coincident vertices (one per triangle);
+/// duplicates share the cell of the point they were merged into; collinear sites (no
+/// triangles) give strips and two half-planes bounded by the perpendicular bisectors of
+/// consecutive sites, with no vertices; a single site's cell is the whole plane.
+///
+/// # Errors
+/// [`Error::Empty`] for no points; the errors of [`incremental`](super::incremental)
+/// ([`Error::NonFinite`] naming a NaN or infinite coordinate).
+///
+/// # Complexity
+/// O(n log n) expected time (the triangulation) and O(n) time and space for the dual,
+/// for n points.
+///
+/// # Counts
+/// See [`voronoi_with`]: the triangulation's orientation and in-circle tests.
+///
+/// ```
+/// use compgeo::delaunay::voronoi;
+/// use compgeo::geometry::Point2;
+///
+/// // A square with its centre: the centre's cell is the bounded diamond.
+/// let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (1.0, 1.0)].map(Point2::from);
+/// let v = voronoi(&pts)?;
+/// assert_eq!(v.cell_count(), 5);
+/// let centre = v.cell(v.cell_of(4));
+/// assert!(centre.bounded);
+/// let diamond: Vec<Point2> = centre.vertices.iter().map(|&k| v.vertices[k]).collect();
+/// assert_eq!(diamond.len(), 4);
+/// assert!(diamond.contains(&Point2::new(1.0, 0.0)) && diamond.contains(&Point2::new(0.0, 1.0)));
+/// assert!(v.cells().filter(|c| c.site != 4).all(|c| !c.bounded && c.rays.len() == 2));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn voronoi(points: &[Point2]) -> Result<Voronoi> {
+    voronoi_with(points, &mut NoCount)
+}
+
+/// [`voronoi`], recording the triangulation's orientation and in-circle tests in `counter`
+/// (the dual itself makes no geometric decision).
+///
+/// # Errors
+/// As [`voronoi`].
+///
+/// # Complexity
+/// As [`voronoi`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::delaunay::voronoi_with;
+/// use compgeo::gen::{points, PointKind};
+///
+/// let pts = points(PointKind::UniformSquare, 500, 3)?;
+/// let mut counts = Counts::default();
+/// let v = voronoi_with(&pts, &mut counts)?;
+/// assert_eq!(v.cell_count(), 500);
+/// assert!(counts.incircle_tests > 0);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn voronoi_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Voronoi> {
+    if points.is_empty() {
+        return Err(Error::Empty { what: "point set" });
+    }
+    validate(points)?;
+    if points.len() > u32::MAX as usize {
+        // Beyond the builder's range: let it report the error.
+        incremental_with(points, counter)?;
+    }
+    // Triangulate the points relabelled along a Z-order curve: the dual's passes over the
+    // sites then touch nearby memory, which is most of their cost.
+    let order = morton_order(points);
+    let local: Vec<Point2> = order.iter().map(|&i| points[i as usize]).collect();
+    let t = incremental_with(&local, counter)?;
+    let mut v = dual(&local, &t);
+    v.relabel(&order);
+    Ok(v)
+}
+
+/// The Voronoi diagram dual to `t`, a Delaunay triangulation of `points` from one of the
+/// crate's builders (see [`voronoi`] for what is exact and what is rounded).
+///
+/// If `t` is not a Delaunay triangulation of `points` the result is the dual of whatever
+/// it is (circumcentres and cells around its vertices), which is not a Voronoi diagram.
+///
+/// # Complexity
+/// O(n + t) time and space for n points and t triangles.
+///
+/// ```
+/// use compgeo::delaunay::{dual, incremental};
+/// use compgeo::geometry::Point2;
+///
+/// let pts = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.0)].map(Point2::from);
+/// let v = dual(&pts, &incremental(&pts)?);
+/// // Collinear sites: two half-planes and a strip, bounded by the bisectors x = 0.5, 1.5.
+/// assert!(v.vertices.is_empty());
+/// assert_eq!(v.cell(1).rays.len(), 4);
+/// assert_eq!(v.cell(1).rays[0].origin, Point2::new(0.5, 0.0));
+/// assert_eq!(v.cell(1).rays[2].origin, Point2::new(1.5, 0.0));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn dual(points: &[Point2], t: &Triangulation) -> Voronoi {
+    let n = points.len();
+    let mut cell_of = vec![usize::MAX; n];
+    let mut is_site = vec![true; n];
+    for &[dropped, _] in &t.duplicates {
+        is_site[dropped] = false;
+    }
+    let sites: Vec<usize> = (0..n).filter(|&i| is_site[i]).collect();
+    for (k, &s) in sites.iter().enumerate() {
+        cell_of[s] = k;
+    }
+    for &[dropped, kept] in &t.duplicates {
+        cell_of[dropped] = cell_of[kept];
+    }
+    let mut v = Voronoi {
+        vertices: Vec::new(),
+        sites,
+        vertex_start: vec![0],
+        vertex_ids: Vec::new(),
+        ray_start: vec![0],
+        rays: Vec::new(),
+        cell_of,
+    };
+    if t.is_empty() {
+        collinear_cells(points, t, &mut v);
+    } else {
+        triangulated_cells(points, t, &mut v);
+    }
+    v
+}
+
+/// The cells of a triangulated point set: walk counter-clockwise around every site.
+///
+/// One pass finds a half-edge leaving each site (the outgoing hull edge for a hull site, so
+/// its walk starts at its clockwise-most triangle); then the sites are walked in order and
+/// their rows appended. [`voronoi`] numbers the points along a space-filling curve first,
+/// so consecutive sites, and the triangles around them, are close in memory.
+fn triangulated_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
+    let tri = &t.triangles;
+    v.vertices = tri
+        .chunks_exact(3)
+        .map(|c| circumcentre(points[c[0]], points[c[1]], points[c[2]]))
+        .collect();
+    let cells = v.sites.len();
+    // Without duplicates the cells are the points themselves: skip the lookup.
+    let direct = t.duplicates.is_empty();
+    let cell_of = |site: usize| if direct { site } else { v.cell_of[site] };
+    let mut out_edge = vec![EMPTY; cells];
+    for (e, &a) in tri.iter().enumerate() {
+        let k = cell_of(a);
+        if out_edge[k] == EMPTY || t.halfedges[e] == EMPTY {
+            out_edge[k] = e;
+        }
+    }
+    let mut ids = Vec::with_capacity(tri.len());
+    let mut start = Vec::with_capacity(cells + 1);
+    let mut ray_start = Vec::with_capacity(cells + 1);
+    let mut rays = Vec::with_capacity(2 * t.hull.len());
+    start.push(0);
+    ray_start.push(0);
+    for &first in &out_edge {
+        let site = tri[first];
+        let mut e = first;
+        loop {
+            ids.push(e / 3);
+            // The previous half-edge ends at `site`; its twin leaves `site` in the next
+            // triangle counter-clockwise.
+            let twin = t.halfedges[prev_halfedge(e)];
+            if twin == EMPTY {
+                // Arrive along the bisector of the outgoing hull edge `site -> q`, leave
+                // along that of the incoming one `r -> site`; both point outwards.
+                let q = tri[next_halfedge(first)];
+                let r = tri[prev_halfedge(e)];
+                rays.push(Ray {
+                    origin: v.vertices[first / 3],
+                    direction: outward_normal(points[site], points[q]),
+                    sites: [site, q],
+                });
+                rays.push(Ray {
+                    origin: v.vertices[e / 3],
+                    direction: outward_normal(points[r], points[site]),
+                    sites: [site, r],
+                });
+                break;
+            }
+            e = twin;
+            if e == first {
+                break;
+            }
+        }
+        start.push(ids.len());
+        ray_start.push(rays.len());
+    }
+    v.vertex_ids = ids;
+    v.vertex_start = start;
+    v.rays = rays;
+    v.ray_start = ray_start;
+}
+
+/// The cells of collinear sites (or of one site): the hull lists them along their line.
+fn collinear_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
+    let line = &t.hull;
+    let mut rays_of: Vec<Vec<Ray>> = vec![Vec::new(); line.len()];
+    for (k, pair) in line.windows(2).enumerate() {
+        let (a, b) = (pair[0], pair[1]);
+        let m = midpoint(points[a], points[b]);
+        let u = unit_direction(points[a], points[b]);
+        let n = Point2::new(-u.y, u.x);
+        let minus = Point2::new(u.y, -u.x);
+        // For `a` the bisector is on its `+u` side, traversed counter-clockwise along `+n`;
+        // for `b` on its `-u` side, traversed along `-n`.
+        rays_of[k].extend([
+            Ray {
+                origin: m,
+                direction: minus,
+                sites: [a, b],
+            },
+            Ray {
+                origin: m,
+                direction: n,
+                sites: [a, b],
+            },
+        ]);
+        rays_of[k + 1].extend([
+            Ray {
+                origin: m,
+                direction: n,
+                sites: [b, a],
+            },
+            Ray {
+                origin: m,
+                direction: minus,
+                sites: [b, a],
+            },
+        ]);
+    }
+    let mut by_site: Vec<(usize, Vec<Ray>)> = line.iter().copied().zip(rays_of).collect();
+    by_site.sort_unstable_by_key(|&(s, _)| s);
+    for (_, rays) in by_site {
+        v.rays.extend(rays);
+        v.vertex_start.push(0);
+        v.ray_start.push(v.rays.len());
+    }
+}
+
+/// The indices of `points` (finite, at most 2^32 of them) sorted along a Z-order (Morton)
+/// curve over their bounding box, 16 bits per axis: nearby points get nearby positions.
+fn morton_order(points: &[Point2]) -> Vec<u32> {
+    let (mut lo, mut hi) = (points[0], points[0]);
+    for p in points {
+        lo = Point2::new(lo.x.min(p.x), lo.y.min(p.y));
+        hi = Point2::new(hi.x.max(p.x), hi.y.max(p.y));
+    }
+    // Halves keep the range finite for coordinates of opposite signs near f64::MAX.
+    let cell = |v: f64, lo: f64, hi: f64| {
+        let range = hi / 2.0 - lo / 2.0;
+        if range > 0.0 {
+            ((v / 2.0 - lo / 2.0) / range * 65535.0) as u32
+        } else {
+            0
+        }
+    };
+    let spread = |v: u32| {
+        let mut v = v as u64 & 0xffff;
+        v = (v | (v << 8)) & 0x00ff_00ff;
+        v = (v | (v << 4)) & 0x0f0f_0f0f;
+        v = (v | (v << 2)) & 0x3333_3333;
+        (v | (v << 1)) & 0x5555_5555
+    };
+    let mut keys: Vec<u64> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let z = spread(cell(p.x, lo.x, hi.x)) | (spread(cell(p.y, lo.y, hi.y)) << 1);
+            (z << 32) | i as u64
+        })
+        .collect();
+    keys.sort_unstable();
+    keys.into_iter().map(|k| k as u32).collect()
+}
+
+/// The unit normal of the hull edge `a -> b` pointing out of the hull (to its right).
+fn outward_normal(a: Point2, b: Point2) -> Point2 {
+    let d = unit_direction(a, b);
+    Point2::new(d.y, -d.x)
+}
