@@ -1,4 +1,5 @@
-//! Delaunay triangulations: compact half-edge arrays, exact predicates, an exact checker.
+//! Delaunay triangulations (compact half-edge arrays, exact predicates, an exact checker), the
+//! Voronoi diagram as their dual, and the seed's proximity problems on them.
 //!
 //! The seed (`003_5b666ee3e15e6353.txt`, §2.4 "Problemas de proximidad", "Diagrama de
 //! Voronoi" and "Triangulación de Delaunay", Definition 2.34 and Theorem 2.35) defines the
@@ -30,6 +31,17 @@
 //! | [`incremental`] | O(n log n) expected on every input | `incremental.rs` (+ `hilbert.rs`, its insertion order) |
 //! | [`divide_and_conquer`] | O(n log n) worst case (the seed's algorithm) | `divide_conquer.rs` (+ `quad_edge.rs`, its working structure) |
 //! | [`lawson`] | O(n²) worst case (flips from a sweep triangulation; for teaching) | `lawson.rs` |
+//!
+//! # On top of the triangulation
+//!
+//! | problem | function | file |
+//! |---|---|---|
+//! | Voronoi diagram: cells with rays, clipping to a box | [`voronoi`], [`dual`], [`ClipBox`] | `voronoi.rs`, `clip.rs`, `construct.rs` |
+//! | all nearest neighbours | [`all_nearest_neighbours`] | `proximity.rs` |
+//! | closest pair, via Delaunay and by divide and conquer | [`closest_pair`], [`closest_pair_divide_and_conquer`] | `proximity.rs`, `closest_pair.rs` |
+//! | nearest site of a query point | [`NearestSearch`], [`nearest`] | `proximity.rs` |
+//! | Euclidean minimum spanning tree | [`euclidean_mst`] | `proximity.rs` |
+//! | largest empty circle centred in the hull | [`largest_empty_circle`] | `empty_circle.rs` |
 //!
 //! ```
 //! use compgeo::delaunay::{check_delaunay, triangulate, Algorithm};
