@@ -18,29 +18,30 @@ struct Delaunay {
     kind: PointKind,
 }
 
-/// The Delaunay entries.
+/// The Delaunay entries: every builder of [`Algorithm::ALL`] on every input.
 pub(super) fn entries() -> Vec<Entry> {
-    [
+    let kinds = [
         PointKind::UniformSquare,
         PointKind::Clustered,
         PointKind::Grid,
         PointKind::Parabola,
-    ]
-    .into_iter()
-    .map(|kind| {
-        let algorithm = Algorithm::Incremental;
-        let id = format!("delaunay/{}", algorithm.name());
-        Entry::new(
-            &id,
-            Bound::NLogN,
-            Operation::IncircleTests,
-            Delaunay { algorithm, kind },
-        )
-        .input(kind.name())
-        .quick(256, 1 << 15)
-        .full(256, 1 << 20)
-    })
-    .collect()
+    ];
+    Algorithm::ALL
+        .into_iter()
+        .flat_map(|algorithm| kinds.map(|kind| (algorithm, kind)))
+        .map(|(algorithm, kind)| {
+            let id = format!("delaunay/{}", algorithm.name());
+            Entry::new(
+                &id,
+                Bound::NLogN,
+                Operation::IncircleTests,
+                Delaunay { algorithm, kind },
+            )
+            .input(kind.name())
+            .quick(256, 1 << 15)
+            .full(256, 1 << 20)
+        })
+        .collect()
 }
 
 impl Workload for Delaunay {
