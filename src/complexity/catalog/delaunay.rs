@@ -20,7 +20,8 @@ struct Delaunay {
     kind: PointKind,
 }
 
-/// The Delaunay entries.
+/// The Delaunay entries: the incremental builder on four inputs, divide and conquer on
+/// uniform and parabola input, Lawson's flips on the parabola (its quadratic case).
 pub(super) fn entries() -> Vec<Entry> {
     let mut out: Vec<Entry> = [
         PointKind::UniformSquare,
