@@ -41,9 +41,9 @@ pub fn radix_sort_f64(v: &mut [f64]) {
 /// Idea: map each float to the 64-bit key that orders as [`f64::total_cmp`] (flip the sign
 /// bit of non-negative floats, every bit of negative ones), count the keys' bytes in one
 /// pass, then for each byte from the least significant up distribute the elements stably
-/// into 256 buckets, skipping bytes on which all keys agree. The first pass turns floats into
-/// keys, the middle ones move keys between two buffers, and the last turns keys back into
-/// floats as it writes them into `v`, so no pass recomputes keys and no final copy is needed.
+/// into 256 buckets between `v` and one buffer, skipping bytes on which all keys agree. The
+/// first pass turns floats into keys, the middle ones move keys, and the last turns keys back
+/// into floats as it writes them, so no pass recomputes a key.
 ///
 /// Not in the seed; it sorts what [`super::merge_sort_by`] or [`super::quick_sort_by`] with
 /// `f64::total_cmp` sort, in linear time.
@@ -55,13 +55,13 @@ pub fn radix_sort_f64(v: &mut [f64]) {
 /// # Complexity
 ///
 /// With n = `v.len()`, d = 8 passes of b = 256 buckets: time O(d(n + b)) = O(n); auxiliary
-/// space 2n keys (n when one pass suffices) plus d·b counters.
+/// space n floats plus d·b counters.
 ///
 /// # Counts
 ///
 /// No comparisons. moves: n for every pass made (a pass writes each element once into its
-/// bucket), plus n when a single pass leaves the sorted keys in the buffer and they are
-/// written back; so at most 8n, and 0 when all elements share their bit pattern.
+/// bucket), plus n when an odd number of passes leaves the result in the buffer and it is
+/// copied back; so at most 8n, and 0 when all elements share their bit pattern.
 ///
 /// ```
 /// use compgeo::count::Counts;
@@ -90,39 +90,36 @@ pub fn radix_sort_f64_with<C: Counter>(v: &mut [f64], counter: &mut C) {
     let passes: Vec<usize> = (0..PASSES)
         .filter(|&pass| !histograms[pass].contains(&n))
         .collect();
-    let Some((&last, _)) = passes.split_last() else {
+    let Some(&last) = passes.last() else {
         return;
     };
-    let mut keys = vec![0u64; n];
-    let mut spare = if passes.len() > 1 {
-        vec![0u64; n]
-    } else {
-        Vec::new()
-    };
+    // One buffer; between passes the elements travel as their keys' bit patterns, so no pass
+    // recomputes a key, and the last pass turns keys back into floats as it writes them.
+    let mut buffer = vec![0.0f64; n];
     for (i, &pass) in passes.iter().enumerate() {
         let mut next = bucket_starts(&histograms[pass]);
         let shift = pass as u32 * DIGIT_BITS;
+        let out = |k: u64| if pass == last { float(k) } else { f64::from_bits(k) };
         if i == 0 {
             for &x in v.iter() {
                 let k = key(x);
-                scatter(&mut keys, &mut next, shift, k, k);
+                scatter(&mut buffer, &mut next, shift, k, out(k));
             }
-        } else if pass == last {
-            for &k in keys.iter() {
-                scatter(v, &mut next, shift, k, float(k));
+        } else if i % 2 == 1 {
+            for &x in buffer.iter() {
+                let k = x.to_bits();
+                scatter(v, &mut next, shift, k, out(k));
             }
         } else {
-            for &k in keys.iter() {
-                scatter(&mut spare, &mut next, shift, k, k);
+            for &x in v.iter() {
+                let k = x.to_bits();
+                scatter(&mut buffer, &mut next, shift, k, out(k));
             }
-            std::mem::swap(&mut keys, &mut spare);
         }
         moves(counter, n);
     }
-    if passes.len() == 1 {
-        for (x, &k) in v.iter_mut().zip(&keys) {
-            *x = float(k);
-        }
+    if passes.len() % 2 == 1 {
+        v.copy_from_slice(&buffer);
         moves(counter, n);
     }
 }
