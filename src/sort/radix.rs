@@ -99,7 +99,13 @@ pub fn radix_sort_f64_with<C: Counter>(v: &mut [f64], counter: &mut C) {
     for (i, &pass) in passes.iter().enumerate() {
         let mut next = bucket_starts(&histograms[pass]);
         let shift = pass as u32 * DIGIT_BITS;
-        let out = |k: u64| if pass == last { float(k) } else { f64::from_bits(k) };
+        let out = |k: u64| {
+            if pass == last {
+                float(k)
+            } else {
+                f64::from_bits(k)
+            }
+        };
         if i == 0 {
             for &x in v.iter() {
                 let k = key(x);
