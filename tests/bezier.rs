@@ -508,6 +508,28 @@ fn huge_and_subnormal_coordinates_evaluate_finitely() {
         }
         other => panic!("{other:?}"),
     }
+    // A bad parameter past the first chunk: f sees exactly the parameters before it, each
+    // evaluated as `eval` evaluates it (try_for_each semantics).
+    let cubic = Bezier::new(vec![
+        Point::new([0.0, 1.0]),
+        Point::new([2.0, -1.0]),
+        Point::new([-3.0, 4.0]),
+        Point::new([1.0, 0.5]),
+    ])
+    .unwrap();
+    let mut ts: Vec<f64> = (0..3000).map(|i| f64::from(i) / 997.0 - 0.5).collect();
+    ts[1500] = f64::INFINITY;
+    let mut got = Vec::new();
+    match cubic.eval_each(&ts, |p| got.push(p)) {
+        Err(Error::InvalidParameter { name: "t", reason }) => {
+            assert!(reason.contains("parameter 1500"), "{reason}")
+        }
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(got.len(), 1500);
+    for (p, t) in got.iter().zip(&ts) {
+        assert_eq!(*p, cubic.eval(t).unwrap(), "t = {t}");
+    }
 }
 
 #[test]
