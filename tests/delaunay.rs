@@ -12,7 +12,7 @@ use compgeo::geometry::Point2;
 use compgeo::hull::{monotone_chain, HullOptions};
 use compgeo::Error;
 use proptest::prelude::*;
-use std::collections::{BTreeSet, HashMap};
+use std::collections::BTreeSet;
 
 fn build_and_check(pts: &[Point2]) -> Triangulation {
     let t = incremental(pts).unwrap();
@@ -34,24 +34,7 @@ fn triangle_set(t: &Triangulation) -> BTreeSet<[usize; 3]> {
 }
 
 fn spade_triangle_set(pts: &[Point2]) -> BTreeSet<[usize; 3]> {
-    use spade::{DelaunayTriangulation, Point2 as SPoint, Triangulation as _};
-    let index: HashMap<(u64, u64), usize> = pts
-        .iter()
-        .enumerate()
-        .map(|(i, p)| ((p.x.to_bits(), p.y.to_bits()), i))
-        .collect();
-    let input: Vec<SPoint<f64>> = pts.iter().map(|p| SPoint::new(p.x, p.y)).collect();
-    let dt: DelaunayTriangulation<SPoint<f64>> = DelaunayTriangulation::bulk_load(input).unwrap();
-    dt.inner_faces()
-        .map(|face| {
-            let mut tri = face.vertices().map(|v| {
-                let p = v.position();
-                index[&(p.x.to_bits(), p.y.to_bits())]
-            });
-            tri.sort_unstable();
-            tri
-        })
-        .collect()
+    common::spade_triangles(pts).into_iter().collect()
 }
 
 #[test]
