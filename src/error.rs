@@ -78,6 +78,27 @@ pub enum Error {
 /// `Result` with the crate's [`enum@Error`].
 pub type Result<T> = std::result::Result<T, Error>;
 
+/// Finds the algorithm named `s` among `all` (the `FromStr` of every `Algorithm` enum), or
+/// an [`Error::InvalidParameter`] named `"algorithm"` that lists the valid names:
+/// "unknown {what} `s`; valid names: a, b, c".
+pub(crate) fn algorithm_named<A: Copy>(
+    s: &str,
+    what: &str,
+    all: &[A],
+    name: impl Fn(A) -> &'static str,
+) -> Result<A> {
+    all.iter()
+        .copied()
+        .find(|&a| name(a) == s)
+        .ok_or_else(|| Error::InvalidParameter {
+            name: "algorithm",
+            reason: format!(
+                "unknown {what} `{s}`; valid names: {}",
+                all.iter().map(|&a| name(a)).collect::<Vec<_>>().join(", ")
+            ),
+        })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

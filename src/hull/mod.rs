@@ -203,16 +203,7 @@ impl FromStr for Algorithm {
     /// Parses a kebab-case name; an unknown name gives [`Error::InvalidParameter`] listing the
     /// valid ones.
     fn from_str(s: &str) -> Result<Self> {
-        Algorithm::ALL
-            .into_iter()
-            .find(|a| a.name() == s)
-            .ok_or_else(|| Error::InvalidParameter {
-                name: "algorithm",
-                reason: format!(
-                    "unknown hull algorithm `{s}`; valid names: {}",
-                    Algorithm::ALL.map(Algorithm::name).join(", ")
-                ),
-            })
+        crate::error::algorithm_named(s, "hull algorithm", &Algorithm::ALL, Algorithm::name)
     }
 }
 
