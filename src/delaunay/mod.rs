@@ -31,6 +31,7 @@
 //! | [`incremental`] | O(n log n) expected on every input | `incremental.rs` (+ `hilbert.rs`, its insertion order) |
 //! | [`divide_and_conquer`] | O(n log n) worst case (the seed's algorithm) | `divide_conquer.rs` (+ `quad_edge.rs`, its working structure) |
 //! | [`lawson`] | O(n²) worst case (flips from a sweep triangulation; for teaching) | `lawson.rs` |
+//! | [`fortune`] | O(n log n) expected on every input (Fortune's sweep, the Voronoi diagram first) | `fortune.rs` (+ `beach_line.rs`, its treap; exact predicates in `geometry/sweep_predicates.rs`) |
 //!
 //! # On top of the triangulation
 //!
@@ -55,12 +56,14 @@
 //! # Ok::<(), compgeo::Error>(())
 //! ```
 
+mod beach_line;
 mod check;
 mod clip;
 mod closest_pair;
 mod construct;
 mod divide_conquer;
 mod empty_circle;
+mod fortune;
 mod hilbert;
 mod incremental;
 mod lawson;
@@ -74,6 +77,7 @@ pub use clip::ClipBox;
 pub use closest_pair::{closest_pair_divide_and_conquer, closest_pair_divide_and_conquer_with};
 pub use divide_conquer::{divide_and_conquer, divide_and_conquer_with};
 pub use empty_circle::{largest_empty_circle, largest_empty_circle_with, EmptyCircle};
+pub use fortune::{fortune, fortune_with};
 pub use incremental::{incremental, incremental_with};
 pub use lawson::{lawson, lawson_with};
 pub use proximity::{
@@ -109,6 +113,8 @@ pub enum Algorithm {
     DivideAndConquer,
     /// [`lawson`]: a sweep triangulation, then Lawson's flips (O(n²), for teaching).
     Lawson,
+    /// [`fortune`]: Fortune's sweep with a beach line, the Voronoi diagram first.
+    Fortune,
 }
 
 /// Runs `algorithm` on `points`: the same as calling its function.
@@ -133,19 +139,21 @@ pub fn triangulate(points: &[Point2], algorithm: Algorithm) -> Result<Triangulat
 
 impl Algorithm {
     /// Every builder.
-    pub const ALL: [Algorithm; 3] = [
+    pub const ALL: [Algorithm; 4] = [
         Algorithm::Incremental,
         Algorithm::DivideAndConquer,
         Algorithm::Lawson,
+        Algorithm::Fortune,
     ];
 
     /// The kebab-case name used on the command line: `"incremental"`,
-    /// `"divide-and-conquer"`, `"lawson"`.
+    /// `"divide-and-conquer"`, `"lawson"`, `"fortune"`.
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Incremental => "incremental",
             Algorithm::DivideAndConquer => "divide-and-conquer",
             Algorithm::Lawson => "lawson",
+            Algorithm::Fortune => "fortune",
         }
     }
 
@@ -162,6 +170,7 @@ impl Algorithm {
             Algorithm::Incremental => incremental_with(points, counter),
             Algorithm::DivideAndConquer => divide_and_conquer_with(points, counter),
             Algorithm::Lawson => lawson_with(points, counter),
+            Algorithm::Fortune => fortune_with(points, counter),
         }
     }
 }

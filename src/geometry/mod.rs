@@ -26,6 +26,7 @@ mod extended;
 mod point;
 mod predicates;
 mod products;
+pub(crate) mod sweep_predicates;
 mod validate;
 
 pub use counted::CountedPredicates;

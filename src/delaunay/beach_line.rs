@@ -1,0 +1,326 @@
+//! The beach line of Fortune's sweep: its arcs from left to right in a treap (a binary
+//! search tree kept balanced in expectation by random heap priorities), threaded by a
+//! doubly linked list for constant-time neighbours.
+//!
+//! The tree holds no keys: an arc's place is only defined by its neighbours (the
+//! breakpoints move with the sweep), so insertion is "right after this arc" and search is a
+//! descent with a caller-supplied monotone test ([`BeachLine::first_arc_where`]).
+
+/// No arc (a null link).
+pub(super) const NIL: u32 = u32::MAX;
+
+/// One arc: the site whose parabola it belongs to, its pending circle event, and links.
+#[derive(Debug, Clone, Copy)]
+struct Arc {
+    site: u32,
+    /// The id of the circle event that would remove this arc, or [`NIL`].
+    event: u32,
+    prio: u32,
+    left: u32,
+    right: u32,
+    parent: u32,
+    prev: u32,
+    next: u32,
+}
+
+/// The arcs in an arena, with a free list for removed slots.
+#[derive(Debug, Default)]
+pub(super) struct BeachLine {
+    arcs: Vec<Arc>,
+    free: Vec<u32>,
+    root: u32,
+    rng: u64,
+}
+
+impl BeachLine {
+    /// An empty beach line with room for `capacity` arcs.
+    pub(super) fn with_capacity(capacity: usize) -> BeachLine {
+        BeachLine {
+            arcs: Vec::with_capacity(capacity),
+            free: Vec::new(),
+            root: NIL,
+            // Any fixed odd seed: the priorities only need to be independent of the input.
+            rng: 0x9E37_79B9_7F4A_7C15,
+        }
+    }
+
+    /// The site of arc `a`.
+    #[inline]
+    pub(super) fn site(&self, a: u32) -> u32 {
+        self.arcs[a as usize].site
+    }
+
+    /// The left neighbour of `a`, or [`NIL`].
+    #[inline]
+    pub(super) fn prev(&self, a: u32) -> u32 {
+        self.arcs[a as usize].prev
+    }
+
+    /// The right neighbour of `a`, or [`NIL`].
+    #[inline]
+    pub(super) fn next(&self, a: u32) -> u32 {
+        self.arcs[a as usize].next
+    }
+
+    /// The pending circle event of `a`, or [`NIL`].
+    #[inline]
+    pub(super) fn event(&self, a: u32) -> u32 {
+        self.arcs[a as usize].event
+    }
+
+    /// Sets (or with [`NIL`] clears) the pending circle event of `a`.
+    #[inline]
+    pub(super) fn set_event(&mut self, a: u32, event: u32) {
+        self.arcs[a as usize].event = event;
+    }
+
+    /// Whether `a` is a live arc (not removed, or removed and reused).
+    #[inline]
+    pub(super) fn is_live(&self, a: u32) -> bool {
+        self.arcs[a as usize].parent != a
+    }
+
+    /// The first arc from the left for which `right_of_site` is false, given that it is
+    /// true for a prefix of the arcs and false for the rest; the last arc if it is true for
+    /// all. `right_of_site(a)` is called only on arcs with a right neighbour. [`NIL`] if
+    /// the beach line is empty.
+    pub(super) fn first_arc_where(&self, mut right_of_site: impl FnMut(u32) -> bool) -> u32 {
+        let mut node = self.root;
+        let mut found = NIL;
+        while node != NIL {
+            let arc = &self.arcs[node as usize];
+            if arc.next == NIL || !right_of_site(node) {
+                found = node;
+                node = arc.left;
+            } else {
+                node = arc.right;
+            }
+        }
+        found
+    }
+
+    /// Inserts a new arc of `site` right after `after` ([`NIL`]: into the empty beach line)
+    /// and returns it.
+    pub(super) fn insert_after(&mut self, after: u32, site: u32) -> u32 {
+        let prio = self.next_priority();
+        let arc = Arc {
+            site,
+            event: NIL,
+            prio,
+            left: NIL,
+            right: NIL,
+            parent: NIL,
+            prev: after,
+            next: NIL,
+        };
+        let new = match self.free.pop() {
+            Some(slot) => {
+                self.arcs[slot as usize] = arc;
+                slot
+            }
+            None => {
+                self.arcs.push(arc);
+                (self.arcs.len() - 1) as u32
+            }
+        };
+        if after == NIL {
+            debug_assert_eq!(self.root, NIL, "insertion at the front of a non-empty line");
+            self.root = new;
+            return new;
+        }
+        // In order, `new` comes right after `after`: as its right child, or as the left
+        // child of the leftmost node of its right subtree.
+        let right = self.arcs[after as usize].right;
+        if right == NIL {
+            self.arcs[after as usize].right = new;
+            self.arcs[new as usize].parent = after;
+        } else {
+            let mut leftmost = right;
+            while self.arcs[leftmost as usize].left != NIL {
+                leftmost = self.arcs[leftmost as usize].left;
+            }
+            self.arcs[leftmost as usize].left = new;
+            self.arcs[new as usize].parent = leftmost;
+        }
+        let next = self.arcs[after as usize].next;
+        self.arcs[new as usize].next = next;
+        if next != NIL {
+            self.arcs[next as usize].prev = new;
+        }
+        self.arcs[after as usize].next = new;
+        while self.arcs[new as usize].parent != NIL
+            && self.arcs[self.arcs[new as usize].parent as usize].prio < prio
+        {
+            self.rotate_up(new);
+        }
+        new
+    }
+
+    /// Removes arc `a`; its slot may be reused by a later insertion.
+    pub(super) fn remove(&mut self, a: u32) {
+        // Rotate `a` down to a leaf, always lifting the child of higher priority.
+        loop {
+            let Arc { left, right, .. } = self.arcs[a as usize];
+            let child = match (left, right) {
+                (NIL, NIL) => break,
+                (c, NIL) | (NIL, c) => c,
+                (l, r) => {
+                    if self.arcs[l as usize].prio > self.arcs[r as usize].prio {
+                        l
+                    } else {
+                        r
+                    }
+                }
+            };
+            self.rotate_up(child);
+        }
+        let Arc {
+            parent, prev, next, ..
+        } = self.arcs[a as usize];
+        if parent == NIL {
+            self.root = NIL;
+        } else if self.arcs[parent as usize].left == a {
+            self.arcs[parent as usize].left = NIL;
+        } else {
+            self.arcs[parent as usize].right = NIL;
+        }
+        if prev != NIL {
+            self.arcs[prev as usize].next = next;
+        }
+        if next != NIL {
+            self.arcs[next as usize].prev = prev;
+        }
+        // A removed arc is its own parent: `is_live` tells it from a live one.
+        let dead = &mut self.arcs[a as usize];
+        dead.parent = a;
+        dead.event = NIL;
+        self.free.push(a);
+    }
+
+    /// Rotates `x` above its parent, keeping the in-order sequence.
+    fn rotate_up(&mut self, x: u32) {
+        let p = self.arcs[x as usize].parent;
+        let g = self.arcs[p as usize].parent;
+        if self.arcs[p as usize].left == x {
+            let moved = self.arcs[x as usize].right;
+            self.arcs[p as usize].left = moved;
+            if moved != NIL {
+                self.arcs[moved as usize].parent = p;
+            }
+            self.arcs[x as usize].right = p;
+        } else {
+            let moved = self.arcs[x as usize].left;
+            self.arcs[p as usize].right = moved;
+            if moved != NIL {
+                self.arcs[moved as usize].parent = p;
+            }
+            self.arcs[x as usize].left = p;
+        }
+        self.arcs[p as usize].parent = x;
+        self.arcs[x as usize].parent = g;
+        if g == NIL {
+            self.root = x;
+        } else if self.arcs[g as usize].left == p {
+            self.arcs[g as usize].left = x;
+        } else {
+            self.arcs[g as usize].right = x;
+        }
+    }
+
+    /// A pseudo-random priority (xorshift64*).
+    fn next_priority(&mut self) -> u32 {
+        self.rng ^= self.rng >> 12;
+        self.rng ^= self.rng << 25;
+        self.rng ^= self.rng >> 27;
+        (self.rng.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 32) as u32
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The sites from the leftmost arc along the list, checked against an in-order walk
+    /// of the tree, with every parent link and heap priority checked on the way.
+    fn sequence(line: &BeachLine) -> Vec<u32> {
+        fn walk(line: &BeachLine, node: u32, parent: u32, out: &mut Vec<u32>) {
+            if node == NIL {
+                return;
+            }
+            let arc = line.arcs[node as usize];
+            assert_eq!(arc.parent, parent);
+            if parent != NIL {
+                assert!(line.arcs[parent as usize].prio >= arc.prio);
+            }
+            walk(line, arc.left, node, out);
+            out.push(node);
+            walk(line, arc.right, node, out);
+        }
+        let mut in_order = Vec::new();
+        walk(line, line.root, NIL, &mut in_order);
+        let mut listed = Vec::new();
+        if let Some(&first) = in_order.first() {
+            assert_eq!(line.prev(first), NIL);
+            let mut a = first;
+            while a != NIL {
+                listed.push(a);
+                a = line.next(a);
+            }
+        }
+        assert_eq!(in_order, listed);
+        listed.iter().map(|&a| line.site(a)).collect()
+    }
+
+    #[test]
+    fn insertions_and_removals_match_a_vec() {
+        // A deterministic mix of operations, mirrored on a plain Vec of (arc, site).
+        let mut line = BeachLine::with_capacity(0);
+        let mut model: Vec<(u32, u32)> = Vec::new();
+        let mut state = 12345u64;
+        let mut rand = |m: usize| {
+            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (state >> 33) as usize % m
+        };
+        for step in 0..3000u32 {
+            if model.is_empty() || rand(3) > 0 {
+                let (at, after) = if model.is_empty() {
+                    (0, NIL)
+                } else {
+                    let k = rand(model.len());
+                    (k + 1, model[k].0)
+                };
+                let a = line.insert_after(after, step);
+                assert!(line.is_live(a));
+                model.insert(at, (a, step));
+            } else {
+                let k = rand(model.len());
+                let (a, _) = model.remove(k);
+                line.remove(a);
+                assert!(!line.is_live(a));
+            }
+            if step % 97 == 0 {
+                let want: Vec<u32> = model.iter().map(|&(_, s)| s).collect();
+                assert_eq!(sequence(&line), want);
+            }
+        }
+        let want: Vec<u32> = model.iter().map(|&(_, s)| s).collect();
+        assert_eq!(sequence(&line), want);
+    }
+
+    #[test]
+    fn search_finds_the_first_arc_failing_a_monotone_test() {
+        let mut line = BeachLine::with_capacity(0);
+        let mut last = NIL;
+        let mut arcs = Vec::new();
+        for site in 0..200 {
+            last = line.insert_after(last, site);
+            arcs.push(last);
+        }
+        for threshold in 0..205 {
+            let found = line.first_arc_where(|a| line.site(a) < threshold);
+            let want = arcs[threshold.min(199) as usize];
+            assert_eq!(found, want, "threshold {threshold}");
+        }
+        assert_eq!(BeachLine::with_capacity(0).first_arc_where(|_| true), NIL);
+    }
+}

@@ -1,0 +1,338 @@
+//! Fortune's sweep: the Voronoi diagram first, as a sweep line with a beach line of
+//! parabolic arcs, and the Delaunay triangulation as its dual (one triangle per Voronoi
+//! vertex event).
+
+use super::beach_line::{BeachLine, NIL};
+use super::Triangulation;
+use crate::count::{Counter, NoCount};
+use crate::error::{Error, Result};
+use crate::geometry::sweep_predicates::{breakpoint_side, cmp_circle_site, cmp_circles, CircleKey};
+use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use std::cmp::Ordering;
+
+/// The Delaunay triangulation of `points` by Fortune's sweep. See [`fortune_with`].
+///
+/// ```
+/// use compgeo::delaunay::{check_delaunay, fortune};
+/// use compgeo::geometry::Point2;
+///
+/// let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (0.0, 3.0), (1.0, 1.0)].map(Point2::from);
+/// let t = fortune(&pts)?;
+/// assert_eq!(t.triangle_count(), 4);
+/// assert_eq!(t.hull, [0, 1, 2, 3]);
+/// assert!(check_delaunay(&pts, &t).is_ok());
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
+    fortune_with(points, &mut NoCount)
+}
+
+/// The Delaunay triangulation of `points` by Fortune's sweep, recording its operations in
+/// `counter`.
+///
+/// Idea: a horizontal line sweeps upwards over the sites. Every point below it that is
+/// nearer to some passed site than to the line already has its final nearest site, so the
+/// Voronoi diagram below the *beach line* (the upper envelope of the parabolas of points as
+/// far from a site as from the line) is final. The beach line is a sequence of parabolic
+/// arcs whose breakpoints trace the Voronoi edges. Two events change it: the line reaches a
+/// site (the site's arc appears inside the arc above it, splitting it), or an arc shrinks to
+/// a point between its neighbours (a *circle event*: the line touches the top of the
+/// circle through the three sites, whose centre is a Voronoi vertex). Each circle event is
+/// one Delaunay triangle, the dual of that vertex; at a vertex shared by k ≥ 4 cocircular
+/// sites, k − 2 events happen at the same point and their triangles tile the sites' polygon.
+///
+/// Sites are sorted by (y, x); circle events wait in a binary heap (an event whose arc has
+/// changed neighbours since is skipped when it comes out: lazy deletion); the arcs live in a
+/// treap threaded by a linked list. A new site's arc is found by a descent that asks, at each
+/// arc, whether the site is right of the arc's right breakpoint. Three consecutive arcs of
+/// sites a, b, c get a circle event exactly when a, b, c turn counter-clockwise (their
+/// breakpoints converge).
+///
+/// Follows `003_5b666ee3e15e6353.txt`, §2.4 "Algoritmos", 2. "Fortune" (the seed refers to
+/// de Berg et al., *Computational Geometry*, ch. 7), sweeping upwards instead of downwards.
+///
+/// Exactness. Every decision is exact for every finite input, 1e300 and subnormals in one set
+/// included: the convergence test is [`orient2d`](crate::geometry::orient2d); the breakpoint
+/// test and the event order, which involve square roots in coordinates, are reduced to signs
+/// of polynomials (see `src/geometry/sweep_predicates.rs`) with an interval filter and an
+/// exact big-integer fallback. Events are ordered by their point on the sweep line, y then
+/// x (a line turned by an infinitesimal angle), and a circle event before a site at the same
+/// point, so degenerate input needs no special case beyond two:
+/// - the first row of sites (all with the lowest y) has vertical strips as arcs, and each
+///   new site of that row is put to the right of the last one;
+/// - a site exactly on a breakpoint splits the arc to the left, leaving an arc of zero width
+///   whose circle event (through the new site) happens at once, giving the triangle of the
+///   site and the two arcs' sites.
+///
+/// Duplicates are merged (reported in `duplicates`, the smallest index kept) and collinear
+/// input gives no triangles (no three sites turn); the hull is then the sorted distinct
+/// points.
+///
+/// # Errors
+///
+/// [`Error::NonFinite`] naming the first point with a NaN or infinite coordinate;
+/// [`Error::InvalidParameter`] if `points` has more than 2^28 points (arcs and events are
+/// indexed with `u32`).
+///
+/// # Complexity
+///
+/// With n = `points.len()`: time O(n log n) expected (the sort; at most 2n − 5 circle
+/// events and 6n heap insertions, O(log n) each; one O(log n) expected treap descent and
+/// insertion per site, the expectation over the treap's priorities, which a fixed seed
+/// draws independently of the input); auxiliary space O(n). The exact fallbacks cost more
+/// than the filter but are O(1) each for a given input precision.
+///
+/// # Counts
+///
+/// Comparisons: the (y, x) sort and duplicate merge, every comparison of two events (heap
+/// order, and the next site against the first circle event), and every breakpoint test of
+/// the beach-line descent. Orientation tests: one per triple of arcs checked for a circle
+/// event. No in-circle tests: the Delaunay property comes from the sweep itself.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::delaunay::fortune_with;
+/// use compgeo::geometry::Point2;
+///
+/// // A 3 x 3 grid: four cocircular sites around each Voronoi vertex.
+/// let pts: Vec<Point2> = (0..9).map(|i| Point2::new((i % 3) as f64, (i / 3) as f64)).collect();
+/// let mut counts = Counts::default();
+/// let t = fortune_with(&pts, &mut counts)?;
+/// assert_eq!(t.triangle_count(), 8);
+/// assert!(counts.comparisons > 0 && counts.orientation_tests > 0);
+/// assert_eq!(counts.incircle_tests, 0);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn fortune_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Triangulation> {
+    validate(points)?;
+    if points.len() > MAX_POINTS {
+        return Err(Error::InvalidParameter {
+            name: "points",
+            reason: format!(
+                "Fortune's sweep takes at most {MAX_POINTS} points, got {}",
+                points.len()
+            ),
+        });
+    }
+    let (sites, index, duplicates) = sorted_by_y(points, counter);
+    let mut sweep = Sweep {
+        sites: &sites,
+        counter,
+        line: BeachLine::with_capacity(2 * sites.len()),
+        queue: Vec::with_capacity(sites.len()),
+        next_id: 0,
+        triangles: Vec::with_capacity(2 * sites.len()),
+    };
+    sweep.run();
+    let triangles: Vec<[usize; 3]> = sweep
+        .triangles
+        .iter()
+        .map(|t| t.map(|v| index[v as usize]))
+        .collect();
+    Triangulation::from_triangles(points, &triangles, duplicates)
+}
+
+/// The most points [`fortune_with`] accepts: fewer than 6n events are ever queued, so event
+/// ids stay below [`NIL`].
+const MAX_POINTS: usize = 1 << 28;
+
+/// A circle event: arc `arc` (between the arcs of `sites[0]` and `sites[2]`) vanishes.
+#[derive(Debug, Clone, Copy)]
+struct Event {
+    key: CircleKey,
+    sites: [u32; 3],
+    arc: u32,
+    /// Matches the arc's pending event while the event is still valid.
+    id: u32,
+}
+
+/// The sweep's state over the sites (sorted by y, then x, distinct).
+struct Sweep<'a, C> {
+    sites: &'a [Point2],
+    counter: &'a mut C,
+    line: BeachLine,
+    /// A binary min-heap of circle events by event point.
+    queue: Vec<Event>,
+    next_id: u32,
+    /// Counter-clockwise triangles as site positions.
+    triangles: Vec<[u32; 3]>,
+}
+
+impl<C: Counter> Sweep<'_, C> {
+    fn run(&mut self) {
+        let n = self.sites.len();
+        let mut next_site = 0;
+        while next_site < n || !self.queue.is_empty() {
+            let circle_first = match self.queue.first() {
+                None => false,
+                Some(_) if next_site == n => true,
+                Some(e) => {
+                    self.counter.comparison();
+                    let e = *e;
+                    cmp_circle_site(&e.key, self.points(e.sites), self.sites[next_site])
+                        != Ordering::Greater
+                }
+            };
+            if circle_first {
+                let e = self.pop();
+                self.circle_event(e);
+            } else {
+                self.site_event(next_site as u32);
+                next_site += 1;
+            }
+        }
+    }
+
+    fn site_event(&mut self, s: u32) {
+        let p = self.sites[s as usize];
+        let (line, sites, counter) = (&self.line, self.sites, &mut *self.counter);
+        let found = line.first_arc_where(|a| {
+            counter.comparison();
+            let (left, right) = (line.site(a), line.site(line.next(a)));
+            breakpoint_side(sites[left as usize], sites[right as usize], p) == Ordering::Greater
+        });
+        if found == NIL {
+            self.line.insert_after(NIL, s);
+            return;
+        }
+        let above = self.line.site(found);
+        self.line.set_event(found, NIL);
+        let new = self.line.insert_after(found, s);
+        if self.sites[above as usize].y == p.y {
+            // The first row: arcs are vertical strips, and the new one goes to the right.
+            self.check_circle(found);
+            self.check_circle(new);
+            return;
+        }
+        let copy = self.line.insert_after(new, above);
+        self.check_circle(found);
+        self.check_circle(copy);
+    }
+
+    fn circle_event(&mut self, e: Event) {
+        if !self.line.is_live(e.arc) || self.line.event(e.arc) != e.id {
+            return; // a false alarm: the arc changed neighbours or is gone
+        }
+        self.triangles.push(e.sites);
+        let (left, right) = (self.line.prev(e.arc), self.line.next(e.arc));
+        self.line.remove(e.arc);
+        self.line.set_event(left, NIL);
+        self.line.set_event(right, NIL);
+        self.check_circle(left);
+        self.check_circle(right);
+    }
+
+    /// Queues the circle event of arc `m` if its neighbours' breakpoints converge.
+    fn check_circle(&mut self, m: u32) {
+        let (l, r) = (self.line.prev(m), self.line.next(m));
+        if l == NIL || r == NIL {
+            return;
+        }
+        let sites = [self.line.site(l), self.line.site(m), self.line.site(r)];
+        if sites[0] == sites[2] {
+            return; // both sides of one parabola: the breakpoints diverge
+        }
+        let [a, b, c] = self.points(sites);
+        if self.counter.orient2d(a, b, c) != Orientation::CounterClockwise {
+            return;
+        }
+        let id = self.next_id;
+        self.next_id += 1;
+        self.line.set_event(m, id);
+        self.push(Event {
+            key: CircleKey::new(a, b, c),
+            sites,
+            arc: m,
+            id,
+        });
+    }
+
+    #[inline]
+    fn points(&self, t: [u32; 3]) -> [Point2; 3] {
+        t.map(|v| self.sites[v as usize])
+    }
+
+    /// Whether event `x` comes strictly before event `y`.
+    fn before(&mut self, x: &Event, y: &Event) -> bool {
+        self.counter.comparison();
+        cmp_circles(&x.key, self.points(x.sites), &y.key, self.points(y.sites)) == Ordering::Less
+    }
+
+    fn push(&mut self, e: Event) {
+        self.queue.push(e);
+        let mut k = self.queue.len() - 1;
+        while k > 0 {
+            let parent = (k - 1) / 2;
+            let (child, up) = (self.queue[k], self.queue[parent]);
+            if !self.before(&child, &up) {
+                break;
+            }
+            self.queue.swap(k, parent);
+            k = parent;
+        }
+    }
+
+    /// Removes and returns the first event (the queue is not empty).
+    fn pop(&mut self) -> Event {
+        let last = self.queue.len() - 1;
+        self.queue.swap(0, last);
+        let top = self.queue.pop().expect("pop is only called on a non-empty queue");
+        let len = self.queue.len();
+        let mut k = 0;
+        loop {
+            let (l, r) = (2 * k + 1, 2 * k + 2);
+            if l >= len {
+                break;
+            }
+            let mut first = l;
+            if r < len {
+                let (a, b) = (self.queue[r], self.queue[l]);
+                if self.before(&a, &b) {
+                    first = r;
+                }
+            }
+            let (a, b) = (self.queue[first], self.queue[k]);
+            if !self.before(&a, &b) {
+                break;
+            }
+            self.queue.swap(k, first);
+            k = first;
+        }
+        top
+    }
+}
+
+/// The points sorted by (y, x) without repeats, the input index of each (the smallest among
+/// equal points), and the duplicates as `[dropped, kept]` sorted by `dropped`.
+fn sorted_by_y<C: Counter>(
+    points: &[Point2],
+    counter: &mut C,
+) -> (Vec<Point2>, Vec<usize>, Vec<[usize; 2]>) {
+    let mut order: Vec<usize> = (0..points.len()).collect();
+    order.sort_unstable_by(|&a, &b| {
+        counter.comparison();
+        cmp_yx(points[a], points[b]).then(a.cmp(&b))
+    });
+    let mut sites: Vec<Point2> = Vec::with_capacity(order.len());
+    let mut index = Vec::with_capacity(order.len());
+    let mut duplicates = Vec::new();
+    for i in order {
+        if let Some(&last) = sites.last() {
+            counter.comparison();
+            if cmp_yx(last, points[i]) == Ordering::Equal {
+                duplicates.push([i, *index.last().expect("index follows sites")]);
+                continue;
+            }
+        }
+        sites.push(points[i]);
+        index.push(i);
+    }
+    duplicates.sort_unstable();
+    (sites, index, duplicates)
+}
+
+/// y, then x (finite coordinates; `-0.0 == 0.0`).
+fn cmp_yx(a: Point2, b: Point2) -> Ordering {
+    let by = |u: f64, v: f64| u.partial_cmp(&v).unwrap_or(Ordering::Equal);
+    by(a.y, b.y).then_with(|| by(a.x, b.x))
+}
