@@ -278,7 +278,9 @@ mod tests {
         let mut model: Vec<(u32, u32)> = Vec::new();
         let mut state = 12345u64;
         let mut rand = |m: usize| {
-            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (state >> 33) as usize % m
         };
         for step in 0..3000u32 {

@@ -6,7 +6,9 @@ use super::beach_line::{BeachLine, NIL};
 use super::Triangulation;
 use crate::count::{Counter, NoCount};
 use crate::error::{Error, Result};
-use crate::geometry::sweep_predicates::{breakpoint_side, cmp_circle_site, cmp_circles, CircleKey};
+use crate::geometry::sweep_predicates::{
+    breakpoint_side, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
+};
 use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
 use std::cmp::Ordering;
 
@@ -114,7 +116,10 @@ pub fn fortune_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Tr
             ),
         });
     }
-    let (sites, index, duplicates) = sorted_by_y(points, counter);
+    let (mut sites, index, duplicates) = sorted_by_y(points, counter);
+    // An exact power-of-two scaling changes no decision and keeps the filters away from
+    // overflow and underflow (1e300 or 1e-300 everywhere).
+    normalize_scale(&mut sites);
     let mut sweep = Sweep {
         sites: &sites,
         counter,
@@ -276,7 +281,10 @@ impl<C: Counter> Sweep<'_, C> {
     fn pop(&mut self) -> Event {
         let last = self.queue.len() - 1;
         self.queue.swap(0, last);
-        let top = self.queue.pop().expect("pop is only called on a non-empty queue");
+        let top = self
+            .queue
+            .pop()
+            .expect("pop is only called on a non-empty queue");
         let len = self.queue.len();
         let mut k = 0;
         loop {

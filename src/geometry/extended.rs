@@ -66,7 +66,7 @@ fn rescale_into(window: Window, coords: &[f64], out: &mut [f64]) -> bool {
 }
 
 /// `floor(log2 |v|)` for finite nonzero `v`, subnormals included.
-fn exponent(v: f64) -> i32 {
+pub(crate) fn exponent(v: f64) -> i32 {
     let bits = v.to_bits();
     let biased = ((bits >> 52) & 0x7ff) as i32;
     if biased == 0 {
@@ -79,7 +79,7 @@ fn exponent(v: f64) -> i32 {
 
 /// `v * 2^shift`, exact when the result is a normal double: each step moves monotonically
 /// from `v` towards the result, so no intermediate overflows or becomes subnormal.
-fn scale_by_pow2(mut v: f64, mut shift: i32) -> f64 {
+pub(crate) fn scale_by_pow2(mut v: f64, mut shift: i32) -> f64 {
     while shift != 0 {
         let step = shift.clamp(-1000, 1000);
         v *= pow2(step);
