@@ -11,7 +11,7 @@ use serde::Serialize;
 /// Arguments of `compgeo delaunay`.
 #[derive(Debug, Args)]
 pub(super) struct DelaunayArgs {
-    /// The builder: incremental, divide-and-conquer, lawson
+    /// The builder: incremental, divide-and-conquer, lawson, fortune
     #[arg(long, short, default_value = "incremental")]
     algorithm: Algorithm,
     #[command(flatten)]

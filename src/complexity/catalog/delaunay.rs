@@ -2,10 +2,11 @@
 //! grid (cocircular quadruples everywhere) and parabola input (points in convex position in
 //! x order, the order that makes naive incremental insertion quadratic); the seed's divide
 //! and conquer on uniform and parabola input; Lawson's flips on the parabola, where they are
-//! quadratic, at small sizes.
+//! quadratic, at small sizes; Fortune's sweep on uniform and parabola input.
 //!
 //! The counted operation is the in-circle test, the Delaunay builders' characteristic
-//! predicate (the flips' test).
+//! predicate (the flips' test), except for Fortune's sweep, which makes none: its entries
+//! count comparisons (the sort, the event queue and the beach-line breakpoint tests).
 
 use crate::complexity::{Bound, Entry, Workload};
 use crate::count::{Counter, Operation};
@@ -21,7 +22,8 @@ struct Delaunay {
 }
 
 /// The Delaunay entries: the incremental builder on four inputs, divide and conquer on
-/// uniform and parabola input, Lawson's flips on the parabola (its quadratic case).
+/// uniform and parabola input, Lawson's flips on the parabola (its quadratic case),
+/// Fortune's sweep on uniform and parabola input.
 pub(super) fn entries() -> Vec<Entry> {
     let mut out: Vec<Entry> = [
         PointKind::UniformSquare,
@@ -52,6 +54,24 @@ pub(super) fn entries() -> Vec<Entry> {
             .quick(64, 4096)
             .full(64, 1 << 14),
     );
+    // Fortune's sweep: O(n log n) expected on every input, also on the parabola, where
+    // insertion in x order goes quadratic.
+    for kind in [PointKind::UniformSquare, PointKind::Parabola] {
+        out.push(
+            Entry::new(
+                "delaunay/fortune",
+                Bound::NLogN,
+                Operation::Comparisons,
+                Delaunay {
+                    algorithm: Algorithm::Fortune,
+                    kind,
+                },
+            )
+            .input(kind.name())
+            .quick(256, 1 << 15)
+            .full(256, 1 << 20),
+        );
+    }
     out
 }
 
