@@ -55,7 +55,7 @@
 //! Z-order numbering (see `compgeo::delaunay::voronoi`), and page faults on the fresh
 //! arrays are a sizeable share of the rest.
 
-use compgeo::delaunay::{divide_and_conquer, incremental, voronoi, ClipBox};
+use compgeo::delaunay::{divide_and_conquer, fortune, incremental, voronoi, ClipBox};
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::Point2;
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion, Throughput};
@@ -88,6 +88,9 @@ fn triangulations(c: &mut Criterion) {
             });
             group.bench_with_input(BenchmarkId::new("divide-and-conquer", n), &pts, |b, pts| {
                 b.iter(|| divide_and_conquer(black_box(pts)).unwrap())
+            });
+            group.bench_with_input(BenchmarkId::new("fortune", n), &pts, |b, pts| {
+                b.iter(|| fortune(black_box(pts)).unwrap())
             });
             let dpts: Vec<delaunator::Point> = pts
                 .iter()

@@ -11,9 +11,9 @@
 //!   `s`; for site `p` its radius is `|s - p|² / (2 (s.y - p.y))`, a quotient without roots.
 //!   [`breakpoint_side`] turns "is `s` left of the breakpoint between the arcs of `p` and
 //!   `q`?" into a comparison of two such radii (degree 3) and two coordinate comparisons.
-//! - **Event order.** A circle event of sites `a, b, c` happens when the line touches their
-//!   circumcircle from below, at `y = cy + r`; with `a` as origin this is
-//!   `a.y + (P + √Q) / D` for integer polynomials `P` (degree 3), `Q` (degree 6) and the
+//! - **Event order.** A circle event of sites `a, b, c` happens when the line, moving up,
+//!   leaves their circumcircle at its top, `y = cy + r`; this is `a.y + (N + √Q) / D` for
+//!   polynomials `N` (degree 3), `Q` (degree 6) in the differences `b − a`, `c − a` and the
 //!   doubled signed area `D`. Comparing it with a site's `y` or with another event's leads
 //!   to `x + √p − √q` with rational `x, p, q`, whose sign follows from a case analysis and
 //!   squaring. Ties in `y` are broken by `x` (the centre's), so events are ordered
@@ -349,7 +349,7 @@ fn cmp_tangent_radii(p: Point2, q: Point2, s: Point2) -> Ordering {
 }
 
 /// A circumcircle in exact integers (coordinates scaled by a common power of two): the top
-/// is `(p + √q) / d` and the centre's `x` is `x / d`, with `d > 0`.
+/// is `(p + √q) / d` (`p = a.y·d + N`) and the centre's `x` is `x / d`, with `d > 0`.
 struct ExactCircle {
     d: BigInt,
     p: BigInt,
@@ -539,9 +539,8 @@ mod tests {
             } else {
                 four_xxb.cmp(&(&m * &m))
             }
-        } else if b < &(x * x) {
-            Ordering::Less // x + √b < 0 <= √d
-        } else if m.is_positive() {
+        } else if b < &(x * x) || m.is_positive() {
+            // Either x + √b < 0 <= √d, or 2x√b <= 0 < m.
             Ordering::Less
         } else {
             // Both 2x√b and m are <= 0: the smaller magnitude is the larger value.
