@@ -26,6 +26,7 @@
 
 use super::bigint::BigInt;
 use super::extended::{decompose, exponent, scale_by_pow2};
+use super::predicates::pow2;
 use super::{cmp_dist, incircle, InCircle, Point2};
 use std::cmp::Ordering;
 
@@ -51,6 +52,10 @@ impl CircleKey {
         let (ax, ay) = (Interval::point(a.x), Interval::point(a.y));
         let (bx, by) = (Interval::point(b.x).sub(ax), Interval::point(b.y).sub(ay));
         let (cx, cy) = (Interval::point(c.x).sub(ax), Interval::point(c.y).sub(ay));
+        // The offsets from a are homogeneous of degree 1 in the differences: work with the
+        // differences near 1 so that no product under- or overflows, and scale back.
+        let k = unit_shift(&[bx, by, cx, cy]);
+        let [bx, by, cx, cy] = [bx, by, cx, cy].map(|v| v.scaled(k));
         let bb = bx.square().add(by.square());
         let cc = cx.square().add(cy.square());
         let d = bx.mul(cy).sub(by.mul(cx)).twice();
@@ -58,8 +63,8 @@ impl CircleKey {
         let uy = bx.mul(cc).sub(cx.mul(bb)).div(d);
         let r = ux.square().add(uy.square()).sqrt();
         CircleKey {
-            top: ay.add(uy).add(r),
-            x: ax.add(ux),
+            top: ay.add(uy.add(r).scaled(-k)),
+            x: ax.add(ux.scaled(-k)),
         }
     }
 }
@@ -298,6 +303,17 @@ impl Interval {
         Interval::outward(self.lo.max(0.0).sqrt(), self.hi.max(0.0).sqrt()).non_negative()
     }
 
+    /// The interval times `2^k` (rounded outwards where that is inexact: near underflow).
+    fn scaled(self, mut k: i32) -> Interval {
+        let mut v = self;
+        while k != 0 {
+            let step = k.clamp(-1000, 1000);
+            v = v.mul(Interval::point(pow2(step)));
+            k -= step;
+        }
+        v
+    }
+
     /// Clamps the lower bound at zero, for values known to be non-negative.
     #[inline]
     fn non_negative(self) -> Interval {
@@ -329,12 +345,28 @@ impl Interval {
     }
 }
 
+/// The shift `k` that brings the largest magnitude in `values` into `[1, 2)`; 0 if they are
+/// all zero or one is unbounded.
+fn unit_shift(values: &[Interval]) -> i32 {
+    let m = values
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.lo.abs()).max(v.hi.abs()));
+    if m == 0.0 || !m.is_finite() {
+        0
+    } else {
+        -exponent(m)
+    }
+}
+
 /// `|s − p|² (s.y − q.y)` vs `|s − q|² (s.y − p.y)`: the radii of the circles through `p`
 /// and `q` touching the line `y = s.y` at `s`, denominators cleared (both are `>= 0`).
 fn cmp_tangent_radii(p: Point2, q: Point2, s: Point2) -> Ordering {
     let (sx, sy) = (Interval::point(s.x), Interval::point(s.y));
     let (px, py) = (sx.sub(Interval::point(p.x)), sy.sub(Interval::point(p.y)));
     let (qx, qy) = (sx.sub(Interval::point(q.x)), sy.sub(Interval::point(q.y)));
+    // Homogeneous of degree 3 in the differences: scaling them by 2^k keeps the sign.
+    let k = unit_shift(&[px, py, qx, qy]);
+    let [px, py, qx, qy] = [px, py, qx, qy].map(|v| v.scaled(k));
     let lhs = px.square().add(py.square()).mul(qy);
     let rhs = qx.square().add(qy.square()).mul(py);
     lhs.sub(rhs).sign().unwrap_or_else(|| {
