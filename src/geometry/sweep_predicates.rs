@@ -154,6 +154,9 @@ pub(crate) fn cmp_circles(
         return Ordering::Equal;
     }
     let coords: Vec<f64> = t1.iter().chain(&t2).flat_map(|p| [p.x, p.y]).collect();
+    if let Some(order) = small_ints(&coords).and_then(|v| cmp_small_circles(&v)) {
+        return order;
+    }
     let v = exact_coords(&coords);
     let c1 = ExactCircle::new(&v[..6]);
     let c2 = ExactCircle::new(&v[6..]);
@@ -419,6 +422,70 @@ impl ExactCircle {
     }
 }
 
+/// Bits of the coordinates [`cmp_small_circles`] takes: its largest terms, `D2² Q1`, have
+/// degree 10 and stay below 2^(10 B + 19) <= 2^119.
+const SMALL_BITS: u32 = 10;
+
+/// The coordinates as integers below `2^SMALL_BITS` in magnitude, all scaled by one power of
+/// two, if they are (grids and lattices, whose circles tie exactly and often).
+fn small_ints(coords: &[f64]) -> Option<Vec<i128>> {
+    let parts: Vec<(bool, u64, i32)> = coords.iter().map(|&v| odd_parts(v)).collect();
+    let base = parts
+        .iter()
+        .filter(|&&(_, m, _)| m != 0)
+        .map(|&(_, _, e)| e)
+        .min()
+        .unwrap_or(0);
+    parts
+        .iter()
+        .map(|&(negative, m, e)| {
+            let shift = (e - base) as u32;
+            if m == 0 {
+                Some(0)
+            } else if shift < SMALL_BITS && m < 1 << (SMALL_BITS - shift) {
+                let v = (m << shift) as i128;
+                Some(if negative { -v } else { v })
+            } else {
+                None
+            }
+        })
+        .collect()
+}
+
+/// [`cmp_circles`] on small integers when the comparison of the tops needs no squaring:
+/// equal centre heights or equal radii (the ties of grids and lattices), or both pointing
+/// the same way; `None` otherwise.
+fn cmp_small_circles(v: &[i128]) -> Option<Ordering> {
+    let circle = |v: &[i128]| {
+        let (ax, ay) = (v[0], v[1]);
+        let (bx, by, cx, cy) = (v[2] - ax, v[3] - ay, v[4] - ax, v[5] - ay);
+        let (bb, cc) = (bx * bx + by * by, cx * cx + cy * cy);
+        let d = 2 * (bx * cy - by * cx);
+        let (nx, ny) = (cy * bb - by * cc, bx * cc - cx * bb);
+        // [d, p, q, x] as in `ExactCircle`, with d > 0.
+        let s = d.signum();
+        [
+            d * s,
+            ay * d * s + ny * s,
+            nx * nx + ny * ny,
+            ax * d * s + nx * s,
+        ]
+    };
+    let ([d1, p1, q1, x1], [d2, p2, q2, x2]) = (circle(&v[..6]), circle(&v[6..]));
+    let x = (d2 * p1 - d1 * p2).signum() as i32;
+    let roots = (d2 * d2 * q1 - d1 * d1 * q2).signum() as i32;
+    let top = if x == 0 || roots == 0 || x == roots {
+        if x == 0 {
+            roots
+        } else {
+            x
+        }
+    } else {
+        return None;
+    };
+    Some(ordering(top).then_with(|| ordering((x1 * d2 - x2 * d1).signum() as i32)))
+}
+
 /// The sign of `x + √p − √q` for `p, q >= 0`.
 fn sign_plus_roots(x: &BigInt, p: &BigInt, q: &BigInt) -> i32 {
     let sx = x.signum();
@@ -448,15 +515,7 @@ fn sign_plus_roots(x: &BigInt, p: &BigInt, q: &BigInt) -> i32 {
 /// Every coordinate as an exact big integer, all scaled by the same power of two (the
 /// largest that keeps them integers).
 fn exact_coords(coords: &[f64]) -> Vec<BigInt> {
-    // Odd mantissas: grid and lattice coordinates become small integers.
-    let parts: Vec<(bool, u64, i32)> = coords
-        .iter()
-        .map(|&v| {
-            let (negative, m, e) = decompose(v);
-            let zeros = if m == 0 { 0 } else { m.trailing_zeros() };
-            (negative, m >> zeros, e + zeros as i32)
-        })
-        .collect();
+    let parts: Vec<(bool, u64, i32)> = coords.iter().map(|&v| odd_parts(v)).collect();
     let base = parts
         .iter()
         .filter(|&&(_, m, _)| m != 0)
@@ -469,6 +528,14 @@ fn exact_coords(coords: &[f64]) -> Vec<BigInt> {
             BigInt::from_parts(negative, m, if m == 0 { 0 } else { (e - base) as u32 })
         })
         .collect()
+}
+
+/// `v = (-1)^negative * m * 2^e` with `m` odd (or zero): grid and lattice coordinates
+/// become small integers.
+fn odd_parts(v: f64) -> (bool, u64, i32) {
+    let (negative, m, e) = decompose(v);
+    let zeros = if m == 0 { 0 } else { m.trailing_zeros() };
+    (negative, m >> zeros, e + zeros as i32)
 }
 
 fn ordering(sign: i32) -> Ordering {
