@@ -16,7 +16,7 @@
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
 //! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
 //! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
-//! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the seed's divide and conquer, Lawson's flips), exact checker; the Voronoi diagram and the proximity problems on it |
+//! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the seed's divide and conquer, Lawson's flips, Fortune's sweep), exact checker; the Voronoi diagram and the proximity problems on it |
 //! | [`spline`] | Bernstein basis and Bézier curves, generic over the scalar (`f64`, exact rationals) and the dimension |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
@@ -66,6 +66,7 @@
 //! | [`delaunay::incremental`] | O(n log n) expected on every input (BRIO + Hilbert order) |
 //! | [`delaunay::divide_and_conquer`] | O(n log n) worst case (Guibas–Stolfi merge) |
 //! | [`delaunay::lawson`] | O(n²) worst case: Θ(n²) in-circle tests on a parabola |
+//! | [`delaunay::fortune`] | O(n log n) expected (treap beach line, heap of circle events), exact event order |
 //! | [`delaunay::check_delaunay`] | O(n log n + t), exact |
 //! | [`delaunay::voronoi`] | the triangulation's time, then O(n) for the dual; clipping O(n) |
 //! | [`delaunay::all_nearest_neighbours`] | O(n log n) expected; two distance evaluations per Delaunay edge |
