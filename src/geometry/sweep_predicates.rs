@@ -19,9 +19,10 @@
 //!   squaring. Ties in `y` are broken by `x` (the centre's), so events are ordered
 //!   lexicographically by their point on the sweep line.
 //!
-//! Stages, as for the other predicates: a filter in interval arithmetic (every operation
-//! rounded outwards with `next_down` / `next_up`; overflow or NaN gives an unbounded
-//! interval, which decides nothing), then an exact evaluation in big integers on the
+//! Stages, as for the other predicates: a filter (plain floating point with an error bound
+//! for the breakpoint test, interval arithmetic for circle tops: every operation rounded
+//! outwards by an ulp or more; overflow or NaN gives an unbounded interval, which decides
+//! nothing), then an exact evaluation in big integers on the
 //! doubles' exact binary values brought to a common exponent (see `products.rs`).
 
 use super::bigint::BigInt;
@@ -201,6 +202,9 @@ pub(crate) fn normalize_scale(points: &mut [Point2]) {
     }
 }
 
+/// The smallest positive subnormal, 2^-1074.
+const TINY: f64 = f64::from_bits(1);
+
 impl Interval {
     const ENTIRE: Interval = Interval {
         lo: f64::NEG_INFINITY,
@@ -217,9 +221,11 @@ impl Interval {
     fn outward(lo: f64, hi: f64) -> Interval {
         // Written so that NaN gives the whole line too.
         if lo.is_finite() && hi.is_finite() {
+            // At least one ulp outwards (2^-52 |v| is an ulp or more, 2^-1074 covers
+            // subnormals), and rounding to nearest cannot undo a step of a whole ulp.
             Interval {
-                lo: lo.next_down(),
-                hi: hi.next_up(),
+                lo: lo - (lo.abs() * f64::EPSILON + TINY),
+                hi: hi + (hi.abs() * f64::EPSILON + TINY),
             }
         } else {
             Interval::ENTIRE
