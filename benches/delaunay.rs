@@ -1,5 +1,5 @@
-//! Benchmarks of `compgeo::delaunay` against `delaunator` and `spade`'s bulk load, in the
-//! same groups, over log-spaced sizes: uniform points in a square, clustered points, and an
+//! Benchmarks of `compgeo::delaunay` (incremental, divide and conquer, Fortune's sweep)
+//! against `delaunator` and `spade`'s bulk load, in the same groups, over log-spaced sizes: uniform points in a square, clustered points, and an
 //! integer grid (cocircular quadruples everywhere, the degenerate case).
 //!
 //! The `voronoi/*` groups build Voronoi cells from the sites (triangulation included)
@@ -33,6 +33,24 @@
 //! Below about 10⁴ points delaunator is faster: its sweep has a smaller constant while
 //! everything fits in cache, and our fixed costs (the BRIO keys, the ghost triangles) weigh
 //! more.
+//!
+//! Fortune's sweep (`fortune`, exact, for the growth comparison), one criterion run of the
+//! `delaunay/uniform-square` group on the same shared machine (load average about 2.5),
+//! 2026-11-23, medians:
+//!
+//! | n | fortune | incremental | divide-and-conquer | delaunator | spade bulk load | fortune / incremental |
+//! |---|---|---|---|---|---|---|
+//! | 10³ | 1.77 ms | 0.155 ms | 0.219 ms | 0.128 ms | 0.281 ms | 11.4 |
+//! | 10⁴ | 23.6 ms | 2.93 ms | 5.42 ms | 2.45 ms | 4.21 ms | 8.0 |
+//! | 10⁵ | 264 ms | 39.5 ms | 84.2 ms | 43.5 ms | 51.1 ms | 6.7 |
+//! | 10⁶ | 3.58 s | 0.431 s | 1.10 s | 0.828 s | 0.692 s | 8.3 |
+//!
+//! Clustered: 20.5 ms, 259 ms, 3.26 s for 10⁴, 10⁵, 10⁶. On the grid most circle events tie
+//! exactly with others and take the `i128` stage: 125 ms and 1.54 s for 10⁴ and 10⁵, so the
+//! grid group runs it only up to 10⁵. The time per point grows from 1.8 µs to 3.6 µs between
+//! 10³ and 10⁶ (the log n of the heap and the treap, and cache misses in both); a quarter
+//! of it is the interval enclosure of each circle event and the breakpoint tests, a sixth
+//! linking the triangles (`Triangulation::from_triangles`).
 //!
 //! Voronoi cells, same machine and load, 2026-11-23 (`voronoi/uniform-square`, criterion
 //! medians, wall time; "clipped" clips every cell to the box voronoice is given):
