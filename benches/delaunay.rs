@@ -1,6 +1,7 @@
 //! Benchmarks of `compgeo::delaunay` (incremental, divide and conquer, Fortune's sweep)
-//! against `delaunator` and `spade`'s bulk load, in the same groups, over log-spaced sizes: uniform points in a square, clustered points, and an
-//! integer grid (cocircular quadruples everywhere, the degenerate case).
+//! against `delaunator` and `spade`'s bulk load, in the same groups, over log-spaced sizes:
+//! uniform points in a square, clustered points, and an integer grid (cocircular quadruples
+//! everywhere, the degenerate case).
 //!
 //! The `voronoi/*` groups build Voronoi cells from the sites (triangulation included)
 //! against `voronoice` (delaunator, then the dual clipped to a box): compgeo's cells with
