@@ -37,7 +37,7 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// Voronoi diagram below the *beach line* (the upper envelope of the parabolas of points as
 /// far from a site as from the line) is final. The beach line is a sequence of parabolic
 /// arcs whose breakpoints trace the Voronoi edges. Two events change it: the line reaches a
-/// site (the site's arc appears inside the arc above it, splitting it), or an arc shrinks to
+/// site (the site's arc appears inside the arc below it, splitting it), or an arc shrinks to
 /// a point between its neighbours (a *circle event*: the line touches the top of the
 /// circle through the three sites, whose centre is a Voronoi vertex). Each circle event is
 /// one Delaunay triangle, the dual of that vertex; at a vertex shared by k ≥ 4 cocircular
@@ -56,8 +56,8 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// Exactness. Every decision is exact for every finite input, 1e300 and subnormals in one set
 /// included: the convergence test is [`orient2d`](crate::geometry::orient2d); the breakpoint
 /// test and the event order, which involve square roots in coordinates, are reduced to signs
-/// of polynomials (see `src/geometry/sweep_predicates.rs`) with an interval filter and an
-/// exact big-integer fallback. Events are ordered by their point on the sweep line, y then
+/// of polynomials (see `src/geometry/sweep_predicates.rs`) with floating-point filters and
+/// exact integer fallbacks. Events are ordered by their point on the sweep line, y then
 /// x (a line turned by an infinitesimal angle), and a circle event before a site at the same
 /// point, so degenerate input needs no special case beyond two:
 /// - the first row of sites (all with the lowest y) has vertical strips as arcs, and each
