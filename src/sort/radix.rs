@@ -322,9 +322,9 @@ fn to_floats(v: &mut [f64]) {
     }
 }
 
-/// The bits in which the keys of `v` (not empty) differ.
+/// The bits in which the keys of `v` differ (none for an empty or one-key `v`).
 fn varying_bits(v: &[f64]) -> u64 {
-    let first = v[0].to_bits();
+    let first = v.first().map_or(0, |x| x.to_bits());
     v.iter().fold(0, |diff, x| diff | (x.to_bits() ^ first))
 }
 
@@ -474,5 +474,15 @@ mod tests {
         radix_sort_f64_with(&mut v, &mut counts);
         assert_eq!(bits(&v), expected);
         assert!(counts.moves <= 16 * n && 2 * counts.comparisons <= 15 * n);
+    }
+
+    #[test]
+    fn empty_buckets_of_a_partition_are_skipped() {
+        // Integers below 2^17 in reverse: few exponents, so most of the 256 buckets of the
+        // first partition are empty.
+        let mut v: Vec<f64> = (0..2 * PART_MAX).rev().map(|i| i as f64).collect();
+        let mut counts = Counts::default();
+        radix_sort_f64_with(&mut v, &mut counts);
+        assert!(v.iter().enumerate().all(|(i, &x)| x == i as f64));
     }
 }
