@@ -118,11 +118,13 @@ impl FloatInput {
 /// `radix_sort_f64` against `sort_unstable_by(f64::total_cmp)`, one group per input
 /// (`radix-f64-mixed`, `radix-f64-unit`), a fresh seeded input for every iteration.
 ///
-/// Measured 2026-11-23 on the 2-core benchmark machine while other builds shared it (so
-/// absolute times wander by 10-20 %; the ratio is the figure to read), n = 10^6: see the
-/// radix section of `docs/complexity.md` for the numbers. In a harness that timed thread CPU
-/// time, interleaving the two sorts over the same fresh inputs, the radix sort took about
-/// 12-13 ms and std about 28 ms on both inputs (2.1-2.3x).
+/// Measured 2026-11-23 on the 2-core benchmark machine while other builds shared it (load
+/// average about 5, so absolute times are about twice a quiet run's; the ratio is the figure
+/// to read), n = 10^6: radix 25.0 ms against std 56.4 ms on mixed input (2.25x), 25.1 ms
+/// against 56.7 ms on uniform [0, 1) (2.26x); at n = 10^5 2.2x on both, at 10^4 3.0-3.3x. A
+/// harness timing thread CPU time (immune to the sharing; 21 fresh inputs, each sorted by both,
+/// medians) gave at 10^6 radix 12.6 ms against std 29.6 ms on mixed input (2.35x) and 13.8 ms
+/// against 29.6 ms on uniform [0, 1) (2.15x); at 10^5 2.2x on both.
 fn radix(c: &mut Criterion) {
     type Sort = fn(&mut Vec<f64>);
     let peers: [(&str, Sort); 2] = [
