@@ -12,7 +12,7 @@
 //! operation that carries the cost.
 //!
 //! The radix sort for `f64` keys compares keys only in the insertion passes that finish its
-//! parts; its entry counts moves (at most 16n), O(n).
+//! parts; its entry counts moves (at most 24n), O(n).
 
 use crate::complexity::{Bound, Entry, Workload};
 use crate::count::{Counter, Operation};
