@@ -119,12 +119,13 @@ impl FloatInput {
 /// (`radix-f64-mixed`, `radix-f64-unit`), a fresh seeded input for every iteration.
 ///
 /// Measured 2026-11-23 on the 2-core benchmark machine while other builds shared it (load
-/// average about 5, so absolute times are about twice a quiet run's; the ratio is the figure
-/// to read), n = 10^6: radix 25.0 ms against std 56.4 ms on mixed input (2.25x), 25.1 ms
-/// against 56.7 ms on uniform [0, 1) (2.26x); at n = 10^5 2.2x on both, at 10^4 3.0-3.3x. A
-/// harness timing thread CPU time (immune to the sharing; 21 fresh inputs, each sorted by both,
-/// medians) gave at 10^6 radix 12.6 ms against std 29.6 ms on mixed input (2.35x) and 13.8 ms
-/// against 29.6 ms on uniform [0, 1) (2.15x); at 10^5 2.2x on both.
+/// average 4-6, so wall times wander by a factor up to 2 between runs and groups; read the
+/// ratios). n = 10^6, two criterion runs: radix 16.9 and 21.7 ms against std 63.6 and 56.5 ms
+/// on mixed input (3.8x, 2.6x), 10.3 and 14.4 ms against 31.1 and 45.6 ms on uniform [0, 1)
+/// (3.0x, 3.2x); n = 10^5: 2.1-3.5x. A harness timing thread CPU time instead (immune to the
+/// sharing; 31 fresh inputs, each sorted by both, medians) gave at 10^6 radix 9.7 ms against
+/// std 27.8 ms on mixed input (2.9x) and 9.3 ms against 27.9 ms on uniform [0, 1) (3.0x); at
+/// 10^5 2.2x and at 10^4 3.1x on both.
 fn radix(c: &mut Criterion) {
     type Sort = fn(&mut Vec<f64>);
     let peers: [(&str, Sort); 2] = [
