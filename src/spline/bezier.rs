@@ -23,6 +23,7 @@ use super::reparametrised::Reparametrised;
 use super::scalar::{binomial, validate_parameter, validate_points, Finite, Point, Scalar};
 use crate::count::{Counter, NoCount};
 use crate::{Error, Result};
+use std::fmt::Debug;
 
 /// A Bézier curve of degree n (n + 1 control points in R^D, over the scalar `S`).
 ///
@@ -42,9 +43,55 @@ use crate::{Error, Result};
 /// assert_eq!(b.eval(&0.5)?, Point::new([2.0, 1.5]));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone)]
 pub struct Bezier<S, const D: usize> {
-    control: Vec<Point<S, D>>,
+    control: Polygon<S, D>,
+    /// A bound on |t| under which Horner's scheme provably stays within the `f64` range
+    /// (negative if there is none; unused for exact scalars); see [`horner_limit`].
+    horner_limit: f64,
+}
+
+impl<S: PartialEq, const D: usize> PartialEq for Bezier<S, D> {
+    fn eq(&self, other: &Self) -> bool {
+        // The limit is a function of the control points.
+        self.control.as_slice() == other.control.as_slice()
+    }
+}
+
+impl<S: Debug, const D: usize> Debug for Bezier<S, D> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Bezier")
+            .field("control", &self.control.as_slice())
+            .finish()
+    }
+}
+
+/// A control polygon: lines, quadratics and cubics inline, other degrees on the heap.
+///
+/// Inline, the points of a borrowed curve are part of the borrowed value, which the compiler
+/// knows nothing modifies during the borrow: a loop evaluating the curve loads them once,
+/// even though the loop also contains the (rare) out-of-line calls of the checked path. On
+/// the heap they would be reloaded at every evaluation. The variant is also the degree
+/// dispatch of the closed forms.
+#[derive(Clone)]
+enum Polygon<S, const D: usize> {
+    Line([Point<S, D>; 2]),
+    Quadratic([Point<S, D>; 3]),
+    Cubic([Point<S, D>; 4]),
+    /// Degree 0, or degree 4 and more.
+    Other(Vec<Point<S, D>>),
+}
+
+impl<S, const D: usize> Polygon<S, D> {
+    #[inline]
+    fn as_slice(&self) -> &[Point<S, D>] {
+        match self {
+            Polygon::Line(b) => b,
+            Polygon::Quadratic(b) => b,
+            Polygon::Cubic(b) => b,
+            Polygon::Other(b) => b,
+        }
+    }
 }
 
 impl<S: Scalar, const D: usize> Bezier<S, D> {
@@ -57,25 +104,33 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// # Complexity
     ///
-    /// O(nD) to validate, no auxiliary space.
+    /// O(nD) to validate the points and to bound their coordinates (for the overflow check of
+    /// the evaluations), no auxiliary space.
     pub fn new(control: Vec<Point<S, D>>) -> Result<Self> {
         validate_points(&control, "control polygon")?;
-        Ok(Bezier { control })
+        Ok(Bezier::with_control(control))
     }
 
     /// The control points b₀, …, bₙ.
+    #[inline]
     pub fn control(&self) -> &[Point<S, D>] {
-        &self.control
+        self.control.as_slice()
     }
 
     /// The control points, by value.
     pub fn into_control(self) -> Vec<Point<S, D>> {
-        self.control
+        match self.control {
+            Polygon::Line(b) => b.into(),
+            Polygon::Quadratic(b) => b.into(),
+            Polygon::Cubic(b) => b.into(),
+            Polygon::Other(b) => b,
+        }
     }
 
     /// The degree n (the number of control points minus one).
+    #[inline]
     pub fn degree(&self) -> usize {
-        self.control.len() - 1
+        self.control().len() - 1
     }
 
     /// The same curve with `f64` coordinates (each rounded to the nearest double).
@@ -84,17 +139,17 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// [`Error::Overflow`] if a coordinate is beyond the range of `f64`.
     pub fn to_f64(&self) -> Result<Bezier<f64, D>> {
-        Bezier::derived(self.control.iter().map(Point::to_f64).collect(), "to_f64")
+        Bezier::derived(self.control().iter().map(Point::to_f64).collect(), "to_f64")
     }
 
     /// The curve of an `f64` curve's exact values in `S` (exact for rationals).
     pub fn from_f64(curve: &Bezier<f64, D>) -> Self {
         let control = curve
-            .control
+            .control()
             .iter()
             .map(|p| Point::from_f64(p).expect("a Bezier's control points are finite"))
             .collect();
-        Bezier { control }
+        Bezier::with_control(control)
     }
 
     /// The point b(t), by the Horner-type scheme ([`Bezier::horner`]): the fast evaluation.
@@ -103,6 +158,11 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// for coordinates near the top of its range; then the result is recomputed by de
     /// Casteljau's algorithm, which only forms affine combinations. On `f64`, a value that is
     /// itself beyond the double range (t far outside [0, 1]) comes out infinite.
+    ///
+    /// Whether Horner's scheme can overflow is known before it runs: [`Bezier::new`] bounds
+    /// |t| from the degree and the largest coordinate, and one comparison of t with that
+    /// bound, which also rejects NaN and ±∞, decides between the plain scheme and the checked
+    /// path (parameter validation, Horner, finiteness check, de Casteljau).
     ///
     /// # Errors
     ///
@@ -113,27 +173,12 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// Θ(nD) time, O(D) auxiliary space (Θ(n²D) time and O(nD) space in the overflow case).
     #[inline]
     pub fn eval(&self, t: &S) -> Result<Point<S, D>> {
-        // A non-finite t makes every step of degree ≥ 1 non-finite (no step divides by t),
-        // so one check of the result covers the parameter too; degree 0 ignores t.
-        let p = self.horner_unchecked(t, &mut NoCount);
-        if p.is_finite() && (self.control.len() > 1 || t.is_finite()) {
-            Ok(p)
-        } else {
-            self.eval_slow(t)
-        }
-    }
-
-    /// de Casteljau's algorithm for the overflow case of the evaluations, out of line.
-    #[cold]
-    #[inline(never)]
-    pub(crate) fn de_casteljau_cold(&self, t: &S) -> Point<S, D> {
-        let mut q = self.control.clone();
-        for k in 1..q.len() {
-            for i in 0..q.len() - k {
-                q[i] = Point::lerp(&q[i], &q[i + 1], t);
+        if self.horner_is_safe(t) {
+            if let Some(p) = self.closed_form(t) {
+                return Ok(p);
             }
         }
-        q.swap_remove(0)
+        self.eval_general_checked(t).map(in_registers)
     }
 
     /// The point b(t) at a parameter validated beforehand: [`Bezier::eval`] without the
@@ -155,21 +200,12 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     #[inline]
     pub fn at(&self, t: &Finite<S>) -> Point<S, D> {
         let t = t.get();
-        let p = self.horner_unchecked(t, &mut NoCount);
-        if p.is_finite() {
-            p
-        } else {
-            self.de_casteljau_cold(t)
+        if self.horner_is_safe(t) {
+            if let Some(p) = self.closed_form(t) {
+                return p;
+            }
         }
-    }
-
-    /// [`Bezier::eval`]'s rare path, out of line: a bad parameter, or an overflow of
-    /// Horner's binomials recomputed by de Casteljau's algorithm.
-    #[cold]
-    #[inline(never)]
-    fn eval_slow(&self, t: &S) -> Result<Point<S, D>> {
-        validate_parameter(t, "t")?;
-        Ok(self.de_casteljau_cold(t))
+        in_registers(self.eval_general(t))
     }
 
     /// The point b(t) by de Casteljau's algorithm. See [`Bezier::de_casteljau_with`].
@@ -225,7 +261,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// ```
     pub fn de_casteljau_with<C: Counter>(&self, t: &S, counter: &mut C) -> Result<Point<S, D>> {
         validate_parameter(t, "t")?;
-        let mut q = self.control.clone();
+        let mut q = self.control().to_vec();
         for k in 1..q.len() {
             for i in 0..q.len() - k {
                 q[i] = Point::lerp(&q[i], &q[i + 1], t);
@@ -282,6 +318,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// assert_eq!(c.arithmetic_operations, 5);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
+    #[inline]
     pub fn horner_with<C: Counter>(&self, t: &S, counter: &mut C) -> Result<Point<S, D>> {
         validate_parameter(t, "t")?;
         Ok(self.horner_unchecked(t, counter))
@@ -318,8 +355,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         validate_parameter(c, "c")?;
         let (left, right) = self.split_unchecked(c);
         Ok((
-            Bezier::derived(left.control, "split")?,
-            Bezier::derived(right.control, "split")?,
+            Bezier::derived(left.into_control(), "split")?,
+            Bezier::derived(right.into_control(), "split")?,
         ))
     }
 
@@ -372,9 +409,9 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// Θ(nD) time and space for the copy.
     pub fn reversed(&self) -> Self {
-        let mut control = self.control.clone();
+        let mut control = self.control().to_vec();
         control.reverse();
-        Bezier { control }
+        Bezier::with_control(control)
     }
 
     /// This curve over the global interval [a, b]; see [`Reparametrised`].
@@ -432,11 +469,9 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     pub fn derivative(&self, r: usize) -> Result<Self> {
         let n = self.degree();
         if r > n {
-            return Ok(Bezier {
-                control: vec![Point::zero()],
-            });
+            return Ok(Bezier::with_control(vec![Point::zero()]));
         }
-        let mut q = self.control.clone();
+        let mut q = self.control().to_vec();
         forward_differences_in_place(&mut q, r);
         let factor: S = falling_factorial(n, r);
         for p in &mut q {
@@ -450,7 +485,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     pub(crate) fn derived(control: Vec<Point<S, D>>, what: &'static str) -> Result<Self> {
         debug_assert!(!control.is_empty());
         if control.iter().all(Point::is_finite) {
-            Ok(Bezier { control })
+            Ok(Bezier::with_control(control))
         } else {
             Err(Error::Overflow { what })
         }
@@ -485,7 +520,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         if r > n {
             return Ok(Point::zero());
         }
-        let mut q = self.control.clone();
+        let mut q = self.control().to_vec();
         for k in 1..=n - r {
             for i in 0..q.len() - k {
                 q[i] = Point::lerp(&q[i], &q[i + 1], t);
@@ -556,13 +591,82 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn bounding_box(&self) -> (Point<S, D>, Point<S, D>) {
-        bounding_box_of(&self.control)
+        bounding_box_of(self.control())
+    }
+
+    /// The curve with these control points (at least one, all finite), with its Horner
+    /// bound.
+    fn with_control(control: Vec<Point<S, D>>) -> Self {
+        let horner_limit = horner_limit(&control);
+        let control = match <[_; 2]>::try_from(control) {
+            Ok(b) => Polygon::Line(b),
+            Err(control) => match <[_; 3]>::try_from(control) {
+                Ok(b) => Polygon::Quadratic(b),
+                Err(control) => match <[_; 4]>::try_from(control) {
+                    Ok(b) => Polygon::Cubic(b),
+                    Err(control) => Polygon::Other(control),
+                },
+            },
+        };
+        Bezier {
+            control,
+            horner_limit,
+        }
+    }
+
+    /// `true` if Horner's scheme at `t` provably stays within the `f64` range, which needs t
+    /// finite: always for exact scalars, else `|t|` at most the bound of [`horner_limit`].
+    #[inline(always)]
+    pub(crate) fn horner_is_safe(&self, t: &S) -> bool {
+        S::EXACT || t.abs_at_most(self.horner_limit)
+    }
+
+    /// Degrees 1 to 3 by the closed forms of Horner's nesting (`None` for other degrees),
+    /// for a `t` within the Horner bound.
+    #[inline(always)]
+    fn closed_form(&self, t: &S) -> Option<Point<S, D>> {
+        match &self.control {
+            Polygon::Line([b0, b1]) => Some(horner_line(b0, b1, t, &(S::one() - t))),
+            Polygon::Quadratic([b0, b1, b2]) => {
+                Some(horner_quadratic(b0, b1, b2, t, &(S::one() - t)))
+            }
+            Polygon::Cubic([b0, b1, b2, b3]) => {
+                Some(horner_cubic(b0, b1, b2, b3, t, &(S::one() - t)))
+            }
+            Polygon::Other(_) => None,
+        }
+    }
+
+    /// [`Bezier::eval`] where [`Bezier::closed_form`] does not apply: validates `t`, then
+    /// [`Bezier::eval_general`]. Out of line, so that evaluation loops stay small.
+    #[inline(never)]
+    fn eval_general_checked(&self, t: &S) -> Result<Point<S, D>> {
+        validate_parameter(t, "t")?;
+        Ok(self.eval_general(t))
+    }
+
+    /// The point b(t) for a finite t, any degree: Horner's scheme if its result is finite
+    /// (always within the Horner bound), else de Casteljau's algorithm (which only forms
+    /// affine combinations). Out of line: the evaluations inline only the closed forms.
+    #[inline(never)]
+    pub(crate) fn eval_general(&self, t: &S) -> Point<S, D> {
+        let p = self.horner_unchecked(t, &mut NoCount);
+        if p.is_finite() {
+            return p;
+        }
+        let mut q = self.control().to_vec();
+        for k in 1..q.len() {
+            for i in 0..q.len() - k {
+                q[i] = Point::lerp(&q[i], &q[i + 1], t);
+            }
+        }
+        q.swap_remove(0)
     }
 
     /// The split without validation (c finite).
     pub(crate) fn split_unchecked(&self, c: &S) -> (Self, Self) {
         let n = self.degree();
-        let mut q = self.control.clone();
+        let mut q = self.control().to_vec();
         let mut left = Vec::with_capacity(n + 1);
         let mut right = Vec::with_capacity(n + 1);
         left.push(q[0].clone());
@@ -575,12 +679,12 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             right.push(q[n - k].clone());
         }
         right.reverse();
-        (Bezier { control: left }, Bezier { control: right })
+        (Bezier::with_control(left), Bezier::with_control(right))
     }
 
     /// The blossom without validation (`args.len() == n`, all finite).
     fn blossom_unchecked(&self, args: &[S]) -> Point<S, D> {
-        let mut q = self.control.clone();
+        let mut q = self.control().to_vec();
         for (k, u) in args.iter().enumerate() {
             for i in 0..q.len() - k - 1 {
                 q[i] = Point::lerp(&q[i], &q[i + 1], u);
@@ -589,47 +693,28 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         q.swap_remove(0)
     }
 
-    /// Horner's scheme of Obs. 4 without validation (t finite); inlined so that the
-    /// closed forms of degrees 1 to 3 compile into the caller's loop.
+    /// Horner's scheme of Obs. 4 without validation (t finite), counting.
     #[inline(always)]
     pub(crate) fn horner_unchecked<C: Counter>(&self, t: &S, counter: &mut C) -> Point<S, D> {
-        let b = &self.control;
-        let n = b.len() - 1;
+        let n = self.degree();
         counter.arithmetic_operation();
         if n == 0 {
-            return b[0].clone();
+            return self.control()[0].clone();
         }
-        let u = S::one() - t;
         // Lines, quadratics and cubics, the common case, get the same nesting unrolled with
         // their binomials as constants: no loop, no table, no bounds checks.
-        if let [b0, b1] = &b[..] {
-            counter.arithmetic_operation();
-            return b0.clone() * &u + &(b1.clone() * t);
-        }
-        if let [b0, b1, b2] = &b[..] {
-            counter.arithmetic_operation();
-            counter.arithmetic_operation();
-            let two_t = S::from_i64(2) * t;
-            return (b0.clone() * &u + &(b1.clone() * two_t)) * &u
-                + &(b2.clone() * (t.clone() * t));
-        }
-        if let [b0, b1, b2, b3] = &b[..] {
-            for _ in 0..3 {
+        if let Some(p) = self.closed_form(t) {
+            for _ in 0..n {
                 counter.arithmetic_operation();
             }
-            let t2 = t.clone() * t;
-            let three = S::from_i64(3);
-            return ((b0.clone() * &u + &(b1.clone() * (three.clone() * t))) * &u
-                + &(b2.clone() * (three * &t2)))
-                * &u
-                + &(b3.clone() * (t2 * t));
+            return p;
         }
-        self.horner_loop(t, u, counter)
+        self.horner_loop(t, S::one() - t, counter)
     }
 
     /// Horner's nesting for degree n ≥ 4 (one counted step is already recorded).
     fn horner_loop<C: Counter>(&self, t: &S, u: S, counter: &mut C) -> Point<S, D> {
-        let b = &self.control;
+        let b = self.control();
         let n = b.len() - 1;
         // acc = Σ_{j<i} C(n, j) tʲ uⁱ⁻ʲ bⱼ after step i; tᵢ = tⁱ.
         let mut ti = S::one();
@@ -650,6 +735,93 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         counter.arithmetic_operation();
         acc + &(b[n].clone() * (ti * t))
     }
+}
+
+/// `p` itself. For `f64`, taken apart and put together again coordinate by coordinate: where
+/// a point returned in memory by an out-of-line call (the checked path, Horner's loop) meets
+/// one computed in registers, the compiler then merges the two in registers, instead of
+/// storing the register one to memory and loading it back on every evaluation (which
+/// measurably slowed down evaluation loops). For exact scalars, a plain move.
+#[inline(always)]
+pub(crate) fn in_registers<S: Scalar, const D: usize>(p: Point<S, D>) -> Point<S, D> {
+    if S::EXACT {
+        p
+    } else {
+        Point(std::array::from_fn(|i| p.0[i].clone()))
+    }
+}
+
+/// Horner's nesting of degree 1, `b₀u + b₁t` (u = 1 − t).
+#[inline(always)]
+pub(crate) fn horner_line<S: Scalar, const D: usize>(
+    b0: &Point<S, D>,
+    b1: &Point<S, D>,
+    t: &S,
+    u: &S,
+) -> Point<S, D> {
+    b0.clone() * u + &(b1.clone() * t)
+}
+
+/// Horner's nesting of degree 2, `(b₀u + 2t b₁)u + t² b₂` (u = 1 − t).
+#[inline(always)]
+pub(crate) fn horner_quadratic<S: Scalar, const D: usize>(
+    b0: &Point<S, D>,
+    b1: &Point<S, D>,
+    b2: &Point<S, D>,
+    t: &S,
+    u: &S,
+) -> Point<S, D> {
+    let two_t = S::from_i64(2) * t;
+    (b0.clone() * u + &(b1.clone() * two_t)) * u + &(b2.clone() * (t.clone() * t))
+}
+
+/// Horner's nesting of degree 3, `((b₀u + 3t b₁)u + 3t² b₂)u + t³ b₃` (u = 1 − t).
+#[inline(always)]
+pub(crate) fn horner_cubic<S: Scalar, const D: usize>(
+    b0: &Point<S, D>,
+    b1: &Point<S, D>,
+    b2: &Point<S, D>,
+    b3: &Point<S, D>,
+    t: &S,
+    u: &S,
+) -> Point<S, D> {
+    let t2 = t.clone() * t;
+    let three = S::from_i64(3);
+    ((b0.clone() * u + &(b1.clone() * (three.clone() * t))) * u + &(b2.clone() * (three * &t2))) * u
+        + &(b3.clone() * (t2 * t))
+}
+
+/// The bound on |t| stored in a curve: for |t| at most this value, every intermediate of
+/// Horner's scheme ([`Bezier::horner_unchecked`], closed forms and loop) is finite in `f64`.
+/// Negative when no parameter is safe; irrelevant (+∞) for exact scalars.
+///
+/// Why: with M' = max(1, largest |coordinate|) and w = |t| + |1 − t| ≥ 1, the partial sums
+/// Σⱼ C(n, j) tʲ (1 − t)ⁱ⁻ʲ bⱼ of the nesting, the scalars C(n, i) tⁱ and the ratio
+/// recurrence's C(n, i − 1)(n − i + 1) are all at most (n + 1) 2ⁿ M' wⁿ, so
+/// `2ⁿ⁺¹ (n + 1) M' wⁿ ≤ f64::MAX` leaves a factor 2 for rounding. As w ≤ 2|t| + 1, it holds
+/// for |t| ≤ (K^(1/n) − 1)/2 with K = f64::MAX / (2ⁿ⁺¹ (n + 1) M'); the root is taken with a
+/// relative margin far above the error of `powf`. Degree 0 evaluates to b₀ for any finite t.
+fn horner_limit<S: Scalar, const D: usize>(control: &[Point<S, D>]) -> f64 {
+    let n = control.len() - 1;
+    if S::EXACT {
+        return f64::INFINITY;
+    }
+    if n == 0 {
+        return f64::MAX;
+    }
+    let mut m = 1.0f64;
+    for p in control {
+        for c in p.coords() {
+            m = m.max(c.to_f64().abs());
+        }
+    }
+    // 2^(n+1) is +∞ for n ≥ 1023, and then K = 0.
+    let k = f64::MAX / (2f64.powi((n + 1).min(2000) as i32) * (n + 1) as f64 * m);
+    if k < 1.0 {
+        return -1.0;
+    }
+    let root = k.powf(1.0 / n as f64) * (1.0 - 1e-9);
+    (root - 1.0) / 2.0 * (1.0 - 1e-9)
 }
 
 /// C(n, k) in `S`: from a table of exact integers for n < 64, else by the product formula.

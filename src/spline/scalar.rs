@@ -95,6 +95,16 @@ pub trait Scalar:
         *self == Self::zero()
     }
 
+    /// `|self| ≤ limit`, for a `limit` that is not NaN; `false` if `self` is NaN.
+    ///
+    /// The evaluation fast paths call it once per parameter against a bound fixed when the
+    /// curve was built (for `f64` it is one comparison); the default compares exactly in
+    /// `Self`.
+    fn abs_at_most(&self, limit: f64) -> bool {
+        self.is_finite()
+            && Self::from_f64(limit).map_or(limit == f64::INFINITY, |l| self.abs() <= l)
+    }
+
     /// The absolute value.
     fn abs(&self) -> Self {
         if *self < Self::zero() {
@@ -338,6 +348,12 @@ impl Scalar for f64 {
     #[inline]
     fn abs(&self) -> Self {
         f64::abs(*self)
+    }
+    #[inline(always)]
+    fn abs_at_most(&self, limit: f64) -> bool {
+        // NaN compares false; in floating point this is two instructions off the critical
+        // path, where a test on the bit pattern would move t to an integer register first.
+        f64::abs(*self) <= limit
     }
 }
 
