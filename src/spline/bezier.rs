@@ -77,7 +77,8 @@ impl<S: Debug, const D: usize> Debug for Bezier<S, D> {
 enum Polygon<S, const D: usize> {
     Line([Point<S, D>; 2]),
     Quadratic([Point<S, D>; 3]),
-    Cubic([Point<S, D>; 4]),
+    /// With 3b₁ and 3b₂, the scaled points of Horner's nesting, computed once.
+    Cubic([Point<S, D>; 4], [Point<S, D>; 2]),
     /// Degree 0, or degree 4 and more.
     Other(Vec<Point<S, D>>),
 }
@@ -88,7 +89,7 @@ impl<S, const D: usize> Polygon<S, D> {
         match self {
             Polygon::Line(b) => b,
             Polygon::Quadratic(b) => b,
-            Polygon::Cubic(b) => b,
+            Polygon::Cubic(b, _) => b,
             Polygon::Other(b) => b,
         }
     }
@@ -122,7 +123,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         match self.control {
             Polygon::Line(b) => b.into(),
             Polygon::Quadratic(b) => b.into(),
-            Polygon::Cubic(b) => b.into(),
+            Polygon::Cubic(b, _) => b.into(),
             Polygon::Other(b) => b,
         }
     }
@@ -603,7 +604,11 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             Err(control) => match <[_; 3]>::try_from(control) {
                 Ok(b) => Polygon::Quadratic(b),
                 Err(control) => match <[_; 4]>::try_from(control) {
-                    Ok(b) => Polygon::Cubic(b),
+                    Ok(b) => {
+                        let three = S::from_i64(3);
+                        let scaled = [b[1].clone() * &three, b[2].clone() * &three];
+                        Polygon::Cubic(b, scaled)
+                    }
                     Err(control) => Polygon::Other(control),
                 },
             },
@@ -630,10 +635,19 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             Polygon::Quadratic([b0, b1, b2]) => {
                 Some(horner_quadratic(b0, b1, b2, t, &(S::one() - t)))
             }
-            Polygon::Cubic([b0, b1, b2, b3]) => {
-                Some(horner_cubic(b0, b1, b2, b3, t, &(S::one() - t)))
+            Polygon::Cubic([b0, _, _, b3], [c1, c2]) => {
+                Some(horner_cubic(b0, c1, c2, b3, t, &(S::one() - t)))
             }
             Polygon::Other(_) => None,
+        }
+    }
+
+    /// For a cubic, b₀, 3b₁, 3b₂ and b₃: the points [`horner_cubic`] takes.
+    #[inline(always)]
+    pub(crate) fn cubic_horner_points(&self) -> Option<[&Point<S, D>; 4]> {
+        match &self.control {
+            Polygon::Cubic([b0, _, _, b3], [c1, c2]) => Some([b0, c1, c2, b3]),
+            _ => None,
         }
     }
 
@@ -775,20 +789,19 @@ pub(crate) fn horner_quadratic<S: Scalar, const D: usize>(
     (b0.clone() * u + &(b1.clone() * two_t)) * u + &(b2.clone() * (t.clone() * t))
 }
 
-/// Horner's nesting of degree 3, `((b₀u + 3t b₁)u + 3t² b₂)u + t³ b₃` (u = 1 − t).
+/// Horner's nesting of degree 3, `((b₀u + c₁t)u + c₂t²)u + b₃t³` (u = 1 − t) with the
+/// scaled points c₁ = 3b₁ and c₂ = 3b₂.
 #[inline(always)]
 pub(crate) fn horner_cubic<S: Scalar, const D: usize>(
     b0: &Point<S, D>,
-    b1: &Point<S, D>,
-    b2: &Point<S, D>,
+    c1: &Point<S, D>,
+    c2: &Point<S, D>,
     b3: &Point<S, D>,
     t: &S,
     u: &S,
 ) -> Point<S, D> {
     let t2 = t.clone() * t;
-    let three = S::from_i64(3);
-    ((b0.clone() * u + &(b1.clone() * (three.clone() * t))) * u + &(b2.clone() * (three * &t2))) * u
-        + &(b3.clone() * (t2 * t))
+    ((b0.clone() * u + &(c1.clone() * t)) * u + &(c2.clone() * &t2)) * u + &(b3.clone() * (t2 * t))
 }
 
 /// The bound on |t| stored in a curve: for |t| at most this value, every intermediate of

@@ -57,6 +57,12 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// ```
     #[inline]
     pub fn eval_each<F: FnMut(Point<S, D>)>(&self, ts: &[S], mut f: F) -> Result<()> {
+        if let Some([b0, c1, c2, b3]) = self.cubic_horner_points() {
+            let (b0, c1, c2, b3) = (b0.clone(), c1.clone(), c2.clone(), b3.clone());
+            return self.each_with(ts, &mut f, |t| {
+                horner_cubic(&b0, &c1, &c2, &b3, t, &(S::one() - t))
+            });
+        }
         match self.control() {
             [b0, b1] => {
                 let (b0, b1) = (b0.clone(), b1.clone());
@@ -66,12 +72,6 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
                 let (b0, b1, b2) = (b0.clone(), b1.clone(), b2.clone());
                 self.each_with(ts, &mut f, |t| {
                     horner_quadratic(&b0, &b1, &b2, t, &(S::one() - t))
-                })
-            }
-            [b0, b1, b2, b3] => {
-                let (b0, b1, b2, b3) = (b0.clone(), b1.clone(), b2.clone(), b3.clone());
-                self.each_with(ts, &mut f, |t| {
-                    horner_cubic(&b0, &b1, &b2, &b3, t, &(S::one() - t))
                 })
             }
             _ => self.each_with(ts, &mut f, |t| in_registers(self.eval_general(t))),
