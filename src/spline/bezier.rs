@@ -19,8 +19,9 @@
 //! equals the curve on its diagonal, derivative identities.
 
 use super::bernstein::falling_factorial;
+use super::horner::{horner_limit, in_registers, Polygon};
 use super::reparametrised::Reparametrised;
-use super::scalar::{binomial, validate_parameter, validate_points, Finite, Point, Scalar};
+use super::scalar::{validate_parameter, validate_points, Finite, Point, Scalar};
 use crate::count::{Counter, NoCount};
 use crate::{Error, Result};
 use std::fmt::Debug;
@@ -45,10 +46,10 @@ use std::fmt::Debug;
 /// ```
 #[derive(Clone)]
 pub struct Bezier<S, const D: usize> {
-    control: Polygon<S, D>,
+    pub(super) control: Polygon<S, D>,
     /// A bound on |t| under which Horner's scheme provably stays within the `f64` range
     /// (negative if there is none; unused for exact scalars); see [`horner_limit`].
-    horner_limit: f64,
+    pub(super) horner_limit: f64,
 }
 
 impl<S: PartialEq, const D: usize> PartialEq for Bezier<S, D> {
@@ -63,35 +64,6 @@ impl<S: Debug, const D: usize> Debug for Bezier<S, D> {
         f.debug_struct("Bezier")
             .field("control", &self.control.as_slice())
             .finish()
-    }
-}
-
-/// A control polygon: lines, quadratics and cubics inline, other degrees on the heap.
-///
-/// Inline, the points of a borrowed curve are part of the borrowed value, which the compiler
-/// knows nothing modifies during the borrow: a loop evaluating the curve loads them once,
-/// even though the loop also contains the (rare) out-of-line calls of the checked path. On
-/// the heap they would be reloaded at every evaluation. The variant is also the degree
-/// dispatch of the closed forms.
-#[derive(Clone)]
-enum Polygon<S, const D: usize> {
-    Line([Point<S, D>; 2]),
-    Quadratic([Point<S, D>; 3]),
-    /// With 3b₁ and 3b₂, the scaled points of Horner's nesting, computed once.
-    Cubic([Point<S, D>; 4], [Point<S, D>; 2]),
-    /// Degree 0, or degree 4 and more.
-    Other(Vec<Point<S, D>>),
-}
-
-impl<S, const D: usize> Polygon<S, D> {
-    #[inline]
-    fn as_slice(&self) -> &[Point<S, D>] {
-        match self {
-            Polygon::Line(b) => b,
-            Polygon::Quadratic(b) => b,
-            Polygon::Cubic(b, _) => b,
-            Polygon::Other(b) => b,
-        }
     }
 }
 
@@ -120,12 +92,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
 
     /// The control points, by value.
     pub fn into_control(self) -> Vec<Point<S, D>> {
-        match self.control {
-            Polygon::Line(b) => b.into(),
-            Polygon::Quadratic(b) => b.into(),
-            Polygon::Cubic(b, _) => b.into(),
-            Polygon::Other(b) => b,
-        }
+        self.control.into_vec()
     }
 
     /// The degree n (the number of control points minus one).
@@ -598,83 +565,10 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// The curve with these control points (at least one, all finite), with its Horner
     /// bound.
     fn with_control(control: Vec<Point<S, D>>) -> Self {
-        let horner_limit = horner_limit(&control);
-        let control = match <[_; 2]>::try_from(control) {
-            Ok(b) => Polygon::Line(b),
-            Err(control) => match <[_; 3]>::try_from(control) {
-                Ok(b) => Polygon::Quadratic(b),
-                Err(control) => match <[_; 4]>::try_from(control) {
-                    Ok(b) => {
-                        let three = S::from_i64(3);
-                        let scaled = [b[1].clone() * &three, b[2].clone() * &three];
-                        Polygon::Cubic(b, scaled)
-                    }
-                    Err(control) => Polygon::Other(control),
-                },
-            },
-        };
         Bezier {
-            control,
-            horner_limit,
+            horner_limit: horner_limit(&control),
+            control: Polygon::new(control),
         }
-    }
-
-    /// `true` if Horner's scheme at `t` provably stays within the `f64` range, which needs t
-    /// finite: always for exact scalars, else `|t|` at most the bound of [`horner_limit`].
-    #[inline(always)]
-    pub(crate) fn horner_is_safe(&self, t: &S) -> bool {
-        S::EXACT || t.abs_at_most(self.horner_limit)
-    }
-
-    /// Degrees 1 to 3 by the closed forms of Horner's nesting (`None` for other degrees),
-    /// for a `t` within the Horner bound.
-    #[inline(always)]
-    fn closed_form(&self, t: &S) -> Option<Point<S, D>> {
-        match &self.control {
-            Polygon::Line([b0, b1]) => Some(horner_line(b0, b1, t, &(S::one() - t))),
-            Polygon::Quadratic([b0, b1, b2]) => {
-                Some(horner_quadratic(b0, b1, b2, t, &(S::one() - t)))
-            }
-            Polygon::Cubic([b0, _, _, b3], [c1, c2]) => {
-                Some(horner_cubic(b0, c1, c2, b3, t, &(S::one() - t)))
-            }
-            Polygon::Other(_) => None,
-        }
-    }
-
-    /// For a cubic, b₀, 3b₁, 3b₂ and b₃: the points [`horner_cubic`] takes.
-    #[inline(always)]
-    pub(crate) fn cubic_horner_points(&self) -> Option<[&Point<S, D>; 4]> {
-        match &self.control {
-            Polygon::Cubic([b0, _, _, b3], [c1, c2]) => Some([b0, c1, c2, b3]),
-            _ => None,
-        }
-    }
-
-    /// [`Bezier::eval`] where [`Bezier::closed_form`] does not apply: validates `t`, then
-    /// [`Bezier::eval_general`]. Out of line, so that evaluation loops stay small.
-    #[inline(never)]
-    fn eval_general_checked(&self, t: &S) -> Result<Point<S, D>> {
-        validate_parameter(t, "t")?;
-        Ok(self.eval_general(t))
-    }
-
-    /// The point b(t) for a finite t, any degree: Horner's scheme if its result is finite
-    /// (always within the Horner bound), else de Casteljau's algorithm (which only forms
-    /// affine combinations). Out of line: the evaluations inline only the closed forms.
-    #[inline(never)]
-    pub(crate) fn eval_general(&self, t: &S) -> Point<S, D> {
-        let p = self.horner_unchecked(t, &mut NoCount);
-        if p.is_finite() {
-            return p;
-        }
-        let mut q = self.control().to_vec();
-        for k in 1..q.len() {
-            for i in 0..q.len() - k {
-                q[i] = Point::lerp(&q[i], &q[i + 1], t);
-            }
-        }
-        q.swap_remove(0)
     }
 
     /// The split without validation (c finite).
@@ -705,145 +599,6 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             }
         }
         q.swap_remove(0)
-    }
-
-    /// Horner's scheme of Obs. 4 without validation (t finite), counting.
-    #[inline(always)]
-    pub(crate) fn horner_unchecked<C: Counter>(&self, t: &S, counter: &mut C) -> Point<S, D> {
-        let n = self.degree();
-        counter.arithmetic_operation();
-        if n == 0 {
-            return self.control()[0].clone();
-        }
-        // Lines, quadratics and cubics, the common case, get the same nesting unrolled with
-        // their binomials as constants: no loop, no table, no bounds checks.
-        if let Some(p) = self.closed_form(t) {
-            for _ in 0..n {
-                counter.arithmetic_operation();
-            }
-            return p;
-        }
-        self.horner_loop(t, S::one() - t, counter)
-    }
-
-    /// Horner's nesting for degree n ≥ 4 (one counted step is already recorded).
-    fn horner_loop<C: Counter>(&self, t: &S, u: S, counter: &mut C) -> Point<S, D> {
-        let b = self.control();
-        let n = b.len() - 1;
-        // acc = Σ_{j<i} C(n, j) tʲ uⁱ⁻ʲ bⱼ after step i; tᵢ = tⁱ.
-        let mut ti = S::one();
-        let mut acc = b[0].clone() * &u;
-        // Past the table, C(n, i) = C(n, i − 1)·(n − i + 1)/i keeps each step O(1).
-        let mut c = S::one();
-        for (i, bi) in b.iter().enumerate().take(n).skip(1) {
-            ti = ti * t;
-            let coefficient = if n < BINOMIAL_ROWS {
-                binomial_coefficient::<S>(n, i)
-            } else {
-                c = c * S::from_i64((n - i + 1) as i64) / S::from_i64(i as i64);
-                c.clone()
-            };
-            acc = (acc + &(bi.clone() * (ti.clone() * coefficient))) * &u;
-            counter.arithmetic_operation();
-        }
-        counter.arithmetic_operation();
-        acc + &(b[n].clone() * (ti * t))
-    }
-}
-
-/// `p` itself. For `f64`, taken apart and put together again coordinate by coordinate: where
-/// a point returned in memory by an out-of-line call (the checked path, Horner's loop) meets
-/// one computed in registers, the compiler then merges the two in registers, instead of
-/// storing the register one to memory and loading it back on every evaluation (which
-/// measurably slowed down evaluation loops). For exact scalars, a plain move.
-#[inline(always)]
-pub(crate) fn in_registers<S: Scalar, const D: usize>(p: Point<S, D>) -> Point<S, D> {
-    if S::EXACT {
-        p
-    } else {
-        Point(std::array::from_fn(|i| p.0[i].clone()))
-    }
-}
-
-/// Horner's nesting of degree 1, `b₀u + b₁t` (u = 1 − t).
-#[inline(always)]
-pub(crate) fn horner_line<S: Scalar, const D: usize>(
-    b0: &Point<S, D>,
-    b1: &Point<S, D>,
-    t: &S,
-    u: &S,
-) -> Point<S, D> {
-    b0.clone() * u + &(b1.clone() * t)
-}
-
-/// Horner's nesting of degree 2, `(b₀u + 2t b₁)u + t² b₂` (u = 1 − t).
-#[inline(always)]
-pub(crate) fn horner_quadratic<S: Scalar, const D: usize>(
-    b0: &Point<S, D>,
-    b1: &Point<S, D>,
-    b2: &Point<S, D>,
-    t: &S,
-    u: &S,
-) -> Point<S, D> {
-    let two_t = S::from_i64(2) * t;
-    (b0.clone() * u + &(b1.clone() * two_t)) * u + &(b2.clone() * (t.clone() * t))
-}
-
-/// Horner's nesting of degree 3, `((b₀u + c₁t)u + c₂t²)u + b₃t³` (u = 1 − t) with the
-/// scaled points c₁ = 3b₁ and c₂ = 3b₂.
-#[inline(always)]
-pub(crate) fn horner_cubic<S: Scalar, const D: usize>(
-    b0: &Point<S, D>,
-    c1: &Point<S, D>,
-    c2: &Point<S, D>,
-    b3: &Point<S, D>,
-    t: &S,
-    u: &S,
-) -> Point<S, D> {
-    let t2 = t.clone() * t;
-    ((b0.clone() * u + &(c1.clone() * t)) * u + &(c2.clone() * &t2)) * u + &(b3.clone() * (t2 * t))
-}
-
-/// The bound on |t| stored in a curve: for |t| at most this value, every intermediate of
-/// Horner's scheme ([`Bezier::horner_unchecked`], closed forms and loop) is finite in `f64`.
-/// Negative when no parameter is safe; irrelevant (+∞) for exact scalars.
-///
-/// Why: with M' = max(1, largest |coordinate|) and w = |t| + |1 − t| ≥ 1, the partial sums
-/// Σⱼ C(n, j) tʲ (1 − t)ⁱ⁻ʲ bⱼ of the nesting, the scalars C(n, i) tⁱ and the ratio
-/// recurrence's C(n, i − 1)(n − i + 1) are all at most (n + 1) 2ⁿ M' wⁿ, so
-/// `2ⁿ⁺¹ (n + 1) M' wⁿ ≤ f64::MAX` leaves a factor 2 for rounding. As w ≤ 2|t| + 1, it holds
-/// for |t| ≤ (K^(1/n) − 1)/2 with K = f64::MAX / (2ⁿ⁺¹ (n + 1) M'); the root is taken with a
-/// relative margin far above the error of `powf`. Degree 0 evaluates to b₀ for any finite t.
-fn horner_limit<S: Scalar, const D: usize>(control: &[Point<S, D>]) -> f64 {
-    let n = control.len() - 1;
-    if S::EXACT {
-        return f64::INFINITY;
-    }
-    if n == 0 {
-        return f64::MAX;
-    }
-    let mut m = 1.0f64;
-    for p in control {
-        for c in p.coords() {
-            m = m.max(c.to_f64().abs());
-        }
-    }
-    // 2^(n+1) is +∞ for n ≥ 1023, and then K = 0.
-    let k = f64::MAX / (2f64.powi((n + 1).min(2000) as i32) * (n + 1) as f64 * m);
-    if k < 1.0 {
-        return -1.0;
-    }
-    let root = k.powf(1.0 / n as f64) * (1.0 - 1e-9);
-    (root - 1.0) / 2.0 * (1.0 - 1e-9)
-}
-
-/// C(n, k) in `S`: from a table of exact integers for n < 64, else by the product formula.
-#[inline]
-pub(crate) fn binomial_coefficient<S: Scalar>(n: usize, k: usize) -> S {
-    if n < BINOMIAL_ROWS && k <= n {
-        S::from_i64(BINOMIALS[n * (n + 1) / 2 + k] as i64)
-    } else {
-        binomial(n, k)
     }
 }
 
@@ -879,45 +634,9 @@ pub(crate) fn forward_differences_in_place<S: Scalar, const D: usize>(
     }
 }
 
-/// Rows 0..63 of Pascal's triangle (all fit in an i64), row n starting at n(n + 1)/2.
-const BINOMIAL_ROWS: usize = 64;
-
-static BINOMIALS: [u64; BINOMIAL_ROWS * (BINOMIAL_ROWS + 1) / 2] = pascal();
-
-const fn pascal() -> [u64; BINOMIAL_ROWS * (BINOMIAL_ROWS + 1) / 2] {
-    let mut table = [0u64; BINOMIAL_ROWS * (BINOMIAL_ROWS + 1) / 2];
-    let mut n = 0;
-    while n < BINOMIAL_ROWS {
-        let row = n * (n + 1) / 2;
-        table[row] = 1;
-        table[row + n] = 1;
-        let mut k = 1;
-        while k < n {
-            let prev = (n - 1) * n / 2;
-            table[row + k] = table[prev + k - 1] + table[prev + k];
-            k += 1;
-        }
-        n += 1;
-    }
-    table
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn binomial_table_matches_product_formula() {
-        for n in 0..BINOMIAL_ROWS {
-            for k in 0..=n {
-                let product: f64 = binomial(n, k);
-                let table: f64 = binomial_coefficient(n, k);
-                // Both are the same integer rounded to f64 once at most.
-                assert!((product - table).abs() <= product * 1e-15, "C({n},{k})");
-            }
-        }
-        assert_eq!(BINOMIALS[63 * 64 / 2 + 31], 916_312_070_471_295_267);
-    }
 
     #[test]
     fn degree_zero_curve_is_constant() {

@@ -8,8 +8,9 @@
 //! (flattening and its error bound), §3.6 (forward differences), §3.11–3.12 (degree
 //! elevation, Zhou's formula).
 
-use super::bezier::{
-    binomial_coefficient, horner_cubic, horner_line, horner_quadratic, in_registers, Bezier,
+use super::bezier::Bezier;
+use super::horner::{
+    binomial_coefficient, horner_cubic, horner_line, horner_quadratic, in_registers,
 };
 use super::scalar::{validate_parameter, validate_points, Point, Scalar};
 use crate::{Error, Result};

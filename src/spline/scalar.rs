@@ -730,6 +730,26 @@ mod tests {
         assert!(validate_parameter(&f64::INFINITY, "t").is_err());
     }
 
+    #[test]
+    fn abs_at_most_is_the_comparison_of_absolute_values() {
+        let tiny = f64::from_bits(1); // the smallest subnormal
+        let values = [0.0, -0.0, tiny, -tiny, 0.5, -1.0, 3.0, f64::MAX, f64::MIN];
+        let values = values
+            .into_iter()
+            .chain([f64::INFINITY, f64::NEG_INFINITY, f64::NAN]);
+        let limits = [-1.0, -0.0, 0.0, tiny, 1.0, 3.0, f64::MAX, f64::INFINITY];
+        for x in values {
+            for limit in limits {
+                let want = !x.is_nan() && x.abs() <= limit;
+                assert_eq!(x.abs_at_most(limit), want, "|{x}| ≤ {limit}");
+                #[cfg(feature = "exact")]
+                if let Some(r) = <num_rational::BigRational as Scalar>::from_f64(x) {
+                    assert_eq!(r.abs_at_most(limit), want, "rational |{x}| ≤ {limit}");
+                }
+            }
+        }
+    }
+
     #[cfg(feature = "exact")]
     #[test]
     fn exact_parsing_keeps_decimals_exact() {
