@@ -78,7 +78,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Complexity
     ///
     /// O(nD) to validate the points and to bound their coordinates (for the overflow check of
-    /// the evaluations), no auxiliary space.
+    /// the evaluations), plus O(D) for the scaled points of a cubic; no auxiliary space.
     pub fn new(control: Vec<Point<S, D>>) -> Result<Self> {
         validate_points(&control, "control polygon")?;
         Ok(Bezier::with_control(control))
@@ -130,7 +130,10 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// Whether Horner's scheme can overflow is known before it runs: [`Bezier::new`] bounds
     /// |t| from the degree and the largest coordinate, and one comparison of t with that
     /// bound, which also rejects NaN and ±∞, decides between the plain scheme and the checked
-    /// path (parameter validation, Horner, finiteness check, de Casteljau).
+    /// path (parameter validation, Horner, finiteness check, de Casteljau). Lines,
+    /// quadratics and cubics keep their control points inside the curve value and are
+    /// evaluated by closed forms compiled into the caller; other degrees by an out-of-line
+    /// call.
     ///
     /// # Errors
     ///
@@ -139,6 +142,22 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Complexity
     ///
     /// Θ(nD) time, O(D) auxiliary space (Θ(n²D) time and O(nD) space in the overflow case).
+    ///
+    /// ```
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// // b(t) = (t², t³) in the monomial basis.
+    /// let b = Bezier::new(vec![
+    ///     Point::new([0.0, 0.0]),
+    ///     Point::new([0.0, 0.0]),
+    ///     Point::new([1.0 / 3.0, 0.0]),
+    ///     Point::new([1.0, 1.0]),
+    /// ])?;
+    /// assert_eq!(b.eval(&2.0)?, Point::new([4.0, 8.0]));
+    /// assert_eq!(b.eval(&-10.0)?, Point::new([100.0, -1000.0]));
+    /// assert!(b.eval(&f64::NAN).is_err());
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
     #[inline]
     pub fn eval(&self, t: &S) -> Result<Point<S, D>> {
         if self.horner_is_safe(t) {
@@ -267,8 +286,9 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Complexity
     ///
     /// Θ(nD) time: n multiply-adds of points and one scaling, plus O(n) scalar operations
-    /// (binomials from a table for n < 64, by their ratio recurrence above); O(D) auxiliary
-    /// space. On `f64` the binomials overflow for n above about 1020.
+    /// (binomials from a table for n < 64, by their ratio recurrence above; a cubic keeps its
+    /// scaled points 3b₁ and 3b₂ from construction); O(D) auxiliary space. On `f64` the
+    /// binomials overflow for n above about 1020.
     ///
     /// # Counts
     ///

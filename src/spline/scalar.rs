@@ -15,11 +15,12 @@
 //! for `f64` the coordinates live on the stack (or in registers), the loops over coordinates
 //! have a compile-time trip count and unroll, and de Casteljau's scratch space is one array of
 //! points with no allocation per point: the generic cubic compiles to the same packed
-//! instructions as a hand-written `f64` one. The `spline` benchmark compares the two; what
-//! remains of a gap is the per-call degree dispatch and overflow check of
-//! [`Bezier::eval`](super::Bezier::eval), which [`Bezier::eval_each`](super::Bezier::eval_each)
-//! hoists out of its loop. Callers whose dimension is only known at run time (the command
-//! line) dispatch on it once.
+//! instructions as a hand-written `f64` one. What a curve with a run-time degree adds per
+//! evaluation is kept to a branch on the degree and one comparison of t with a bound fixed
+//! when the curve is built (see [`Bezier::eval`](super::Bezier::eval)); the `spline`
+//! benchmark compares [`Bezier::eval`](super::Bezier::eval), [`Bezier::at`](super::Bezier::at)
+//! and [`Bezier::eval_each`](super::Bezier::eval_each) with a hand-written cubic and kurbo.
+//! Callers whose dimension is only known at run time (the command line) dispatch on it once.
 //!
 //! ```
 //! use compgeo::spline::{Point, Scalar};
