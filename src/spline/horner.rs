@@ -237,9 +237,11 @@ pub(crate) fn horner_cubic<S: Scalar, const D: usize>(
 /// Why: with M' = max(1, largest |coordinate|) and w = |t| + |1 − t| ≥ 1, the partial sums
 /// Σⱼ C(n, j) tʲ (1 − t)ⁱ⁻ʲ bⱼ of the nesting, the scalars C(n, i) tⁱ and the ratio
 /// recurrence's C(n, i − 1)(n − i + 1) are all at most (n + 1) 2ⁿ M' wⁿ, so
-/// `2ⁿ⁺¹ (n + 1) M' wⁿ ≤ f64::MAX` leaves a factor 2 for rounding. As w ≤ 2|t| + 1, it holds
-/// for |t| ≤ (K^(1/n) − 1)/2 with K = f64::MAX / (2ⁿ⁺¹ (n + 1) M'); the root is taken with a
-/// relative margin far above the error of `powf`. Degree 0 evaluates to b₀ for any finite t.
+/// `2ⁿ⁺¹ (n + 1) M' wⁿ ≤ f64::MAX` leaves a factor 2 for rounding. With K = f64::MAX /
+/// (2ⁿ⁺¹ (n + 1) M') ≥ 1 and W = 2^⌊⌊log₂ K⌋ / n⌋ (so Wⁿ ≤ K, read off K's exponent: no
+/// `powf` on the way, as curves are built by the thousand when flattening or intersecting),
+/// it holds for |t| ≤ (W − 1)/2, since w ≤ 2|t| + 1. Degree 0 evaluates to b₀ for any
+/// finite t.
 pub(super) fn horner_limit<S: Scalar, const D: usize>(control: &[Point<S, D>]) -> f64 {
     let n = control.len() - 1;
     if S::EXACT {
@@ -259,8 +261,10 @@ pub(super) fn horner_limit<S: Scalar, const D: usize>(control: &[Point<S, D>]) -
     if k < 1.0 {
         return -1.0;
     }
-    let root = k.powf(1.0 / n as f64) * (1.0 - 1e-9);
-    (root - 1.0) / 2.0 * (1.0 - 1e-9)
+    // K ≥ 1 is a normal double: its exponent field is ⌊log₂ K⌋ + 1023.
+    let log2_k = (k.to_bits() >> 52) as usize - 1023;
+    let w = f64::from_bits(((log2_k / n + 1023) as u64) << 52);
+    (w - 1.0) / 2.0
 }
 
 /// C(n, k) in `S`: from a table of exact integers for n < 64, else by the product formula.
