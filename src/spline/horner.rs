@@ -149,7 +149,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             }
             return p;
         }
-        self.horner_loop(t, S::one() - t, counter)
+        in_registers(self.horner_loop(t, S::one() - t, counter))
     }
 
     /// Horner's nesting for degree n ≥ 4 (one counted step is already recorded).
