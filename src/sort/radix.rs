@@ -233,7 +233,45 @@ fn sort_part<C: Counter>(v: &mut [f64], tmp: &mut [f64], diff: u64, counter: &mu
     let wanted = (bit_length(m as u64) + EXTRA_BITS).min(hi);
     let digits = wanted.div_ceil(DIGIT_BITS) as usize;
     let lo = hi.saturating_sub(DIGIT_BITS * digits as u32);
-    let mut histograms = [[0u32; RADIX]; MAX_TOP_DIGITS];
+    let in_tmp = counting_passes::<MAX_TOP_DIGITS, C>(v, tmp, lo, digits, counter);
+    let (keys, other) = if in_tmp { (tmp, v) } else { (v, tmp) };
+    // Sorted on bits lo.. now; with lo = 0 that is all of them.
+    if lo > 0 && !insertion(keys, m, counter) {
+        counting_sort(keys, other, hi, counter);
+    }
+    if in_tmp {
+        for (out, &k) in other.iter_mut().zip(keys.iter()) {
+            *out = float(k.to_bits());
+        }
+        moves(counter, m);
+    } else {
+        to_floats(keys);
+    }
+}
+
+/// Sorts the keys of `v` on bits `0..hi` (all the bits where they differ) by counting passes
+/// through `tmp`; the keys end in `v`.
+fn counting_sort<C: Counter>(v: &mut [f64], tmp: &mut [f64], hi: u32, counter: &mut C) {
+    const ALL_DIGITS: usize = (u64::BITS / DIGIT_BITS) as usize;
+    let digits = hi.div_ceil(DIGIT_BITS) as usize;
+    if counting_passes::<ALL_DIGITS, C>(v, tmp, 0, digits, counter) {
+        v.copy_from_slice(tmp);
+        moves(counter, v.len());
+    }
+}
+
+/// Sorts the keys of `v` on their `digits` ≤ `D` bytes from bit `lo` up by stable counting
+/// passes between `v` and `tmp`, least significant first, skipping bytes on which every key
+/// agrees; returns whether the keys ended in `tmp`.
+fn counting_passes<const D: usize, C: Counter>(
+    v: &mut [f64],
+    tmp: &mut [f64],
+    lo: u32,
+    digits: usize,
+    counter: &mut C,
+) -> bool {
+    let m = v.len();
+    let mut histograms = [[0u32; RADIX]; D];
     for x in v.iter() {
         let k = x.to_bits() >> lo;
         for (p, histogram) in histograms[..digits].iter_mut().enumerate() {
@@ -254,52 +292,7 @@ fn sort_part<C: Counter>(v: &mut [f64], tmp: &mut [f64], diff: u64, counter: &mu
         moves(counter, m);
         in_tmp = !in_tmp;
     }
-    let (keys, other) = if in_tmp { (tmp, v) } else { (v, tmp) };
-    // Sorted on bits lo.. now; with lo = 0 that is all of them.
-    if lo > 0 && !insertion(keys, m, counter) {
-        counting_sort(keys, other, hi, counter);
-    }
-    if in_tmp {
-        for (out, &k) in other.iter_mut().zip(keys.iter()) {
-            *out = float(k.to_bits());
-        }
-        moves(counter, m);
-    } else {
-        to_floats(keys);
-    }
-}
-
-/// Sorts the keys of `v` on bits `0..hi` (all the bits where they differ) by counting passes
-/// through `tmp`; the keys end in `v`.
-fn counting_sort<C: Counter>(v: &mut [f64], tmp: &mut [f64], hi: u32, counter: &mut C) {
-    const ALL_DIGITS: usize = (u64::BITS / DIGIT_BITS) as usize;
-    let m = v.len();
-    let digits = hi.div_ceil(DIGIT_BITS) as usize;
-    let mut histograms = [[0u32; RADIX]; ALL_DIGITS];
-    for x in v.iter() {
-        let k = x.to_bits();
-        for (p, histogram) in histograms[..digits].iter_mut().enumerate() {
-            histogram[digit(k, DIGIT_BITS * p as u32)] += 1;
-        }
-    }
-    let mut in_tmp = false;
-    for (p, histogram) in histograms[..digits].iter().enumerate() {
-        if histogram.contains(&(m as u32)) {
-            continue;
-        }
-        let shift = DIGIT_BITS * p as u32;
-        if in_tmp {
-            counting_pass(tmp, v, histogram, shift);
-        } else {
-            counting_pass(v, tmp, histogram, shift);
-        }
-        moves(counter, m);
-        in_tmp = !in_tmp;
-    }
-    if in_tmp {
-        v.copy_from_slice(tmp);
-        moves(counter, m);
-    }
+    in_tmp
 }
 
 /// Distributes the keys of `src` stably into `dst` by their digit at `shift`.
