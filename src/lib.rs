@@ -37,7 +37,7 @@
 //! | [`sort::merge_sort`] | Θ(n log n) time, at most n⌈log₂ n⌉ comparisons |
 //! | [`sort::heap_sort`] | O(n log n) time, at most 2n log₂ n comparisons |
 //! | [`sort::quick_sort`] | O(n log n) time (introsort), at most 6n log₂ n + n comparisons |
-//! | [`sort::radix_sort_f64`] | Θ(n) time, 8 passes, no comparisons |
+//! | [`sort::radix_sort_f64`] | Θ(n) time, at most 24n moves and 7.5n key comparisons |
 //! | [`graph::bfs`], [`graph::dfs`] | O(n + m) time, exactly 2m edge visits on a connected graph |
 //! | [`graph::course_greedy_colouring`] | O(n² + m) time, exactly n(n−1)/2 adjacency tests |
 //! | [`graph::greedy_colouring`] (any order) | O(n + m) time |

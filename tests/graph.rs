@@ -297,16 +297,39 @@ fn seed_course_greedy_makes_n_choose_2_adjacency_tests() {
 }
 
 #[test]
-fn crown_graphs_fool_the_natural_order() {
+fn crown_graphs_fool_the_natural_order_but_not_largest_first_or_dsatur() {
     for half in 2..=10 {
         let g = generated(GraphKind::Crown, half, 0, 1);
         assert_eq!(colours_with(&g, ColouringAlgorithm::Greedy), half);
         assert_eq!(colours_with(&g, ColouringAlgorithm::Course), half);
         assert_eq!(colours_with(&g, ColouringAlgorithm::Dsatur), 2);
-        // Crown graphs are regular, so largest-first keeps the natural order and is fooled.
-        assert_eq!(largest_first_order(&g), (0..2 * half).collect::<Vec<_>>());
-        assert_eq!(colours_with(&g, ColouringAlgorithm::LargestFirst), half);
+        assert_eq!(colours_with(&g, ColouringAlgorithm::LargestFirst), 2);
     }
+}
+
+/// On regular bipartite graphs (even cycles, crowns, a disjoint union of two crowns)
+/// largest-first's order is connected within each component, so greedy uses 2 colours.
+#[test]
+fn largest_first_uses_two_colours_on_regular_bipartite_graphs() {
+    for n in (4..=40).step_by(2) {
+        let c = generated(GraphKind::Cycle, n, 0, 1);
+        assert_eq!(
+            colours_with(&c, ColouringAlgorithm::LargestFirst),
+            2,
+            "C_{n}"
+        );
+    }
+    // Two crowns side by side, the second numbered after the first.
+    let a = generate(GraphKind::Crown, 5, 0, 1).unwrap();
+    let b = generate(GraphKind::Crown, 7, 0, 1).unwrap();
+    let mut edges = a.edges.clone();
+    edges.extend(
+        b.edges
+            .iter()
+            .map(|&[u, v]| [u + a.vertices, v + a.vertices]),
+    );
+    let g = Graph::from_edges(a.vertices + b.vertices, &edges).unwrap();
+    assert_eq!(colours_with(&g, ColouringAlgorithm::LargestFirst), 2);
 }
 
 #[test]
@@ -412,6 +435,30 @@ proptest! {
         }
         let sl = smallest_last_order(&g);
         prop_assert!(greedy_colouring(&g, &sl).unwrap().count <= degeneracy + 1);
+    }
+
+    /// Largest-first against its definition, replayed naively: degrees never increase along
+    /// the order, and within a run of equal degree each vertex has the most already ordered
+    /// neighbours among the vertices of that degree still to come.
+    #[test]
+    fn largest_first_follows_its_definition((n, edges) in arb_edges(14, 40)) {
+        let g = Graph::from_edges(n, &edges).unwrap();
+        let order = largest_first_order(&g);
+        let mut sorted = order.clone();
+        sorted.sort_unstable();
+        prop_assert_eq!(sorted, (0..n).collect::<Vec<_>>());
+        let mut placed = vec![false; n];
+        for (i, &v) in order.iter().enumerate() {
+            let ordered_neighbours =
+                |u: usize, placed: &[bool]| g.neighbours(u).filter(|&w| placed[w]).count();
+            for &u in &order[i + 1..] {
+                prop_assert!(g.degree(u) <= g.degree(v));
+                if g.degree(u) == g.degree(v) {
+                    prop_assert!(ordered_neighbours(u, &placed) <= ordered_neighbours(v, &placed));
+                }
+            }
+            placed[v] = true;
+        }
     }
 }
 

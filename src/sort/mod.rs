@@ -4,7 +4,7 @@
 //! los algoritmos de ordenación") teaches bubble sort, selection sort and insertion sort
 //! (sequential and by bisection) and measures them by counting comparisons and exchanges.
 //! Merge sort, heap sort and quicksort are here so that growth plots can contrast O(n²) with
-//! O(n log n); [`radix_sort_f64`] sorts `f64` keys without comparing them.
+//! O(n log n); [`radix_sort_f64`] sorts `f64` keys in linear time by their bits.
 //!
 //! Insertion comes twice. The seed's worked tables scan the sorted prefix from the front and
 //! bisect with a repeated last comparison; those are the `course_` variants, whose traces
@@ -23,7 +23,7 @@
 //! | [`merge_sort`] | n⌈log₂ n⌉ − 2^⌈log₂ n⌉ + 1 | yes | `merge.rs` |
 //! | [`heap_sort`] | 2n log₂ n | no | `heap.rs` |
 //! | [`quick_sort`] | 6n log₂ n + n (introsort) | no | `quick.rs` |
-//! | [`radix_sort_f64`] | none: 8 passes of 8-bit digits | — | `radix.rs` |
+//! | [`radix_sort_f64`] | at most 7.5n, of integer keys in its insertion passes; O(n) time | — | `radix.rs` |
 //!
 //! # Three entry points per comparison sort
 //!

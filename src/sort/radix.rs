@@ -1,26 +1,53 @@
-//! LSD radix sort for `f64` keys in the IEEE 754 total order, without comparisons.
+//! Radix sort for `f64` keys in the IEEE 754 total order, without comparing floats.
 //!
 //! A float's bits, read as an unsigned integer after flipping the sign bit of non-negative
 //! values and every bit of negative ones, order exactly as [`f64::total_cmp`] orders the
-//! floats: −NaN < −∞ < … < −0.0 < +0.0 < … < +∞ < +NaN. Sorting those 64-bit keys by their
-//! bytes, least significant first, with a stable counting sort per byte sorts the floats.
-//! One pass over the input builds all eight byte histograms; a byte on which every key agrees
-//! (the sign and high exponent bits of data of one sign and magnitude, say) is skipped.
-//! Not in the seed; it is compgeo's candidate fast path for sorting coordinates, measured
-//! against `sort_unstable_by(f64::total_cmp)` in `benches/sort.rs` (group `radix-f64`).
+//! floats: −NaN < −∞ < … < −0.0 < +0.0 < … < +∞ < +NaN. The sort turns the floats into those
+//! 64-bit keys in place, sorts the keys by their bits, and turns them back.
+//!
+//! Large inputs are first partitioned in place, most significant bits first (an "American
+//! flag" pass on the top eight bits in which the keys differ), until every part holds at most
+//! 2^16 keys and fits, with a scratch buffer of its size, in a 1 MiB L2 cache. Each part of m
+//! keys is then sorted on its top ⌊log₂ m⌋ + 9 varying bits by stable counting passes of one
+//! byte each, least significant first; on random input a key shares all those bits with
+//! another with probability below 1/256, so one insertion pass finishes the part. If the
+//! insertion pass meets too many inversions (keys that agree on their top bits and differ
+//! below, as an adversary can arrange), the part is sorted on all its varying bits by counting
+//! passes instead, so the sort stays linear. Not in the seed; it is compgeo's fast path for
+//! sorting coordinates, measured against `sort_unstable_by(f64::total_cmp)` in
+//! `benches/sort.rs` (groups `radix-f64-mixed` and `radix-f64-unit`).
+//!
+//! Why this shape: the eight-pass LSD radix sort it replaces made eight passes over the whole
+//! array plus a fresh n-float buffer, whose first-touch page faults alone cost about 3 ms per
+//! million keys on the benchmark machine. This version allocates at most 2^16 floats of scratch
+//! and does all but one or two passes on cache-resident parts; its partition sweeps over the
+//! unplaced slots instead of following one cycle at a time, so its cache misses overlap.
 //!
 //! Invariants the tests check: the output equals `sort_unstable_by(f64::total_cmp)` bit for
-//! bit (signed zeros, subnormals, infinities, NaNs of both signs and any payload); moves are
-//! n per pass made.
+//! bit (signed zeros, subnormals, infinities, NaNs of both signs and any payload), on random
+//! and on adversarial inputs that force the fallback; the counts stay within the linear bounds
+//! stated on [`radix_sort_f64_with`].
 
 use crate::count::{Counter, NoCount};
 
-/// Bits per digit: eight passes of one byte, 256 buckets.
+/// Parts longer than this are partitioned in place first. 2^16 keys and their scratch take
+/// 512 KiB each: together they fit a 1 MiB L2 cache.
+const PART_MAX: usize = 1 << 16;
+/// Parts this short are sorted by insertion alone.
+const TINY: usize = 16;
+/// A part of m keys is sorted by counting passes on its top `bit_length(m) + EXTRA_BITS`
+/// varying bits before the insertion pass: keys tie on all of them with probability about
+/// 2^-EXTRA_BITS per element on random input.
+const EXTRA_BITS: u32 = 8;
+/// The most sweeps of a partition before its remaining keys follow their cycles.
+const SWEEPS: usize = 8;
+/// Bits per digit of a counting pass, and its number of buckets.
 const DIGIT_BITS: u32 = 8;
-const BUCKETS: usize = 1 << DIGIT_BITS;
-const PASSES: usize = (u64::BITS / DIGIT_BITS) as usize;
+const RADIX: usize = 1 << DIGIT_BITS;
+/// The most digits a part's counting passes use: `bit_length(PART_MAX) + EXTRA_BITS` bits.
+const MAX_TOP_DIGITS: usize = 4;
 
-/// Sorts `v` in the IEEE 754 total order ([`f64::total_cmp`]) with an LSD radix sort.
+/// Sorts `v` in the IEEE 754 total order ([`f64::total_cmp`]) with a radix sort.
 ///
 /// The result is the same, bit for bit, as `v.sort_unstable_by(f64::total_cmp)` (in that
 /// order distinct bit patterns never compare equal, so the sorted sequence is unique).
@@ -36,14 +63,18 @@ pub fn radix_sort_f64(v: &mut [f64]) {
     radix_sort_f64_with(v, &mut NoCount);
 }
 
-/// Sorts `v` like [`radix_sort_f64`], recording its element moves in `counter`.
+/// Sorts `v` like [`radix_sort_f64`], recording its element moves and key comparisons in
+/// `counter`.
 ///
-/// Idea: map each float to the 64-bit key that orders as [`f64::total_cmp`] (flip the sign
-/// bit of non-negative floats, every bit of negative ones), count the keys' bytes in one
-/// pass, then for each byte from the least significant up distribute the elements stably
-/// into 256 buckets between `v` and one buffer, skipping bytes on which all keys agree. The
-/// first pass turns floats into keys, the middle ones move keys, and the last turns keys back
-/// into floats as it writes them, so no pass recomputes a key.
+/// Idea: map each float, in place, to the 64-bit key that orders as [`f64::total_cmp`] (flip
+/// the sign bit of non-negative floats, every bit of negative ones). While a part of the array
+/// is longer than 2^16 keys, partition it in place into 256 buckets by the eight bits below the
+/// highest bit on which its keys differ (sweeps over the unplaced slots swap keys into their
+/// buckets, then the last few follow their cycles). A part of m ≤ 2^16 keys is sorted into a scratch buffer and back by stable counting
+/// passes, one per byte of its top ⌊log₂ m⌋ + 9 varying bits, least significant byte
+/// first (a byte on which all keys agree is skipped); then an insertion pass orders the keys
+/// that tie on those bits. If that pass has to shift more than m keys, the part is sorted by
+/// counting passes on all its varying bits instead. Keys become floats again part by part.
 ///
 /// Not in the seed; it sorts what [`super::merge_sort_by`] or [`super::quick_sort_by`] with
 /// `f64::total_cmp` sort, in linear time.
@@ -54,80 +85,284 @@ pub fn radix_sort_f64(v: &mut [f64]) {
 ///
 /// # Complexity
 ///
-/// With n = `v.len()`, d = 8 passes of b = 256 buckets: time O(d(n + b)) = O(n); auxiliary
-/// space n floats plus d·b counters.
+/// With n = `v.len()`, w = 64 key bits and b = 256 buckets: time O(n·w/8 + b·p) = O(n) for
+/// p ≤ n parts: at most w/8 partition levels over the whole array, and per part at most
+/// w/8 counting passes, one insertion pass of at most 2m shifts and, if it gives up, w/8 more
+/// counting passes. Auxiliary space: min(n, 2^16) floats of scratch plus O(w/8 · b) counters.
+/// Random input of up to 2^16 keys takes no partition level and three or four counting
+/// passes; 10^6 random keys take one level and three passes per part (5 moves per key).
 ///
 /// # Counts
 ///
-/// No comparisons. moves: n for every pass made (a pass writes each element once into its
-/// bucket), plus n when an odd number of passes leaves the result in the buffer and it is
-/// copied back; so at most 8n, and 0 when all elements share their bit pattern.
+/// - moves: between n and 2n per partition level (a key placed by a sweep costs two writes,
+///   one placed by following a cycle one), m per counting pass over a part of m keys, m when a
+///   part's result is copied back from the scratch buffer, and one per key shifted by an
+///   insertion pass (putting the key into the gap is not counted, as in
+///   [`super::insertion_sort_with`]). After L ≤ 8 partition levels (at most 2Ln moves) a
+///   part's keys differ in at most 64 − 8L bits, so it takes at most 4 counting passes, fewer
+///   than 2m shifts before the insertion pass gives up, 8 − L fallback passes and 2 copies: at
+///   most 2L + 16 − L ≤ 24 moves per key in all (a part of at most 16 keys, sorted by insertion
+///   alone, shifts at most 7.5 keys per key), and 0 when all elements share their bit pattern;
+/// - comparisons: the insertion passes' comparisons of two keys (as unsigned integers): at most
+///   one per shift plus one per key, and at most m(m − 1)/2 in a part of m ≤ 16 keys, so at
+///   most 7.5n; 0 when the counting passes alone sort every part.
 ///
 /// ```
 /// use compgeo::count::Counts;
 /// use compgeo::sort::radix_sort_f64_with;
 ///
-/// // Only the lowest byte differs: one pass, then the copy back.
+/// // Three keys: a tiny part, sorted by insertion alone.
 /// let mut v = [1.0 + 3.0 * f64::EPSILON, 1.0, 1.0 + f64::EPSILON];
 /// let mut counts = Counts::default();
 /// radix_sort_f64_with(&mut v, &mut counts);
 /// assert_eq!(v, [1.0, 1.0 + f64::EPSILON, 1.0 + 3.0 * f64::EPSILON]);
-/// assert_eq!((counts.comparisons, counts.moves), (0, 6));
+/// // 1.0 passes one key (1 comparison, 1 shift); 1 + ε passes one and stops at 1.0 (2, 1).
+/// assert_eq!((counts.comparisons, counts.moves), (3, 2));
 /// ```
 pub fn radix_sort_f64_with<C: Counter>(v: &mut [f64], counter: &mut C) {
-    let n = v.len();
-    if n < 2 {
+    if v.len() < 2 {
         return;
     }
-    let mut histograms = [[0usize; BUCKETS]; PASSES];
-    for &x in v.iter() {
-        let k = key(x);
-        for (pass, histogram) in histograms.iter_mut().enumerate() {
-            histogram[digit(k, pass as u32 * DIGIT_BITS)] += 1;
-        }
+    let diff = to_keys(v);
+    if diff == 0 {
+        to_floats(v);
+        return;
     }
+    let mut scratch = vec![0.0f64; v.len().min(PART_MAX)];
+    sort_keys(v, diff, &mut scratch, counter);
+}
 
-    let passes: Vec<usize> = (0..PASSES)
-        .filter(|&pass| !histograms[pass].contains(&n))
-        .collect();
-    let Some(&last) = passes.last() else {
+/// Sorts the keys of `v`, which differ exactly in the bits set in `diff` (not 0), and turns
+/// them into floats.
+fn sort_keys<C: Counter>(v: &mut [f64], diff: u64, scratch: &mut [f64], counter: &mut C) {
+    let m = v.len();
+    if m <= PART_MAX {
+        sort_part(v, &mut scratch[..m], diff, counter);
         return;
-    };
-    // One buffer; between passes the elements travel as their keys' bit patterns, so no pass
-    // recomputes a key, and the last pass turns keys back into floats as it writes them.
-    let mut buffer = vec![0.0f64; n];
-    for (i, &pass) in passes.iter().enumerate() {
-        let mut next = bucket_starts(&histograms[pass]);
-        let shift = pass as u32 * DIGIT_BITS;
-        let out = |k: u64| {
-            if pass == last {
-                float(k)
-            } else {
-                f64::from_bits(k)
-            }
-        };
-        if i == 0 {
-            for &x in v.iter() {
-                let k = key(x);
-                scatter(&mut buffer, &mut next, shift, k, out(k));
-            }
-        } else if i % 2 == 1 {
-            for &x in buffer.iter() {
-                let k = x.to_bits();
-                scatter(v, &mut next, shift, k, out(k));
-            }
-        } else {
-            for &x in v.iter() {
-                let k = x.to_bits();
-                scatter(&mut buffer, &mut next, shift, k, out(k));
-            }
+    }
+    let shift = bit_length(diff).saturating_sub(DIGIT_BITS);
+    let ends = partition(v, shift, SWEEPS, counter);
+    let mut start = 0;
+    for end in ends {
+        let part = &mut v[start..end];
+        // The part's keys agree on every bit from `shift` up, so it recurses on fewer bits.
+        match varying_bits(part) {
+            0 => to_floats(part),
+            d => sort_keys(part, d, scratch, counter),
         }
-        moves(counter, n);
+        start = end;
     }
-    if passes.len() % 2 == 1 {
-        v.copy_from_slice(&buffer);
-        moves(counter, n);
+}
+
+/// Partitions the keys of `v` in place by their digit at `shift`; returns each bucket's end.
+///
+/// Sweeps first: each sweep walks every bucket's unplaced slots once, putting the key found
+/// into its bucket's next free slot and parking the key from there in its place. Unlike
+/// following one cycle (where each load waits for the previous one), a sweep's loads are
+/// independent, so many cache misses overlap; on 10^6 random keys that is 2 ms instead of 7.
+/// Each step places one key for good, and after `sweeps` sweeps the few keys left follow
+/// their cycles.
+fn partition<C: Counter>(
+    v: &mut [f64],
+    shift: u32,
+    sweeps: usize,
+    counter: &mut C,
+) -> [usize; RADIX] {
+    let mut counts = [0usize; RADIX];
+    for x in v.iter() {
+        counts[digit(x.to_bits(), shift)] += 1;
     }
+    let mut heads = [0usize; RADIX];
+    let mut ends = [0usize; RADIX];
+    let mut sum = 0;
+    for d in 0..RADIX {
+        heads[d] = sum;
+        sum += counts[d];
+        ends[d] = sum;
+    }
+    let mut swept = 0;
+    for _ in 0..sweeps {
+        let mut unplaced = false;
+        for d in 0..RADIX {
+            let (start, end) = (heads[d], ends[d]);
+            for i in start..end {
+                let x = v[i];
+                let slot = &mut heads[digit(x.to_bits(), shift)];
+                // slot lies in x's bucket at or past its placed keys, or is i itself.
+                v[i] = v[*slot];
+                v[*slot] = x;
+                *slot += 1;
+            }
+            swept += end - start;
+            unplaced |= heads[d] < end;
+        }
+        if !unplaced {
+            break;
+        }
+    }
+    for d in 0..RADIX {
+        while heads[d] < ends[d] {
+            // Follow the cycle through heads[d]: each key displaced goes to its own bucket.
+            let mut x = v[heads[d]];
+            let mut home = digit(x.to_bits(), shift);
+            while home != d {
+                let slot = heads[home];
+                heads[home] += 1;
+                std::mem::swap(&mut x, &mut v[slot]);
+                home = digit(x.to_bits(), shift);
+            }
+            v[heads[d]] = x;
+            heads[d] += 1;
+        }
+    }
+    // A swept key costs two writes (its slot and the parked key), any other key one.
+    moves(counter, v.len() + swept);
+    ends
+}
+
+/// Sorts the keys of `v` (at most [`PART_MAX`]), which differ exactly in the bits of `diff`
+/// (not 0), with `tmp` (as long as `v`) as scratch; leaves floats in `v`.
+fn sort_part<C: Counter>(v: &mut [f64], tmp: &mut [f64], diff: u64, counter: &mut C) {
+    let m = v.len();
+    if m <= TINY {
+        insertion(v, usize::MAX, counter);
+        to_floats(v);
+        return;
+    }
+    let hi = bit_length(diff);
+    let wanted = (bit_length(m as u64) + EXTRA_BITS).min(hi);
+    let digits = wanted.div_ceil(DIGIT_BITS) as usize;
+    let lo = hi.saturating_sub(DIGIT_BITS * digits as u32);
+    let in_tmp = counting_passes::<MAX_TOP_DIGITS, C>(v, tmp, lo, digits, counter);
+    let (keys, other) = if in_tmp { (tmp, v) } else { (v, tmp) };
+    // Sorted on bits lo.. now; with lo = 0 that is all of them.
+    if lo > 0 && !insertion(keys, m, counter) {
+        counting_sort(keys, other, hi, counter);
+    }
+    if in_tmp {
+        for (out, &k) in other.iter_mut().zip(keys.iter()) {
+            *out = float(k.to_bits());
+        }
+        moves(counter, m);
+    } else {
+        to_floats(keys);
+    }
+}
+
+/// Sorts the keys of `v` on bits `0..hi` (all the bits where they differ) by counting passes
+/// through `tmp`; the keys end in `v`.
+fn counting_sort<C: Counter>(v: &mut [f64], tmp: &mut [f64], hi: u32, counter: &mut C) {
+    const ALL_DIGITS: usize = (u64::BITS / DIGIT_BITS) as usize;
+    let digits = hi.div_ceil(DIGIT_BITS) as usize;
+    if counting_passes::<ALL_DIGITS, C>(v, tmp, 0, digits, counter) {
+        v.copy_from_slice(tmp);
+        moves(counter, v.len());
+    }
+}
+
+/// Sorts the keys of `v` on their `digits` ≤ `D` bytes from bit `lo` up by stable counting
+/// passes between `v` and `tmp`, least significant first, skipping bytes on which every key
+/// agrees; returns whether the keys ended in `tmp`.
+fn counting_passes<const D: usize, C: Counter>(
+    v: &mut [f64],
+    tmp: &mut [f64],
+    lo: u32,
+    digits: usize,
+    counter: &mut C,
+) -> bool {
+    let m = v.len();
+    let mut histograms = [[0u32; RADIX]; D];
+    for x in v.iter() {
+        let k = x.to_bits() >> lo;
+        for (p, histogram) in histograms[..digits].iter_mut().enumerate() {
+            histogram[digit(k, DIGIT_BITS * p as u32)] += 1;
+        }
+    }
+    let mut in_tmp = false;
+    for (p, histogram) in histograms[..digits].iter().enumerate() {
+        if histogram.contains(&(m as u32)) {
+            continue;
+        }
+        let shift = lo + DIGIT_BITS * p as u32;
+        if in_tmp {
+            counting_pass(tmp, v, histogram, shift);
+        } else {
+            counting_pass(v, tmp, histogram, shift);
+        }
+        moves(counter, m);
+        in_tmp = !in_tmp;
+    }
+    in_tmp
+}
+
+/// Distributes the keys of `src` stably into `dst` by their digit at `shift`.
+fn counting_pass(src: &[f64], dst: &mut [f64], histogram: &[u32; RADIX], shift: u32) {
+    let mut next = [0usize; RADIX];
+    let mut sum = 0;
+    for (slot, &count) in next.iter_mut().zip(histogram) {
+        *slot = sum;
+        sum += count as usize;
+    }
+    for &x in src {
+        let d = digit(x.to_bits(), shift);
+        dst[next[d]] = x;
+        next[d] += 1;
+    }
+}
+
+/// Insertion sort of the keys of `v`; gives up (returning false, `v` some permutation of its
+/// keys) once it has shifted more than `budget` keys.
+fn insertion<C: Counter>(v: &mut [f64], budget: usize, counter: &mut C) -> bool {
+    let mut shifts = 0;
+    for i in 1..v.len() {
+        let x = v[i];
+        let k = x.to_bits();
+        let mut j = i;
+        while j > 0 {
+            counter.comparison();
+            if v[j - 1].to_bits() <= k {
+                break;
+            }
+            v[j] = v[j - 1];
+            counter.element_move();
+            j -= 1;
+        }
+        v[j] = x;
+        shifts += i - j;
+        if shifts > budget {
+            return false;
+        }
+    }
+    true
+}
+
+/// Turns the floats of `v` into keys in place; returns the bits in which the keys differ.
+fn to_keys(v: &mut [f64]) -> u64 {
+    let first = key(v[0]);
+    let mut diff = 0;
+    for x in v.iter_mut() {
+        let k = key(*x);
+        diff |= k ^ first;
+        *x = f64::from_bits(k);
+    }
+    diff
+}
+
+fn to_floats(v: &mut [f64]) {
+    for x in v.iter_mut() {
+        *x = float(x.to_bits());
+    }
+}
+
+/// The bits in which the keys of `v` differ (none for an empty or one-key `v`).
+fn varying_bits(v: &[f64]) -> u64 {
+    let first = v.first().map_or(0, |x| x.to_bits());
+    v.iter().fold(0, |diff, x| diff | (x.to_bits() ^ first))
+}
+
+/// The number of bits up to the highest set one: bits `0..bit_length(x)` hold all of `x`.
+fn bit_length(x: u64) -> u32 {
+    u64::BITS - x.leading_zeros()
 }
 
 #[inline(always)]
@@ -147,26 +382,7 @@ fn float(key: u64) -> f64 {
 
 #[inline(always)]
 fn digit(key: u64, shift: u32) -> usize {
-    ((key >> shift) as usize) & (BUCKETS - 1)
-}
-
-/// Bucket d's first free slot: the number of keys with a smaller digit.
-fn bucket_starts(histogram: &[usize; BUCKETS]) -> [usize; BUCKETS] {
-    let mut next = [0usize; BUCKETS];
-    let mut sum = 0;
-    for (slot, &count) in next.iter_mut().zip(histogram) {
-        *slot = sum;
-        sum += count;
-    }
-    next
-}
-
-/// Writes `value` into the next free slot of `key`'s bucket.
-#[inline(always)]
-fn scatter<T>(dst: &mut [T], next: &mut [usize; BUCKETS], shift: u32, key: u64, value: T) {
-    let d = digit(key, shift);
-    dst[next[d]] = value;
-    next[d] += 1;
+    ((key >> shift) as usize) & (RADIX - 1)
 }
 
 fn moves<C: Counter>(counter: &mut C, n: usize) {
@@ -179,6 +395,16 @@ fn moves<C: Counter>(counter: &mut C, n: usize) {
 mod tests {
     use super::*;
     use crate::count::Counts;
+
+    fn bits(v: &[f64]) -> Vec<u64> {
+        v.iter().map(|x| x.to_bits()).collect()
+    }
+
+    fn sorted_by_std(v: &[f64]) -> Vec<u64> {
+        let mut expected = v.to_vec();
+        expected.sort_unstable_by(f64::total_cmp);
+        bits(&expected)
+    }
 
     #[test]
     fn keys_order_as_total_cmp() {
@@ -202,26 +428,134 @@ mod tests {
         for a in xs {
             for b in xs {
                 assert_eq!(key(a).cmp(&key(b)), a.total_cmp(&b), "{a:e} vs {b:e}");
+                assert_eq!(float(key(a)).to_bits(), a.to_bits());
             }
         }
     }
 
     #[test]
     fn equal_bit_patterns_make_no_pass() {
-        let mut v = vec![-3.25; 100];
+        let mut v = vec![-3.25; 100_000];
         let mut counts = Counts::default();
         radix_sort_f64_with(&mut v, &mut counts);
-        assert_eq!(counts.moves, 0);
+        assert_eq!((counts.moves, counts.comparisons), (0, 0));
+        assert!(v.iter().all(|x| x.to_bits() == (-3.25f64).to_bits()));
     }
 
     #[test]
-    fn two_differing_bytes_make_two_passes_and_no_copy() {
-        // One binade: the keys differ in byte 0 (last mantissa bit) and byte 6 only.
-        let e = f64::EPSILON;
-        let mut v = vec![1.75 + e, 1.5, 1.75, 1.5 + e];
+    fn keys_differing_in_their_low_byte_take_one_pass_and_no_comparison() {
+        // One binade, only the lowest byte varies: one counting pass sorts the part, and the
+        // result comes back from the scratch buffer.
+        let one = 1.0f64.to_bits();
+        let mut v: Vec<f64> = (0..1000u64)
+            .map(|i| f64::from_bits(one + (i * 37) % 256))
+            .collect();
+        let expected = sorted_by_std(&v);
         let mut counts = Counts::default();
         radix_sort_f64_with(&mut v, &mut counts);
-        assert_eq!(v, [1.5, 1.5 + e, 1.75, 1.75 + e]);
-        assert_eq!(counts.moves, 2 * 4);
+        assert_eq!(bits(&v), expected);
+        assert_eq!((counts.moves, counts.comparisons), (2 * 1000, 0));
+    }
+
+    #[test]
+    fn ties_on_the_top_bits_fall_back_to_counting_passes() {
+        // One outlier makes the top bits vary; the others tie on them and differ only in
+        // their low 16 bits, so the insertion pass would need about m^2/4 shifts. The
+        // fallback keeps the moves within the linear bound.
+        let one = 1.0f64.to_bits();
+        let mut s = 0x2545_F491_4F6C_DD1Du64;
+        let mut v: Vec<f64> = (0..4000)
+            .map(|_| {
+                s ^= s << 13;
+                s ^= s >> 7;
+                s ^= s << 17;
+                f64::from_bits(one + (s & 0xFFFF))
+            })
+            .collect();
+        v[1234] = f64::from_bits(one + (1 << 40));
+        let expected = sorted_by_std(&v);
+        let mut counts = Counts::default();
+        radix_sort_f64_with(&mut v, &mut counts);
+        assert_eq!(bits(&v), expected);
+        assert!(counts.moves <= 16 * 4000, "{counts:?}");
+        assert!(counts.comparisons <= 3 * 4000, "{counts:?}");
+    }
+
+    #[test]
+    fn partition_levels_sort_large_inputs_of_mixed_magnitudes() {
+        // Above PART_MAX: partitions in place first. Signs, binades, duplicates, signed zeros
+        // and NaNs mixed.
+        let mut s = 0x9E37_79B9_7F4A_7C15u64;
+        let mut v: Vec<f64> = (0..3 * PART_MAX)
+            .map(|i| {
+                s ^= s << 13;
+                s ^= s >> 7;
+                s ^= s << 17;
+                match i % 5 {
+                    0 => f64::from_bits(s),
+                    1 => (s >> 11) as f64 / (1u64 << 53) as f64,
+                    2 => ((s % 7) as f64) * if s & 8 == 0 { 1.0 } else { -1.0 },
+                    3 => f64::from_bits(s >> 20), // subnormals and tiny normals
+                    _ => -((s % 1000) as f64) * 1e300,
+                }
+            })
+            .collect();
+        let expected = sorted_by_std(&v);
+        let n = v.len() as u64;
+        let mut counts = Counts::default();
+        radix_sort_f64_with(&mut v, &mut counts);
+        assert_eq!(bits(&v), expected);
+        assert!(counts.moves <= 24 * n && 2 * counts.comparisons <= 15 * n);
+    }
+
+    #[test]
+    fn empty_buckets_of_a_partition_are_skipped() {
+        // Integers below 2^17 in reverse: few exponents, so most of the 256 buckets of the
+        // first partition are empty.
+        let mut v: Vec<f64> = (0..2 * PART_MAX).rev().map(|i| i as f64).collect();
+        let mut counts = Counts::default();
+        radix_sort_f64_with(&mut v, &mut counts);
+        assert!(v.iter().enumerate().all(|(i, &x)| x == i as f64));
+    }
+
+    #[test]
+    fn partition_places_every_key_in_its_bucket_with_or_without_sweeps() {
+        let mut s = 0x0123_4567_89AB_CDEFu64;
+        let keys: Vec<f64> = (0..20_000)
+            .map(|_| {
+                s ^= s << 13;
+                s ^= s >> 7;
+                s ^= s << 17;
+                // Skewed digits: bucket 0 gets about half the keys.
+                f64::from_bits(if s & 1 == 0 { s & 0x00FF_FFFF } else { s })
+            })
+            .collect();
+        let mut expected = keys.clone();
+        expected.sort_unstable_by_key(|x| x.to_bits());
+        for sweeps in [0, 1, 2, SWEEPS, 1000] {
+            let mut v = keys.clone();
+            let mut counts = Counts::default();
+            let ends = partition(&mut v, 56, sweeps, &mut counts);
+            let mut start = 0;
+            for (d, &end) in ends.iter().enumerate() {
+                assert!(v[start..end].iter().all(|x| digit(x.to_bits(), 56) == d));
+                start = end;
+            }
+            assert_eq!(start, v.len());
+            v.sort_unstable_by_key(|x| x.to_bits());
+            assert_eq!(
+                bits(&v),
+                bits(&expected),
+                "{sweeps} sweeps lost or duplicated keys"
+            );
+            let n = keys.len() as u64;
+            assert!(
+                counts.moves >= n && counts.moves <= 2 * n,
+                "{sweeps}: {counts:?}"
+            );
+            if sweeps == 0 {
+                assert_eq!(counts.moves, n, "following cycles writes each key once");
+            }
+        }
     }
 }

@@ -8,9 +8,11 @@
 //! (flattening and its error bound), §3.6 (forward differences), §3.11–3.12 (degree
 //! elevation, Zhou's formula).
 
-use super::bezier::{binomial_coefficient, Bezier};
+use super::bezier::Bezier;
+use super::horner::{
+    binomial_coefficient, horner_cubic, horner_line, horner_quadratic, in_registers,
+};
 use super::scalar::{validate_parameter, validate_points, Point, Scalar};
-use crate::count::NoCount;
 use crate::{Error, Result};
 
 /// The largest number of segments [`Bezier::flatten`] produces before it reports that the
@@ -21,16 +23,14 @@ pub const MAX_FLATTEN_SEGMENTS: usize = 1 << 20;
 const MAX_FLATTEN_DEPTH: usize = 40;
 
 impl<S: Scalar, const D: usize> Bezier<S, D> {
-    /// Calls `f(b(tᵢ))` for every parameter tᵢ in order: [`Bezier::eval`] over a batch, with
-    /// the checks hoisted out of the inner loop, for sampling a curve densely (plotting,
-    /// tables).
+    /// Calls `f(b(tᵢ))` for every parameter tᵢ in order: [`Bezier::eval`] over a batch, for
+    /// sampling a curve densely (plotting, tables).
     ///
-    /// Idea: the parameters go in chunks small enough to stay in the fastest cache. One pass
-    /// over a chunk checks that its parameters are finite and bounds |t| + |1 − t| by w; for
-    /// degree n ≤ 3 every intermediate of the Horner nesting is at most 8·M·wⁿ in absolute
-    /// value (M the largest control coordinate), so when that bound is finite no result can
-    /// overflow and the closed form runs over the chunk with no branch at all. Otherwise (and
-    /// for n ≥ 4) each point is evaluated as [`Bezier::at`] does.
+    /// Idea: the degree is looked at once, so lines, quadratics and cubics run their closed
+    /// form of the Horner nesting in a loop of their own, with the control points held in
+    /// local variables (registers, for `f64`). Per parameter, one comparison with the curve's
+    /// Horner bound (see [`Bezier::eval`]) rules out NaN, ±∞ and any overflow; parameters
+    /// that fail it take [`Bezier::eval`]'s checked path, out of line.
     ///
     /// # Errors
     ///
@@ -40,7 +40,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ(m·nD) time for m parameters, O(D) auxiliary space.
+    /// Θ(m·nD) time for m parameters, O(D) auxiliary space (as [`Bezier::eval`] per
+    /// parameter, overflow case included).
     ///
     /// ```
     /// use compgeo::spline::{Bezier, Point};
@@ -55,95 +56,27 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// assert_eq!(ys, [0.25]);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
+    #[inline]
     pub fn eval_each<F: FnMut(Point<S, D>)>(&self, ts: &[S], mut f: F) -> Result<()> {
-        // 1024 parameters: 8 KiB of f64, still in L1 when the evaluation reads them again.
-        const CHUNK: usize = 1024;
-        let m = self.largest_control_coordinate();
-        for (c, chunk) in ts.chunks(CHUNK).enumerate() {
-            let mut finite = true;
-            let mut w = 1.0f64;
-            for t in chunk {
-                finite &= t.is_finite();
-                if !S::EXACT {
-                    let x = t.to_f64();
-                    let a = x.abs() + (1.0 - x).abs();
-                    w = if a > w { a } else { w };
-                }
-            }
-            let safe = finite && (S::EXACT || self.no_overflow_bound(m, w));
-            if safe && self.closed_form_each(chunk, &mut f) {
-                continue;
-            }
-            for (i, t) in chunk.iter().enumerate() {
-                if !t.is_finite() {
-                    let index = c * CHUNK + i;
-                    return Err(Error::InvalidParameter {
-                        name: "t",
-                        reason: format!("parameter {index} must be finite, got {}", t.to_f64()),
-                    });
-                }
-                let p = self.horner_unchecked(t, &mut NoCount);
-                f(if p.is_finite() {
-                    p
-                } else {
-                    self.de_casteljau_cold(t)
-                });
-            }
+        if let Some([b0, c1, c2, b3]) = self.cubic_horner_points() {
+            let (b0, c1, c2, b3) = (b0.clone(), c1.clone(), c2.clone(), b3.clone());
+            return self.each_with(ts, &mut f, |t| {
+                horner_cubic(&b0, &c1, &c2, &b3, t, &(S::one() - t))
+            });
         }
-        Ok(())
-    }
-
-    /// Evaluates degree 1 to 3 by the closed form of the Horner nesting, without checks;
-    /// `false` (and no call of `f`) for other degrees.
-    fn closed_form_each<F: FnMut(Point<S, D>)>(&self, ts: &[S], f: &mut F) -> bool {
         match self.control() {
             [b0, b1] => {
-                for t in ts {
-                    f(b0.clone() * (S::one() - t) + &(b1.clone() * t));
-                }
+                let (b0, b1) = (b0.clone(), b1.clone());
+                self.each_with(ts, &mut f, |t| horner_line(&b0, &b1, t, &(S::one() - t)))
             }
             [b0, b1, b2] => {
-                let two = S::from_i64(2);
-                for t in ts {
-                    let u = S::one() - t;
-                    f((b0.clone() * &u + &(b1.clone() * (two.clone() * t))) * &u
-                        + &(b2.clone() * (t.clone() * t)));
-                }
+                let (b0, b1, b2) = (b0.clone(), b1.clone(), b2.clone());
+                self.each_with(ts, &mut f, |t| {
+                    horner_quadratic(&b0, &b1, &b2, t, &(S::one() - t))
+                })
             }
-            [b0, b1, b2, b3] => {
-                let three = S::from_i64(3);
-                for t in ts {
-                    let u = S::one() - t;
-                    let t2 = t.clone() * t;
-                    f(
-                        ((b0.clone() * &u + &(b1.clone() * (three.clone() * t))) * &u
-                            + &(b2.clone() * (three.clone() * &t2)))
-                            * &u
-                            + &(b3.clone() * (t2 * t)),
-                    );
-                }
-            }
-            _ => return false,
+            _ => self.each_with(ts, &mut f, |t| in_registers(self.eval_general(t))),
         }
-        true
-    }
-
-    /// The largest absolute control coordinate, M, in `f64`.
-    fn largest_control_coordinate(&self) -> f64 {
-        let mut m = 0.0f64;
-        for p in self.control() {
-            for c in p.coords() {
-                m = m.max(c.to_f64().abs());
-            }
-        }
-        m
-    }
-
-    /// `8·M·wⁿ` is finite (with a factor 2 of slack for rounding), for M the largest control
-    /// coordinate and w a bound on |t| + |1 − t|: then no Horner step of degree n ≤ 3
-    /// overflows.
-    fn no_overflow_bound(&self, m: f64, w: f64) -> bool {
-        (16.0 * m * w.powi(self.degree() as i32)).is_finite()
     }
 
     /// The same curve with degree n + 1: `cᵢ = i/(n+1) bᵢ₋₁ + (1 − i/(n+1)) bᵢ`.
@@ -482,6 +415,41 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             out.push(e[0].clone());
         }
         Ok(out)
+    }
+}
+
+impl<S: Scalar, const D: usize> Bezier<S, D> {
+    /// [`Bezier::eval_each`]'s loop for one evaluation `g` (a closed form, or Horner's
+    /// scheme): `g` where the Horner bound allows it, the checked path elsewhere.
+    #[inline(always)]
+    fn each_with<F, G>(&self, ts: &[S], f: &mut F, g: G) -> Result<()>
+    where
+        F: FnMut(Point<S, D>),
+        G: Fn(&S) -> Point<S, D>,
+    {
+        for (i, t) in ts.iter().enumerate() {
+            let p = if self.horner_is_safe(t) {
+                g(t)
+            } else {
+                in_registers(self.eval_each_slow(i, t)?)
+            };
+            f(p);
+        }
+        Ok(())
+    }
+
+    /// The checked evaluation of parameter number `index`, out of line (it never sees `f`, so
+    /// the caller's closure state can stay in registers).
+    #[cold]
+    #[inline(never)]
+    fn eval_each_slow(&self, index: usize, t: &S) -> Result<Point<S, D>> {
+        if !t.is_finite() {
+            return Err(Error::InvalidParameter {
+                name: "t",
+                reason: format!("parameter {index} must be finite, got {}", t.to_f64()),
+            });
+        }
+        Ok(self.eval_general(t))
     }
 }
 

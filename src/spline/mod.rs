@@ -11,6 +11,7 @@
 //! | `scalar.rs` | [`Scalar`], [`Point`], exact parsing of numbers, validation helpers |
 //! | `bernstein.rs` | [`bernstein`], [`bernstein_all`], [`bernstein_derivative`] |
 //! | `bezier.rs` | [`Bezier`]: de Casteljau, Horner, derivatives, split, restrict, blossom, box |
+//! | `horner.rs` | Horner's scheme behind [`Bezier::eval`]: closed forms, inline polygons, the overflow bound |
 //! | `reparametrised.rs` | [`Reparametrised`]: a curve over a global interval [a, b] |
 //! | `bezier_ops.rs` | batch evaluation, degree elevation (Zhou), monomial conversion, integral, flattening, forward differences |
 //! | `intersect.rs` | [`intersections`] of two planar curves by subdivision with box pruning |
@@ -31,6 +32,7 @@ mod composite;
 mod cubic_spline;
 mod frenet;
 mod hermite;
+mod horner;
 mod interpolate;
 mod intersect;
 mod lagrange;

@@ -15,11 +15,12 @@
 //! for `f64` the coordinates live on the stack (or in registers), the loops over coordinates
 //! have a compile-time trip count and unroll, and de Casteljau's scratch space is one array of
 //! points with no allocation per point: the generic cubic compiles to the same packed
-//! instructions as a hand-written `f64` one. The `spline` benchmark compares the two; what
-//! remains of a gap is the per-call degree dispatch and overflow check of
-//! [`Bezier::eval`](super::Bezier::eval), which [`Bezier::eval_each`](super::Bezier::eval_each)
-//! hoists out of its loop. Callers whose dimension is only known at run time (the command
-//! line) dispatch on it once.
+//! instructions as a hand-written `f64` one. What a curve with a run-time degree adds per
+//! evaluation is kept to a branch on the degree and one comparison of t with a bound fixed
+//! when the curve is built (see [`Bezier::eval`](super::Bezier::eval)); the `spline`
+//! benchmark compares [`Bezier::eval`](super::Bezier::eval), [`Bezier::at`](super::Bezier::at)
+//! and [`Bezier::eval_each`](super::Bezier::eval_each) with a hand-written cubic and kurbo.
+//! Callers whose dimension is only known at run time (the command line) dispatch on it once.
 //!
 //! ```
 //! use compgeo::spline::{Point, Scalar};
@@ -93,6 +94,16 @@ pub trait Scalar:
     /// `true` if the value is zero.
     fn is_zero(&self) -> bool {
         *self == Self::zero()
+    }
+
+    /// `|self| ≤ limit`, for a `limit` that is not NaN; `false` if `self` is NaN.
+    ///
+    /// The evaluation fast paths call it once per parameter against a bound fixed when the
+    /// curve was built (for `f64` it is one comparison); the default compares exactly in
+    /// `Self`.
+    fn abs_at_most(&self, limit: f64) -> bool {
+        self.is_finite()
+            && Self::from_f64(limit).map_or(limit == f64::INFINITY, |l| self.abs() <= l)
     }
 
     /// The absolute value.
@@ -338,6 +349,12 @@ impl Scalar for f64 {
     #[inline]
     fn abs(&self) -> Self {
         f64::abs(*self)
+    }
+    #[inline(always)]
+    fn abs_at_most(&self, limit: f64) -> bool {
+        // NaN compares false; in floating point this is two instructions off the critical
+        // path, where a test on the bit pattern would move t to an integer register first.
+        f64::abs(*self) <= limit
     }
 }
 
@@ -712,6 +729,26 @@ mod tests {
             })
         );
         assert!(validate_parameter(&f64::INFINITY, "t").is_err());
+    }
+
+    #[test]
+    fn abs_at_most_is_the_comparison_of_absolute_values() {
+        let tiny = f64::from_bits(1); // the smallest subnormal
+        let values = [0.0, -0.0, tiny, -tiny, 0.5, -1.0, 3.0, f64::MAX, f64::MIN];
+        let values = values
+            .into_iter()
+            .chain([f64::INFINITY, f64::NEG_INFINITY, f64::NAN]);
+        let limits = [-1.0, -0.0, 0.0, tiny, 1.0, 3.0, f64::MAX, f64::INFINITY];
+        for x in values {
+            for limit in limits {
+                let want = !x.is_nan() && x.abs() <= limit;
+                assert_eq!(x.abs_at_most(limit), want, "|{x}| ≤ {limit}");
+                #[cfg(feature = "exact")]
+                if let Some(r) = <num_rational::BigRational as Scalar>::from_f64(x) {
+                    assert_eq!(r.abs_at_most(limit), want, "rational |{x}| ≤ {limit}");
+                }
+            }
+        }
     }
 
     #[cfg(feature = "exact")]

@@ -11,8 +11,8 @@
 //! sorted keys, so it has no linear best case and both its entries claim O(n²), each on the
 //! operation that carries the cost.
 //!
-//! The radix sort for `f64` keys makes no comparisons; its entry counts moves (at most eight
-//! passes of n writes each), O(n).
+//! The radix sort for `f64` keys compares keys only in the insertion passes that finish its
+//! parts; its entry counts moves (at most 24n), O(n).
 
 use crate::complexity::{Bound, Entry, Workload};
 use crate::count::{Counter, Operation};
@@ -130,7 +130,7 @@ impl Workload for SortKeys {
     }
 }
 
-/// The LSD radix sort on random `f64` keys of mixed signs and magnitudes.
+/// The radix sort on random `f64` keys of mixed signs and magnitudes.
 struct RadixKeys;
 
 impl Workload for RadixKeys {
