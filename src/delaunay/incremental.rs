@@ -103,8 +103,6 @@ pub(super) struct LocalTriangulation {
     pub(super) triangles: Vec<u32>,
     /// The opposite of every half-edge, [`NO_TWIN`] on the hull.
     pub(super) halfedges: Vec<u32>,
-    /// The vertex ids merged into an earlier equal vertex (in no triangle), ascending.
-    pub(super) dropped: Vec<u32>,
     /// `[dropped, kept]` input indices, as [`Triangulation::duplicates`].
     pub(super) duplicates: Vec<[usize; 2]>,
     /// The hull's boundary as vertex ids, counter-clockwise.
@@ -463,14 +461,11 @@ impl<'c, C: Counter> Mesh<'c, C> {
             })
             .collect();
         self.compact(&ghosts);
-        let mut dropped: Vec<u32> = self.duplicates.iter().map(|&[d, _]| d).collect();
-        dropped.sort_unstable();
         LocalTriangulation {
             points: self.points,
             order,
             triangles: self.triangles,
             halfedges: self.halfedges,
-            dropped,
             duplicates,
             hull,
         }
