@@ -34,26 +34,44 @@
 //! everything fits in cache, and our fixed costs (the BRIO keys, the ghost triangles) weigh
 //! more.
 //!
-//! Voronoi cells, same machine and load, 2026-11-23 (`voronoi/uniform-square`, criterion
-//! medians, wall time; "clipped" clips every cell to the box voronoice is given):
+//! Re-timed later the same day (voronoi built from the builder's own arrays; criterion,
+//! load average 4 to 6): uniform-square, 10⁶: incremental 658 ms, delaunator 1.374 s,
+//! spade bulk load 1.137 s, ratio 0.58. Interleaved CPU time, 7 rounds: uniform-square
+//! 0.404 s, 1.061 s, 0.751 s (0.54); clustered 0.405 s, 0.817 s, 0.743 s (0.55).
 //!
-//! | n | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
-//! |---|---|---|---|---|---|
-//! | 10⁴ | 4.11 ms | 4.68 ms | 5.47 ms | 0.75 | 0.86 |
-//! | 10⁵ | 57.3 ms | 78.2 ms | 94.5 ms | 0.61 | 0.83 |
-//! | 10⁶ | 0.922 s | 1.073 s | 1.822 s | 0.51 | 0.59 |
-//!
-//! The 10⁶ inputs timed interleaved (cells, clipped, voronoice, ...; 7 rounds, median CPU
-//! time of the thread):
+//! Voronoi cells, 2026-11-23, same machine (`voronoi/*`; "clipped" clips every cell to the
+//! box voronoice is given; every diagram, voronoice's included, is dropped outside the
+//! timed region). Criterion medians, wall time, load average about 2:
 //!
 //! | input, n = 10⁶ | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
 //! |---|---|---|---|---|---|
-//! | uniform-square | 0.586 s | 0.650 s | 1.219 s | 0.48 | 0.53 |
-//! | clustered | 0.608 s | 0.676 s | 1.136 s | 0.54 | 0.59 |
+//! | uniform-square | 573.9 ms | 627.9 ms | 1.380 s | 0.42 | 0.46 |
+//! | clustered | 524.1 ms | 619.3 ms | 1.084 s | 0.48 | 0.57 |
 //!
-//! About two thirds of compgeo's time is the triangulation; the dual walks the sites in a
-//! Z-order numbering (see `compgeo::delaunay::voronoi`), and page faults on the fresh
-//! arrays are a sizeable share of the rest.
+//! (The run just before, with compgeo's diagrams dropped inside the timed region:
+//! uniform-square 585.7 ms, 690.4 ms, 1.257 s, ratios 0.47 and 0.55; clustered 523.9 ms,
+//! 762.6 ms, 1.066 s, 0.49 and 0.72; freeing a million clipped polygons is most of the
+//! difference.) At 10⁴ and 10⁵ points, under load average 4 to 6: uniform-square cells
+//! 5.61 ms and 63.5 ms against voronoice's 6.46 ms and 106.9 ms (0.87, 0.59).
+//!
+//! The 10⁶ inputs timed interleaved (cells, clipped, then the triangulations, then
+//! voronoice; 7 rounds, median CPU time of the thread, which the other builds' load
+//! inflates less; load average 4 to 6):
+//!
+//! | input, n = 10⁶ | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
+//! |---|---|---|---|---|---|
+//! | uniform-square | 0.550 s | 0.655 s | 1.584 s | 0.35 | 0.41 |
+//! | clustered | 0.534 s | 0.628 s | 1.266 s | 0.42 | 0.50 |
+//!
+//! (A second uniform-square run at load average 2.5: 0.556 s, 0.639 s, 1.379 s; 0.40 and
+//! 0.46.) The previous version, which renumbered the points along a Z-order curve, then
+//! triangulated (a second spatial sort) and took the dual of the renumbered `Triangulation`,
+//! measured 0.48 (uniform-square) and 0.54 (clustered) interleaved, 0.57 in criterion.
+//! Now the dual reads the incremental builder's own arrays: the points in insertion order
+//! (BRIO rounds along a Hilbert curve), 32-bit triangles and half-edges, cells in insertion
+//! order. About three quarters of compgeo's time is the triangulation; of the rest, the
+//! walks around the sites (cache misses, and page faults on the fresh 48 MB row array) and
+//! the circumcentres take about equal shares.
 
 use compgeo::delaunay::{divide_and_conquer, incremental, voronoi, ClipBox};
 use compgeo::gen::{points, PointKind};
@@ -127,11 +145,13 @@ fn voronoi_cells(c: &mut Criterion) {
             // One box for both crates: the sites' bounding box grown by a quarter.
             let bounds = ClipBox::around(&pts).unwrap();
             group.throughput(Throughput::Elements(n as u64));
+            // Every diagram is dropped outside the timed region, as `iter_batched` does for
+            // voronoice's.
             group.bench_with_input(BenchmarkId::new("compgeo-cells", n), &pts, |b, pts| {
-                b.iter(|| voronoi(black_box(pts)).unwrap())
+                b.iter_with_large_drop(|| voronoi(black_box(pts)).unwrap())
             });
             group.bench_with_input(BenchmarkId::new("compgeo-clipped", n), &pts, |b, pts| {
-                b.iter(|| voronoi(black_box(pts)).unwrap().clip(&bounds))
+                b.iter_with_large_drop(|| voronoi(black_box(pts)).unwrap().clip(&bounds))
             });
             let sites: Vec<voronoice::Point> = pts
                 .iter()
