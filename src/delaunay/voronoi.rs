@@ -1,6 +1,7 @@
 //! The Voronoi diagram as the dual of the Delaunay triangulation (clipping is in `clip.rs`).
 
 use super::construct::{circumcentre, midpoint, unit_direction};
+use super::hilbert::curve_order;
 use super::incremental::{degenerate, incremental_local, LocalTriangulation, NO_TWIN};
 use super::triangulation::{next_halfedge as next, prev_halfedge as prev, Triangulation, EMPTY};
 use crate::count::{Counter, NoCount};
@@ -128,11 +129,10 @@ impl Voronoi {
 /// they neither overflow nor vanish for any finite input; a circumcentre beyond `f64`'s
 /// range, from a nearly flat triangle at a huge scale, is clamped to `±f64::MAX`).
 ///
-/// The cells come in a spatial order: that in which the [`incremental`](super::incremental)
-/// builder inserted the sites (rounds sorted along a Hilbert curve), in whose numbering the
-/// dual is built straight from the builder's arrays, so its walks around the sites touch
-/// nearby memory (cache misses are most of their cost at large n); [`Voronoi::cell_of`]
-/// finds a point's cell. (Collinear sites, which have no triangles, come in input order.)
+/// The cells come in a spatial order, that of their sites along a Hilbert curve, so the
+/// walks around consecutive sites touch nearby memory (cache misses are most of their cost
+/// at large n); the dual is built straight from the [`incremental`](super::incremental)
+/// builder's own arrays, in its numbering. [`Voronoi::cell_of`] finds a point's cell. (Collinear sites, which have no triangles, come in input order.)
 ///
 /// Degenerate input: cocircular sites give coincident vertices (one per triangle);
 /// duplicates share the cell of the point they were merged into; collinear sites (no
@@ -144,8 +144,9 @@ impl Voronoi {
 /// ([`Error::NonFinite`] naming a NaN or infinite coordinate).
 ///
 /// # Complexity
-/// O(n log n) expected time (the triangulation) and O(n) time and space for the dual,
-/// for n points.
+/// O(n log n) expected time (the triangulation) and O(n log n) time, O(n) space for the
+/// dual (a sort of the sites along the curve, near-linear as they arrive in a few sorted
+/// runs; the rest is O(n)), for n points.
 ///
 /// # Counts
 /// See [`voronoi_with`]: the triangulation's orientation and in-circle tests.
@@ -261,29 +262,30 @@ pub fn dual(points: &[Point2], t: &Triangulation) -> Voronoi {
 
 /// The diagram of the builder's own triangulation, sites renamed to input indices.
 ///
-/// The cells come in insertion order, which is spatial: consecutive sites share
-/// triangles, and the triangles around a site were mostly written at about the same time
-/// (when it and its neighbours were inserted), so each walk reads memory close to the last.
-/// (Measured: faster than taking the cells in the memory order of their triangles.)
+/// The cells come in the order of their sites along a Hilbert curve: a triangle's three
+/// corners then belong to cells walked close together, so its half-edges are read from
+/// cache after the first. (Measured at 10⁶ points: about 5% faster overall than the cells
+/// in insertion order, whose BRIO rounds put the corners of most triangles far apart, and
+/// faster still than the memory order of the triangles.) The sort is cheap: the insertion
+/// order is already a few runs in curve order, one per round.
 fn dual_local(t: &LocalTriangulation) -> Voronoi {
     let (n, tri) = (t.order.len(), &t.triangles);
     // A half-edge leaving each vertex; merged vertices are in no triangle and keep NO_TWIN.
-    let mut starts = vec![NO_TWIN; n];
+    let mut out = vec![NO_TWIN; n];
     for (e, &a) in tri.iter().enumerate() {
-        starts[a as usize] = e as u32;
+        out[a as usize] = e as u32;
     }
-    if !t.duplicates.is_empty() {
-        starts.retain(|&e| e != NO_TWIN);
-    }
+    let starts: Vec<u32> = curve_order(&t.points)
+        .into_iter()
+        .map(|j| out[j as usize])
+        .filter(|&e| e != NO_TWIN)
+        .collect();
+    drop(out);
     let site = |j: usize| t.order[j] as usize;
-    let sites: Vec<usize> = if t.duplicates.is_empty() {
-        t.order.iter().map(|&i| i as usize).collect()
-    } else {
-        starts
-            .iter()
-            .map(|&e| site(tri[e as usize] as usize))
-            .collect()
-    };
+    let sites: Vec<usize> = starts
+        .iter()
+        .map(|&e| site(tri[e as usize] as usize))
+        .collect();
     let mut cell_of = vec![0; n];
     for (k, &i) in sites.iter().enumerate() {
         cell_of[i] = k;
