@@ -41,37 +41,36 @@
 //!
 //! Voronoi cells, 2026-11-23, same machine (`voronoi/*`; "clipped" clips every cell to the
 //! box voronoice is given; every diagram, voronoice's included, is dropped outside the
-//! timed region). Criterion medians, wall time, load average about 2:
+//! timed region). Criterion medians, wall time, load average 2.3 to 2.9:
 //!
 //! | input, n = 10⁶ | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
 //! |---|---|---|---|---|---|
-//! | uniform-square | 573.9 ms | 627.9 ms | 1.380 s | 0.42 | 0.46 |
-//! | clustered | 524.1 ms | 619.3 ms | 1.084 s | 0.48 | 0.57 |
+//! | uniform-square | 561.5 ms | 572.5 ms | 1.333 s | 0.42 | 0.43 |
+//! | clustered | 508.8 ms | 581.4 ms | 1.147 s | 0.44 | 0.51 |
 //!
-//! (The run just before, with compgeo's diagrams dropped inside the timed region:
-//! uniform-square 585.7 ms, 690.4 ms, 1.257 s, ratios 0.47 and 0.55; clustered 523.9 ms,
-//! 762.6 ms, 1.066 s, 0.49 and 0.72; freeing a million clipped polygons is most of the
-//! difference.) At 10⁴ and 10⁵ points, under load average 4 to 6: uniform-square cells
+//! The same inputs timed interleaved right after (cells, clipped, the three
+//! triangulations, voronoice; 7 rounds, median CPU time of the thread; load average 1.7
+//! to 2.9):
+//!
+//! | input, n = 10⁶ | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
+//! |---|---|---|---|---|---|
+//! | uniform-square | 0.500 s | 0.568 s | 1.232 s | 0.41 | 0.46 |
+//! | clustered | 0.500 s | 0.548 s | 1.076 s | 0.46 | 0.51 |
+//!
+//! (In those rounds the triangulations took 0.384 s, 0.816 s and 0.676 s on uniform-square,
+//! ratio 0.57, and 0.384 s, 0.687 s, 0.715 s on clustered, 0.56. Under heavier load,
+//! average 4 to 6, voronoice slows more than compgeo: the interleaved ratios were then
+//! 0.35 and 0.42.) At 10⁴ and 10⁵ points, under load average 4 to 6: uniform-square cells
 //! 5.61 ms and 63.5 ms against voronoice's 6.46 ms and 106.9 ms (0.87, 0.59).
 //!
-//! The 10⁶ inputs timed interleaved (cells, clipped, then the triangulations, then
-//! voronoice; 7 rounds, median CPU time of the thread, which the other builds' load
-//! inflates less; load average 4 to 6):
-//!
-//! | input, n = 10⁶ | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
-//! |---|---|---|---|---|---|
-//! | uniform-square | 0.550 s | 0.655 s | 1.584 s | 0.35 | 0.41 |
-//! | clustered | 0.534 s | 0.628 s | 1.266 s | 0.42 | 0.50 |
-//!
-//! (A second uniform-square run at load average 2.5: 0.556 s, 0.639 s, 1.379 s; 0.40 and
-//! 0.46.) The previous version, which renumbered the points along a Z-order curve, then
-//! triangulated (a second spatial sort) and took the dual of the renumbered `Triangulation`,
-//! measured 0.48 (uniform-square) and 0.54 (clustered) interleaved, 0.57 in criterion.
-//! Now the dual reads the incremental builder's own arrays: the points in insertion order
-//! (BRIO rounds along a Hilbert curve), 32-bit triangles and half-edges, cells in insertion
-//! order. About three quarters of compgeo's time is the triangulation; of the rest, the
-//! walks around the sites (cache misses, and page faults on the fresh 48 MB row array) and
-//! the circumcentres take about equal shares.
+//! The previous version, which renumbered the points along a Z-order curve, then
+//! triangulated them (a second spatial sort) and took the dual of the renumbered
+//! `Triangulation`, measured 0.57 in criterion and 0.48 (uniform-square) and 0.54
+//! (clustered) interleaved. Now the dual reads the incremental builder's own arrays (the
+//! points in insertion order, 32-bit triangles and half-edges) and walks the cells in the
+//! Hilbert-curve order of their sites. About three quarters of compgeo's time is the
+//! triangulation; of the rest, the walks around the sites (cache misses, and page faults on
+//! the fresh 48 MB row array) and the circumcentres take about equal shares.
 
 use compgeo::delaunay::{divide_and_conquer, incremental, voronoi, ClipBox};
 use compgeo::gen::{points, PointKind};
