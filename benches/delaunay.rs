@@ -41,12 +41,19 @@
 //!
 //! Voronoi cells, 2026-11-23, same machine (`voronoi/*`; "clipped" clips every cell to the
 //! box voronoice is given; every diagram, voronoice's included, is dropped outside the
-//! timed region). Criterion medians, wall time, load average 2.3 to 2.9:
+//! timed region). Criterion medians, wall time, two runs a few minutes apart (load
+//! average 2.3 to 2.9, then 1.4 to 2.1); the ratios move by a few hundredths between runs:
 //!
-//! | input, n = 10⁶ | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
+//! | input, n | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
 //! |---|---|---|---|---|---|
-//! | uniform-square | 561.5 ms | 572.5 ms | 1.333 s | 0.42 | 0.43 |
-//! | clustered | 508.8 ms | 581.4 ms | 1.147 s | 0.44 | 0.51 |
+//! | uniform-square, 10⁶ (run 1) | 561.5 ms | 572.5 ms | 1.333 s | 0.42 | 0.43 |
+//! | uniform-square, 10⁶ (run 2) | 610.1 ms | 598.5 ms | 1.293 s | 0.47 | 0.46 |
+//! | clustered, 10⁶ (run 1) | 508.8 ms | 581.4 ms | 1.147 s | 0.44 | 0.51 |
+//! | clustered, 10⁶ (run 2) | 503.2 ms | 549.5 ms | 1.140 s | 0.44 | 0.48 |
+//! | uniform-square, 10⁵ | 42.5 ms | 50.9 ms | 67.0 ms | 0.63 | 0.76 |
+//! | uniform-square, 10⁴ | 3.81 ms | 4.29 ms | 4.24 ms | 0.90 | 1.01 |
+//! | clustered, 10⁵ | 41.8 ms | 49.9 ms | 67.3 ms | 0.62 | 0.74 |
+//! | clustered, 10⁴ | 3.88 ms | 4.49 ms | 4.29 ms | 0.90 | 1.05 |
 //!
 //! The same inputs timed interleaved right after (cells, clipped, the three
 //! triangulations, voronoice; 7 rounds, median CPU time of the thread; load average 1.7
@@ -60,8 +67,7 @@
 //! (In those rounds the triangulations took 0.384 s, 0.816 s and 0.676 s on uniform-square,
 //! ratio 0.57, and 0.384 s, 0.687 s, 0.715 s on clustered, 0.56. Under heavier load,
 //! average 4 to 6, voronoice slows more than compgeo: the interleaved ratios were then
-//! 0.35 and 0.42.) At 10⁴ and 10⁵ points, under load average 4 to 6: uniform-square cells
-//! 5.61 ms and 63.5 ms against voronoice's 6.46 ms and 106.9 ms (0.87, 0.59).
+//! 0.35 and 0.42, with the cells still walked in insertion order, a few per cent slower.)
 //!
 //! The previous version, which renumbered the points along a Z-order curve, then
 //! triangulated them (a second spatial sort) and took the dual of the renumbered
