@@ -91,8 +91,8 @@ pub fn incremental_with<C: Counter>(points: &[Point2], counter: &mut C) -> Resul
 }
 
 /// The builder's triangulation in its own vertex numbering: vertex `j` is `points[j]`, the
-/// `j`-th point inserted. [`voronoi`](super::voronoi) builds the dual from this directly:
-/// the insertion order is spatial, and the 32-bit arrays need no conversion.
+/// `j`-th point inserted. [`voronoi`](super::voronoi) builds the dual from this directly,
+/// with no renumbered copy: the 32-bit arrays are half the memory of a [`Triangulation`]'s.
 pub(super) struct LocalTriangulation {
     /// The input points in insertion order.
     pub(super) points: Vec<Point2>,
