@@ -35,6 +35,11 @@
 //! everything fits in cache, and our fixed costs (the BRIO keys, the ghost triangles) weigh
 //! more.
 //!
+//! Re-timed later the same day (voronoi built from the builder's own arrays; criterion,
+//! load average 4 to 6): uniform-square, 10⁶: incremental 658 ms, delaunator 1.374 s,
+//! spade bulk load 1.137 s, ratio 0.58. Interleaved CPU time, 7 rounds: uniform-square
+//! 0.404 s, 1.061 s, 0.751 s (0.54); clustered 0.405 s, 0.817 s, 0.743 s (0.55).
+//!
 //! Fortune's sweep (`fortune`, exact, for the growth comparison), one criterion run of the
 //! `delaunay/uniform-square` group on the same shared machine (load average about 2.5),
 //! 2026-11-23, medians:
@@ -53,26 +58,44 @@
 //! of it is the interval enclosure of each circle event and the breakpoint tests, a sixth
 //! linking the triangles (`Triangulation::from_triangles`).
 //!
-//! Voronoi cells, same machine and load, 2026-11-23 (`voronoi/uniform-square`, criterion
-//! medians, wall time; "clipped" clips every cell to the box voronoice is given):
+//! Voronoi cells, 2026-11-23, same machine (`voronoi/*`; "clipped" clips every cell to the
+//! box voronoice is given; every diagram, voronoice's included, is dropped outside the
+//! timed region). Criterion medians, wall time, two runs a few minutes apart (load
+//! average 2.3 to 2.9, then 1.4 to 2.1); the ratios move by a few hundredths between runs:
 //!
-//! | n | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
+//! | input, n | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
 //! |---|---|---|---|---|---|
-//! | 10⁴ | 4.11 ms | 4.68 ms | 5.47 ms | 0.75 | 0.86 |
-//! | 10⁵ | 57.3 ms | 78.2 ms | 94.5 ms | 0.61 | 0.83 |
-//! | 10⁶ | 0.922 s | 1.073 s | 1.822 s | 0.51 | 0.59 |
+//! | uniform-square, 10⁶ (run 1) | 561.5 ms | 572.5 ms | 1.333 s | 0.42 | 0.43 |
+//! | uniform-square, 10⁶ (run 2) | 610.1 ms | 598.5 ms | 1.293 s | 0.47 | 0.46 |
+//! | clustered, 10⁶ (run 1) | 508.8 ms | 581.4 ms | 1.147 s | 0.44 | 0.51 |
+//! | clustered, 10⁶ (run 2) | 503.2 ms | 549.5 ms | 1.140 s | 0.44 | 0.48 |
+//! | uniform-square, 10⁵ | 42.5 ms | 50.9 ms | 67.0 ms | 0.63 | 0.76 |
+//! | uniform-square, 10⁴ | 3.81 ms | 4.29 ms | 4.24 ms | 0.90 | 1.01 |
+//! | clustered, 10⁵ | 41.8 ms | 49.9 ms | 67.3 ms | 0.62 | 0.74 |
+//! | clustered, 10⁴ | 3.88 ms | 4.49 ms | 4.29 ms | 0.90 | 1.05 |
 //!
-//! The 10⁶ inputs timed interleaved (cells, clipped, voronoice, ...; 7 rounds, median CPU
-//! time of the thread):
+//! The same inputs timed interleaved right after (cells, clipped, the three
+//! triangulations, voronoice; 7 rounds, median CPU time of the thread; load average 1.7
+//! to 2.9):
 //!
 //! | input, n = 10⁶ | compgeo cells | compgeo clipped | voronoice | cells / voronoice | clipped / voronoice |
 //! |---|---|---|---|---|---|
-//! | uniform-square | 0.586 s | 0.650 s | 1.219 s | 0.48 | 0.53 |
-//! | clustered | 0.608 s | 0.676 s | 1.136 s | 0.54 | 0.59 |
+//! | uniform-square | 0.500 s | 0.568 s | 1.232 s | 0.41 | 0.46 |
+//! | clustered | 0.500 s | 0.548 s | 1.076 s | 0.46 | 0.51 |
 //!
-//! About two thirds of compgeo's time is the triangulation; the dual walks the sites in a
-//! Z-order numbering (see `compgeo::delaunay::voronoi`), and page faults on the fresh
-//! arrays are a sizeable share of the rest.
+//! (In those rounds the triangulations took 0.384 s, 0.816 s and 0.676 s on uniform-square,
+//! ratio 0.57, and 0.384 s, 0.687 s, 0.715 s on clustered, 0.56. Under heavier load,
+//! average 4 to 6, voronoice slows more than compgeo: the interleaved ratios were then
+//! 0.35 and 0.42, with the cells still walked in insertion order, a few per cent slower.)
+//!
+//! The previous version, which renumbered the points along a Z-order curve, then
+//! triangulated them (a second spatial sort) and took the dual of the renumbered
+//! `Triangulation`, measured 0.57 in criterion and 0.48 (uniform-square) and 0.54
+//! (clustered) interleaved. Now the dual reads the incremental builder's own arrays (the
+//! points in insertion order, 32-bit triangles and half-edges) and walks the cells in the
+//! Hilbert-curve order of their sites. About three quarters of compgeo's time is the
+//! triangulation; of the rest, the walks around the sites (cache misses, and page faults on
+//! the fresh 48 MB row array) and the circumcentres take about equal shares.
 
 use compgeo::delaunay::{divide_and_conquer, fortune, incremental, voronoi, ClipBox};
 use compgeo::gen::{points, PointKind};
@@ -154,11 +177,13 @@ fn voronoi_cells(c: &mut Criterion) {
             // One box for both crates: the sites' bounding box grown by a quarter.
             let bounds = ClipBox::around(&pts).unwrap();
             group.throughput(Throughput::Elements(n as u64));
+            // Every diagram is dropped outside the timed region, as `iter_batched` does for
+            // voronoice's.
             group.bench_with_input(BenchmarkId::new("compgeo-cells", n), &pts, |b, pts| {
-                b.iter(|| voronoi(black_box(pts)).unwrap())
+                b.iter_with_large_drop(|| voronoi(black_box(pts)).unwrap())
             });
             group.bench_with_input(BenchmarkId::new("compgeo-clipped", n), &pts, |b, pts| {
-                b.iter(|| voronoi(black_box(pts)).unwrap().clip(&bounds))
+                b.iter_with_large_drop(|| voronoi(black_box(pts)).unwrap().clip(&bounds))
             });
             let sites: Vec<voronoice::Point> = pts
                 .iter()

@@ -68,7 +68,7 @@
 //! | [`delaunay::lawson`] | O(n²) worst case: Θ(n²) in-circle tests on a parabola |
 //! | [`delaunay::fortune`] | O(n log n) expected (treap beach line, heap of circle events), exact event order |
 //! | [`delaunay::check_delaunay`] | O(n log n + t), exact |
-//! | [`delaunay::voronoi`] | the triangulation's time, then O(n) for the dual; clipping O(n) |
+//! | [`delaunay::voronoi`] | the triangulation's time, then O(n log n) for the dual (a sort along a curve, then O(n)); clipping O(n) |
 //! | [`delaunay::all_nearest_neighbours`] | O(n log n) expected; two distance evaluations per Delaunay edge |
 //! | [`delaunay::closest_pair`] | O(n log n) expected; the shortest Delaunay edge |
 //! | [`delaunay::closest_pair_divide_and_conquer`] | O(n log n) worst case, exact comparisons |

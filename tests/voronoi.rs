@@ -473,8 +473,8 @@ fn cli_prints_cells_and_clipped_cells() {
     assert_rejected(&["voronoi", "-"], Some("[]"));
 }
 
-/// `voronoi` (which triangulates the points renumbered along a curve) and the dual of the
-/// triangulation in input numbering give every site the same cell: the same vertices in
+/// `voronoi` (built from the incremental builder's own numbering, in insertion order) and
+/// the dual of the triangulation in input numbering give every site the same cell: the same vertices in
 /// the same cyclic order, bit for bit, and the same rays.
 fn check_relabelling(pts: &[Point2]) {
     let a = voronoi(pts).unwrap();
@@ -506,6 +506,10 @@ proptest! {
     ) {
         let pts: Vec<Point2> = pts.into_iter().map(|(x, y)| Point2::new(x as f64, y as f64)).collect();
         check_vertices(&pts);
+        // Duplicates and cocircular sites: `voronoi` (built from the builder's own
+        // numbering) against the dual of the input-numbered triangulation.
+        check_structure(&pts, &voronoi(&pts).unwrap());
+        check_relabelling(&pts);
         check_clip(&pts, &ClipBox::new(-10.0, -10.0, 10.0, 10.0).unwrap());
     }
 

@@ -23,19 +23,7 @@ pub(super) fn brio_order(points: &[Point2]) -> Vec<u32> {
     if n == 0 {
         return Vec::new();
     }
-    let (mut min_x, mut min_y, mut max_x, mut max_y) =
-        (points[0].x, points[0].y, points[0].x, points[0].y);
-    for p in points {
-        min_x = min_x.min(p.x);
-        max_x = max_x.max(p.x);
-        min_y = min_y.min(p.y);
-        max_y = max_y.max(p.y);
-    }
-    let cells = f64::from((1u32 << BITS) - 1);
-    // Halved coordinates: the width of [-MAX, MAX] would overflow.
-    let scale_x = grid_scale(min_x, max_x, cells);
-    let scale_y = grid_scale(min_y, max_y, cells);
-    let (half_min_x, half_min_y) = (0.5 * min_x, 0.5 * min_y);
+    let grid = Grid::over(points);
     // Rounds: the last one holds about n/2 points, the first one about 32.
     let rounds = (usize::BITS - n.leading_zeros()).saturating_sub(5) as usize;
     let mut rng = SplitMix(0x5EED_DE1A_0000_0001);
@@ -47,14 +35,11 @@ pub(super) fn brio_order(points: &[Point2]) -> Vec<u32> {
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            // `as` saturates, so rounding past the grid's ends stays on it.
-            let gx = ((0.5 * p.x - half_min_x) * scale_x) as u32;
-            let gy = ((0.5 * p.y - half_min_y) * scale_y) as u32;
             let level = ((rng.next() as u32).trailing_zeros() as usize).min(rounds);
             let round = rounds - level;
             round_of.push(round as u8);
             sizes[round] += 1;
-            (hilbert_index(gx, gy) << 32) | i as u64
+            (grid.curve_index(*p) << 32) | i as u64
         })
         .collect();
     let mut start = Vec::with_capacity(rounds + 2);
@@ -72,6 +57,64 @@ pub(super) fn brio_order(points: &[Point2]) -> Vec<u32> {
         sorted[start[r]..start[r + 1]].sort_unstable();
     }
     sorted.into_iter().map(|key| key as u32).collect()
+}
+
+/// The ids `0..points.len()` sorted along the Hilbert curve over the points' bounding box
+/// (ties by id).
+///
+/// O(n log n) time, O(n) auxiliary space; O(n log r) for points that come as r runs already
+/// in curve order, as the BRIO rounds do (the stable sort merges natural runs).
+pub(super) fn curve_order(points: &[Point2]) -> Vec<u32> {
+    if points.is_empty() {
+        return Vec::new();
+    }
+    let grid = Grid::over(points);
+    let mut keys: Vec<u64> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (grid.curve_index(*p) << 32) | i as u64)
+        .collect();
+    keys.sort();
+    keys.into_iter().map(|key| key as u32).collect()
+}
+
+/// The `2^BITS` by `2^BITS` grid over a bounding box, in halved coordinates (the width of
+/// `[-MAX, MAX]` would overflow).
+struct Grid {
+    half_min_x: f64,
+    half_min_y: f64,
+    scale_x: f64,
+    scale_y: f64,
+}
+
+impl Grid {
+    /// The grid over the bounding box of `points` (not empty).
+    fn over(points: &[Point2]) -> Grid {
+        let (mut min_x, mut min_y, mut max_x, mut max_y) =
+            (points[0].x, points[0].y, points[0].x, points[0].y);
+        for p in points {
+            min_x = min_x.min(p.x);
+            max_x = max_x.max(p.x);
+            min_y = min_y.min(p.y);
+            max_y = max_y.max(p.y);
+        }
+        let cells = f64::from((1u32 << BITS) - 1);
+        Grid {
+            half_min_x: 0.5 * min_x,
+            half_min_y: 0.5 * min_y,
+            scale_x: grid_scale(min_x, max_x, cells),
+            scale_y: grid_scale(min_y, max_y, cells),
+        }
+    }
+
+    /// The position of `p`'s cell along the Hilbert curve.
+    #[inline]
+    fn curve_index(&self, p: Point2) -> u64 {
+        // `as` saturates, so rounding past the grid's ends stays on it.
+        let gx = ((0.5 * p.x - self.half_min_x) * self.scale_x) as u32;
+        let gy = ((0.5 * p.y - self.half_min_y) * self.scale_y) as u32;
+        hilbert_index(gx, gy)
+    }
 }
 
 /// The factor that maps `0.5 * (v - min)` onto `[0, cells]`, 0 for an empty range.
@@ -179,6 +222,30 @@ mod tests {
             let (dx, dy) = (w[0].1.abs_diff(w[1].1), w[0].2.abs_diff(w[1].2));
             assert_eq!(dx + dy, 1, "{w:?}");
         }
+    }
+
+    #[test]
+    fn curve_order_sorts_by_curve_index_then_id() {
+        let mut rng = SplitMix(7);
+        let mut pts: Vec<Point2> = (0..500)
+            .map(|_| {
+                let mut u = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+                Point2::new(u() * 10.0 - 5.0, u() * 1e-3)
+            })
+            .collect();
+        pts.extend_from_within(..50);
+        let order = curve_order(&pts);
+        let mut seen = order.clone();
+        seen.sort_unstable();
+        assert_eq!(seen, (0..pts.len() as u32).collect::<Vec<_>>());
+        let grid = Grid::over(&pts);
+        let key = |i: u32| (grid.curve_index(pts[i as usize]), i);
+        assert!(order.windows(2).all(|w| key(w[0]) < key(w[1])));
+        // Equal points share a cell, so somewhere the tie is broken by id.
+        assert!(order
+            .windows(2)
+            .any(|w| key(w[0]).0 == key(w[1]).0 && w[0] < w[1]));
+        assert!(curve_order(&[]).is_empty());
     }
 
     #[test]

@@ -84,6 +84,40 @@ pub fn incremental(points: &[Point2]) -> Result<Triangulation> {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn incremental_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Triangulation> {
+    match incremental_local(points, counter)? {
+        Some(local) => Ok(local.into_triangulation(points)),
+        None => degenerate(points),
+    }
+}
+
+/// The builder's triangulation in its own vertex numbering: vertex `j` is `points[j]`, the
+/// `j`-th point inserted. [`voronoi`](super::voronoi) builds the dual from this directly,
+/// with no renumbered copy: the 32-bit arrays are half the memory of a [`Triangulation`]'s.
+pub(super) struct LocalTriangulation {
+    /// The input points in insertion order.
+    pub(super) points: Vec<Point2>,
+    /// The input index of each vertex; for the vertex kept from a group of equal points,
+    /// the smallest input index of the group.
+    pub(super) order: Vec<u32>,
+    /// Three vertex ids per triangle, counter-clockwise.
+    pub(super) triangles: Vec<u32>,
+    /// The opposite of every half-edge, [`NO_TWIN`] on the hull.
+    pub(super) halfedges: Vec<u32>,
+    /// `[dropped, kept]` input indices, as [`Triangulation::duplicates`].
+    pub(super) duplicates: Vec<[usize; 2]>,
+    /// The hull's boundary as vertex ids, counter-clockwise.
+    hull: Vec<u32>,
+}
+
+/// [`LocalTriangulation::halfedges`] of a hull half-edge.
+pub(super) const NO_TWIN: u32 = u32::MAX;
+
+/// [`incremental_with`] up to the renumbering: the triangulation in insertion order, or
+/// `None` if the points have no three non-collinear ones (see [`degenerate`]).
+pub(super) fn incremental_local<C: Counter>(
+    points: &[Point2],
+    counter: &mut C,
+) -> Result<Option<LocalTriangulation>> {
     validate(points)?;
     if points.len() > MAX_POINTS {
         return Err(Error::InvalidParameter {
@@ -96,21 +130,53 @@ pub fn incremental_with<C: Counter>(points: &[Point2], counter: &mut C) -> Resul
     }
     let mut order = brio_order(points);
     let Some(first) = first_triangle(points, &mut order, counter) else {
-        return Triangulation::from_triangles(points, &[], find_duplicates(points));
+        return Ok(None);
     };
     let local: Vec<Point2> = order.iter().map(|&i| points[i as usize]).collect();
     let mut mesh = Mesh::new(local, first, counter);
     for k in 3..order.len() as u32 {
         mesh.insert(k);
     }
-    let t = mesh.finish(points, order);
+    let t = mesh.finish(order);
     // The cheap postcondition; tests run the full exact checker.
     debug_assert!(t
         .halfedges
         .iter()
         .enumerate()
-        .all(|(e, &f)| f == EMPTY || t.halfedges[f] == e));
-    Ok(t)
+        .all(|(e, &f)| f == NO_TWIN || t.halfedges[f as usize] == e as u32));
+    Ok(Some(t))
+}
+
+/// The triangulation of points with no three non-collinear ones: no triangles.
+pub(super) fn degenerate(points: &[Point2]) -> Result<Triangulation> {
+    Triangulation::from_triangles(points, &[], find_duplicates(points))
+}
+
+impl LocalTriangulation {
+    /// Renumbers the vertices with their input indices.
+    fn into_triangulation(self, points: &[Point2]) -> Triangulation {
+        let order = &self.order;
+        let mut hull: Vec<usize> = self
+            .hull
+            .iter()
+            .map(|&v| order[v as usize] as usize)
+            .collect();
+        rotate_to_lex_min(points, &mut hull);
+        Triangulation {
+            triangles: self
+                .triangles
+                .iter()
+                .map(|&v| order[v as usize] as usize)
+                .collect(),
+            halfedges: self
+                .halfedges
+                .iter()
+                .map(|&f| if f == NO_TWIN { EMPTY } else { f as usize })
+                .collect(),
+            hull,
+            duplicates: self.duplicates,
+        }
+    }
 }
 
 /// More points than this would overflow the 32-bit half-edge ids (about 6n half-edges).
@@ -382,12 +448,12 @@ impl<'c, C: Counter> Mesh<'c, C> {
         self.halfedges.extend_from_slice(&opposite);
     }
 
-    /// Drops the ghosts, maps vertex ids back to input indices (`order[id]`, or the smallest
-    /// index of a merged group) and reads the hull off the ghosts.
-    fn finish(mut self, points: &[Point2], mut order: Vec<u32>) -> Triangulation {
+    /// Drops the ghosts, reads the hull off them, and maps each kept vertex of a merged group
+    /// to the smallest input index of the group.
+    fn finish(mut self, mut order: Vec<u32>) -> LocalTriangulation {
         let duplicates = self.resolve_duplicates(&mut order);
         let ghosts = self.ghost_ring();
-        let hull_ids: Vec<u32> = ghosts
+        let hull = ghosts
             .iter()
             .map(|&g| {
                 let b = 3 * g as usize;
@@ -395,26 +461,13 @@ impl<'c, C: Counter> Mesh<'c, C> {
             })
             .collect();
         self.compact(&ghosts);
-        let mut hull: Vec<usize> = hull_ids
-            .iter()
-            .map(|&v| order[v as usize] as usize)
-            .collect();
-        rotate_to_lex_min(points, &mut hull);
-        let triangles = self
-            .triangles
-            .iter()
-            .map(|&v| order[v as usize] as usize)
-            .collect();
-        let halfedges = self
-            .halfedges
-            .iter()
-            .map(|&f| if f == u32::MAX { EMPTY } else { f as usize })
-            .collect();
-        Triangulation {
-            triangles,
-            halfedges,
-            hull,
+        LocalTriangulation {
+            points: self.points,
+            order,
+            triangles: self.triangles,
+            halfedges: self.halfedges,
             duplicates,
+            hull,
         }
     }
 
@@ -463,7 +516,7 @@ impl<'c, C: Counter> Mesh<'c, C> {
         }
     }
 
-    /// Removes the ghosts in O(h) moves: real triangles' links to ghosts become `u32::MAX`,
+    /// Removes the ghosts in O(h) moves: real triangles' links to ghosts become [`NO_TWIN`],
     /// then real triangles from the tail fill the ghosts' slots below the real count.
     fn compact(&mut self, ghosts: &[u32]) {
         let count = self.triangles.len() / 3;
@@ -471,7 +524,7 @@ impl<'c, C: Counter> Mesh<'c, C> {
         for &g in ghosts {
             let r = 3 * g as usize + self.ghost_real_edge(g);
             let twin = self.halfedges[r] as usize;
-            self.halfedges[twin] = u32::MAX;
+            self.halfedges[twin] = NO_TWIN;
         }
         let mut holes = ghosts.iter().filter(|&&g| (g as usize) < real);
         for t in real..count {
@@ -487,7 +540,7 @@ impl<'c, C: Counter> Mesh<'c, C> {
                 self.triangles[to] = self.triangles[from];
                 let f = self.halfedges[from];
                 self.halfedges[to] = f;
-                if f != u32::MAX {
+                if f != NO_TWIN {
                     self.halfedges[f as usize] = to as u32;
                 }
             }
