@@ -2,6 +2,7 @@
 //! back end (so every identity holds with `==`), plus the `f64` path against it, the
 //! convex-hull property with exact orientations, degenerate and bad input, and the CLI.
 
+#[cfg(feature = "cli")]
 mod common;
 
 use compgeo::count::Counts;
@@ -625,6 +626,7 @@ fn bad_input_is_an_error_never_a_panic() {
     assert!(Bezier::<f64, 2>::from_monomial(&[]).is_err());
 }
 
+#[cfg(feature = "cli")]
 #[test]
 fn cli_evaluates_splits_elevates_and_differentiates_exactly() {
     use common::run_json;
@@ -739,6 +741,7 @@ fn cli_evaluates_splits_elevates_and_differentiates_exactly() {
     assert_eq!(f["point"], serde_json::json!([2.0, 1.5]));
 }
 
+#[cfg(feature = "cli")]
 #[test]
 fn cli_rejects_bad_input_with_exit_code_2() {
     use common::assert_rejected;

@@ -5,7 +5,7 @@ mod common;
 
 use compgeo::count::Counts;
 use compgeo::delaunay::{
-    check_delaunay, find_duplicates, incremental, incremental_with, Algorithm, Triangulation,
+    check_delaunay, find_duplicates, incremental, incremental_with, Triangulation,
 };
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::Point2;
@@ -263,9 +263,11 @@ fn parabola_in_x_order_stays_near_linear_in_flips() {
     );
 }
 
+#[cfg(feature = "cli")]
 #[test]
 fn cli_prints_the_triangulation_and_rejects_bad_input() {
     use common::{assert_rejected, run_json};
+    use compgeo::delaunay::Algorithm;
     let pts = points(PointKind::Grid, 30, 3).unwrap();
     let mut with_copy = pts.clone();
     with_copy.push(pts[4]);

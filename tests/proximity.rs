@@ -4,6 +4,7 @@
 
 mod common;
 
+#[cfg(feature = "cli")]
 use common::{assert_rejected, run_json};
 use compgeo::count::Counts;
 use compgeo::delaunay::{
@@ -376,6 +377,7 @@ fn bad_input_is_an_error() {
     }
 }
 
+#[cfg(feature = "cli")]
 #[test]
 fn cli_proximity_commands() {
     let input = "[[0,0],[4,0],[4,4],[0,4],[1,1],[1,1]]";

@@ -5,6 +5,7 @@
 
 mod common;
 
+#[cfg(feature = "cli")]
 use common::{assert_rejected, run_json};
 use compgeo::delaunay::{
     dual, find_duplicates, incremental, voronoi, ClipBox, Triangulation, Voronoi,
@@ -430,6 +431,7 @@ fn bad_input_is_an_error() {
     assert!(matches!(ClipBox::around(&[]), Err(Error::Empty { .. })));
 }
 
+#[cfg(feature = "cli")]
 #[test]
 fn cli_prints_cells_and_clipped_cells() {
     let input = "[[0,0],[2,0],[2,2],[0,2],[1,1],[1,1]]";

@@ -1,11 +1,15 @@
-//! Helpers shared by the integration tests that run the `compgeo` binary.
+//! Helpers shared by the integration tests: running the `compgeo` binary (with the `cli`
+//! feature) and spade's triangles as a peer oracle.
 // Each test crate compiles its own copy and uses only some of the helpers.
 #![allow(dead_code)]
 
+#[cfg(feature = "cli")]
 use assert_cmd::cargo::cargo_bin_cmd;
+#[cfg(feature = "cli")]
 use serde_json::Value;
 
 /// Runs the binary with `args` and optional `stdin`; returns (exit code, stdout, stderr).
+#[cfg(feature = "cli")]
 pub fn run(args: &[&str], stdin: Option<&str>) -> (i32, String, String) {
     let mut cmd = cargo_bin_cmd!("compgeo");
     cmd.args(args);
@@ -21,6 +25,7 @@ pub fn run(args: &[&str], stdin: Option<&str>) -> (i32, String, String) {
 }
 
 /// Runs a command that must succeed and print one JSON line; returns it parsed.
+#[cfg(feature = "cli")]
 pub fn run_json(args: &[&str], stdin: Option<&str>) -> Value {
     let (code, out, err) = run(args, stdin);
     assert_eq!(code, 0, "{args:?}: {err}");
@@ -31,6 +36,7 @@ pub fn run_json(args: &[&str], stdin: Option<&str>) -> Value {
 
 /// Asserts the bad-input contract (exit code 2, nothing on stdout, exactly one line on stderr
 /// starting `error: `) and returns the error line.
+#[cfg(feature = "cli")]
 pub fn assert_rejected(args: &[&str], stdin: Option<&str>) -> String {
     let (code, out, err) = run(args, stdin);
     assert_eq!(code, 2, "{args:?}: stderr {err}");
