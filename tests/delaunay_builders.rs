@@ -7,15 +7,16 @@
 use compgeo::count::Counts;
 use compgeo::delaunay::{
     check_delaunay, divide_and_conquer, divide_and_conquer_with, find_duplicates, fortune,
-    incremental, lawson, lawson_with, prev_halfedge, Triangulation, EMPTY,
+    incremental, lawson, lawson_with, Triangulation, EMPTY,
 };
 use compgeo::gen::{points, PointKind};
-use compgeo::geometry::{incircle, InCircle, Point2};
+use compgeo::geometry::Point2;
 use compgeo::{Error, Result};
 use proptest::prelude::*;
 
-#[cfg(feature = "cli")]
 mod common;
+
+use common::{is_unique_delaunay, triangle_set};
 
 type Builder = fn(&[Point2]) -> Result<Triangulation>;
 
@@ -39,34 +40,6 @@ fn build_all_checked(pts: &[Point2], what: &str) -> Vec<Triangulation> {
             t
         })
         .collect()
-}
-
-/// The triangles as a sorted list of sorted vertex triples.
-fn triangle_set(t: &Triangulation) -> Vec<[usize; 3]> {
-    let mut out: Vec<[usize; 3]> = (0..t.triangle_count())
-        .map(|k| {
-            let mut tri = t.triangle(k);
-            tri.sort_unstable();
-            tri
-        })
-        .collect();
-    out.sort_unstable();
-    out
-}
-
-/// Whether the Delaunay triangulation is unique: no interior edge of `t` (a valid Delaunay
-/// triangulation) has its opposite vertex exactly on the circumcircle. Then every correct
-/// builder must return the same triangle set.
-fn is_unique_delaunay(pts: &[Point2], t: &Triangulation) -> bool {
-    (0..t.triangles.len()).all(|e| {
-        let f = t.halfedges[e];
-        if f == EMPTY {
-            return true;
-        }
-        let [a, b, c] = t.triangle(e / 3);
-        let d = t.triangles[prev_halfedge(f)];
-        incircle(pts[a], pts[b], pts[c], pts[d]) != InCircle::On
-    })
 }
 
 /// Asserts that all builders return the same triangle set when the triangulation is unique;
@@ -131,7 +104,6 @@ fn builders_agree_on_general_position_input() {
                 assert_agree_if_unique(&pts, &results, &what),
                 "{what}: random input is in general position"
             );
-            #[cfg(feature = "cli")]
             assert_eq!(
                 triangle_set(&results[0]),
                 common::spade_triangles(&pts),
@@ -424,7 +396,6 @@ proptest! {
         let what = format!("{pts:?}");
         let results = build_all_checked(&pts, &what);
         if assert_agree_if_unique(&pts, &results, &what) && results[0].duplicates.is_empty() {
-            #[cfg(feature = "cli")]
             prop_assert_eq!(triangle_set(&results[0]), common::spade_triangles(&pts));
         }
     }

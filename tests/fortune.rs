@@ -7,11 +7,14 @@
 
 use compgeo::count::Counts;
 use compgeo::delaunay::{
-    check_delaunay, fortune, fortune_with, incremental, prev_halfedge, Algorithm, Triangulation,
-    EMPTY,
+    check_delaunay, fortune, fortune_with, incremental, Algorithm, Triangulation,
 };
 use compgeo::gen::{points, PointKind};
-use compgeo::geometry::{incircle, InCircle, Point2};
+use compgeo::geometry::Point2;
+
+mod common;
+
+use common::{is_unique_delaunay, triangle_set};
 
 /// Runs Fortune's sweep on `pts` and asserts the exact checker passes.
 fn checked(pts: &[Point2], what: &str) -> Triangulation {
@@ -20,33 +23,6 @@ fn checked(pts: &[Point2], what: &str) -> Triangulation {
         panic!("fortune on {what}: {e}");
     }
     t
-}
-
-/// The triangles as a sorted list of sorted vertex triples.
-fn triangle_set(t: &Triangulation) -> Vec<[usize; 3]> {
-    let mut out: Vec<[usize; 3]> = (0..t.triangle_count())
-        .map(|k| {
-            let mut tri = t.triangle(k);
-            tri.sort_unstable();
-            tri
-        })
-        .collect();
-    out.sort_unstable();
-    out
-}
-
-/// Whether the Delaunay triangulation is unique: no interior edge of `t` (a valid Delaunay
-/// triangulation) has its opposite vertex exactly on the circumcircle.
-fn is_unique_delaunay(pts: &[Point2], t: &Triangulation) -> bool {
-    (0..t.triangles.len()).all(|e| {
-        let f = t.halfedges[e];
-        if f == EMPTY {
-            return true;
-        }
-        let [a, b, c] = t.triangle(e / 3);
-        let d = t.triangles[prev_halfedge(f)];
-        incircle(pts[a], pts[b], pts[c], pts[d]) != InCircle::On
-    })
 }
 
 /// Checks Fortune's result and, where the triangulation is unique, that it equals the

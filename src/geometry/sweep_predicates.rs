@@ -261,12 +261,17 @@ impl Interval {
         if !self.is_bounded() || !o.is_bounded() {
             return Interval::ENTIRE;
         }
-        let p = [
+        Interval::around_corners([
             self.lo * o.lo,
             self.lo * o.hi,
             self.hi * o.lo,
             self.hi * o.hi,
-        ];
+        ])
+    }
+
+    /// The outward-rounded hull of the four corner values of a product or quotient.
+    #[inline]
+    fn around_corners(p: [f64; 4]) -> Interval {
         Interval::outward(
             p[0].min(p[1]).min(p[2].min(p[3])),
             p[0].max(p[1]).max(p[2].max(p[3])),
@@ -291,16 +296,12 @@ impl Interval {
         if !self.is_bounded() || !o.is_bounded() || (o.lo <= 0.0 && o.hi >= 0.0) {
             return Interval::ENTIRE;
         }
-        let p = [
+        Interval::around_corners([
             self.lo / o.lo,
             self.lo / o.hi,
             self.hi / o.lo,
             self.hi / o.hi,
-        ];
-        Interval::outward(
-            p[0].min(p[1]).min(p[2].min(p[3])),
-            p[0].max(p[1]).max(p[2].max(p[3])),
-        )
+        ])
     }
 
     /// The square root of the non-negative part (the exact value is a sum of squares).

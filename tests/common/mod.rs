@@ -76,3 +76,37 @@ pub fn spade_triangles(pts: &[compgeo::geometry::Point2]) -> Vec<[usize; 3]> {
     out.sort_unstable();
     out
 }
+
+/// A triangulation's triangles as a sorted list of sorted vertex triples, to compare the
+/// results of different builders.
+pub fn triangle_set(t: &compgeo::delaunay::Triangulation) -> Vec<[usize; 3]> {
+    let mut out: Vec<[usize; 3]> = (0..t.triangle_count())
+        .map(|k| {
+            let mut tri = t.triangle(k);
+            tri.sort_unstable();
+            tri
+        })
+        .collect();
+    out.sort_unstable();
+    out
+}
+
+/// Whether the Delaunay triangulation is unique: no interior edge of `t` (a valid Delaunay
+/// triangulation) has its opposite vertex exactly on the circumcircle. Then every correct
+/// builder must return the same triangle set.
+pub fn is_unique_delaunay(
+    pts: &[compgeo::geometry::Point2],
+    t: &compgeo::delaunay::Triangulation,
+) -> bool {
+    use compgeo::delaunay::{prev_halfedge, EMPTY};
+    use compgeo::geometry::{incircle, InCircle};
+    (0..t.triangles.len()).all(|e| {
+        let f = t.halfedges[e];
+        if f == EMPTY {
+            return true;
+        }
+        let [a, b, c] = t.triangle(e / 3);
+        let d = t.triangles[prev_halfedge(f)];
+        incircle(pts[a], pts[b], pts[c], pts[d]) != InCircle::On
+    })
+}
