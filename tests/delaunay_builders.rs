@@ -159,8 +159,11 @@ fn huge_and_tiny_magnitudes_in_one_set() {
         Point2::new(-f64::MAX, f64::MAX),
         Point2::new(f64::MAX, -f64::MAX),
         Point2::new(1e300, 1e-300),
+        Point2::new(-1e-300, 1e300),
     ]);
-    build_all_checked(&pts, "huge, tiny and unit points");
+    let what = "huge, tiny and unit points";
+    let results = build_all_checked(&pts, what);
+    assert_agree_if_unique(&pts, &results, what);
     // Only points near the origin next to the extreme ones: all of them are squeezed into
     // fans around the origin, where inexact code collapses.
     let mut pts = points(PointKind::Tiny, 30, 4).unwrap();
@@ -169,7 +172,9 @@ fn huge_and_tiny_magnitudes_in_one_set() {
         Point2::new(0.0, 1e300),
         Point2::new(-1e300, -1e300),
     ]);
-    build_all_checked(&pts, "tiny points inside a huge triangle");
+    let what = "tiny points inside a huge triangle";
+    let results = build_all_checked(&pts, what);
+    assert_agree_if_unique(&pts, &results, what);
 }
 
 #[test]
