@@ -466,13 +466,7 @@ const SMALL_BITS: u32 = 10;
 /// The coordinates as integers below `2^SMALL_BITS` in magnitude, all scaled by one power of
 /// two, if they are (grids and lattices, whose circles tie exactly and often).
 fn small_ints(coords: &[f64]) -> Option<Vec<i128>> {
-    let parts: Vec<(bool, u64, i32)> = coords.iter().map(|&v| odd_parts(v)).collect();
-    let base = parts
-        .iter()
-        .filter(|&&(_, m, _)| m != 0)
-        .map(|&(_, _, e)| e)
-        .min()
-        .unwrap_or(0);
+    let (parts, base) = odd_parts_and_base(coords);
     parts
         .iter()
         .map(|&(negative, m, e)| {
@@ -549,9 +543,9 @@ fn sign_plus_roots(x: &BigInt, p: &BigInt, q: &BigInt) -> i32 {
     }
 }
 
-/// Every coordinate as an exact big integer, all scaled by the same power of two (the
-/// largest that keeps them integers).
-fn exact_coords(coords: &[f64]) -> Vec<BigInt> {
+/// Each coordinate's odd parts (sign, odd mantissa, exponent) and the least exponent among
+/// the non-zero ones (0 if all are zero): the power of two that scales them all to integers.
+fn odd_parts_and_base(coords: &[f64]) -> (Vec<(bool, u64, i32)>, i32) {
     let parts: Vec<(bool, u64, i32)> = coords.iter().map(|&v| odd_parts(v)).collect();
     let base = parts
         .iter()
@@ -559,6 +553,13 @@ fn exact_coords(coords: &[f64]) -> Vec<BigInt> {
         .map(|&(_, _, e)| e)
         .min()
         .unwrap_or(0);
+    (parts, base)
+}
+
+/// Every coordinate as an exact big integer, all scaled by the same power of two (the
+/// largest that keeps them integers).
+fn exact_coords(coords: &[f64]) -> Vec<BigInt> {
+    let (parts, base) = odd_parts_and_base(coords);
     parts
         .iter()
         .map(|&(negative, m, e)| {
