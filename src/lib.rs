@@ -42,6 +42,7 @@
 //! | [`graph::course_greedy_colouring`] | O(n² + m) time, exactly n(n−1)/2 adjacency tests |
 //! | [`graph::greedy_colouring`] (any order) | O(n + m) time |
 //! | [`graph::dsatur`] | O((n + m) log n) time |
+//! | [`graph::dsatur_tabu`] (DSatur, then a tabu search for fewer colours) | O((n + m) log n) time, at most 20(n + 2m) search steps |
 //! | [`graph::prim`] | O(m log n) time (simple graphs), binary heap |
 //! | [`graph::kruskal`] | O(m log m) time, union–find |
 //! | [`graph::boruvka`] | O(m log n) time, at most ⌈log₂ n⌉ rounds |

@@ -37,7 +37,7 @@ pub(super) struct SearchArgs {
 /// Arguments of `compgeo colour`.
 #[derive(Debug, Args)]
 pub(super) struct ColourArgs {
-    /// course, greedy, largest-first, smallest-last or dsatur
+    /// course, greedy, largest-first, smallest-last, dsatur or dsatur-tabu
     #[arg(long, short)]
     algorithm: ColouringAlgorithm,
     #[command(flatten)]

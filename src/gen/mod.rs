@@ -39,6 +39,8 @@ pub use graphs::{graph, with_random_weights, EdgeList, GraphKind};
 pub use points::{points, PointKind, MAX_COCIRCULAR};
 pub use sequences::{sequence, sequence_f64, SequenceKind, RANDOM_KEY_BOUND};
 
+pub(crate) use rng::Rng;
+
 use crate::error::{Error, Result};
 
 /// The most points [`points`] generates in one call: 2^27. It keeps every exactly

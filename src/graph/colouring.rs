@@ -49,16 +49,20 @@ pub enum ColouringAlgorithm {
     SmallestLast,
     /// [`dsatur`], `dsatur`.
     Dsatur,
+    /// [`dsatur_tabu`](super::dsatur_tabu): DSatur, then a tabu search for fewer colours,
+    /// `dsatur-tabu`.
+    DsaturTabu,
 }
 
 impl ColouringAlgorithm {
     /// Every strategy, in the order above.
-    pub const ALL: [ColouringAlgorithm; 5] = [
+    pub const ALL: [ColouringAlgorithm; 6] = [
         ColouringAlgorithm::Course,
         ColouringAlgorithm::Greedy,
         ColouringAlgorithm::LargestFirst,
         ColouringAlgorithm::SmallestLast,
         ColouringAlgorithm::Dsatur,
+        ColouringAlgorithm::DsaturTabu,
     ];
 
     /// The kebab-case name.
@@ -69,6 +73,7 @@ impl ColouringAlgorithm {
             ColouringAlgorithm::LargestFirst => "largest-first",
             ColouringAlgorithm::SmallestLast => "smallest-last",
             ColouringAlgorithm::Dsatur => "dsatur",
+            ColouringAlgorithm::DsaturTabu => "dsatur-tabu",
         }
     }
 }
@@ -101,7 +106,7 @@ impl FromStr for ColouringAlgorithm {
 ///
 /// # Complexity
 /// That of the strategy: O(n²) for `Course`, O(n + m) for the other greedy orders,
-/// O((n + m) log n) for `Dsatur`.
+/// O((n + m) log n) for `Dsatur` and `DsaturTabu`.
 ///
 /// ```
 /// use compgeo::graph::{colour, is_proper_colouring, Graph, ColouringAlgorithm};
@@ -137,6 +142,7 @@ pub fn colour_with<C: Counter>(g: &Graph, strategy: ColouringAlgorithm, c: &mut 
         ColouringAlgorithm::LargestFirst => largest_first_order(g),
         ColouringAlgorithm::SmallestLast => smallest_last_order(g),
         ColouringAlgorithm::Dsatur => return dsatur_with(g, c),
+        ColouringAlgorithm::DsaturTabu => return super::dsatur_tabu_with(g, c),
     };
     let result = match strategy {
         ColouringAlgorithm::Course => course_greedy_colouring_with(g, &natural, c),

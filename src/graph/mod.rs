@@ -14,6 +14,7 @@
 //! | [`course_greedy_colouring`] | O(n²), exactly n(n−1)/2 adjacency tests | adjacency tests |
 //! | [`greedy_colouring`] (any order, [`largest_first_order`], [`smallest_last_order`]) | O(n + m) | edge visits |
 //! | [`dsatur`] | O((n + m) log n) | heap comparisons |
+//! | [`dsatur_tabu`] (DSatur, then [`tabu_recolour`] for fewer colours) | O((n + m) log n) | heap comparisons and moves evaluated |
 //! | [`prim`] (the seed's greedy tree) | O(m log n) | heap comparisons |
 //! | [`kruskal`] | O(m log m) | sort comparisons |
 //! | [`boruvka`] | O(m log n) | edge visits |
@@ -24,6 +25,7 @@ mod colouring;
 mod graph;
 mod heap;
 mod mst;
+mod tabu;
 mod traverse;
 mod union_find;
 
@@ -37,6 +39,7 @@ pub use mst::{
     boruvka, boruvka_with, is_spanning_forest, kruskal, kruskal_with, prim, prim_with,
     MstAlgorithm, SpanningForest,
 };
+pub use tabu::{dsatur_tabu, dsatur_tabu_with, tabu_recolour, tabu_recolour_with, TABU_EFFORT};
 pub use traverse::{
     bfs, bfs_with, components, dfs, dfs_with, is_connected, is_search_tree, search_trace,
     trace_table, Components, Search, SearchKind, TraceRow, TRACE_MAX_VERTICES,
