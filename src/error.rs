@@ -78,11 +78,12 @@ pub enum Error {
 /// `Result` with the crate's [`enum@Error`].
 pub type Result<T> = std::result::Result<T, Error>;
 
-/// Finds the algorithm named `s` among `all` (the `FromStr` of every `Algorithm` enum), or
-/// an [`Error::InvalidParameter`] named `"algorithm"` that lists the valid names:
+/// Finds the item named `s` among `all` (the `FromStr` of the crate's name enums), or an
+/// [`Error::InvalidParameter`] named `parameter` that lists the valid names:
 /// "unknown {what} `s`; valid names: a, b, c".
-pub(crate) fn algorithm_named<A: Copy>(
+pub(crate) fn named<A: Copy>(
     s: &str,
+    parameter: &'static str,
     what: &str,
     all: &[A],
     name: impl Fn(A) -> &'static str,
@@ -91,12 +92,22 @@ pub(crate) fn algorithm_named<A: Copy>(
         .copied()
         .find(|&a| name(a) == s)
         .ok_or_else(|| Error::InvalidParameter {
-            name: "algorithm",
+            name: parameter,
             reason: format!(
                 "unknown {what} `{s}`; valid names: {}",
                 all.iter().map(|&a| name(a)).collect::<Vec<_>>().join(", ")
             ),
         })
+}
+
+/// [`named`] for the `FromStr` of every `Algorithm` enum: the parameter is `"algorithm"`.
+pub(crate) fn algorithm_named<A: Copy>(
+    s: &str,
+    what: &str,
+    all: &[A],
+    name: impl Fn(A) -> &'static str,
+) -> Result<A> {
+    named(s, "algorithm", what, all, name)
 }
 
 #[cfg(test)]

@@ -74,7 +74,7 @@ fn kind_names_round_trip_and_errors_list_them() {
     let names: HashSet<_> = PointKind::ALL.iter().map(|k| k.name()).collect();
     assert_eq!(names.len(), PointKind::ALL.len());
     let err = "square".parse::<PointKind>().unwrap_err().to_string();
-    assert!(err.contains("'square'"), "{err}");
+    assert!(err.contains("`square`"), "{err}");
     assert!(
         PointKind::ALL.iter().all(|k| err.contains(k.name())),
         "{err}"

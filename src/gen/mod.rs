@@ -41,7 +41,7 @@ pub use sequences::{sequence, sequence_f64, SequenceKind, RANDOM_KEY_BOUND};
 
 pub(crate) use rng::Rng;
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 /// The most points [`points`] generates in one call: 2^27. It keeps every exactly
 /// constructed kind exact (parabola `x^2 <= 2^52`, collinear and grid coordinates below
@@ -54,21 +54,13 @@ pub const MAX_VERTICES: usize = 1 << 27;
 /// The most edges [`graph`] generates: 2^28.
 pub const MAX_EDGES: usize = 1 << 28;
 
-/// Finds the kind named `s` among `all`, or lists the valid names.
+/// Finds the kind named `s` among `all`, or lists the valid names; the error's parameter is
+/// `what` itself ("graph kind", …).
 fn parse_kind<K: Copy>(
     s: &str,
     what: &'static str,
     all: &[K],
     name: impl Fn(K) -> &'static str,
 ) -> Result<K> {
-    all.iter()
-        .copied()
-        .find(|&k| name(k) == s)
-        .ok_or_else(|| Error::InvalidParameter {
-            name: what,
-            reason: format!(
-                "unknown name '{s}'; expected one of: {}",
-                all.iter().map(|&k| name(k)).collect::<Vec<_>>().join(", ")
-            ),
-        })
+    crate::error::named(s, what, what, all, name)
 }

@@ -87,18 +87,12 @@ impl fmt::Display for ColouringAlgorithm {
 impl FromStr for ColouringAlgorithm {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
-        ColouringAlgorithm::ALL
-            .into_iter()
-            .find(|k| k.name() == s)
-            .ok_or_else(|| Error::InvalidParameter {
-                name: "algorithm",
-                reason: format!(
-                    "unknown colouring algorithm '{s}'; expected one of {}",
-                    ColouringAlgorithm::ALL
-                        .map(ColouringAlgorithm::name)
-                        .join(", ")
-                ),
-            })
+        crate::error::algorithm_named(
+            s,
+            "colouring algorithm",
+            &ColouringAlgorithm::ALL,
+            ColouringAlgorithm::name,
+        )
     }
 }
 

@@ -103,16 +103,12 @@ impl fmt::Display for MstAlgorithm {
 impl FromStr for MstAlgorithm {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
-        MstAlgorithm::ALL
-            .into_iter()
-            .find(|a| a.name() == s)
-            .ok_or_else(|| Error::InvalidParameter {
-                name: "algorithm",
-                reason: format!(
-                    "unknown spanning-tree algorithm '{s}'; expected one of {}",
-                    MstAlgorithm::ALL.map(MstAlgorithm::name).join(", ")
-                ),
-            })
+        crate::error::algorithm_named(
+            s,
+            "spanning-tree algorithm",
+            &MstAlgorithm::ALL,
+            MstAlgorithm::name,
+        )
     }
 }
 
