@@ -21,10 +21,10 @@
 //! | Borůvka | 1.8 s | | |
 //!
 //! DSatur followed by the tabu search (`dsatur-tabu`), measured later on the same machine
-//! (criterion medians; the 10⁶ row one timed run of each): 1.99 ms against petgraph's
-//! 2.20 ms at n = 2^10 (0.90), 15.5 vs 36.5 ms at 2^13 (0.42), 152 vs 810 ms at 2^16 (0.19),
-//! 1.20 vs 4.50 s at 2^18 (0.27), 7.7 vs 21.0 s at 10⁶ (0.37). All three colourings use 8
-//! colours on these graphs.
+//! (criterion medians; the 10⁶ row one timed run of each): 2.08 ms against petgraph's
+//! 2.42 ms at n = 2^10 (0.86), 16.2 vs 42.3 ms at 2^13 (0.38), 167 ms vs 0.92 s at 2^16
+//! (0.18), 1.27 vs 5.89 s at 2^18 (0.22), 8.9 vs 23.7 s at 10⁶ (0.37). All three colourings
+//! use 8 colours on these graphs.
 //!
 //! On the 10⁶-vertex grid (m ≈ 2·10⁶, cache-friendly) BFS is 1.35× faster (41 vs 56 ms)
 //! and DFS on par (15 vs 17 ms): petgraph's linked adjacency costs most on random graphs.

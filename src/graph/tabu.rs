@@ -17,8 +17,9 @@
 //!
 //! The search has a budget of elementary steps (moves evaluated, neighbours updated, and one
 //! pass over the graph, n + 2m, to set up each target) and stops when it is spent, keeping
-//! the best proper colouring found; it never returns more colours than it was given. Its random choices (ties between equal moves, tenures) come
-//! from a fixed seed, so a graph always gets the same colouring.
+//! the best proper colouring found; it never returns more colours than it was given. Its
+//! random choices (ties between equal moves, tenures) come from a fixed seed, so a graph
+//! always gets the same colouring.
 
 use super::colouring::{dsatur_with, is_proper_colouring, Colouring};
 use super::graph::Graph;
@@ -62,9 +63,10 @@ pub fn dsatur_tabu(g: &Graph) -> Colouring {
 /// DSatur followed by a tabu search for fewer colours, counting the work of both.
 ///
 /// [`dsatur_with`] gives a proper colouring with k colours; [`tabu_recolour_with`] then looks
-/// for one with k − 1, k − 2, … colours until its budget of [`TABU_EFFORT`]·(n + 2m) steps is
-/// spent. The result never has more colours than DSatur's, and on random graphs it usually
-/// has one or two fewer.
+/// for one with k − 1, k − 2, … colours until its budget of [`TABU_EFFORT`]·(n + 2m) steps
+/// is spent. The result never has more colours than DSatur's. On random G(n, m) graphs of up
+/// to a thousand vertices it had fewer on more than half of those tried; on graphs of 10⁵
+/// vertices and more the budget seldom suffices to remove a colour.
 ///
 /// # Complexity
 /// O((n + m) log n) time: DSatur's, plus at most 20·(n + 2m) search steps. Auxiliary space
@@ -161,15 +163,15 @@ pub fn tabu_recolour_with<C: Counter>(
     c: &mut C,
 ) -> Result<Colouring> {
     let n = g.vertex_count();
-    let largest = start.colour.iter().max().map(|&k| k.saturating_add(1));
-    if start.count > n.max(1) || largest.unwrap_or(0) != start.count {
+    let largest = start.colour.iter().max().copied();
+    if start.count > n || largest.map_or(0, |k| k.saturating_add(1)) != start.count {
         return Err(Error::InvalidParameter {
             name: "colouring",
             reason: format!(
                 "{} colours for a graph of {n} vertices, the largest colour being {}; \
                  expected colours 0..count with count at most the number of vertices",
                 start.count,
-                largest.map_or("none".to_string(), |k| (k - 1).to_string()),
+                largest.map_or("none".to_string(), |k| k.to_string()),
             ),
         });
     }
