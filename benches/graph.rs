@@ -21,10 +21,10 @@
 //! | Borůvka | 1.8 s | | |
 //!
 //! DSatur followed by the tabu search (`dsatur-tabu`), measured later on the same machine
-//! (criterion medians; the 10⁶ row one timed run of each): 2.08 ms against petgraph's
-//! 2.42 ms at n = 2^10 (0.86), 16.2 vs 42.3 ms at 2^13 (0.38), 167 ms vs 0.92 s at 2^16
-//! (0.18), 1.27 vs 5.89 s at 2^18 (0.22), 8.9 vs 23.7 s at 10⁶ (0.37). All three colourings
-//! use 8 colours on these graphs.
+//! (criterion medians; the 10⁶ row one timed run of each): 1.62 ms against petgraph's
+//! 2.10 ms at n = 2^10 (0.77), 11.9 vs 27.5 ms at 2^13 (0.43), 137 vs 666 ms at 2^16 (0.21),
+//! 0.94 vs 4.43 s at 2^18 (0.21), 7.8 vs 22.4 s at 10⁶ (0.35). All three colourings use 8
+//! colours on these graphs.
 //!
 //! On the 10⁶-vertex grid (m ≈ 2·10⁶, cache-friendly) BFS is 1.35× faster (41 vs 56 ms)
 //! and DFS on par (15 vs 17 ms): petgraph's linked adjacency costs most on random graphs.

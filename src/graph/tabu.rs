@@ -18,8 +18,8 @@
 //! The search has a budget of elementary steps (moves evaluated, neighbours updated, and one
 //! pass over the graph, n + 2m, to set up each target) and stops when it is spent, keeping
 //! the best proper colouring found; it never returns more colours than it was given. Its
-//! random choices (ties between equal moves, tenures) come from a fixed seed, so a graph
-//! always gets the same colouring.
+//! random choices (where each scan for the best move starts, tenures) come from a fixed
+//! seed, so a graph always gets the same colouring.
 
 use super::colouring::{dsatur_with, is_proper_colouring, Colouring};
 use super::graph::Graph;
@@ -33,7 +33,7 @@ use std::collections::VecDeque;
 ///
 /// With this budget DSatur and the search together stay faster than petgraph's
 /// `dsatur_coloring` at every size `benches/graph.rs` measures (G(n, 10n), n from 2^10 to
-/// 2^18, 2 cores): about 0.9 of its time at n = 2^10 and 0.2–0.3 of it from 2^16 on. A
+/// 2^18, 2 cores): about 0.8 of its time at n = 2^10 and about 0.2 of it from 2^16 on. A
 /// larger budget, through [`tabu_recolour`], finds fewer colours on more graphs.
 pub const TABU_EFFORT: u64 = 20;
 
@@ -123,14 +123,15 @@ pub fn tabu_recolour(g: &Graph, start: &Colouring, budget: u64) -> Result<Colour
 /// The colours of `start` are first renumbered to `0..count` in order of first use, dropping
 /// unused ones. From k colours the search tries k − 1 on the (k − 1)-core (see the module
 /// notes): the vertices of the last colour take the colour least used among their
-/// neighbours, and then, while some edge joins two vertices of one colour, the
-/// search makes the best move of a conflicting vertex to another colour that is not tabu
-/// (ties at random). After moving v away from colour a, putting v back into a stays tabu for
-/// a random 0–9 plus ⌊0.6·(conflicting vertices)⌋ iterations, unless that would give fewer
-/// conflicts than ever before. Two colours are tried exactly, with a breadth-first
-/// 2-colouring. Setting up a target costs n + 2m steps of the budget. The search stops when
-/// a target cannot be set up or fails within the budget, and returns the best proper
-/// colouring it reached.
+/// neighbours, and then, while some edge joins two vertices of one colour, the search makes
+/// the best move of a conflicting vertex to another colour that is not tabu (among equal
+/// moves, the first found by a scan of the conflicting vertices that starts at a random one:
+/// cheaper than drawing among all ties). After moving v away from colour a, putting v back
+/// into a stays tabu for a random 0–9 plus ⌊0.6·(conflicting vertices)⌋ iterations, unless
+/// that would give fewer conflicts than ever before. Two colours are tried exactly, with a
+/// breadth-first 2-colouring. Setting up a target costs n + 2m steps of the budget. The
+/// search stops when a target cannot be set up or fails within the budget, and returns the
+/// best proper colouring it reached.
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] (name `"colouring"`) if `start` is not a proper colouring of
@@ -456,8 +457,8 @@ impl TabuCol {
     }
 
     /// The best move of a conflicting vertex v to another colour a that is not tabu at
-    /// `iteration` or changes the conflict count by less than `aspire_below`, ties at random:
-    /// (v, a, change).
+    /// `iteration` or changes the conflict count by less than `aspire_below`: (v, a, change).
+    /// Of equal moves, the first found scanning the conflicting vertices from a random one.
     fn best_move(
         &self,
         iteration: u32,
@@ -467,8 +468,10 @@ impl TabuCol {
         let k = self.k;
         let mut best = None;
         let mut best_change = i64::MAX;
-        let mut ties = 0u64;
-        for &v in &self.conflicting {
+        let len = self.conflicting.len();
+        let shift = rng.index(len);
+        let (tail, head) = self.conflicting.split_at(shift);
+        for &v in head.iter().chain(tail) {
             let v = v as usize;
             let here = self.colour[v] as usize;
             let row = &self.neighbours_in[v * k..(v + 1) * k];
@@ -476,21 +479,14 @@ impl TabuCol {
             let stay = i64::from(row[here]);
             for (a, (&count, &until)) in row.iter().zip(tabu).enumerate() {
                 let change = i64::from(count) - stay;
-                if change > best_change
+                if change >= best_change
                     || a == here
                     || (until > iteration && change >= aspire_below)
                 {
                     continue;
                 }
-                if change < best_change {
-                    (best_change, ties) = (change, 0);
-                }
-                ties += 1;
-                // Reservoir sampling: the tie just seen replaces the kept one with
-                // probability 1/ties (up to 2^-64·ties), without a division.
-                if ties == 1 || ((u128::from(rng.next_u64()) * u128::from(ties)) >> 64) == 0 {
-                    best = Some((v, a, change));
-                }
+                best_change = change;
+                best = Some((v, a, change));
             }
         }
         best
