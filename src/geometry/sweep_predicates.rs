@@ -627,27 +627,13 @@ mod tests {
         let outside = (&a * &phi).signum();
         let left_of_vertex = sx <= vertex;
         let want_left_root = py < qy;
+        // Outside the roots on the root's own side of the vertex means beyond that root.
+        let beyond_root = cmp_q(&outside, &Q::zero());
         match (want_left_root, left_of_vertex) {
-            (true, true) => {
-                if outside.is_positive() {
-                    Ordering::Less
-                } else if outside.is_zero() {
-                    Ordering::Equal
-                } else {
-                    Ordering::Greater
-                }
-            }
+            (true, true) => beyond_root.reverse(),
             (true, false) => Ordering::Greater,
             (false, true) => Ordering::Less,
-            (false, false) => {
-                if outside.is_positive() {
-                    Ordering::Greater
-                } else if outside.is_zero() {
-                    Ordering::Equal
-                } else {
-                    Ordering::Less
-                }
-            }
+            (false, false) => beyond_root,
         }
     }
 
