@@ -29,7 +29,8 @@
 //! On the 10⁶-vertex grid (m ≈ 2·10⁶, cache-friendly) BFS is 1.35× faster (41 vs 56 ms)
 //! and DFS on par (15 vs 17 ms): petgraph's linked adjacency costs most on random graphs.
 
-use compgeo::gen::{graph, with_random_weights, EdgeList, GraphKind};
+use compgeo::gen::{graph, with_random_weights, GraphKind};
+use compgeo::graph::EdgeList;
 use compgeo::graph::{bfs, dfs, dsatur, ColouringAlgorithm, Graph, MstAlgorithm, WeightedGraph};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use petgraph::graph::{NodeIndex, UnGraph};

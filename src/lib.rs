@@ -70,12 +70,12 @@
 //! | [`delaunay::fortune`] | O(n log n) expected (treap beach line, heap of circle events), exact event order |
 //! | [`delaunay::check_delaunay`] | O(n log n + t), exact |
 //! | [`delaunay::voronoi`] | the triangulation's time, then O(n log n) for the dual (a sort along a curve, then O(n)); clipping O(n) |
-//! | [`delaunay::all_nearest_neighbours`] | O(n log n) expected; two distance evaluations per Delaunay edge |
-//! | [`delaunay::closest_pair`] | O(n log n) expected; the shortest Delaunay edge |
-//! | [`delaunay::closest_pair_divide_and_conquer`] | O(n log n) worst case, exact comparisons |
-//! | [`delaunay::NearestSearch`] | O(n log n) to build; a greedy walk per query, O(√n) expected steps on uniform input |
-//! | [`delaunay::euclidean_mst`] | O(n log n) expected; Delaunay edges ranked exactly, then Kruskal |
-//! | [`delaunay::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case |
+//! | [`proximity::all_nearest_neighbours`] | O(n log n) expected; two distance evaluations per Delaunay edge |
+//! | [`proximity::closest_pair`] | O(n log n) expected; the shortest Delaunay edge |
+//! | [`proximity::closest_pair_divide_and_conquer`] | O(n log n) worst case, exact comparisons |
+//! | [`proximity::NearestSearch`] | O(n log n) to build; a greedy walk per query, O(√n) expected steps on uniform input |
+//! | [`proximity::euclidean_mst`] | O(n log n) expected; Delaunay edges ranked exactly, then Kruskal |
+//! | [`proximity::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case |
 //! | [`spline::Bezier::de_casteljau`] (degree n) | Θ(n²): exactly n(n+1)/2 affine combinations per point |
 //! | [`spline::Bezier::horner`], [`spline::Bezier::eval`] | Θ(n): n + 1 point operations per point |
 //! | [`spline::Bezier::split`], [`spline::Bezier::blossom`], [`spline::Bezier::derivative_at`] | Θ(n²) |
@@ -118,8 +118,10 @@ pub mod gen;
 pub mod geometry;
 pub mod graph;
 pub mod hull;
+pub mod proximity;
 pub mod sort;
 pub mod spline;
+mod util;
 
 #[cfg(feature = "cli")]
 pub mod cli;

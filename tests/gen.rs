@@ -2,10 +2,11 @@
 //! predicates, exact integer arithmetic and brute force.
 
 use compgeo::gen::{
-    graph, points, sequence, sequence_f64, with_random_weights, EdgeList, GraphKind, PointKind,
-    SequenceKind, MAX_COCIRCULAR, MAX_EDGES, MAX_POINTS, MAX_VERTICES, RANDOM_KEY_BOUND,
+    graph, points, sequence, sequence_f64, with_random_weights, GraphKind, PointKind, SequenceKind,
+    MAX_COCIRCULAR, MAX_POINTS, RANDOM_KEY_BOUND,
 };
 use compgeo::geometry::{cmp_dist, incircle, orient2d, InCircle, Orientation, Point2};
+use compgeo::graph::{EdgeList, MAX_EDGES, MAX_VERTICES};
 use compgeo::Error;
 use proptest::prelude::*;
 use std::cmp::Ordering;

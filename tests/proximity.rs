@@ -7,14 +7,14 @@ mod common;
 #[cfg(feature = "cli")]
 use common::{assert_rejected, run_json};
 use compgeo::count::Counts;
-use compgeo::delaunay::{
+use compgeo::gen::{points, PointKind};
+use compgeo::geometry::{cmp_dist, orient2d, Orientation, Point2};
+use compgeo::hull::{monotone_chain, HullOptions};
+use compgeo::proximity::{
     all_nearest_neighbours, all_nearest_neighbours_with, closest_pair,
     closest_pair_divide_and_conquer, closest_pair_divide_and_conquer_with, closest_pair_with,
     euclidean_mst, largest_empty_circle, nearest, NearestSearch,
 };
-use compgeo::gen::{points, PointKind};
-use compgeo::geometry::{cmp_dist, orient2d, Orientation, Point2};
-use compgeo::hull::{monotone_chain, HullOptions};
 use compgeo::Error;
 use proptest::prelude::*;
 use std::cmp::Ordering;

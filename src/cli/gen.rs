@@ -128,7 +128,7 @@ enum EdgesJson {
     Weighted(Vec<(usize, usize, f64)>),
 }
 
-fn graph_json(g: gen::EdgeList) -> GraphJson {
+fn graph_json(g: crate::graph::EdgeList) -> GraphJson {
     let edges = match g.weights {
         None => EdgesJson::Plain(g.edges),
         Some(w) => EdgesJson::Weighted(

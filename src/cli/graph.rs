@@ -11,7 +11,7 @@ use super::input::GraphInput;
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
-use crate::gen::EdgeList;
+use crate::graph::EdgeList;
 use crate::graph::{
     bfs_with, colour_with, components, dfs_with, search_trace, trace_table, ColouringAlgorithm,
     Graph, MstAlgorithm, SearchKind, WeightedGraph,

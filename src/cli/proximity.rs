@@ -1,15 +1,16 @@
 //! `compgeo voronoi`, `closest-pair`, `nearest`, `emst` and `empty-circle`: the proximity
-//! problems of the Delaunay module.
+//! problems on the Delaunay triangulation.
 
 use super::input::PointInput;
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
-use crate::delaunay::{
-    closest_pair_divide_and_conquer_with, closest_pair_with, euclidean_mst_with,
-    largest_empty_circle_with, voronoi, ClipBox, NearestSearch, Ray,
-};
+use crate::delaunay::{voronoi, ClipBox, Ray};
 use crate::geometry::Point2;
+use crate::proximity::{
+    closest_pair_divide_and_conquer_with, closest_pair_with, euclidean_mst_with,
+    largest_empty_circle_with, NearestSearch,
+};
 use clap::{Args, ValueEnum};
 use serde::Serialize;
 

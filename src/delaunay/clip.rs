@@ -1,8 +1,8 @@
 //! Clipping Voronoi cells to a box.
 
-use super::construct::scale_of;
 use super::voronoi::{Ray, Voronoi};
 use crate::error::{Error, Result};
+use crate::geometry::construct::scale_of;
 use crate::geometry::Point2;
 
 /// An axis-parallel box to clip Voronoi cells to: `min.x < max.x`, `min.y < max.y`.

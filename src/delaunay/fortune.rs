@@ -10,6 +10,7 @@ use crate::geometry::sweep_predicates::{
     breakpoint_side, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
 };
 use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use crate::util::Heap;
 use std::cmp::Ordering;
 
 /// The Delaunay triangulation of `points` by Fortune's sweep. See [`fortune_with`].
@@ -124,7 +125,7 @@ pub fn fortune_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Tr
         sites: &sites,
         counter,
         line: BeachLine::with_capacity(2 * sites.len()),
-        queue: Vec::with_capacity(sites.len()),
+        queue: Heap::with_capacity(sites.len()),
         next_id: 0,
         triangles: Vec::with_capacity(2 * sites.len()),
     };
@@ -157,7 +158,7 @@ struct Sweep<'a, C> {
     counter: &'a mut C,
     line: BeachLine,
     /// A binary min-heap of circle events by event point.
-    queue: Vec<Event>,
+    queue: Heap<Event>,
     next_id: u32,
     /// Counter-clockwise triangles as site positions.
     triangles: Vec<[u32; 3]>,
@@ -167,8 +168,8 @@ impl<C: Counter> Sweep<'_, C> {
     fn run(&mut self) {
         let n = self.sites.len();
         let mut next_site = 0;
-        while next_site < n || !self.queue.is_empty() {
-            let circle_first = match self.queue.first() {
+        while next_site < n || self.queue.peek().is_some() {
+            let circle_first = match self.queue.peek() {
                 None => false,
                 Some(_) if next_site == n => true,
                 Some(e) => {
@@ -257,57 +258,25 @@ impl<C: Counter> Sweep<'_, C> {
         t.map(|v| self.sites[v as usize])
     }
 
-    /// Whether event `x` comes strictly before event `y`.
-    fn before(&mut self, x: &Event, y: &Event) -> bool {
-        self.counter.comparison();
-        cmp_circles(&x.key, self.points(x.sites), &y.key, self.points(y.sites)) == Ordering::Less
-    }
-
     fn push(&mut self, e: Event) {
-        self.queue.push(e);
-        let mut k = self.queue.len() - 1;
-        while k > 0 {
-            let parent = (k - 1) / 2;
-            let (child, up) = (self.queue[k], self.queue[parent]);
-            if !self.before(&child, &up) {
-                break;
-            }
-            self.queue.swap(k, parent);
-            k = parent;
-        }
+        let sites = self.sites;
+        self.queue
+            .push(e, |x, y| before(sites, x, y), &mut *self.counter);
     }
 
     /// Removes and returns the first event (the queue is not empty).
     fn pop(&mut self) -> Event {
-        let last = self.queue.len() - 1;
-        self.queue.swap(0, last);
-        let top = self
-            .queue
-            .pop()
-            .expect("pop is only called on a non-empty queue");
-        let len = self.queue.len();
-        let mut k = 0;
-        loop {
-            let (l, r) = (2 * k + 1, 2 * k + 2);
-            if l >= len {
-                break;
-            }
-            let mut first = l;
-            if r < len {
-                let (a, b) = (self.queue[r], self.queue[l]);
-                if self.before(&a, &b) {
-                    first = r;
-                }
-            }
-            let (a, b) = (self.queue[first], self.queue[k]);
-            if !self.before(&a, &b) {
-                break;
-            }
-            self.queue.swap(k, first);
-            k = first;
-        }
-        top
+        let sites = self.sites;
+        self.queue
+            .pop(|x, y| before(sites, x, y), &mut *self.counter)
+            .expect("pop is only called on a non-empty queue")
     }
+}
+
+/// Whether event `x` comes strictly before event `y` (their circles' tops on the sweep line).
+fn before(sites: &[Point2], x: &Event, y: &Event) -> bool {
+    let points = |t: [u32; 3]| t.map(|v| sites[v as usize]);
+    cmp_circles(&x.key, points(x.sites), &y.key, points(y.sites)) == Ordering::Less
 }
 
 /// The points sorted by (y, x) without repeats, the input index of each (the smallest among

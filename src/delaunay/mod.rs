@@ -1,5 +1,5 @@
-//! Delaunay triangulations (compact half-edge arrays, exact predicates, an exact checker), the
-//! Voronoi diagram as their dual, and the seed's proximity problems on them.
+//! Delaunay triangulations (compact half-edge arrays, exact predicates, an exact checker) and
+//! the Voronoi diagram as their dual.
 //!
 //! The seed (`003_5b666ee3e15e6353.txt`, §2.4 "Problemas de proximidad", "Diagrama de
 //! Voronoi" and "Triangulación de Delaunay", Definition 2.34 and Theorem 2.35) defines the
@@ -37,12 +37,10 @@
 //!
 //! | problem | function | file |
 //! |---|---|---|
-//! | Voronoi diagram: cells with rays, clipping to a box | [`voronoi`], [`dual`], [`ClipBox`] | `voronoi.rs`, `clip.rs`, `construct.rs` |
-//! | all nearest neighbours | [`all_nearest_neighbours`] | `proximity.rs` |
-//! | closest pair, via Delaunay and by divide and conquer | [`closest_pair`], [`closest_pair_divide_and_conquer`] | `proximity.rs`, `closest_pair.rs` |
-//! | nearest site of a query point | [`NearestSearch`], [`nearest`] | `proximity.rs` |
-//! | Euclidean minimum spanning tree | [`euclidean_mst`] | `proximity.rs` |
-//! | largest empty circle centred in the hull | [`largest_empty_circle`] | `empty_circle.rs` |
+//! | Voronoi diagram: cells with rays, clipping to a box | [`voronoi`], [`dual`], [`ClipBox`] | `voronoi.rs`, `clip.rs` |
+//!
+//! The proximity problems built on the triangulation (nearest neighbours, closest pair,
+//! Euclidean minimum spanning tree, largest empty circle) are in [`crate::proximity`].
 //!
 //! ```
 //! use compgeo::delaunay::{check_delaunay, triangulate, Algorithm};
@@ -59,31 +57,21 @@
 mod beach_line;
 mod check;
 mod clip;
-mod closest_pair;
-mod construct;
 mod divide_conquer;
-mod empty_circle;
 mod fortune;
 mod hilbert;
 mod incremental;
 mod lawson;
-mod proximity;
 mod quad_edge;
 mod triangulation;
 mod voronoi;
 
 pub use check::check_delaunay;
 pub use clip::ClipBox;
-pub use closest_pair::{closest_pair_divide_and_conquer, closest_pair_divide_and_conquer_with};
 pub use divide_conquer::{divide_and_conquer, divide_and_conquer_with};
-pub use empty_circle::{largest_empty_circle, largest_empty_circle_with, EmptyCircle};
 pub use fortune::{fortune, fortune_with};
 pub use incremental::{incremental, incremental_with};
 pub use lawson::{lawson, lawson_with};
-pub use proximity::{
-    all_nearest_neighbours, all_nearest_neighbours_with, closest_pair, closest_pair_with,
-    euclidean_mst, euclidean_mst_with, nearest, ClosestPair, Emst, NearestSearch,
-};
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
 pub use voronoi::{dual, voronoi, voronoi_with, Cell, Ray, Voronoi};
 

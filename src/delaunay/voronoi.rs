@@ -1,11 +1,11 @@
 //! The Voronoi diagram as the dual of the Delaunay triangulation (clipping is in `clip.rs`).
 
-use super::construct::{circumcentre, midpoint, unit_direction};
 use super::hilbert::curve_order;
 use super::incremental::{degenerate, incremental_local, LocalTriangulation, NO_TWIN};
 use super::triangulation::{next_halfedge as next, prev_halfedge as prev, Triangulation, EMPTY};
 use crate::count::{Counter, NoCount};
 use crate::error::{Error, Result};
+use crate::geometry::construct::{circumcentre, midpoint, unit_direction};
 use crate::geometry::Point2;
 
 /// The Voronoi diagram of a point set: one cell per distinct site.

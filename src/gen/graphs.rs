@@ -1,10 +1,11 @@
 //! Seeded graphs: random families and the named graphs the colouring and MST modules are
 //! tested and measured on.
 
+use super::parse_kind;
 use super::points::ceil_sqrt;
 use super::rng::Rng;
-use super::{parse_kind, MAX_EDGES, MAX_VERTICES};
 use crate::error::{Error, Result};
+use crate::graph::{EdgeList, MAX_EDGES, MAX_VERTICES};
 use std::collections::HashSet;
 use std::fmt;
 use std::str::FromStr;
@@ -42,21 +43,6 @@ pub enum GraphKind {
     Queen,
     /// The crown graph on `2n` vertices: K_{n,n} minus a perfect matching.
     Crown,
-}
-
-/// A graph as the edge list every graph algorithm builds from.
-///
-/// Vertices are `0..vertices`. Generated lists are simple (each edge `[u, v]` has
-/// `u < v`, no edge appears twice) and sorted lexicographically; lists read from users may
-/// be neither, and the graph module validates them.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct EdgeList {
-    /// Number of vertices; vertex ids are `0..vertices`.
-    pub vertices: usize,
-    /// The edges as vertex pairs.
-    pub edges: Vec<[usize; 2]>,
-    /// One weight per edge, in the order of `edges`, if the graph is weighted.
-    pub weights: Option<Vec<f64>>,
 }
 
 /// A graph of the given kind, the same for the same `seed` on every machine.

@@ -15,7 +15,7 @@
 //! | function | produces |
 //! |---|---|
 //! | [`points`] | `Vec<Point2>` of a [`PointKind`] |
-//! | [`graph`], [`with_random_weights`] | an [`EdgeList`] of a [`GraphKind`] |
+//! | [`graph`], [`with_random_weights`] | an [`EdgeList`](crate::graph::EdgeList) of a [`GraphKind`] |
 //! | [`sequence`], [`sequence_f64`] | `i64` keys of a [`SequenceKind`], `f64` keys |
 //!
 //! ```
@@ -35,7 +35,7 @@ mod points;
 mod rng;
 mod sequences;
 
-pub use graphs::{graph, with_random_weights, EdgeList, GraphKind};
+pub use graphs::{graph, with_random_weights, GraphKind};
 pub use points::{points, PointKind, MAX_COCIRCULAR};
 pub use sequences::{sequence, sequence_f64, SequenceKind, RANDOM_KEY_BOUND};
 
@@ -47,12 +47,6 @@ use crate::error::Result;
 /// constructed kind exact (parabola `x^2 <= 2^52`, collinear and grid coordinates below
 /// 2^53) and turns absurd sizes into an error instead of an allocation failure.
 pub const MAX_POINTS: usize = 1 << 27;
-
-/// The most vertices [`graph`] generates: 2^27.
-pub const MAX_VERTICES: usize = 1 << 27;
-
-/// The most edges [`graph`] generates: 2^28.
-pub const MAX_EDGES: usize = 1 << 28;
 
 /// Finds the kind named `s` among `all`, or lists the valid names; the error's parameter is
 /// `what` itself ("graph kind", …).

@@ -20,6 +20,7 @@
 //! [`Counter`](crate::count::Counter).
 
 mod bigint;
+pub(crate) mod construct;
 mod counted;
 mod expansion;
 mod extended;

@@ -8,7 +8,28 @@
 //! with the smallest id (seed `003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de búsqueda").
 
 use crate::error::{Error, Result};
-use crate::gen::{EdgeList, MAX_EDGES, MAX_VERTICES};
+use crate::util::Csr;
+
+/// The most vertices a graph may have (and [`crate::gen::graph`] generates): 2^27.
+pub const MAX_VERTICES: usize = 1 << 27;
+
+/// The most edges a graph may have (and [`crate::gen::graph`] generates): 2^28.
+pub const MAX_EDGES: usize = 1 << 28;
+
+/// A graph as the edge list every graph algorithm builds from.
+///
+/// Vertices are `0..vertices`. Lists from [`crate::gen::graph`] are simple (each edge `[u, v]` has
+/// `u < v`, no edge appears twice) and sorted lexicographically; lists read from users may
+/// be neither, and the graph module validates them.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct EdgeList {
+    /// Number of vertices; vertex ids are `0..vertices`.
+    pub vertices: usize,
+    /// The edges as vertex pairs.
+    pub edges: Vec<[usize; 2]>,
+    /// One weight per edge, in the order of `edges`, if the graph is weighted.
+    pub weights: Option<Vec<f64>>,
+}
 
 /// A simple undirected graph in compressed sparse row form.
 ///
@@ -72,44 +93,10 @@ impl Graph {
     /// O(n + m) time, O(n + m) auxiliary space, for n vertices and m edges.
     pub fn from_edges(vertices: usize, edges: &[[usize; 2]]) -> Result<Self> {
         check_sizes(vertices, edges)?;
-        let mut loops_dropped = 0;
-        let arcs = edges.len() * 2;
-        // Pass 1: bucket arcs (source, target) by target.
-        let mut by_target = vec![0usize; vertices + 1];
-        for &[u, v] in edges {
-            if u != v {
-                by_target[u + 1] += 1;
-                by_target[v + 1] += 1;
-            } else {
-                loops_dropped += 1;
-            }
-        }
-        prefix_sum(&mut by_target);
-        let mut sources = vec![0u32; arcs - 2 * loops_dropped];
-        {
-            let mut next = by_target.clone();
-            for &[u, v] in edges {
-                if u != v {
-                    sources[next[v]] = u as u32;
-                    next[v] += 1;
-                    sources[next[u]] = v as u32;
-                    next[u] += 1;
-                }
-            }
-        }
-        // Pass 2: walk targets in ascending order, appending each to its source's list, so
-        // every list comes out sorted. The degree counts equal the target counts.
-        let mut offsets = by_target.clone();
-        let mut targets = vec![0u32; sources.len()];
-        let mut next = by_target;
-        for t in 0..vertices {
-            for &s in &sources[offsets[t]..offsets[t + 1]] {
-                let s = s as usize;
-                targets[next[s]] = t as u32;
-                next[s] += 1;
-            }
-        }
-        drop(sources);
+        let csr = Csr::undirected(vertices, edges.iter().map(|&e| (e, ())));
+        let loops_dropped = csr.loops;
+        let mut offsets = csr.offsets;
+        let mut targets: Vec<u32> = csr.entries.into_iter().map(|(t, ())| t).collect();
         // Merge parallel edges: drop repeats inside each sorted list, compacting in place.
         let mut write = 0;
         let mut start = 0;
@@ -244,42 +231,15 @@ impl WeightedGraph {
             return Err(Error::NonFiniteWeight { edge, value });
         }
         check_sizes(vertices, edges)?;
-        let mut by_target = vec![0usize; vertices + 1];
-        for &[u, v] in edges {
-            if u != v {
-                by_target[u + 1] += 1;
-                by_target[v + 1] += 1;
-            }
-        }
-        prefix_sum(&mut by_target);
-        let total = by_target[vertices];
-        // Pass 1 buckets (source, edge) by target in edge order; pass 2 walks targets in
-        // ascending order, so each vertex's list is sorted by (target, edge index).
-        let mut sources = vec![(0u32, 0u32); total];
-        let mut next = by_target.clone();
-        for (e, &[u, v]) in edges.iter().enumerate() {
-            if u != v {
-                sources[next[v]] = (u as u32, e as u32);
-                next[v] += 1;
-                sources[next[u]] = (v as u32, e as u32);
-                next[u] += 1;
-            }
-        }
-        let offsets = by_target.clone();
-        let mut next = by_target;
-        let mut incidences = vec![(0u32, 0u32); total];
-        for t in 0..vertices {
-            for &(s, e) in &sources[offsets[t]..offsets[t + 1]] {
-                let s = s as usize;
-                incidences[next[s]] = (t as u32, e);
-                next[s] += 1;
-            }
-        }
+        let csr = Csr::undirected(
+            vertices,
+            edges.iter().enumerate().map(|(e, &pair)| (pair, e as u32)),
+        );
         Ok(WeightedGraph {
             edges: edges.iter().map(|&[u, v]| [u as u32, v as u32]).collect(),
             weights: weights.to_vec(),
-            offsets,
-            incidences,
+            offsets: csr.offsets,
+            incidences: csr.entries,
         })
     }
 
@@ -387,13 +347,6 @@ fn check_sizes(vertices: usize, edges: &[[usize; 2]]) -> Result<()> {
         }
     }
     Ok(())
-}
-
-/// Turns counts at `1..=n` into start offsets (`a[0]` stays 0).
-fn prefix_sum(a: &mut [usize]) {
-    for i in 1..a.len() {
-        a[i] += a[i - 1];
-    }
 }
 
 #[cfg(test)]

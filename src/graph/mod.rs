@@ -4,7 +4,7 @@
 //! búsqueda").
 //!
 //! Build a [`Graph`] (or a [`WeightedGraph`]) once from an edge list, with
-//! [`Graph::from_edges`] or from a generator's [`EdgeList`](crate::gen::EdgeList); every
+//! [`Graph::from_edges`] or from an [`EdgeList`] (what the generators of [`crate::gen`] give); every
 //! algorithm is a free function over it, with a `_with` form that takes a
 //! [`Counter`](crate::count::Counter).
 //!
@@ -23,23 +23,21 @@ mod colouring;
 // The file name `graph.rs` is the layout ARCHITECTURE.md prescribes.
 #[allow(clippy::module_inception)]
 mod graph;
-mod heap;
 mod mst;
-mod tabu;
 mod traverse;
 mod union_find;
 
 pub use colouring::{
     colour, colour_with, course_greedy_colouring, course_greedy_colouring_with, dsatur,
-    dsatur_with, greedy_colouring, greedy_colouring_with, is_proper_colouring, largest_first_order,
-    smallest_last_order, Colouring, ColouringAlgorithm,
+    dsatur_tabu, dsatur_tabu_with, dsatur_with, greedy_colouring, greedy_colouring_with,
+    is_proper_colouring, largest_first_order, smallest_last_order, tabu_recolour,
+    tabu_recolour_with, Colouring, ColouringAlgorithm, TABU_EFFORT,
 };
-pub use graph::{Graph, WeightedGraph};
+pub use graph::{EdgeList, Graph, WeightedGraph, MAX_EDGES, MAX_VERTICES};
 pub use mst::{
     boruvka, boruvka_with, is_spanning_forest, kruskal, kruskal_with, prim, prim_with,
     MstAlgorithm, SpanningForest,
 };
-pub use tabu::{dsatur_tabu, dsatur_tabu_with, tabu_recolour, tabu_recolour_with, TABU_EFFORT};
 pub use traverse::{
     bfs, bfs_with, components, dfs, dfs_with, is_connected, is_search_tree, search_trace,
     trace_table, Components, Search, SearchKind, TraceRow, TRACE_MAX_VERTICES,

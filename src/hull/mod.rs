@@ -241,19 +241,12 @@ fn lex_sorted_items<C: Counter>(
     keyed.into_iter().map(|(_, i)| (points[i], i)).collect()
 }
 
-/// A 128-bit key whose integer order is the lexicographic order of finite points: the bits
-/// of x then y, each made order-preserving (flip the sign bit of non-negative values, every
-/// bit of negative ones) after mapping `-0.0` to `0.0`, which `cmp_lex` treats as equal.
+/// A 128-bit key whose integer order is the lexicographic order of finite points: the
+/// order keys of x then y ([`crate::util::order_key`]) after mapping `-0.0` to `0.0`, which
+/// `cmp_lex` treats as equal.
 #[inline]
 fn lex_key(p: Point2) -> u128 {
-    let ordered = |v: f64| {
-        let bits = (v + 0.0).to_bits();
-        if bits >> 63 == 1 {
-            !bits
-        } else {
-            bits | 1 << 63
-        }
-    };
+    let ordered = |v: f64| crate::util::order_key(v + 0.0);
     u128::from(ordered(p.x)) << 64 | u128::from(ordered(p.y))
 }
 

@@ -29,6 +29,7 @@
 //! stated on [`radix_sort_f64_with`].
 
 use crate::count::{Counter, NoCount};
+use crate::util::{from_order_key, order_key};
 
 /// Parts longer than this are partitioned in place first. 2^16 keys and their scratch take
 /// 512 KiB each: together they fit a 1 MiB L2 cache.
@@ -241,7 +242,7 @@ fn sort_part<C: Counter>(v: &mut [f64], tmp: &mut [f64], diff: u64, counter: &mu
     }
     if in_tmp {
         for (out, &k) in other.iter_mut().zip(keys.iter()) {
-            *out = float(k.to_bits());
+            *out = from_order_key(k.to_bits());
         }
         moves(counter, m);
     } else {
@@ -338,10 +339,10 @@ fn insertion<C: Counter>(v: &mut [f64], budget: usize, counter: &mut C) -> bool 
 
 /// Turns the floats of `v` into keys in place; returns the bits in which the keys differ.
 fn to_keys(v: &mut [f64]) -> u64 {
-    let first = key(v[0]);
+    let first = order_key(v[0]);
     let mut diff = 0;
     for x in v.iter_mut() {
-        let k = key(*x);
+        let k = order_key(*x);
         diff |= k ^ first;
         *x = f64::from_bits(k);
     }
@@ -350,7 +351,7 @@ fn to_keys(v: &mut [f64]) -> u64 {
 
 fn to_floats(v: &mut [f64]) {
     for x in v.iter_mut() {
-        *x = float(x.to_bits());
+        *x = from_order_key(x.to_bits());
     }
 }
 
@@ -363,21 +364,6 @@ fn varying_bits(v: &[f64]) -> u64 {
 /// The number of bits up to the highest set one: bits `0..bit_length(x)` hold all of `x`.
 fn bit_length(x: u64) -> u32 {
     u64::BITS - x.leading_zeros()
-}
-
-#[inline(always)]
-fn key(x: f64) -> u64 {
-    let bits = x.to_bits();
-    // All ones for negative floats, only the sign bit for the others.
-    let flip = (((bits as i64) >> 63) as u64) | (1 << 63);
-    bits ^ flip
-}
-
-#[inline(always)]
-fn float(key: u64) -> f64 {
-    // Keys with the top bit set came from non-negative floats: undo the flips of `key`.
-    let flip = if key >> 63 == 1 { 1 << 63 } else { u64::MAX };
-    f64::from_bits(key ^ flip)
 }
 
 #[inline(always)]
@@ -404,33 +390,6 @@ mod tests {
         let mut expected = v.to_vec();
         expected.sort_unstable_by(f64::total_cmp);
         bits(&expected)
-    }
-
-    #[test]
-    fn keys_order_as_total_cmp() {
-        let xs = [
-            f64::from_bits(0xFFF8_0000_0000_0001), // negative NaN with a payload
-            -f64::NAN,
-            f64::NEG_INFINITY,
-            f64::MIN,
-            -1.0,
-            -f64::MIN_POSITIVE,
-            -5e-324,
-            -0.0,
-            0.0,
-            5e-324,
-            f64::MIN_POSITIVE,
-            1.0,
-            f64::MAX,
-            f64::INFINITY,
-            f64::NAN,
-        ];
-        for a in xs {
-            for b in xs {
-                assert_eq!(key(a).cmp(&key(b)), a.total_cmp(&b), "{a:e} vs {b:e}");
-                assert_eq!(float(key(a)).to_bits(), a.to_bits());
-            }
-        }
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! The JSON graph reader: `{"vertices": n, "edges": [[u, v], ...]}` or `[[u, v, w], ...]`.
 
 use crate::cli::CliError;
-use crate::gen::EdgeList;
+use crate::graph::EdgeList;
 
 /// Parses a JSON graph `{"vertices": n, "edges": [[u, v], ...]}` (or `[[u, v, w], ...]`).
 ///

@@ -19,7 +19,7 @@
 //! any case); stdin defaults to JSON. A leading UTF-8 byte-order mark is ignored.
 //!
 //! **Graphs** are JSON objects `{"vertices": n, "edges": [[u, v], ...]}`, or with a weight
-//! on every edge, `[[u, v, w], ...]`, read into a [`gen::EdgeList`](crate::gen::EdgeList).
+//! on every edge, `[[u, v, w], ...]`, read into a [`graph::EdgeList`](crate::graph::EdgeList).
 //! Vertex ids must be integers in `0..n`; weights are finite numbers.
 //!
 //! **Exact number lists** (the curve commands' `--exact`): [`parse_number_arrays`] keeps the
@@ -36,8 +36,8 @@ pub use json_points::parse_json_points;
 pub use number_arrays::parse_number_arrays;
 
 use super::CliError;
-use crate::gen::EdgeList;
 use crate::geometry::Point2;
+use crate::graph::EdgeList;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 

@@ -82,7 +82,7 @@ fn linear(e: Entry) -> Entry {
 }
 
 /// G(n, 4n), or the complete graph when n is too small for 4n edges.
-fn random_graph(n: usize, seed: u64) -> Result<crate::gen::EdgeList> {
+fn random_graph(n: usize, seed: u64) -> Result<crate::graph::EdgeList> {
     let m = (DENSITY * n).min(n * n.saturating_sub(1) / 2);
     graph(GraphKind::Gnm, n, m, seed)
 }

@@ -1,6 +1,6 @@
-//! Catalog entries of the proximity problems in [`crate::delaunay`]: the Voronoi diagram,
-//! all nearest neighbours, the closest pair (via Delaunay and by divide and conquer), the
-//! Euclidean minimum spanning tree and the largest empty circle.
+//! Catalog entries of the Voronoi diagram ([`crate::delaunay`]) and the proximity problems
+//! ([`crate::proximity`]): all nearest neighbours, the closest pair (via Delaunay and by
+//! divide and conquer), the Euclidean minimum spanning tree and the largest empty circle.
 //!
 //! The algorithms built on the triangulation are measured on its in-circle tests (their
 //! dominant cost) or, where their own work is the point, on the operation they add:
@@ -11,13 +11,14 @@
 
 use crate::complexity::{Bound, Entry, Workload};
 use crate::count::{Counter, Operation};
-use crate::delaunay::{
-    all_nearest_neighbours_with, closest_pair_divide_and_conquer_with, closest_pair_with,
-    euclidean_mst_with, largest_empty_circle_with, voronoi_with,
-};
+use crate::delaunay::voronoi_with;
 use crate::error::Result;
 use crate::gen::{points, PointKind};
 use crate::geometry::Point2;
+use crate::proximity::{
+    all_nearest_neighbours_with, closest_pair_divide_and_conquer_with, closest_pair_with,
+    euclidean_mst_with, largest_empty_circle_with,
+};
 
 /// The proximity problems, by catalog name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

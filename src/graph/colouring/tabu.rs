@@ -21,11 +21,11 @@
 //! random choices (where each scan for the best move starts, tenures) come from a fixed
 //! seed, so a graph always gets the same colouring.
 
-use super::colouring::{dsatur_with, is_proper_colouring, Colouring};
-use super::graph::Graph;
+use super::{dsatur_with, is_proper_colouring, Colouring};
 use crate::count::{Counter, NoCount};
 use crate::error::{Error, Result};
 use crate::gen::Rng;
+use crate::graph::Graph;
 use std::collections::VecDeque;
 
 /// The default search budget of [`dsatur_tabu`], in elementary steps per vertex and per

@@ -1,6 +1,6 @@
 //! The closest pair by the classic divide and conquer (Shamos), with exact comparisons only.
 
-use super::proximity::{at_least_two, pair_of, ClosestPair};
+use super::{at_least_two, pair_of, ClosestPair};
 use crate::count::{Counter, NoCount};
 use crate::error::Result;
 use crate::geometry::{CountedPredicates, Point2};
@@ -16,7 +16,7 @@ use std::cmp::Ordering;
 /// O(n log n) time, O(n) auxiliary space.
 ///
 /// ```
-/// use compgeo::delaunay::closest_pair_divide_and_conquer;
+/// use compgeo::proximity::closest_pair_divide_and_conquer;
 /// use compgeo::geometry::Point2;
 ///
 /// let pts = [(0.0, 0.0), (3.0, 4.0), (9.0, 9.0), (3.5, 5.0)].map(Point2::from);
@@ -57,7 +57,7 @@ pub fn closest_pair_divide_and_conquer(points: &[Point2]) -> Result<ClosestPair>
 ///
 /// ```
 /// use compgeo::count::Counts;
-/// use compgeo::delaunay::closest_pair_divide_and_conquer_with;
+/// use compgeo::proximity::closest_pair_divide_and_conquer_with;
 /// use compgeo::gen::{points, PointKind};
 ///
 /// let pts = points(PointKind::UniformSquare, 1024, 5)?;

@@ -1,11 +1,10 @@
 //! The largest empty circle centred in the convex hull.
 
-use super::construct::{circumcentre, distance, midpoint, scale_of};
-use super::incremental::incremental_with;
-use super::proximity::{adjacency, delaunay_edges};
-use super::triangulation::Triangulation;
+use super::{adjacency, delaunay_edges};
 use crate::count::{Counter, NoCount};
+use crate::delaunay::{incremental_with, Triangulation};
 use crate::error::{Error, Result};
+use crate::geometry::construct::{circumcentre, distance, midpoint, scale_of};
 use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
 use std::cmp::Ordering;
 
@@ -32,7 +31,7 @@ pub struct EmptyCircle {
 /// As [`largest_empty_circle_with`].
 ///
 /// ```
-/// use compgeo::delaunay::largest_empty_circle;
+/// use compgeo::proximity::largest_empty_circle;
 /// use compgeo::geometry::Point2;
 ///
 /// // The corners of a square: the centre is the square's, the radius half the diagonal.

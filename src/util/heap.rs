@@ -1,5 +1,5 @@
-//! A binary min-heap whose comparisons go through the caller's counter, shared by DSatur
-//! and Prim (std's `BinaryHeap` cannot report its comparisons).
+//! A binary min-heap whose comparisons go through the caller's counter, shared by DSatur,
+//! Prim and Fortune's sweep (std's `BinaryHeap` cannot report its comparisons).
 
 use crate::count::Counter;
 
@@ -15,6 +15,11 @@ impl<T: Copy> Heap<T> {
         Heap {
             items: Vec::with_capacity(capacity),
         }
+    }
+
+    /// The least item, if any, without removing it.
+    pub(crate) fn peek(&self) -> Option<&T> {
+        self.items.first()
     }
 
     /// Adds `item`: O(log len) comparisons, each counted.

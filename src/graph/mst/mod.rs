@@ -1,0 +1,225 @@
+//! Minimum spanning trees (forests): the seed's greedy tree-growing (Prim), Kruskal and
+//! Borůvka.
+//!
+//! A spanning tree of a connected weighted graph joins every vertex with n − 1 of its edges;
+//! a minimum one has the least total weight (seed `003_5b666ee3e15e6353.txt`, §2.1 "Árbol
+//! Spanning Minimal", Theorem 2.7: the greedy tree is minimal). On a disconnected graph every
+//! function here returns a minimum spanning *forest*: a minimum spanning tree of each
+//! component, n − c edges for c components.
+//!
+//! Edges are ranked by weight, ties by edge index. That is a strict total order, so the
+//! minimum forest is unique and all three algorithms return the same edges. Self-loops are
+//! never used; of parallel edges only the lightest can be.
+//!
+//! The tests compare the weight with brute force over every spanning forest of small graphs,
+//! the three algorithms with each other, and with petgraph on larger graphs.
+
+use crate::count::Counter;
+#[cfg(test)]
+use crate::count::NoCount;
+use crate::error::{Error, Result};
+use crate::graph::{UnionFind, WeightedGraph};
+use std::fmt;
+use std::str::FromStr;
+
+mod boruvka;
+mod kruskal;
+mod prim;
+
+pub use boruvka::{boruvka, boruvka_with};
+pub use kruskal::{kruskal, kruskal_with};
+pub use prim::{prim, prim_with};
+
+/// A minimum spanning forest.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpanningForest {
+    /// The forest's edges as indices into the graph's edge list, ascending.
+    pub edges: Vec<usize>,
+    /// The total weight, summed in ascending edge index order (so equal edge sets give
+    /// bit-identical totals).
+    pub weight: f64,
+    /// The number of trees, i.e. connected components of the graph (0 for the empty graph).
+    pub components: usize,
+}
+
+/// The spanning-tree algorithms, by their command-line names.
+///
+/// ```
+/// use compgeo::graph::MstAlgorithm;
+///
+/// assert_eq!("boruvka".parse::<MstAlgorithm>()?, MstAlgorithm::Boruvka);
+/// assert_eq!(MstAlgorithm::Kruskal.name(), "kruskal");
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MstAlgorithm {
+    /// [`prim`], `prim`.
+    Prim,
+    /// [`kruskal`], `kruskal`.
+    Kruskal,
+    /// [`boruvka`], `boruvka`.
+    Boruvka,
+}
+
+impl MstAlgorithm {
+    /// Every algorithm, in the order above.
+    pub const ALL: [MstAlgorithm; 3] = [
+        MstAlgorithm::Prim,
+        MstAlgorithm::Kruskal,
+        MstAlgorithm::Boruvka,
+    ];
+
+    /// The kebab-case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            MstAlgorithm::Prim => "prim",
+            MstAlgorithm::Kruskal => "kruskal",
+            MstAlgorithm::Boruvka => "boruvka",
+        }
+    }
+
+    /// Runs the algorithm, counting its work.
+    ///
+    /// # Complexity
+    /// That of the algorithm: O(m log m) for each (O(m log n) on simple graphs).
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::graph::{MstAlgorithm, WeightedGraph};
+    ///
+    /// let g = WeightedGraph::from_edges(3, &[[0, 1], [1, 2], [2, 0]], &[1.0, 2.0, 3.0])?;
+    /// for a in MstAlgorithm::ALL {
+    ///     assert_eq!(a.run_with(&g, &mut Counts::default()).edges, [0, 1]);
+    /// }
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn run_with<C: Counter>(self, g: &WeightedGraph, c: &mut C) -> SpanningForest {
+        match self {
+            MstAlgorithm::Prim => prim_with(g, c),
+            MstAlgorithm::Kruskal => kruskal_with(g, c),
+            MstAlgorithm::Boruvka => boruvka_with(g, c),
+        }
+    }
+}
+
+impl fmt::Display for MstAlgorithm {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for MstAlgorithm {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        crate::error::algorithm_named(
+            s,
+            "spanning-tree algorithm",
+            &MstAlgorithm::ALL,
+            MstAlgorithm::name,
+        )
+    }
+}
+
+/// Whether `edges` (indices into `g`'s edge list) form a spanning forest of `g`: distinct
+/// valid indices, no cycle (self-loops included), and one tree per connected component
+/// (n − c edges for c components). It does not check minimality; compare weights for that.
+///
+/// # Complexity
+/// O(n + m α(n)) time, O(n + m) auxiliary space.
+///
+/// ```
+/// use compgeo::graph::{is_spanning_forest, WeightedGraph};
+///
+/// let g = WeightedGraph::from_edges(4, &[[0, 1], [1, 2], [2, 0], [3, 3]], &[1.0; 4])?;
+/// assert!(is_spanning_forest(&g, &[0, 2]));
+/// assert!(!is_spanning_forest(&g, &[0])); // 2 is not reached
+/// assert!(!is_spanning_forest(&g, &[0, 1, 2])); // a cycle
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn is_spanning_forest(g: &WeightedGraph, edges: &[usize]) -> bool {
+    let n = g.vertex_count();
+    let mut whole = UnionFind::new(n);
+    for &[u, v] in g.raw_edges() {
+        whole.union(u as usize, v as usize);
+    }
+    let mut used = vec![false; g.edge_count()];
+    let mut forest = UnionFind::new(n);
+    for &e in edges {
+        if e >= g.edge_count() || used[e] {
+            return false;
+        }
+        used[e] = true;
+        let [u, v] = g.endpoints(e);
+        if !forest.union(u, v) {
+            return false;
+        }
+    }
+    forest.set_count() == whole.set_count()
+}
+
+/// Each weight as a `u64` with the order of `f64::total_cmp`, so edges compare as integers.
+pub(super) fn edge_keys(g: &WeightedGraph) -> Vec<u64> {
+    g.weights()
+        .iter()
+        .map(|&w| crate::util::order_key(w))
+        .collect()
+}
+
+/// Sorts the chosen edges and sums their weights in index order.
+pub(super) fn finish(
+    g: &WeightedGraph,
+    mut chosen: Vec<usize>,
+    components: usize,
+) -> SpanningForest {
+    chosen.sort_unstable();
+    debug_assert!(is_spanning_forest(g, &chosen));
+    let weight = chosen.iter().map(|&e| g.weight(e)).sum();
+    SpanningForest {
+        edges: chosen,
+        weight,
+        components,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_order_like_total_cmp() {
+        let w = [
+            -3.5,
+            -0.0,
+            0.0,
+            1e-300,
+            2.0,
+            -1e300,
+            7.25,
+            f64::MIN_POSITIVE,
+        ];
+        let g = WeightedGraph::from_edges(2, &vec![[0, 1]; w.len()], &w).unwrap();
+        let keys = edge_keys(&g);
+        for i in 0..w.len() {
+            for j in 0..w.len() {
+                assert_eq!(
+                    keys[i].cmp(&keys[j]),
+                    w[i].total_cmp(&w[j]),
+                    "{} {}",
+                    w[i],
+                    w[j]
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn empty_and_edgeless_graphs_give_empty_forests() {
+        for n in [0, 1, 4] {
+            let g = WeightedGraph::from_edges(n, &[], &[]).unwrap();
+            for a in MstAlgorithm::ALL {
+                let f = a.run_with(&g, &mut NoCount);
+                assert_eq!((f.edges.len(), f.weight, f.components), (0, 0.0, n));
+            }
+        }
+    }
+}

@@ -1,0 +1,107 @@
+//! Prim's algorithm: the course's greedy tree, grown from one vertex by the lightest edge to a
+//! new vertex.
+
+use super::{edge_keys, finish, SpanningForest};
+use crate::count::{Counter, NoCount};
+use crate::graph::WeightedGraph;
+use crate::util::Heap;
+
+/// Prim's algorithm; see [`prim_with`].
+///
+/// # Complexity
+/// O(m log m) time (O(m log n) on simple graphs), O(n + m) auxiliary space.
+///
+/// ```
+/// use compgeo::graph::{prim, WeightedGraph};
+///
+/// let g = WeightedGraph::from_edges(4, &[[0, 1], [1, 2], [2, 3], [3, 0]], &[4.0, 1.0, 2.0, 3.0])?;
+/// let t = prim(&g);
+/// assert_eq!((t.edges, t.weight), (vec![1, 2, 3], 6.0));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn prim(g: &WeightedGraph) -> SpanningForest {
+    prim_with(g, &mut NoCount)
+}
+
+/// The seed's greedy spanning tree (Prim's algorithm), counting its work.
+///
+/// The idea (`003_5b666ee3e15e6353.txt`, §2.1 "Árbol Spanning Minimal", "Algoritmo voraz
+/// aplicado a un Árbol Spanning Minimal"): take the lightest edge; then repeatedly add the
+/// lightest edge that brings a new vertex into the tree, until no edge does. The tree grows
+/// from an endpoint of the lightest edge (whose lightest edge is that one, so the first step
+/// is the seed's). A binary heap holds the edges leaving the tree, keyed by (weight, edge
+/// index); edges whose far end joined the tree meanwhile are skipped when popped. When the
+/// heap runs dry with vertices left, a new tree starts at the smallest vertex not yet
+/// reached, which makes a minimum spanning forest.
+///
+/// # Complexity
+/// O(m log m) time for n vertices and m edges, which is O(m log n) when there are no
+/// parallel edges (m < n²); O(n + m) auxiliary space for the heap.
+///
+/// # Counts
+/// One `comparison` per comparison of heap entries (the dominant work, at most
+/// 2·m·⌈log₂(2m)⌉ + m) and one `edge_visit` per incidence looked at (exactly 2m minus the
+/// self-loops' share).
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::graph::{prim_with, WeightedGraph};
+///
+/// // Two components: a triangle and a single edge.
+/// let g = WeightedGraph::from_edges(5, &[[0, 1], [1, 2], [0, 2], [3, 4]], &[1.0, 1.0, 5.0, 2.0])?;
+/// let mut c = Counts::default();
+/// let f = prim_with(&g, &mut c);
+/// assert_eq!((f.edges, f.weight, f.components), (vec![0, 1, 3], 4.0, 2));
+/// assert_eq!(c.edge_visits, 8);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn prim_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest {
+    let n = g.vertex_count();
+    let keys = edge_keys(g);
+    let mut in_tree = vec![false; n];
+    let mut chosen = Vec::with_capacity(n.saturating_sub(1));
+    let mut heap: Heap<(u64, u32, u32)> = Heap::with_capacity(0);
+    let first = (0..g.edge_count())
+        .filter(|&e| g.endpoints(e)[0] != g.endpoints(e)[1])
+        .min_by_key(|&e| (keys[e], e))
+        .map_or(0, |e| g.endpoints(e)[0]);
+    let mut components = 0;
+    let starts = std::iter::once(first).chain(0..n);
+    for root in starts {
+        if root >= n || in_tree[root] {
+            continue;
+        }
+        components += 1;
+        grow(g, &keys, root, &mut in_tree, &mut heap, c);
+        while let Some((_, e, t)) = heap.pop(lighter, c) {
+            if !in_tree[t as usize] {
+                chosen.push(e as usize);
+                grow(g, &keys, t as usize, &mut in_tree, &mut heap, c);
+            }
+        }
+    }
+    finish(g, chosen, components)
+}
+
+/// Prim's step: `v` joins the tree and its edges to vertices outside go on the heap.
+fn grow<C: Counter>(
+    g: &WeightedGraph,
+    keys: &[u64],
+    v: usize,
+    in_tree: &mut [bool],
+    heap: &mut Heap<(u64, u32, u32)>,
+    c: &mut C,
+) {
+    in_tree[v] = true;
+    for &(t, e) in g.incidences_of(v) {
+        c.edge_visit();
+        if !in_tree[t as usize] {
+            heap.push((keys[e as usize], e, t), lighter, c);
+        }
+    }
+}
+
+/// Prim's heap order: by weight key, then edge index.
+fn lighter(a: &(u64, u32, u32), b: &(u64, u32, u32)) -> bool {
+    (a.0, a.1) < (b.0, b.1)
+}

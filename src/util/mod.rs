@@ -1,0 +1,62 @@
+//! Small internals shared by several modules, each written once: the counted binary heap, the
+//! order-preserving integer key of an `f64`, and the compressed adjacency lists of an edge list.
+
+mod csr;
+mod heap;
+
+pub(crate) use csr::Csr;
+pub(crate) use heap::Heap;
+
+/// The `u64` whose integer order is the order of `f64::total_cmp` on `x`: the sign bit set for
+/// non-negative values, every bit flipped for negative ones (a monotone bijection on the bit
+/// patterns, no arithmetic on the values). Radix sort, Kruskal's edge ranks and the hull's
+/// lexicographic keys compare these instead of floats.
+#[inline(always)]
+pub(crate) fn order_key(x: f64) -> u64 {
+    let bits = x.to_bits();
+    // All ones for negative floats, only the sign bit for the others.
+    let flip = (((bits as i64) >> 63) as u64) | (1 << 63);
+    bits ^ flip
+}
+
+/// The inverse of [`order_key`].
+#[inline(always)]
+pub(crate) fn from_order_key(key: u64) -> f64 {
+    // Keys with the top bit set came from non-negative floats: undo the flips of `order_key`.
+    let flip = if key >> 63 == 1 { 1 << 63 } else { u64::MAX };
+    f64::from_bits(key ^ flip)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_order_as_total_cmp_and_invert() {
+        let values = [
+            f64::from_bits(0xFFF8_0000_0000_0001), // a negative NaN with a payload
+            -f64::NAN,
+            f64::NEG_INFINITY,
+            -f64::MAX,
+            -1e300,
+            -3.5,
+            -f64::MIN_POSITIVE,
+            -5e-324,
+            -0.0,
+            0.0,
+            5e-324,
+            f64::MIN_POSITIVE,
+            1.0,
+            1.0 + f64::EPSILON,
+            f64::MAX,
+            f64::INFINITY,
+            f64::NAN,
+        ];
+        for &a in &values {
+            assert_eq!(from_order_key(order_key(a)).to_bits(), a.to_bits());
+            for &b in &values {
+                assert_eq!(order_key(a).cmp(&order_key(b)), a.total_cmp(&b), "{a} {b}");
+            }
+        }
+    }
+}
