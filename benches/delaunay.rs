@@ -99,7 +99,7 @@
 
 use compgeo::delaunay::{divide_and_conquer, fortune, incremental, voronoi, ClipBox};
 use compgeo::gen::{points, PointKind};
-use compgeo::geometry::Point2;
+use compgeo::geometry::{Point2, PointSet};
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion, Throughput};
 use spade::Triangulation as _;
 use std::hint::black_box;
@@ -175,7 +175,7 @@ fn voronoi_cells(c: &mut Criterion) {
         for &n in sizes {
             let pts = points(kind, n, SEED).unwrap();
             // One box for both crates: the sites' bounding box grown by a quarter.
-            let bounds = ClipBox::around(&pts).unwrap();
+            let bounds = ClipBox::around(&PointSet::new(&pts).unwrap()).unwrap();
             group.throughput(Throughput::Elements(n as u64));
             // Every diagram is dropped outside the timed region, as `iter_batched` does for
             // voronoice's.

@@ -35,7 +35,7 @@
 //! on 10⁵ points on a circle the round with m = 65 536 runs 65 536 wrapping steps before it
 //! gives up.
 
-use compgeo::calipers::diameter;
+use compgeo::calipers::{diameter, DiameterAlgorithm};
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::Point2;
 use compgeo::hull::{convex_hull, Algorithm, HullOptions};
@@ -127,7 +127,7 @@ fn diameters(c: &mut Criterion) {
             })
         });
         group.bench_with_input(BenchmarkId::new("hull+calipers", n), &pts, |b, pts| {
-            b.iter(|| diameter(black_box(pts)))
+            b.iter(|| diameter(black_box(pts), DiameterAlgorithm::Calipers))
         });
     }
     group.finish();

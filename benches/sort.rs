@@ -7,7 +7,7 @@
 
 use compgeo::count::NoCount;
 use compgeo::gen::{points, sequence, sequence_f64, PointKind, SequenceKind};
-use compgeo::sort::{radix_sort_f64, Algorithm};
+use compgeo::sort::{radix_sort_f64, sort_with, Algorithm};
 use criterion::measurement::WallTime;
 use criterion::{
     criterion_group, criterion_main, BatchSize, BenchmarkGroup, BenchmarkId, Criterion, Throughput,
@@ -71,7 +71,7 @@ fn sorts(c: &mut Criterion) {
                     continue;
                 }
                 bench(&mut group, algorithm.name(), kind, n, |v| {
-                    algorithm.sort_with(v, i64::cmp, &mut NoCount)
+                    sort_with(v, algorithm, i64::cmp, &mut NoCount)
                 });
             }
             bench(&mut group, "std-sort", kind, n, |v| v.sort());

@@ -5,7 +5,7 @@
 
 use compgeo::count::Counts;
 use compgeo::gen::{sequence, SequenceKind};
-use compgeo::sort::Algorithm;
+use compgeo::sort::{sort_with, Algorithm};
 
 fn main() {
     let sizes = [16usize, 32, 64, 128, 256, 512, 1024];
@@ -19,7 +19,7 @@ fn main() {
         for n in sizes {
             let mut keys = sequence(SequenceKind::Random, n, 1);
             let mut counts = Counts::default();
-            algorithm.sort_with(&mut keys, i64::cmp, &mut counts);
+            sort_with(&mut keys, algorithm, i64::cmp, &mut counts);
             assert!(keys.windows(2).all(|w| w[0] <= w[1]));
             print!("{:>9}", counts.comparisons);
         }

@@ -5,79 +5,105 @@
 //!
 //! ## Module map
 //!
-//! | module | what it holds |
-//! |---|---|
-//! | [`geometry`] | [`Point2`](geometry::Point2), exact predicates, validation |
-//! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) |
-//! | [`error`] | the crate's [`Error`] and [`Result`] |
-//! | [`gen`] | seeded workload generators: point sets, graphs, number sequences |
-//! | [`complexity`] | stated bounds, the catalog of algorithms, measurement, fits and verdicts |
-//! | [`graph`] | CSR graphs, BFS/DFS, greedy colouring, minimum spanning trees |
-//! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces |
-//! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
-//! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
-//! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the seed's divide and conquer, Lawson's flips, Fortune's sweep), exact checker; the Voronoi diagram and the proximity problems on it |
-//! | [`spline`] | Bernstein basis and Bézier curves, generic over the scalar (`f64`, exact rationals) and the dimension |
-//! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
+//! | module | what it holds | files |
+//! |---|---|---|
+//! | [`geometry`] | [`Point2`](geometry::Point2), the validated [`PointSet`](geometry::PointSet) and its [`BoundingBox`](geometry::BoundingBox), exact predicates, [`PointPair`](geometry::PointPair) | `src/geometry/` |
+//! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) | `src/count.rs` |
+//! | [`error`] | the crate's [`Error`] and [`Result`] | `src/error.rs` |
+//! | [`gen`] | seeded workload generators: point sets, graphs, number sequences | `src/gen/` |
+//! | [`complexity`] | every algorithm's [`Declaration`](complexity::Declaration), stated bounds, the catalog, measurement, fits and verdicts | `src/complexity/` |
+//! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces | `src/sort/`, one file per sort |
+//! | [`graph`] | CSR graphs and their edge lists, BFS/DFS, colourings, minimum spanning trees | `src/graph/`: `colouring/` and `mst/` one file per algorithm |
+//! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull, Chan; exact checkers | `src/hull/`, one file per algorithm |
+//! | [`calipers`] | rotating calipers on a [`ConvexPolygon`](calipers::ConvexPolygon): antipodal pairs, diameter, width, minimum-area rectangle; the diameter by brute force | `src/calipers/`, one file per problem |
+//! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the course's divide and conquer, Lawson's flips, Fortune's sweep), the exact checker, the Voronoi diagram and its clipping | `src/delaunay/`, one file per builder |
+//! | [`proximity`] | closest pair (on the Delaunay triangulation, by divide and conquer), nearest search, all nearest neighbours, Euclidean MST, largest empty circle | `src/proximity/`, one file per problem |
+//! | [`spline`] | Bernstein basis and Bézier curves, interpolation, generic over the scalar (`f64`, exact rationals) and the dimension | `src/spline/` |
+//! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command | `src/cli/` |
+//!
+//! Every algorithm's own file is in the table below.
 //!
 //! ## Algorithms and their bounds
 //!
-//! n is the input size (for graphs the number of vertices, m the number of edges). Bounds are
-//! worst case unless marked otherwise; the counted operation is the one each algorithm's
-//! `# Counts` section names.
+//! Every algorithm is declared once, in its own file, as a
+//! [`Declaration`](complexity::Declaration): its name, the problem it solves, its stated time
+//! and space, what it counts, its source and the growth the report measures. This table, the
+//! `Algorithm` enums, the command line's `--help` and the report's catalog all read it from
+//! there (a test fails when this table differs). n is the input size (for graphs the number
+//! of vertices, m the number of edges; h the size of the output, such as the hull's
+//! vertices); bounds are worst case unless the row says otherwise. The file is one hop from
+//! the algorithm.
+//!
+//! <!-- algorithms -->
+//! | algorithm | time | space | counts | source | file |
+//! |---|---|---|---|---|---|
+//! | `predicate/orient2d`: [`geometry::orient2d`] | O(1) | O(1) | orientation tests: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/incircle`: [`geometry::incircle`] | O(1) | O(1) | incircle tests: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cmp-dist`: [`geometry::cmp_dist`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cross-sign`: [`geometry::cross_sign`] | O(1) | O(1) | orientation tests: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cmp-lex`: [`geometry::cmp_lex`] | O(1) | O(1) | comparisons: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cmp-line-dist`: [`geometry::cmp_line_dist`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/products.rs` |
+//! | `predicate/cmp-rect-area`: [`geometry::cmp_rect_area`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/products.rs` |
+//! | `sort/bubble`: [`sort::bubble_sort`] | Θ(n²) | O(1) | comparisons: exactly n(n − 1)/2 comparisons | [RD, §2.1] | `src/sort/bubble.rs` |
+//! | `sort/selection`: [`sort::selection_sort`] | Θ(n²) | O(1) | comparisons: exactly n(n − 1)/2 comparisons | [RD, §2.1] | `src/sort/selection.rs` |
+//! | `sort/insertion`: [`sort::insertion_sort`] | Θ(n²) in the worst case and Θ(n) on sorted input | O(1) | comparisons: at most n(n − 1)/2 comparisons, n − 1 on sorted input | [RD, §2.1] | `src/sort/insertion.rs` |
+//! | `sort/course-insertion`: [`sort::course_insertion_sort`] | Θ(n²) | O(1) | comparisons: n(n − 1)/2 comparisons on sorted input, as many moves on reversed input | [RD, §2.1] | `src/sort/course_insertion.rs` |
+//! | `sort/binary-insertion`: [`sort::binary_insertion_sort`] | O(n²) worst case | O(1) | moves: at most ⌈log₂ k⌉ comparisons per step, one move per inversion | [RD, §2.1] | `src/sort/binary_insertion.rs` |
+//! | `sort/course-binary-insertion`: [`sort::course_binary_insertion_sort`] | O(n²) worst case | O(1) | moves: ⌈log₂ k⌉ + 1 comparisons per step, one move per inversion | [RD, §2.1] | `src/sort/course_binary_insertion.rs` |
+//! | `sort/merge`: [`sort::merge_sort`] | Θ(n log n) | O(n) | comparisons: at most n⌈log₂ n⌉ comparisons | [RD, §2.1] | `src/sort/merge.rs` |
+//! | `sort/heap`: [`sort::heap_sort`] | O(n log n) worst case | O(1) | comparisons: at most 2n log₂ n comparisons | [RD, §2.1] | `src/sort/heap.rs` |
+//! | `sort/quick`: [`sort::quick_sort`] | O(n log n) worst case | O(log n) | comparisons: at most 6n log₂ n + n comparisons | [RD, §2.1] | `src/sort/quick.rs` |
+//! | `sort/radix-f64`: [`sort::radix_sort_f64`] | O(n) | O(n) | moves: at most 24n moves and 7.5n key comparisons | [RD, §2.1] | `src/sort/radix.rs` |
+//! | `search/bfs`: [`graph::bfs`] | O(n + m) | O(n) | edge visits: exactly 2m edge visits on a connected graph | [RD, §2.1] | `src/graph/traverse.rs` |
+//! | `search/dfs`: [`graph::dfs`] | O(n + m) | O(n) | edge visits: exactly 2m edge visits on a connected graph | [RD, §2.1] | `src/graph/traverse.rs` |
+//! | `colour/course`: [`graph::course_greedy_colouring`] | O(n² + m) | O(n) | adjacency tests: exactly n(n − 1)/2 adjacency tests | [RD, §2.1] | `src/graph/colouring/course.rs` |
+//! | `colour/greedy`: [`graph::greedy_colouring`] | O(n + m) | O(n) | edge visits: exactly 2m edge visits | [RD, §2.1] | `src/graph/colouring/greedy.rs` |
+//! | `colour/largest-first`: [`graph::largest_first_order`] | O(n + m) | O(n) | edge visits: the greedy colouring's 2m edge visits | [RD, §2.1] | `src/graph/colouring/largest_first.rs` |
+//! | `colour/smallest-last`: [`graph::smallest_last_order`] | O(n + m) | O(n) | edge visits: the greedy colouring's 2m edge visits | [RD, §2.1] | `src/graph/colouring/smallest_last.rs` |
+//! | `colour/dsatur`: [`graph::dsatur`] | O((n + m) log n) | O(n + m) | comparisons: heap comparisons; exactly 2m edge visits | [RD, §2.1] | `src/graph/colouring/dsatur.rs` |
+//! | `colour/dsatur-tabu`: [`graph::dsatur_tabu`] | O((n + m) log n) | O(n + m) | comparisons: DSatur's heap comparisons plus at most 20(n + 2m) search steps | [RD, §2.1] | `src/graph/colouring/tabu.rs` |
+//! | `mst/prim`: [`graph::prim`] | O(m log m) | O(n + m) | comparisons: heap comparisons; O(m log n) on simple graphs | [RD, §2.1] | `src/graph/mst/prim.rs` |
+//! | `mst/kruskal`: [`graph::kruskal`] | O(m log m) | O(n + m) | comparisons: those of the edge sort, then one edge visit per edge examined | [RD, §2.1] | `src/graph/mst/kruskal.rs` |
+//! | `mst/boruvka`: [`graph::boruvka`] | O(m log n) | O(n + m) | edge visits: at most ⌈log₂ n⌉ rounds over the remaining edges | [RD, §2.1] | `src/graph/mst/boruvka.rs` |
+//! | `hull/brute-force`: [`hull::brute_force_hull`] | Θ(n³) | O(n) | orientation tests: m − 2 per ordered pair of the m distinct points that is an edge, fewer for the others | [RD, §2.2] | `src/hull/brute_force.rs` |
+//! | `hull/jarvis`: [`hull::jarvis_march`] | Θ(nh) | O(h) | orientation tests: at most n − 1 per hull vertex | [RD, §2.2] | `src/hull/jarvis.rs` |
+//! | `hull/graham`: [`hull::graham_scan`] | O(n log n) | O(n) | orientation tests: at most 2n − 4 in the scan after the sort | [RD, §2.2] | `src/hull/graham.rs` |
+//! | `hull/monotone-chain`: [`hull::monotone_chain`] | O(n log n) | O(n) | comparisons: those of the sort, plus n − 1 to merge duplicates | [RD, §2.2] | `src/hull/monotone_chain.rs` |
+//! | `hull/akl-toussaint`: [`hull::akl_toussaint`] | O(n log n) worst case, O(n) expected on uniform input | O(n) | comparisons: up to four per point for the filter box | [RD, §2.2] | `src/hull/akl_toussaint.rs` |
+//! | `hull/quickhull`: [`hull::quickhull`] | O(nh) worst case, O(n log n) expected | O(n) | orientation tests | [RD, §2.2] | `src/hull/quickhull.rs` |
+//! | `hull/chan`: [`hull::chan`] | O(n log h) | O(n) | orientation tests | [RD, §2.2] | `src/hull/chan.rs` |
+//! | `diameter/calipers`: [`calipers::ConvexPolygon::diameter`] | Θ(h) after the hull | O(n) | distance evaluations: at most 3h/2 after the hull, one per antipodal pair | [RD, §2.3] | `src/calipers/diameter.rs` |
+//! | `diameter/brute-force`: [`calipers::diameter_brute_force`] | Θ(n²) | O(1) | distance evaluations: exactly n(n − 1)/2 − 1 for n ≥ 2 | [RD, §2.3] | `src/calipers/diameter.rs` |
+//! | `antipodal-pairs/calipers`: [`calipers::ConvexPolygon::antipodal_pairs`] | Θ(h) | O(h) | orientation tests: at most h, one exact direction test per step; at most 3h/2 pairs | [RD, §2.3] | `src/calipers/antipodal.rs` |
+//! | `width/calipers`: [`calipers::ConvexPolygon::width`] | Θ(h) after the hull | O(1) | orientation tests: at most 9h for the calipers, and h − 1 exact distance comparisons | [RD, §2.3] | `src/calipers/width.rs` |
+//! | `min-area-rectangle/calipers`: [`calipers::ConvexPolygon::min_area_rectangle`] | Θ(h) after the hull | O(1) | orientation tests: at most 9h for the calipers, and h − 1 exact area comparisons | [RD, §2.3] | `src/calipers/rectangle.rs` |
+//! | `delaunay/incremental`: [`delaunay::incremental`] | O(n log n) expected on every input | O(n) | incircle tests: about 9 in-circle and 7 orientation tests per point on uniform input | [RD, §2.4] | `src/delaunay/incremental.rs` |
+//! | `delaunay/divide-and-conquer`: [`delaunay::divide_and_conquer`] | O(n log n) in the worst case | O(n) | incircle tests: about 29 in-circle tests per point at 10⁵ uniform points | [RD, §2.4] | `src/delaunay/divide_conquer.rs` |
+//! | `delaunay/lawson`: [`delaunay::lawson`] | O(n²) in the worst case | O(n) | incircle tests: one per edge check, Θ(n²) on a parabola | [RD, §2.4] | `src/delaunay/lawson.rs` |
+//! | `delaunay/fortune`: [`delaunay::fortune`] | O(n log n) expected | O(n) | comparisons: the sort, the event queue and the breakpoint tests; no in-circle test | [RD, §2.4] | `src/delaunay/fortune.rs` |
+//! | `voronoi/delaunay-dual`: [`delaunay::voronoi`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation; the dual makes no geometric decision | [RD, §2.4] | `src/delaunay/voronoi.rs` |
+//! | `closest-pair/delaunay`: [`proximity::closest_pair_delaunay`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation, then one distance evaluation per Delaunay edge | [RD, §2.4] | `src/proximity/closest_pair_delaunay.rs` |
+//! | `closest-pair/divide-and-conquer`: [`proximity::closest_pair_divide_and_conquer`] | O(n log n) in the worst case | O(n) | distance evaluations: strip membership, height cut-offs and candidate pairs, all exact | [RD, §2.4] | `src/proximity/closest_pair_divide_and_conquer.rs` |
+//! | `all-nearest-neighbours/delaunay`: [`proximity::all_nearest_neighbours`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation, then two distance evaluations per Delaunay edge | [RD, §2.4] | `src/proximity/all_nearest.rs` |
+//! | `nearest/delaunay-walk`: [`proximity::NearestSearch::nearest`] | O(n log n) to build; O(√n) expected steps per query on uniform points | O(n) | distance evaluations: one per neighbour looked at during a walk | [RD, §2.4] | `src/proximity/nearest.rs` |
+//! | `emst/delaunay-kruskal`: [`proximity::euclidean_mst`] | O(n log n) expected | O(n) | distance evaluations: those of the exact length sort, after the triangulation's tests | [RD, §2.4] | `src/proximity/emst.rs` |
+//! | `empty-circle/voronoi`: [`proximity::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case | O(n) | orientation tests: the hull tests of the Voronoi vertices, O(log h) each | [RD, §2.4] | `src/proximity/empty_circle.rs` |
+//! | `bezier/de-casteljau`: [`spline::Bezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations per point | [PPB, §2.3] | `src/spline/bezier.rs` |
+//! | `bezier/horner`: [`spline::Bezier::horner`] | Θ(nD) | O(D) | arithmetic operations: n + 1 point operations per point | [PPB, §2.3] | `src/spline/bezier.rs` |
+//! | `spline/cubic-natural`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: exactly 7n + 4 point operations | [RD, §3.1] | `src/spline/cubic_spline.rs` |
+//! | `spline/cubic-periodic`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: Θ(n) point operations | [RD, §3.1] | `src/spline/cubic_spline.rs` |
+//! <!-- /algorithms -->
+//!
+//! The curve kernels (each generic over the scalar and the dimension):
 //!
 //! | algorithm | bound |
 //! |---|---|
-//! | [`geometry::orient2d`], [`geometry::cmp_dist`], [`geometry::cross_sign`] | O(1), exact for every finite input |
-//! | [`geometry::incircle`] | O(1), exact for every finite input |
-//! | [`sort::bubble_sort`] | Θ(n²) time, exactly n(n−1)/2 comparisons |
-//! | [`sort::selection_sort`] | Θ(n²) time, exactly n(n−1)/2 comparisons |
-//! | [`sort::insertion_sort`], [`sort::course_insertion_sort`] | O(n²) time, at most n(n−1)/2 comparisons |
-//! | [`sort::binary_insertion_sort`], [`sort::course_binary_insertion_sort`] | O(n log n) comparisons, O(n²) time (moves) |
-//! | [`sort::merge_sort`] | Θ(n log n) time, at most n⌈log₂ n⌉ comparisons |
-//! | [`sort::heap_sort`] | O(n log n) time, at most 2n log₂ n comparisons |
-//! | [`sort::quick_sort`] | O(n log n) time (introsort), at most 6n log₂ n + n comparisons |
-//! | [`sort::radix_sort_f64`] | Θ(n) time, at most 24n moves and 7.5n key comparisons |
-//! | [`graph::bfs`], [`graph::dfs`] | O(n + m) time, exactly 2m edge visits on a connected graph |
-//! | [`graph::course_greedy_colouring`] | O(n² + m) time, exactly n(n−1)/2 adjacency tests |
-//! | [`graph::greedy_colouring`] (any order) | O(n + m) time |
-//! | [`graph::dsatur`] | O((n + m) log n) time |
-//! | [`graph::dsatur_tabu`] (DSatur, then a tabu search for fewer colours) | O((n + m) log n) time, at most 20(n + 2m) search steps |
-//! | [`graph::prim`] | O(m log n) time (simple graphs), binary heap |
-//! | [`graph::kruskal`] | O(m log m) time, union–find |
-//! | [`graph::boruvka`] | O(m log n) time, at most ⌈log₂ n⌉ rounds |
-//! | [`hull::brute_force_hull`] | Θ(n³) orientation tests |
-//! | [`hull::jarvis_march`] | Θ(nh) for h hull vertices: O(n²) on points in convex position |
-//! | [`hull::graham_scan`] | O(n log n); at most 2n − 4 orientation tests after sorting |
-//! | [`hull::monotone_chain`] | O(n log n) |
-//! | [`hull::akl_toussaint`] | O(n log n) worst case, O(n) expected on uniform input |
-//! | [`hull::quickhull`] | O(n log n) expected, O(nh) worst case |
-//! | [`hull::chan`] | O(n log h), output-sensitive |
-//! | [`calipers::antipodal_pairs`] | Θ(n) on a convex polygon of n vertices, at most 3n/2 pairs |
-//! | [`calipers::diameter`] | the hull's time plus Θ(h) |
-//! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |
-//! | [`calipers::width`], [`calipers::min_area_rectangle`] | the hull's time plus Θ(h) |
 //! | [`spline::vandermonde`], [`spline::vandermonde_hermite`] | Θ(n³) for n conditions (dense elimination) |
 //! | [`spline::lagrange`], [`spline::aitken`] | Θ(n²) per evaluation, n nodes |
 //! | [`spline::newton`], [`spline::newton_hermite`] | Θ(n²) divided differences, Θ(n) per evaluation |
-//! | [`spline::cubic_spline`] (natural, clamped, Bessel, periodic) | Θ(n), exactly 7n + 4 point operations (open ends) |
 //! | [`spline::hermite`], [`spline::quadratic_spline`], [`spline::closed_quadratic_spline`] | Θ(n) |
 //! | [`spline::fit_bezier`] | Θ(m n² + n³) for m points, degree n |
 //! | [`spline::frenet_frame`] | Θ(d³) in R^d |
-//! | [`delaunay::incremental`] | O(n log n) expected on every input (BRIO + Hilbert order) |
-//! | [`delaunay::divide_and_conquer`] | O(n log n) worst case (Guibas–Stolfi merge) |
-//! | [`delaunay::lawson`] | O(n²) worst case: Θ(n²) in-circle tests on a parabola |
-//! | [`delaunay::fortune`] | O(n log n) expected (treap beach line, heap of circle events), exact event order |
-//! | [`delaunay::check_delaunay`] | O(n log n + t), exact |
-//! | [`delaunay::voronoi`] | the triangulation's time, then O(n log n) for the dual (a sort along a curve, then O(n)); clipping O(n) |
-//! | [`proximity::all_nearest_neighbours`] | O(n log n) expected; two distance evaluations per Delaunay edge |
-//! | [`proximity::closest_pair`] | O(n log n) expected; the shortest Delaunay edge |
-//! | [`proximity::closest_pair_divide_and_conquer`] | O(n log n) worst case, exact comparisons |
-//! | [`proximity::NearestSearch`] | O(n log n) to build; a greedy walk per query, O(√n) expected steps on uniform input |
-//! | [`proximity::euclidean_mst`] | O(n log n) expected; Delaunay edges ranked exactly, then Kruskal |
-//! | [`proximity::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case |
-//! | [`spline::Bezier::de_casteljau`] (degree n) | Θ(n²): exactly n(n+1)/2 affine combinations per point |
-//! | [`spline::Bezier::horner`], [`spline::Bezier::eval`] | Θ(n): n + 1 point operations per point |
 //! | [`spline::Bezier::split`], [`spline::Bezier::blossom`], [`spline::Bezier::derivative_at`] | Θ(n²) |
 //! | [`spline::Bezier::elevate_to`] (degree n to m) | Θ(mn) |
 //! | [`spline::Bezier::flatten`] | Θ(s·n²) for s segments, s = O(√(bound/tolerance)) |

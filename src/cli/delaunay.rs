@@ -4,15 +4,16 @@ use super::input::PointInput;
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
-use crate::delaunay::Algorithm;
+use crate::delaunay::{triangulate_with, Algorithm};
+use crate::geometry::PointSet;
 use clap::Args;
 use serde::Serialize;
 
 /// Arguments of `compgeo delaunay`.
 #[derive(Debug, Args)]
 pub(super) struct DelaunayArgs {
-    /// The builder: incremental, divide-and-conquer, lawson, fortune
-    #[arg(long, short, default_value = "incremental")]
+    #[arg(long, short, default_value = "incremental", help = Algorithm::names(),
+        long_help = Algorithm::help())]
     algorithm: Algorithm,
     #[command(flatten)]
     input: PointInput,
@@ -33,7 +34,7 @@ struct DelaunayOutput {
 pub(super) fn run(args: DelaunayArgs) -> Result<(), CliError> {
     let points = args.input.read()?;
     let mut counts = Counts::default();
-    let t = args.algorithm.triangulate_with(&points, &mut counts)?;
+    let t = triangulate_with(&PointSet::new(&points)?, args.algorithm, &mut counts)?;
     print_json(&DelaunayOutput {
         algorithm: args.algorithm.name(),
         triangles: (0..t.triangle_count()).map(|k| t.triangle(k)).collect(),

@@ -11,10 +11,9 @@ use super::input::GraphInput;
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
-use crate::graph::EdgeList;
 use crate::graph::{
-    bfs_with, colour_with, components, dfs_with, search_trace, trace_table, ColouringAlgorithm,
-    Graph, MstAlgorithm, SearchKind, WeightedGraph,
+    colour_with, components, search_trace, search_with, spanning_forest_with, trace_table,
+    ColouringAlgorithm, EdgeList, Graph, MstAlgorithm, SearchAlgorithm, WeightedGraph,
 };
 use crate::Error;
 use clap::Args;
@@ -37,8 +36,7 @@ pub(super) struct SearchArgs {
 /// Arguments of `compgeo colour`.
 #[derive(Debug, Args)]
 pub(super) struct ColourArgs {
-    /// course, greedy, largest-first, smallest-last, dsatur or dsatur-tabu
-    #[arg(long, short)]
+    #[arg(long, short, help = ColouringAlgorithm::names(), long_help = ColouringAlgorithm::help())]
     algorithm: ColouringAlgorithm,
     #[command(flatten)]
     graph: GraphInput,
@@ -47,8 +45,7 @@ pub(super) struct ColourArgs {
 /// Arguments of `compgeo mst`.
 #[derive(Debug, Args)]
 pub(super) struct MstArgs {
-    /// prim, kruskal or boruvka
-    #[arg(long, short)]
+    #[arg(long, short, help = MstAlgorithm::names(), long_help = MstAlgorithm::help())]
     algorithm: MstAlgorithm,
     #[command(flatten)]
     graph: GraphInput,
@@ -78,21 +75,18 @@ struct MstOutput {
     counts: Counts,
 }
 
-/// Runs `compgeo bfs` (`kind = Breadth`) or `compgeo dfs`.
-pub(super) fn run_search(args: SearchArgs, kind: SearchKind) -> Result<(), CliError> {
+/// Runs `compgeo bfs` or `compgeo dfs`, as `algorithm` says.
+pub(super) fn run_search(args: SearchArgs, algorithm: SearchAlgorithm) -> Result<(), CliError> {
     let g = Graph::from_edge_list(&non_empty(args.graph.read()?)?)?;
     if args.trace {
-        let table = trace_table(&search_trace(&g, args.start, kind)?, |v| v.to_string());
+        let table = trace_table(&search_trace(&g, args.start, algorithm)?, |v| v.to_string());
         let mut out = io::stdout().lock();
         return write!(out, "{table}")
             .and_then(|()| out.flush())
             .map_err(CliError::Output);
     }
     let mut counts = Counts::default();
-    let search = match kind {
-        SearchKind::Breadth => bfs_with(&g, args.start, &mut counts)?,
-        SearchKind::Depth => dfs_with(&g, args.start, &mut counts)?,
-    };
+    let search = search_with(&g, args.start, algorithm, &mut counts)?;
     print_json(&SearchOutput {
         order: search.order,
         parent: search.parent,
@@ -124,7 +118,7 @@ pub(super) fn run_mst(args: MstArgs) -> Result<(), CliError> {
     let weights = list.weights.clone().unwrap_or_default();
     let g = WeightedGraph::from_edges(list.vertices, &list.edges, &weights)?;
     let mut counts = Counts::default();
-    let f = args.algorithm.run_with(&g, &mut counts);
+    let f = spanning_forest_with(&g, args.algorithm, &mut counts);
     print_json(&MstOutput {
         edges: f
             .edges

@@ -4,15 +4,16 @@ use super::input::PointInput;
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
-use crate::hull::{Algorithm, HullOptions};
+use crate::geometry::PointSet;
+use crate::hull::{convex_hull_with, Algorithm, HullOptions};
 use clap::Args;
 use serde::Serialize;
 
 /// Arguments of `compgeo hull`.
 #[derive(Debug, Args)]
 pub(super) struct HullArgs {
-    /// brute-force, jarvis, graham, monotone-chain, akl-toussaint, quickhull or chan
-    #[arg(long, short, default_value = "akl-toussaint")]
+    #[arg(long, short, default_value = "akl-toussaint", help = Algorithm::names(),
+        long_help = Algorithm::help())]
     algorithm: Algorithm,
     /// Also list the points in the middle of hull edges, in boundary order
     #[arg(long)]
@@ -37,7 +38,12 @@ pub(super) fn run(args: HullArgs) -> Result<(), CliError> {
     let options = HullOptions {
         keep_collinear: args.keep_collinear,
     };
-    let hull = args.algorithm.hull_with(&points, options, &mut counts)?;
+    let hull = convex_hull_with(
+        &PointSet::new(&points)?,
+        args.algorithm,
+        options,
+        &mut counts,
+    );
     let vertices = hull.iter().map(|&i| [points[i].x, points[i].y]).collect();
     print_json(&HullOutput {
         algorithm: args.algorithm.name(),

@@ -6,26 +6,28 @@
 //! `--help` and `--version` print to stdout and exit 0.
 //!
 //! Every command lives in its own file, `src/cli/<command>.rs`, exposing an `Args` struct
-//! and a `run` function; adding one means a variant in the private `Command` enum and an arm in `run`.
+//! and a `run` function; adding one means a variant in the private `Command` enum and an arm
+//! in `run`. Everything here is private to the crate except [`main`], which the binary calls:
+//! the command line is a front end, not a library API.
 //! Commands read their input with [`input`] (points and graphs), print with
 //! [`output::print_json`], and report problems as [`CliError`].
 
 mod bezier;
 mod delaunay;
 mod diameter;
-pub mod error;
+mod error;
 mod gen;
 mod graph;
 mod hull;
-pub mod input;
+mod input;
 mod interpolate;
-pub mod output;
+mod output;
 mod proximity;
 mod report;
 mod sort;
 mod stats;
 
-pub use error::CliError;
+use error::CliError;
 
 use clap::error::ErrorKind;
 use clap::{Parser, Subcommand};
@@ -34,7 +36,7 @@ use std::process::ExitCode;
 /// Exact computational geometry that measures its own complexity.
 #[derive(Debug, Parser)]
 #[command(name = "compgeo", version, about)]
-pub struct Cli {
+pub(crate) struct Cli {
     #[command(subcommand)]
     command: Command,
 }
@@ -101,8 +103,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Stats(args) => stats::run(args),
         Command::Report(args) => report::run(args),
         Command::Sort(args) => sort::run(args),
-        Command::Bfs(args) => graph::run_search(args, crate::graph::SearchKind::Breadth),
-        Command::Dfs(args) => graph::run_search(args, crate::graph::SearchKind::Depth),
+        Command::Bfs(args) => graph::run_search(args, crate::graph::SearchAlgorithm::Bfs),
+        Command::Dfs(args) => graph::run_search(args, crate::graph::SearchAlgorithm::Dfs),
         Command::Colour(args) => graph::run_colour(args),
         Command::Mst(args) => graph::run_mst(args),
         Command::Hull(args) => hull::run(args),

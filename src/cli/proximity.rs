@@ -4,14 +4,14 @@
 use super::input::PointInput;
 use super::output::print_json;
 use super::CliError;
-use crate::count::Counts;
-use crate::delaunay::{voronoi, ClipBox, Ray};
-use crate::geometry::Point2;
+use crate::count::{Counts, NoCount};
+use crate::delaunay::{voronoi_with, ClipBox, Ray};
+use crate::geometry::{Point2, PointSet};
 use crate::proximity::{
-    closest_pair_divide_and_conquer_with, closest_pair_with, euclidean_mst_with,
-    largest_empty_circle_with, NearestSearch,
+    closest_pair_with, euclidean_mst_with, largest_empty_circle_with, ClosestPairAlgorithm,
+    NearestSearch,
 };
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 
 /// Arguments of `compgeo voronoi`.
@@ -28,9 +28,9 @@ pub(super) struct VoronoiArgs {
 /// Arguments of `compgeo closest-pair`.
 #[derive(Debug, Args)]
 pub(super) struct ClosestPairArgs {
-    /// delaunay (the shortest Delaunay edge) or divide-and-conquer (Shamos's O(n log n))
-    #[arg(long, short, value_enum, default_value = "delaunay")]
-    algorithm: PairAlgorithm,
+    #[arg(long, short, default_value = "delaunay", help = ClosestPairAlgorithm::names(),
+        long_help = ClosestPairAlgorithm::help())]
+    algorithm: ClosestPairAlgorithm,
     #[command(flatten)]
     input: PointInput,
 }
@@ -50,15 +50,6 @@ pub(super) struct NearestArgs {
 pub(super) struct PointsArgs {
     #[command(flatten)]
     input: PointInput,
-}
-
-/// The closest-pair algorithms by their command-line names.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum PairAlgorithm {
-    /// The shortest Delaunay edge.
-    Delaunay,
-    /// Shamos's divide and conquer.
-    DivideAndConquer,
 }
 
 /// A ray as printed.
@@ -130,15 +121,16 @@ struct CircleOutput {
 /// Runs `compgeo voronoi`.
 pub(super) fn run_voronoi(args: VoronoiArgs) -> Result<(), CliError> {
     let points = args.input.read()?;
+    let set = PointSet::new(&points)?;
     let bounds = match args.clip.as_deref() {
         None => None,
-        Some("auto") => Some(ClipBox::around(&points)?),
+        Some("auto") => Some(ClipBox::around(&set)?),
         Some(text) => {
             let [x0, y0, x1, y1] = parse_numbers::<4>("--clip", text)?;
             Some(ClipBox::new(x0, y0, x1, y1)?)
         }
     };
-    let v = voronoi(&points)?;
+    let v = voronoi_with(&set, &mut NoCount)?;
     let cell_of = (0..points.len()).map(|i| v.cell_of(i)).collect();
     let out = match bounds {
         None => VoronoiOutput {
@@ -184,15 +176,9 @@ pub(super) fn run_voronoi(args: VoronoiArgs) -> Result<(), CliError> {
 pub(super) fn run_closest_pair(args: ClosestPairArgs) -> Result<(), CliError> {
     let points = args.input.read()?;
     let mut counts = Counts::default();
-    let (name, best) = match args.algorithm {
-        PairAlgorithm::Delaunay => ("delaunay", closest_pair_with(&points, &mut counts)?),
-        PairAlgorithm::DivideAndConquer => (
-            "divide-and-conquer",
-            closest_pair_divide_and_conquer_with(&points, &mut counts)?,
-        ),
-    };
+    let best = closest_pair_with(&PointSet::new(&points)?, args.algorithm, &mut counts)?;
     print_json(&PairOutput {
-        algorithm: name,
+        algorithm: args.algorithm.name(),
         pair: best.pair,
         points: best.pair.map(|i| points[i].into()),
         distance: best.distance,
@@ -205,7 +191,8 @@ pub(super) fn run_nearest(args: NearestArgs) -> Result<(), CliError> {
     let [x, y] = parse_numbers::<2>("--query", &args.query)?;
     let points = args.input.read()?;
     let query = Point2::new(x, y);
-    let search = NearestSearch::new(&points)?;
+    let set = PointSet::new(&points)?;
+    let search = NearestSearch::new(&set)?;
     let mut counts = Counts::default();
     let index = search.nearest_with(query, None, &mut counts)?;
     let p = points[index];
@@ -221,10 +208,10 @@ pub(super) fn run_nearest(args: NearestArgs) -> Result<(), CliError> {
 pub(super) fn run_emst(args: PointsArgs) -> Result<(), CliError> {
     let points = args.input.read()?;
     let mut counts = Counts::default();
-    let tree = euclidean_mst_with(&points, &mut counts)?;
+    let tree = euclidean_mst_with(&PointSet::new(&points)?, &mut counts)?;
     print_json(&EmstOutput {
         edges: tree.edges,
-        length: tree.length,
+        length: tree.weight,
         counts,
     })
 }
@@ -233,7 +220,7 @@ pub(super) fn run_emst(args: PointsArgs) -> Result<(), CliError> {
 pub(super) fn run_empty_circle(args: PointsArgs) -> Result<(), CliError> {
     let points = args.input.read()?;
     let mut counts = Counts::default();
-    let c = largest_empty_circle_with(&points, &mut counts)?;
+    let c = largest_empty_circle_with(&PointSet::new(&points)?, &mut counts)?;
     print_json(&CircleOutput {
         centre: c.centre.into(),
         radius: c.radius,

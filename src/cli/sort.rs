@@ -5,7 +5,7 @@ use super::input::read_text;
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
-use crate::sort::{trace, Algorithm};
+use crate::sort::{sort_with, trace, Algorithm};
 use clap::Args;
 use serde::Serialize;
 use std::io::{self, Write};
@@ -14,9 +14,7 @@ use std::path::Path;
 /// Arguments of `compgeo sort`.
 #[derive(Debug, Args)]
 pub(super) struct SortArgs {
-    /// bubble, selection, insertion, course-insertion, binary-insertion,
-    /// course-binary-insertion, merge, heap or quick
-    #[arg(long, short)]
+    #[arg(long, short, help = Algorithm::names(), long_help = Algorithm::help())]
     algorithm: Algorithm,
     /// Print the algorithm's step table (as the course prints it) instead of JSON
     #[arg(long)]
@@ -65,12 +63,11 @@ pub(super) fn run(args: SortArgs) -> Result<(), CliError> {
     let mut counts = Counts::default();
     match keys {
         Keys::Integers(mut v) => {
-            args.algorithm.sort_with(&mut v, i64::cmp, &mut counts);
+            sort_with(&mut v, args.algorithm, i64::cmp, &mut counts);
             print_json(&Sorted { sorted: v, counts })
         }
         Keys::Floats(mut v) => {
-            args.algorithm
-                .sort_with(&mut v, f64::total_cmp, &mut counts);
+            sort_with(&mut v, args.algorithm, f64::total_cmp, &mut counts);
             print_json(&Sorted { sorted: v, counts })
         }
     }

@@ -3,7 +3,7 @@
 use super::input::PointInput;
 use super::output::print_json;
 use super::CliError;
-use crate::geometry::{cmp_lex, Point2};
+use crate::geometry::{cmp_lex, PointSet};
 use clap::Args;
 use serde::Serialize;
 use std::cmp::Ordering;
@@ -25,12 +25,13 @@ struct Stats {
 
 /// Runs `compgeo stats`.
 pub(super) fn run(args: StatsArgs) -> Result<(), CliError> {
-    print_json(&stats(&args.input.read()?))
+    let points = args.input.read()?;
+    print_json(&stats(&PointSet::new(&points)?))
 }
 
 /// Distinct points are counted after a lexicographic sort with [`cmp_lex`], under which
-/// `-0.0 == 0.0`; the bounding box keeps the first of equal extremes.
-fn stats(points: &[Point2]) -> Stats {
+/// `-0.0 == 0.0`; the bounding box is the set's own (the first of equal extremes).
+fn stats(points: &PointSet<'_>) -> Stats {
     let mut sorted = points.to_vec();
     sorted.sort_unstable_by(|&a, &b| cmp_lex(a, b));
     let distinct = if sorted.is_empty() {
@@ -41,35 +42,23 @@ fn stats(points: &[Point2]) -> Stats {
             .filter(|w| cmp_lex(w[0], w[1]) != Ordering::Equal)
             .count()
     };
-    let bbox = points.split_first().map(|(&first, rest)| {
-        let (mut lo, mut hi) = (first, first);
-        for &p in rest {
-            // Coordinates are validated finite, so `<` is a total order here.
-            if p.x < lo.x {
-                lo.x = p.x;
-            }
-            if p.y < lo.y {
-                lo.y = p.y;
-            }
-            if p.x > hi.x {
-                hi.x = p.x;
-            }
-            if p.y > hi.y {
-                hi.y = p.y;
-            }
-        }
-        [[lo.x, lo.y], [hi.x, hi.y]]
-    });
     Stats {
         points: points.len(),
         distinct,
-        bbox,
+        bbox: points
+            .bounding_box()
+            .map(|b| [[b.min.x, b.min.y], [b.max.x, b.max.y]]),
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::Point2;
+
+    fn stats_of(points: &[Point2]) -> Stats {
+        stats(&PointSet::new(points).unwrap())
+    }
 
     #[test]
     fn counts_distinct_points_against_a_quadratic_oracle() {
@@ -83,7 +72,7 @@ mod tests {
             let oracle = (0..pts.len())
                 .filter(|&i| (0..i).all(|j| !(pts[j].x == pts[i].x && pts[j].y == pts[i].y)))
                 .count();
-            assert_eq!(stats(&pts).distinct, oracle, "{kind}");
+            assert_eq!(stats_of(&pts).distinct, oracle, "{kind}");
         }
     }
 
@@ -95,7 +84,7 @@ mod tests {
             Point2::new(-2.0, 3.0),
         ];
         assert_eq!(
-            stats(&pts),
+            stats_of(&pts),
             Stats {
                 points: 3,
                 distinct: 3,
@@ -103,7 +92,7 @@ mod tests {
             }
         );
         assert_eq!(
-            stats(&[]),
+            stats_of(&[]),
             Stats {
                 points: 0,
                 distinct: 0,

@@ -18,6 +18,7 @@
 
 mod bound;
 mod catalog;
+mod declaration;
 mod fit;
 mod machine;
 mod measure;
@@ -26,6 +27,8 @@ pub mod report;
 
 pub use bound::{Bound, SecondSize};
 pub use catalog::{catalog, Entry, Info, Profile, SizeRange, Workload};
+pub(crate) use declaration::algorithm_family;
+pub use declaration::{declarations, label, on, table, Claim, Declaration};
 pub use fit::{fit, slope, Fit, Observation, Verdict, COUNT_TOLERANCE, MIN_SIZES, TIME_TOLERANCE};
 pub use machine::Machine;
 pub use measure::{measure, measure_size, Measurement, Progress, Sample, Settings};

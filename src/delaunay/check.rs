@@ -2,7 +2,7 @@
 //! from elsewhere).
 
 use super::triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
-use crate::geometry::{cmp_lex, incircle, orient2d, validate, InCircle, Orientation, Point2};
+use crate::geometry::{cmp_lex, incircle, orient2d, InCircle, Orientation, Point2, PointSet};
 use crate::hull::{monotone_chain, HullOptions};
 use std::cmp::Ordering;
 
@@ -40,22 +40,22 @@ use std::cmp::Ordering;
 ///
 /// ```
 /// use compgeo::delaunay::{check_delaunay, Triangulation};
-/// use compgeo::geometry::Point2;
+/// use compgeo::geometry::{Point2, PointSet};
 ///
 /// // The square (0,0), (2,0), (2,1), (0,1) is cocircular: both diagonals are Delaunay.
 /// let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (0.0, 1.0)].map(Point2::from);
-/// let t = Triangulation::from_triangles(&pts, &[[0, 1, 2], [0, 2, 3]], Vec::new())?;
+/// let t = Triangulation::from_triangles(&PointSet::new(&pts)?, &[[0, 1, 2], [0, 2, 3]], Vec::new())?;
 /// assert!(check_delaunay(&pts, &t).is_ok());
 ///
 /// // Moving corner 2 inwards puts it inside the circle through 0, 1, 3: only the
 /// // diagonal 0-2 is Delaunay now.
 /// let pts = [(0.0, 0.0), (2.0, 0.0), (1.5, 1.0), (0.0, 1.0)].map(Point2::from);
-/// let t = Triangulation::from_triangles(&pts, &[[0, 1, 3], [1, 2, 3]], Vec::new())?;
+/// let t = Triangulation::from_triangles(&PointSet::new(&pts)?, &[[0, 1, 3], [1, 2, 3]], Vec::new())?;
 /// assert!(check_delaunay(&pts, &t).unwrap_err().contains("not locally Delaunay"));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn check_delaunay(points: &[Point2], t: &Triangulation) -> Result<(), String> {
-    validate(points).map_err(|e| e.to_string())?;
+    PointSet::new(points).map_err(|e| e.to_string())?;
     let n = points.len();
     let len = t.triangles.len();
     if len % 3 != 0 {
@@ -233,7 +233,8 @@ mod tests {
     fn accepts_a_valid_fan_and_rejects_broken_copies() {
         let p = pts(&[(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (1.0, 1.0)]);
         let tris = [[4, 0, 1], [4, 1, 2], [4, 2, 3], [4, 3, 0]];
-        let t = Triangulation::from_triangles(&p, &tris, Vec::new()).unwrap();
+        let t =
+            Triangulation::from_triangles(&PointSet::new(&p).unwrap(), &tris, Vec::new()).unwrap();
         assert_eq!(check_delaunay(&p, &t), Ok(()));
 
         let mut cw = t.clone();
@@ -254,7 +255,11 @@ mod tests {
         assert!(check_delaunay(&p, &wrong_hull).is_err());
 
         // Dropping the centre's fan leaves point 4 unused.
-        let square = Triangulation::from_triangles(&p, &[[0, 1, 2], [0, 2, 3]], Vec::new());
+        let square = Triangulation::from_triangles(
+            &PointSet::new(&p).unwrap(),
+            &[[0, 1, 2], [0, 2, 3]],
+            Vec::new(),
+        );
         assert!(check_delaunay(&p, &square.unwrap())
             .unwrap_err()
             .contains("neither a vertex"));
@@ -272,18 +277,27 @@ mod tests {
             [4, 2, 3],
             [4, 3, 0],
         ];
-        assert!(Triangulation::from_triangles(&p, &tris, Vec::new()).is_err());
+        assert!(
+            Triangulation::from_triangles(&PointSet::new(&p).unwrap(), &tris, Vec::new()).is_err()
+        );
     }
 
     #[test]
     fn degenerate_sets_need_no_triangles_but_others_do() {
         let line = pts(&[(0.0, 0.0), (1.0, 1.0), (3.0, 3.0), (1.0, 1.0)]);
-        let t = Triangulation::from_triangles(&line, &[], find_duplicates(&line)).unwrap();
+        let t = Triangulation::from_triangles(
+            &PointSet::new(&line).unwrap(),
+            &[],
+            find_duplicates(&line),
+        )
+        .unwrap();
         assert_eq!(check_delaunay(&line, &t), Ok(()));
         let tri = pts(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]);
-        let t = Triangulation::from_triangles(&tri, &[], Vec::new()).unwrap();
+        let t =
+            Triangulation::from_triangles(&PointSet::new(&tri).unwrap(), &[], Vec::new()).unwrap();
         assert!(check_delaunay(&tri, &t).is_err());
-        let mut wrong = Triangulation::from_triangles(&line, &[], Vec::new()).unwrap();
+        let mut wrong =
+            Triangulation::from_triangles(&PointSet::new(&line).unwrap(), &[], Vec::new()).unwrap();
         wrong.duplicates = vec![[3, 0]];
         assert!(check_delaunay(&line, &wrong).is_err());
     }

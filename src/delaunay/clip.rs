@@ -3,7 +3,7 @@
 use super::voronoi::{Ray, Voronoi};
 use crate::error::{Error, Result};
 use crate::geometry::construct::scale_of;
-use crate::geometry::Point2;
+use crate::geometry::{BoundingBox, Point2, PointSet};
 
 /// An axis-parallel box to clip Voronoi cells to: `min.x < max.x`, `min.y < max.y`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -48,26 +48,25 @@ impl ClipBox {
     /// clamped to the finite range.
     ///
     /// # Errors
-    /// [`Error::Empty`] for no points; [`Error::NonFinite`] for a NaN or infinite coordinate.
+    /// [`Error::TooFew`] for no points (there is nothing to size the box by).
     ///
     /// ```
     /// use compgeo::delaunay::ClipBox;
-    /// use compgeo::geometry::Point2;
+    /// use compgeo::geometry::{Point2, PointSet};
     ///
-    /// let b = ClipBox::around(&[Point2::new(0.0, 0.0), Point2::new(4.0, 2.0)])?;
+    /// let pts = [Point2::new(0.0, 0.0), Point2::new(4.0, 2.0)];
+    /// let b = ClipBox::around(&PointSet::new(&pts)?)?;
     /// assert_eq!((b.min, b.max), (Point2::new(-1.0, -1.0), Point2::new(5.0, 3.0)));
     /// # Ok::<(), compgeo::Error>(())
     /// ```
-    pub fn around(points: &[Point2]) -> Result<ClipBox> {
-        crate::geometry::validate(points)?;
-        let Some(&first) = points.first() else {
-            return Err(Error::Empty { what: "point set" });
+    pub fn around(points: &PointSet<'_>) -> Result<ClipBox> {
+        let Some(BoundingBox { min: lo, max: hi }) = points.bounding_box() else {
+            return Err(Error::TooFew {
+                what: "point set",
+                needed: 1,
+                got: 0,
+            });
         };
-        let (mut lo, mut hi) = (first, first);
-        for p in points {
-            lo = Point2::new(lo.x.min(p.x), lo.y.min(p.y));
-            hi = Point2::new(hi.x.max(p.x), hi.y.max(p.y));
-        }
         let side = (hi.x / 4.0 - lo.x / 4.0).max(hi.y / 4.0 - lo.y / 4.0);
         let margin = if side > 0.0 {
             side

@@ -2,10 +2,29 @@
 
 use super::quad_edge::{Edge, Mesh};
 use super::{Triangulation, EMPTY};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::{Error, Result};
-use crate::geometry::{validate, CountedPredicates, InCircle, Orientation, Point2};
+use crate::geometry::{CountedPredicates, InCircle, Orientation, Point2, PointSet};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "delaunay",
+    name: "divide-and-conquer",
+    function: "delaunay::divide_and_conquer",
+    file: "src/delaunay/divide_conquer.rs",
+    summary: "the course's divide and conquer with Guibas and Stolfi's merge",
+    time: "O(n log n) in the worst case",
+    space: "O(n)",
+    operation: Operation::IncircleTests,
+    counts: "about 29 in-circle tests per point at 10⁵ uniform points",
+    source: "[RD, §2.4]",
+    claims: &[
+        on("uniform-square", Bound::NLogN, Operation::IncircleTests),
+        on("parabola", Bound::NLogN, Operation::IncircleTests),
+    ],
+};
 
 /// The Delaunay triangulation of `points` by divide and conquer. See
 /// [`divide_and_conquer_with`].
@@ -21,7 +40,7 @@ use std::cmp::Ordering;
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn divide_and_conquer(points: &[Point2]) -> Result<Triangulation> {
-    divide_and_conquer_with(points, &mut NoCount)
+    divide_and_conquer_with(&PointSet::new(points)?, &mut NoCount)
 }
 
 /// The Delaunay triangulation of `points` by divide and conquer, recording its operations
@@ -77,21 +96,21 @@ pub fn divide_and_conquer(points: &[Point2]) -> Result<Triangulation> {
 /// ```
 /// use compgeo::count::Counts;
 /// use compgeo::delaunay::divide_and_conquer_with;
-/// use compgeo::geometry::Point2;
+/// use compgeo::geometry::{Point2, PointSet};
 ///
 /// // A 3 x 3 grid: every unit square is cocircular, any diagonal is valid.
 /// let pts: Vec<Point2> = (0..9).map(|i| Point2::new((i % 3) as f64, (i / 3) as f64)).collect();
+/// let set = PointSet::new(&pts)?;
 /// let mut counts = Counts::default();
-/// let t = divide_and_conquer_with(&pts, &mut counts)?;
+/// let t = divide_and_conquer_with(&set, &mut counts)?;
 /// assert_eq!(t.triangles.len() / 3, 8);
 /// assert!(counts.incircle_tests > 0 && counts.orientation_tests > 0);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn divide_and_conquer_with<C: Counter>(
-    points: &[Point2],
+    points: &PointSet<'_>,
     counter: &mut C,
 ) -> Result<Triangulation> {
-    validate(points)?;
     if points.len() > MAX_POINTS {
         return Err(Error::InvalidParameter {
             name: "points",

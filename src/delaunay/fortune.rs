@@ -4,14 +4,33 @@
 
 use super::beach_line::{BeachLine, NIL};
 use super::Triangulation;
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::{Error, Result};
 use crate::geometry::sweep_predicates::{
     breakpoint_side, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
 };
-use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
 use crate::util::Heap;
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "delaunay",
+    name: "fortune",
+    function: "delaunay::fortune",
+    file: "src/delaunay/fortune.rs",
+    summary: "Fortune's sweep with a beach line, the Voronoi diagram first",
+    time: "O(n log n) expected",
+    space: "O(n)",
+    operation: Operation::Comparisons,
+    counts: "the sort, the event queue and the breakpoint tests; no in-circle test",
+    source: "[RD, §2.4]",
+    claims: &[
+        on("uniform-square", Bound::NLogN, Operation::Comparisons),
+        on("parabola", Bound::NLogN, Operation::Comparisons),
+    ],
+};
 
 /// The Delaunay triangulation of `points` by Fortune's sweep. See [`fortune_with`].
 ///
@@ -27,7 +46,7 @@ use std::cmp::Ordering;
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
-    fortune_with(points, &mut NoCount)
+    fortune_with(&PointSet::new(points)?, &mut NoCount)
 }
 
 /// The Delaunay triangulation of `points` by Fortune's sweep, recording its operations in
@@ -95,19 +114,19 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// ```
 /// use compgeo::count::Counts;
 /// use compgeo::delaunay::fortune_with;
-/// use compgeo::geometry::Point2;
+/// use compgeo::geometry::{Point2, PointSet};
 ///
 /// // A 3 x 3 grid: four cocircular sites around each Voronoi vertex.
 /// let pts: Vec<Point2> = (0..9).map(|i| Point2::new((i % 3) as f64, (i / 3) as f64)).collect();
+/// let set = PointSet::new(&pts)?;
 /// let mut counts = Counts::default();
-/// let t = fortune_with(&pts, &mut counts)?;
+/// let t = fortune_with(&set, &mut counts)?;
 /// assert_eq!(t.triangle_count(), 8);
 /// assert!(counts.comparisons > 0 && counts.orientation_tests > 0);
 /// assert_eq!(counts.incircle_tests, 0);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn fortune_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Triangulation> {
-    validate(points)?;
+pub fn fortune_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Result<Triangulation> {
     if points.len() > MAX_POINTS {
         return Err(Error::InvalidParameter {
             name: "points",

@@ -9,21 +9,21 @@
 //! are close and the walk from one to the next is short. The order only affects speed;
 //! correctness never depends on it.
 
-use crate::geometry::Point2;
+use crate::geometry::{BoundingBox, Point2};
 
 /// Bits per axis of the Hilbert grid: 2^32 cells, far more than the points of any round.
 const BITS: u32 = 16;
 
-/// The local ids `0..points.len()` in insertion order.
+/// The local ids `0..points.len()` in insertion order; `bounds` is the points' bounding box.
 ///
 /// O(n log n) time (sorts of 64-bit keys), O(n) auxiliary space. Deterministic: the
 /// rounds come from a fixed-seed generator.
-pub(super) fn brio_order(points: &[Point2]) -> Vec<u32> {
+pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<u32> {
     let n = points.len();
-    if n == 0 {
+    let Some(bounds) = bounds else {
         return Vec::new();
-    }
-    let grid = Grid::over(points);
+    };
+    let grid = Grid::over(bounds);
     // Rounds: the last one holds about n/2 points, the first one about 32.
     let rounds = (usize::BITS - n.leading_zeros()).saturating_sub(5) as usize;
     let mut rng = SplitMix(0x5EED_DE1A_0000_0001);
@@ -65,10 +65,10 @@ pub(super) fn brio_order(points: &[Point2]) -> Vec<u32> {
 /// O(n log n) time, O(n) auxiliary space; O(n log r) for points that come as r runs already
 /// in curve order, as the BRIO rounds do (the stable sort merges natural runs).
 pub(super) fn curve_order(points: &[Point2]) -> Vec<u32> {
-    if points.is_empty() {
+    let Some(bounds) = BoundingBox::of(points) else {
         return Vec::new();
-    }
-    let grid = Grid::over(points);
+    };
+    let grid = Grid::over(bounds);
     let mut keys: Vec<u64> = points
         .iter()
         .enumerate()
@@ -88,16 +88,9 @@ struct Grid {
 }
 
 impl Grid {
-    /// The grid over the bounding box of `points` (not empty).
-    fn over(points: &[Point2]) -> Grid {
-        let (mut min_x, mut min_y, mut max_x, mut max_y) =
-            (points[0].x, points[0].y, points[0].x, points[0].y);
-        for p in points {
-            min_x = min_x.min(p.x);
-            max_x = max_x.max(p.x);
-            min_y = min_y.min(p.y);
-            max_y = max_y.max(p.y);
-        }
+    /// The grid over a bounding box.
+    fn over(bounds: BoundingBox) -> Grid {
+        let (min_x, min_y, max_x, max_y) = (bounds.min.x, bounds.min.y, bounds.max.x, bounds.max.y);
         let cells = f64::from((1u32 << BITS) - 1);
         Grid {
             half_min_x: 0.5 * min_x,
@@ -238,7 +231,7 @@ mod tests {
         let mut seen = order.clone();
         seen.sort_unstable();
         assert_eq!(seen, (0..pts.len() as u32).collect::<Vec<_>>());
-        let grid = Grid::over(&pts);
+        let grid = Grid::over(BoundingBox::of(&pts).unwrap());
         let key = |i: u32| (grid.curve_index(pts[i as usize]), i);
         assert!(order.windows(2).all(|w| key(w[0]) < key(w[1])));
         // Equal points share a cell, so somewhere the tie is broken by id.
@@ -256,7 +249,7 @@ mod tests {
             Point2::new(5e-324, 0.0),
             Point2::new(0.0, -5e-324),
         ];
-        let mut order = brio_order(&pts);
+        let mut order = brio_order(&pts, BoundingBox::of(&pts));
         order.sort_unstable();
         assert_eq!(order, [0, 1, 2, 3]);
         let tiny = [
@@ -264,7 +257,7 @@ mod tests {
             Point2::new(0.0, 1e-323),
             Point2::new(0.0, 0.0),
         ];
-        let mut order = brio_order(&tiny);
+        let mut order = brio_order(&tiny, BoundingBox::of(&tiny));
         order.sort_unstable();
         assert_eq!(order, [0, 1, 2]);
     }

@@ -3,9 +3,30 @@
 
 use super::hilbert::{brio_order, SplitMix};
 use super::triangulation::{find_duplicates, rotate_to_lex_min, Triangulation, EMPTY};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::{Error, Result};
-use crate::geometry::{validate, CountedPredicates, InCircle, Orientation, Point2};
+use crate::geometry::{CountedPredicates, InCircle, Orientation, Point2, PointSet};
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "delaunay",
+    name: "incremental",
+    function: "delaunay::incremental",
+    file: "src/delaunay/incremental.rs",
+    summary: "BRIO + Hilbert order, walking location, Lawson flips",
+    time: "O(n log n) expected on every input",
+    space: "O(n)",
+    operation: Operation::IncircleTests,
+    counts: "about 9 in-circle and 7 orientation tests per point on uniform input",
+    source: "[RD, §2.4]",
+    claims: &[
+        on("uniform-square", Bound::NLogN, Operation::IncircleTests),
+        on("clustered", Bound::NLogN, Operation::IncircleTests),
+        on("grid", Bound::NLogN, Operation::IncircleTests),
+        on("parabola", Bound::NLogN, Operation::IncircleTests),
+    ],
+};
 
 /// The Delaunay triangulation of `points` by incremental insertion (Lawson's flips), the
 /// crate's fast builder.
@@ -35,7 +56,7 @@ use crate::geometry::{validate, CountedPredicates, InCircle, Orientation, Point2
 /// stores 32-bit indices).
 ///
 /// # Complexity
-/// For n points: O(n log n) for the order (sorts of 64-bit keys); O(n) expected flips and
+/// For n points, O(n log n) expected on every input: O(n log n) for the order (sorts of 64-bit keys); O(n) expected flips and
 /// in-circle tests on every input, because each BRIO round is a random sample (Amenta, Choi
 /// and Rote); the walks take O(1) steps per point on uniform-like input after the Hilbert
 /// sort and are not bounded in the worst case (measured: O(log n) steps per point on points
@@ -59,7 +80,7 @@ use crate::geometry::{validate, CountedPredicates, InCircle, Orientation, Point2
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn incremental(points: &[Point2]) -> Result<Triangulation> {
-    incremental_with(points, &mut NoCount)
+    incremental_with(&PointSet::new(points)?, &mut NoCount)
 }
 
 /// [`incremental`], recording its orientation tests and in-circle tests in `counter`.
@@ -75,19 +96,24 @@ pub fn incremental(points: &[Point2]) -> Result<Triangulation> {
 /// use compgeo::count::Counts;
 /// use compgeo::delaunay::incremental_with;
 /// use compgeo::gen::{points, PointKind};
+/// use compgeo::geometry::PointSet;
 ///
 /// let pts = points(PointKind::UniformSquare, 1000, 1)?;
+/// let set = PointSet::new(&pts)?;
 /// let mut counts = Counts::default();
-/// let t = incremental_with(&pts, &mut counts)?;
+/// let t = incremental_with(&set, &mut counts)?;
 /// assert!(counts.incircle_tests > 0 && counts.incircle_tests < 20 * 1000);
 /// assert_eq!(t.triangle_count(), 2 * 1000 - 2 - t.hull.len());
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn incremental_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Triangulation> {
-    match incremental_local(points, counter)? {
-        Some(local) => Ok(local.into_triangulation(points)),
+pub fn incremental_with<C: Counter>(
+    points: &PointSet<'_>,
+    counter: &mut C,
+) -> Result<Triangulation> {
+    Ok(match incremental_local(points, counter)? {
+        Some(local) => local.into_triangulation(points),
         None => degenerate(points),
-    }
+    })
 }
 
 /// The builder's triangulation in its own vertex numbering: vertex `j` is `points[j]`, the
@@ -115,10 +141,9 @@ pub(super) const NO_TWIN: u32 = u32::MAX;
 /// [`incremental_with`] up to the renumbering: the triangulation in insertion order, or
 /// `None` if the points have no three non-collinear ones (see [`degenerate`]).
 pub(super) fn incremental_local<C: Counter>(
-    points: &[Point2],
+    points: &PointSet<'_>,
     counter: &mut C,
 ) -> Result<Option<LocalTriangulation>> {
-    validate(points)?;
     if points.len() > MAX_POINTS {
         return Err(Error::InvalidParameter {
             name: "points",
@@ -128,7 +153,7 @@ pub(super) fn incremental_local<C: Counter>(
             ),
         });
     }
-    let mut order = brio_order(points);
+    let mut order = brio_order(points, points.bounding_box());
     let Some(first) = first_triangle(points, &mut order, counter) else {
         return Ok(None);
     };
@@ -148,8 +173,8 @@ pub(super) fn incremental_local<C: Counter>(
 }
 
 /// The triangulation of points with no three non-collinear ones: no triangles.
-pub(super) fn degenerate(points: &[Point2]) -> Result<Triangulation> {
-    Triangulation::from_triangles(points, &[], find_duplicates(points))
+pub(super) fn degenerate(points: &PointSet<'_>) -> Triangulation {
+    Triangulation::without_triangles(points, find_duplicates(points))
 }
 
 impl LocalTriangulation {

@@ -3,9 +3,25 @@
 
 use super::divide_conquer::sorted_distinct;
 use super::{next_halfedge, prev_halfedge, Triangulation, EMPTY};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{validate, CountedPredicates, InCircle, Orientation, Point2};
+use crate::geometry::{CountedPredicates, InCircle, Orientation, Point2, PointSet};
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "delaunay",
+    name: "lawson",
+    function: "delaunay::lawson",
+    file: "src/delaunay/lawson.rs",
+    summary: "a sweep triangulation, then Lawson's flips (for teaching)",
+    time: "O(n²) in the worst case",
+    space: "O(n)",
+    operation: Operation::IncircleTests,
+    counts: "one per edge check, Θ(n²) on a parabola",
+    source: "[RD, §2.4]",
+    claims: &[on("parabola", Bound::Quadratic, Operation::IncircleTests)],
+};
 
 /// The Delaunay triangulation of `points` by Lawson's flips from a sweep triangulation.
 /// See [`lawson_with`].
@@ -28,7 +44,7 @@ use crate::geometry::{validate, CountedPredicates, InCircle, Orientation, Point2
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn lawson(points: &[Point2]) -> Result<Triangulation> {
-    lawson_with(points, &mut NoCount)
+    lawson_with(&PointSet::new(points)?, &mut NoCount)
 }
 
 /// The Delaunay triangulation of `points` by Lawson's flips, recording its operations in
@@ -77,16 +93,17 @@ pub fn lawson(points: &[Point2]) -> Result<Triangulation> {
 /// use compgeo::count::Counts;
 /// use compgeo::delaunay::lawson_with;
 /// use compgeo::gen::{points, PointKind};
+/// use compgeo::geometry::PointSet;
 ///
 /// let pts = points(PointKind::Parabola, 40, 0)?;
+/// let set = PointSet::new(&pts)?;
 /// let mut counts = Counts::default();
-/// let t = lawson_with(&pts, &mut counts)?;
+/// let t = lawson_with(&set, &mut counts)?;
 /// assert_eq!(t.triangle_count(), 2 * 40 - 2 - 40);
 /// assert!(counts.incircle_tests >= t.triangle_count() as u64);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn lawson_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Triangulation> {
-    validate(points)?;
+pub fn lawson_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Result<Triangulation> {
     let (sorted, index, duplicates) = sorted_distinct(points, counter);
     let (mut triangles, mut halfedges, hull) = sweep(&sorted, counter);
     flip_until_delaunay(&sorted, &mut triangles, &mut halfedges, counter);

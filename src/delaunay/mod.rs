@@ -19,7 +19,7 @@
 //!
 //! | input | result |
 //! |---|---|
-//! | NaN or infinite coordinate | [`Error::NonFinite`] |
+//! | NaN or infinite coordinate | [`Error::NonFinite`](crate::Error::NonFinite) (the plain functions; the `_with` ones take a validated [`PointSet`]) |
 //! | a point equal to an earlier one | merged, listed as `[dropped, kept]` in `duplicates` |
 //! | fewer than 3 distinct points, or all collinear | no triangles; `hull` = the distinct points along their line |
 //! | otherwise | `2n - 2 - h` triangles for n distinct points, h of them on the hull boundary |
@@ -75,44 +75,52 @@ pub use lawson::{lawson, lawson_with};
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
 pub use voronoi::{dual, voronoi, voronoi_with, Cell, Ray, Voronoi};
 
+use crate::complexity::{algorithm_family, Declaration};
 use crate::count::{Counter, NoCount};
-use crate::error::{Error, Result};
-use crate::geometry::Point2;
-use std::fmt;
-use std::str::FromStr;
+use crate::error::Result;
+use crate::geometry::{Point2, PointSet};
 
-/// The Delaunay builders, for callers that choose one at run time.
-///
-/// ```
-/// use compgeo::delaunay::Algorithm;
-///
-/// let a: Algorithm = "incremental".parse()?;
-/// assert_eq!(a, Algorithm::Incremental);
-/// assert_eq!(a.name(), "incremental");
-/// assert!("sweep".parse::<Algorithm>().is_err());
-/// # Ok::<(), compgeo::Error>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[non_exhaustive]
-pub enum Algorithm {
-    /// [`incremental`]: BRIO + Hilbert order, walking location, Lawson flips.
-    Incremental,
-    /// [`divide_and_conquer`]: the seed's divide and conquer with Guibas and Stolfi's merge.
-    DivideAndConquer,
-    /// [`lawson`]: a sweep triangulation, then Lawson's flips (O(n²), for teaching).
-    Lawson,
-    /// [`fortune`]: Fortune's sweep with a beach line, the Voronoi diagram first.
-    Fortune,
+/// The algorithms on a triangulation that are not a choice among builders: the Voronoi
+/// diagram as the dual.
+pub(crate) const DECLARATIONS: [&Declaration; 1] = [VORONOI];
+
+/// The Voronoi diagram's declaration.
+pub(crate) const VORONOI: &Declaration = &voronoi::DECLARATION;
+
+algorithm_family! {
+    /// The Delaunay builders, for callers that choose one at run time ([`triangulate`]).
+    ///
+    /// ```
+    /// use compgeo::delaunay::Algorithm;
+    ///
+    /// let a: Algorithm = "incremental".parse()?;
+    /// assert_eq!(a, Algorithm::Incremental);
+    /// assert_eq!(a.name(), "incremental");
+    /// assert!("sweep".parse::<Algorithm>().is_err());
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub enum Algorithm ("Delaunay algorithm") {
+        /// [`incremental`]: BRIO + Hilbert order, walking location, Lawson flips.
+        Incremental = incremental::DECLARATION => incremental_with,
+        /// [`divide_and_conquer`]: the course's divide and conquer with Guibas and Stolfi's
+        /// merge.
+        DivideAndConquer = divide_conquer::DECLARATION => divide_and_conquer_with,
+        /// [`lawson`]: a sweep triangulation, then Lawson's flips (O(n²), for teaching).
+        Lawson = lawson::DECLARATION => lawson_with,
+        /// [`fortune`]: Fortune's sweep with a beach line, the Voronoi diagram first.
+        Fortune = fortune::DECLARATION => fortune_with,
+    }
+    fn run_with[C: Counter](points: &PointSet<'_>, counter: &mut C) -> Result<Triangulation>;
 }
 
-/// Runs `algorithm` on `points`: the same as calling its function.
+/// The Delaunay triangulation of `points` by `algorithm`: the same as calling its function.
 ///
 /// # Errors
-/// [`Error::NonFinite`] naming the first point with a NaN or infinite coordinate (and the
-/// builder's own errors, see its docs).
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or
+/// infinite coordinate (and the builder's own errors, see its docs).
 ///
 /// # Complexity
-/// That of the chosen builder (see the [module docs](self)).
+/// That of the chosen builder ([`Algorithm::declaration`]).
 ///
 /// ```
 /// use compgeo::delaunay::{triangulate, Algorithm};
@@ -122,59 +130,21 @@ pub enum Algorithm {
 /// assert!(triangulate(&pts, Algorithm::Incremental).is_err());
 /// ```
 pub fn triangulate(points: &[Point2], algorithm: Algorithm) -> Result<Triangulation> {
-    algorithm.triangulate_with(points, &mut NoCount)
+    triangulate_with(&PointSet::new(points)?, algorithm, &mut NoCount)
 }
 
-impl Algorithm {
-    /// Every builder.
-    pub const ALL: [Algorithm; 4] = [
-        Algorithm::Incremental,
-        Algorithm::DivideAndConquer,
-        Algorithm::Lawson,
-        Algorithm::Fortune,
-    ];
-
-    /// The kebab-case name used on the command line: `"incremental"`,
-    /// `"divide-and-conquer"`, `"lawson"`, `"fortune"`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Algorithm::Incremental => "incremental",
-            Algorithm::DivideAndConquer => "divide-and-conquer",
-            Algorithm::Lawson => "lawson",
-            Algorithm::Fortune => "fortune",
-        }
-    }
-
-    /// Runs this builder, recording its orientation and in-circle tests in `counter`.
-    ///
-    /// # Errors
-    /// As [`triangulate`].
-    pub fn triangulate_with<C: Counter>(
-        self,
-        points: &[Point2],
-        counter: &mut C,
-    ) -> Result<Triangulation> {
-        match self {
-            Algorithm::Incremental => incremental_with(points, counter),
-            Algorithm::DivideAndConquer => divide_and_conquer_with(points, counter),
-            Algorithm::Lawson => lawson_with(points, counter),
-            Algorithm::Fortune => fortune_with(points, counter),
-        }
-    }
-}
-
-impl fmt::Display for Algorithm {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for Algorithm {
-    type Err = Error;
-
-    /// Parses a kebab-case name; an unknown name gives [`Error::InvalidParameter`] listing the
-    /// valid ones.
-    fn from_str(s: &str) -> Result<Self> {
-        crate::error::algorithm_named(s, "Delaunay algorithm", &Algorithm::ALL, Algorithm::name)
-    }
+/// [`triangulate`] on a validated point set, recording the builder's orientation and
+/// in-circle tests (and comparisons) in `counter`.
+///
+/// # Errors
+/// The builder's own errors (a point set beyond its size limit).
+///
+/// # Complexity
+/// That of the chosen builder ([`Algorithm::declaration`]).
+pub fn triangulate_with<C: Counter>(
+    points: &PointSet<'_>,
+    algorithm: Algorithm,
+    counter: &mut C,
+) -> Result<Triangulation> {
+    algorithm.run_with(points, counter)
 }

@@ -1,8 +1,9 @@
 //! The triangulation every Delaunay builder returns: flat half-edge arrays.
 
+use crate::count::NoCount;
 use crate::error::{Error, Result};
-use crate::geometry::{cmp_lex, validate, Point2};
-use crate::hull::{monotone_chain, HullOptions};
+use crate::geometry::{cmp_lex, Point2, PointSet};
+use crate::hull::{monotone_chain_with, HullOptions};
 use std::cmp::Ordering;
 
 /// The value of [`Triangulation::halfedges`] for a half-edge on the hull (no opposite).
@@ -23,11 +24,11 @@ pub const EMPTY: usize = usize::MAX;
 ///
 /// ```
 /// use compgeo::delaunay::{Triangulation, EMPTY};
-/// use compgeo::geometry::Point2;
+/// use compgeo::geometry::{Point2, PointSet};
 ///
 /// // A unit square split along the diagonal 0-2.
 /// let pts = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)].map(Point2::from);
-/// let t = Triangulation::from_triangles(&pts, &[[0, 1, 2], [0, 2, 3]], Vec::new())?;
+/// let t = Triangulation::from_triangles(&PointSet::new(&pts)?, &[[0, 1, 2], [0, 2, 3]], Vec::new())?;
 /// assert_eq!(t.triangle_count(), 2);
 /// assert_eq!(t.hull, [0, 1, 2, 3]);
 /// assert_eq!(t.halfedges[2], 3); // 2 -> 0 in the first triangle, 0 -> 2 in the second
@@ -63,32 +64,19 @@ impl Triangulation {
     /// only that the triangles fit together as an oriented surface.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] for a NaN or infinite coordinate (only with no triangles, where
-    /// the hull is computed from the points); [`Error::InvalidParameter`] (name
-    /// `"triangles"`) if a vertex index is out of range, a triangle repeats a vertex, a
-    /// directed edge occurs twice, or the boundary is not one cycle.
+    /// [`Error::InvalidParameter`] (name `"triangles"`) if a vertex index is out of range, a
+    /// triangle repeats a vertex, a directed edge occurs twice, or the boundary is not one
+    /// cycle.
     ///
     /// # Complexity
     /// O(n + t) time and space for n points and t triangles (O(n log n) without triangles).
     pub fn from_triangles(
-        points: &[Point2],
+        points: &PointSet<'_>,
         triangles: &[[usize; 3]],
         duplicates: Vec<[usize; 2]>,
     ) -> Result<Triangulation> {
         if triangles.is_empty() {
-            validate(points)?;
-            let hull = monotone_chain(
-                points,
-                HullOptions {
-                    keep_collinear: true,
-                },
-            )?;
-            return Ok(Triangulation {
-                triangles: Vec::new(),
-                halfedges: Vec::new(),
-                hull,
-                duplicates,
-            });
+            return Ok(Triangulation::without_triangles(points, duplicates));
         }
         let n = points.len();
         let bad = |reason: String| Error::InvalidParameter {
@@ -114,6 +102,27 @@ impl Triangulation {
             hull,
             duplicates,
         })
+    }
+
+    /// The triangulation without triangles of points with no three non-collinear ones (or
+    /// fewer than three distinct points): its hull is the keep-collinear hull, the distinct
+    /// points along their line.
+    ///
+    /// # Complexity
+    /// O(n log n) time, O(n) space.
+    pub(crate) fn without_triangles(
+        points: &PointSet<'_>,
+        duplicates: Vec<[usize; 2]>,
+    ) -> Triangulation {
+        let keep = HullOptions {
+            keep_collinear: true,
+        };
+        Triangulation {
+            triangles: Vec::new(),
+            halfedges: Vec::new(),
+            hull: monotone_chain_with(points, keep, &mut NoCount),
+            duplicates,
+        }
     }
 
     /// The number of triangles.
@@ -314,7 +323,8 @@ mod tests {
         // A square with a centre point: four triangles around vertex 4.
         let p = pts(&[(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (1.0, 1.0)]);
         let tris = [[4, 0, 1], [4, 1, 2], [4, 2, 3], [4, 3, 0]];
-        let t = Triangulation::from_triangles(&p, &tris, Vec::new()).unwrap();
+        let t =
+            Triangulation::from_triangles(&PointSet::new(&p).unwrap(), &tris, Vec::new()).unwrap();
         assert_eq!(t.hull, [0, 1, 2, 3]);
         for e in 0..12 {
             let f = t.halfedges[e];
@@ -330,19 +340,41 @@ mod tests {
     #[test]
     fn rejects_inconsistent_triangles() {
         let p = pts(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)]);
-        assert!(Triangulation::from_triangles(&p, &[[0, 1, 7]], Vec::new()).is_err());
-        assert!(Triangulation::from_triangles(&p, &[[0, 1, 1]], Vec::new()).is_err());
+        assert!(Triangulation::from_triangles(
+            &PointSet::new(&p).unwrap(),
+            &[[0, 1, 7]],
+            Vec::new()
+        )
+        .is_err());
+        assert!(Triangulation::from_triangles(
+            &PointSet::new(&p).unwrap(),
+            &[[0, 1, 1]],
+            Vec::new()
+        )
+        .is_err());
         // The same triangle twice: every directed edge occurs twice.
-        assert!(Triangulation::from_triangles(&p, &[[0, 1, 2], [0, 1, 2]], Vec::new()).is_err());
+        assert!(Triangulation::from_triangles(
+            &PointSet::new(&p).unwrap(),
+            &[[0, 1, 2], [0, 1, 2]],
+            Vec::new()
+        )
+        .is_err());
         // Two triangles touching at one vertex: the boundary visits it twice.
         let p = pts(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)]);
-        assert!(Triangulation::from_triangles(&p, &[[0, 1, 2], [0, 3, 4]], Vec::new()).is_err());
+        assert!(Triangulation::from_triangles(
+            &PointSet::new(&p).unwrap(),
+            &[[0, 1, 2], [0, 3, 4]],
+            Vec::new()
+        )
+        .is_err());
     }
 
     #[test]
     fn degenerate_input_gives_the_collinear_hull() {
         let p = pts(&[(2.0, 2.0), (0.0, 0.0), (1.0, 1.0), (0.0, 0.0)]);
-        let t = Triangulation::from_triangles(&p, &[], find_duplicates(&p)).unwrap();
+        let t =
+            Triangulation::from_triangles(&PointSet::new(&p).unwrap(), &[], find_duplicates(&p))
+                .unwrap();
         assert!(t.is_empty());
         assert_eq!(t.hull, [1, 2, 0]);
         assert_eq!(t.duplicates, [[3, 1]]);

@@ -3,10 +3,26 @@
 use super::hilbert::curve_order;
 use super::incremental::{degenerate, incremental_local, LocalTriangulation, NO_TWIN};
 use super::triangulation::{next_halfedge as next, prev_halfedge as prev, Triangulation, EMPTY};
-use crate::count::{Counter, NoCount};
-use crate::error::{Error, Result};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
+use crate::error::Result;
 use crate::geometry::construct::{circumcentre, midpoint, unit_direction};
-use crate::geometry::Point2;
+use crate::geometry::{Point2, PointSet};
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "voronoi",
+    name: "delaunay-dual",
+    function: "delaunay::voronoi",
+    file: "src/delaunay/voronoi.rs",
+    summary: "the dual of the incremental Delaunay triangulation, cells in Hilbert order",
+    time: "O(n log n) expected",
+    space: "O(n)",
+    operation: Operation::IncircleTests,
+    counts: "those of the triangulation; the dual makes no geometric decision",
+    source: "[RD, §2.4]",
+    claims: &[on("uniform-square", Bound::NLogN, Operation::IncircleTests)],
+};
 
 /// The Voronoi diagram of a point set: one cell per distinct site.
 ///
@@ -140,8 +156,9 @@ impl Voronoi {
 /// consecutive sites, with no vertices; a single site's cell is the whole plane.
 ///
 /// # Errors
-/// [`Error::Empty`] for no points; the errors of [`incremental`](super::incremental)
-/// ([`Error::NonFinite`] naming a NaN or infinite coordinate).
+/// The errors of [`incremental`](super::incremental)
+/// ([`Error::NonFinite`](crate::Error::NonFinite) naming a NaN or infinite coordinate). No
+/// points give a diagram without cells.
 ///
 /// # Complexity
 /// O(n log n) expected time (the triangulation) and O(n log n) time, O(n) space for the
@@ -168,7 +185,7 @@ impl Voronoi {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn voronoi(points: &[Point2]) -> Result<Voronoi> {
-    voronoi_with(points, &mut NoCount)
+    voronoi_with(&PointSet::new(points)?, &mut NoCount)
 }
 
 /// [`voronoi`], recording the triangulation's orientation and in-circle tests in `counter`
@@ -184,22 +201,21 @@ pub fn voronoi(points: &[Point2]) -> Result<Voronoi> {
 /// use compgeo::count::Counts;
 /// use compgeo::delaunay::voronoi_with;
 /// use compgeo::gen::{points, PointKind};
+/// use compgeo::geometry::PointSet;
 ///
 /// let pts = points(PointKind::UniformSquare, 500, 3)?;
+/// let set = PointSet::new(&pts)?;
 /// let mut counts = Counts::default();
-/// let v = voronoi_with(&pts, &mut counts)?;
+/// let v = voronoi_with(&set, &mut counts)?;
 /// assert_eq!(v.cell_count(), 500);
 /// assert!(counts.incircle_tests > 0);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn voronoi_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Voronoi> {
-    if points.is_empty() {
-        return Err(Error::Empty { what: "point set" });
-    }
-    match incremental_local(points, counter)? {
-        Some(t) => Ok(dual_local(&t)),
-        None => Ok(dual(points, &degenerate(points)?)),
-    }
+pub fn voronoi_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Result<Voronoi> {
+    Ok(match incremental_local(points, counter)? {
+        Some(t) => dual_local(&t),
+        None => dual(points, &degenerate(points)),
+    })
 }
 
 /// The Voronoi diagram dual to `t`, a Delaunay triangulation of `points` from one of the

@@ -111,13 +111,15 @@ pub(crate) fn unit_direction(a: Point2, b: Point2) -> Point2 {
     Point2::new(dx / len, dy / len)
 }
 
-/// The Euclidean distance `|ab|`, clamped to `f64::MAX`.
+/// The Euclidean distance `|ab|`, rounded: within a few ulps for every finite pair, and `inf`
+/// when it exceeds `f64::MAX` (`hypot` scales internally, and differences that overflow are
+/// halved first, so no intermediate overflows).
 pub(crate) fn distance(a: Point2, b: Point2) -> f64 {
     let (dx, dy) = (b.x - a.x, b.y - a.y);
     if dx.is_finite() && dy.is_finite() {
-        dx.hypot(dy).min(f64::MAX)
+        dx.hypot(dy)
     } else {
-        (2.0 * (b.x / 2.0 - a.x / 2.0).hypot(b.y / 2.0 - a.y / 2.0)).min(f64::MAX)
+        2.0 * (b.x / 2.0 - a.x / 2.0).hypot(b.y / 2.0 - a.y / 2.0)
     }
 }
 
@@ -204,7 +206,8 @@ mod tests {
         assert_eq!(c, p(0.0, 0.0));
         assert_eq!(midpoint(p(m, m), p(m, -m)), p(m, 0.0));
         assert_eq!(unit_direction(p(-m, 0.0), p(m, 0.0)), p(1.0, 0.0));
-        assert_eq!(distance(p(-m, 0.0), p(m, 0.0)), f64::MAX);
+        assert_eq!(distance(p(-m, 0.0), p(m, 0.0)), f64::INFINITY);
+        assert_eq!(distance(p(-m / 2.0, 0.0), p(m / 2.0, 0.0)), m);
     }
 
     #[test]

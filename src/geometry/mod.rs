@@ -1,4 +1,5 @@
-//! The geometric kernel: the point type, exact predicates, validation and ordering helpers.
+//! The geometric kernel: the point type, the validated point set, exact predicates and
+//! ordering helpers.
 //!
 //! Every geometric decision in compgeo goes through the predicates of this module, and every
 //! predicate is exact for every finite `f64` input: the answer is the sign of the exact real
@@ -25,13 +26,24 @@ mod counted;
 mod expansion;
 mod extended;
 mod point;
+mod point_set;
 mod predicates;
 mod products;
 pub(crate) mod sweep_predicates;
-mod validate;
 
 pub use counted::CountedPredicates;
-pub use point::Point2;
+pub use point::{Point2, PointPair};
+pub use point_set::{BoundingBox, PointSet};
+
+/// The exact predicates, declared: O(1) each, counted as the operation each one is.
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 7] = [
+    &predicates::DECLARATIONS[0],
+    &predicates::DECLARATIONS[1],
+    &predicates::DECLARATIONS[2],
+    &predicates::DECLARATIONS[3],
+    &predicates::DECLARATIONS[4],
+    &products::DECLARATIONS[0],
+    &products::DECLARATIONS[1],
+];
 pub use predicates::{cmp_dist, cmp_lex, cross_sign, incircle, orient2d, InCircle, Orientation};
 pub use products::{cmp_line_dist, cmp_rect_area};
-pub use validate::validate;

@@ -4,7 +4,7 @@
 ///
 /// The plane is oriented with y up, so counter-clockwise turns are positive. Any finite
 /// coordinates are valid, however large or small; NaN and infinities are rejected by
-/// [`validate`](crate::geometry::validate) before an algorithm sees them.
+/// [`PointSet::new`](crate::geometry::PointSet::new) before an algorithm sees them.
 ///
 /// ```
 /// use compgeo::geometry::Point2;
@@ -62,5 +62,29 @@ impl From<Point2> for (f64, f64) {
     #[inline]
     fn from(p: Point2) -> Self {
         (p.x, p.y)
+    }
+}
+
+/// Two points of a set, by their indices, and their distance: the answer of the diameter and
+/// of the closest pair.
+///
+/// The pair is exact (chosen by exact comparisons); the distance is rounded, within a few
+/// ulps of the true value, and `inf` when that exceeds `f64::MAX`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct PointPair {
+    /// The two indices into the input, the smaller first; equal only for a set of one point.
+    pub pair: [usize; 2],
+    /// Their Euclidean distance, rounded.
+    pub distance: f64,
+}
+
+impl PointPair {
+    /// The pair `a`, `b` of `points` (in either order) with its rounded distance.
+    pub(crate) fn new(points: &[Point2], a: usize, b: usize) -> PointPair {
+        PointPair {
+            pair: [a.min(b), a.max(b)],
+            distance: super::construct::distance(points[a], points[b]),
+        }
     }
 }

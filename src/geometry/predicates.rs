@@ -21,7 +21,71 @@
 use super::expansion::{two_diff, Expansion};
 use super::extended::{self, Predicate};
 use super::Point2;
+use crate::complexity::Declaration;
+use crate::count::Operation;
 use std::cmp::Ordering;
+
+/// Declares an exact predicate: O(1) per call, counted as the operation it is.
+const fn predicate(
+    name: &'static str,
+    function: &'static str,
+    file: &'static str,
+    summary: &'static str,
+    operation: Operation,
+) -> Declaration {
+    Declaration {
+        problem: "predicate",
+        name,
+        function,
+        file,
+        summary,
+        time: "O(1)",
+        space: "O(1)",
+        operation,
+        counts: "one per call",
+        source: "[Shewchuk, §4]",
+        claims: &[],
+    }
+}
+
+/// The predicates of this file, declared.
+pub(super) const DECLARATIONS: [Declaration; 5] = [
+    predicate(
+        "orient2d",
+        "geometry::orient2d",
+        "src/geometry/predicates.rs",
+        "the side of a line a point lies on",
+        Operation::OrientationTests,
+    ),
+    predicate(
+        "incircle",
+        "geometry::incircle",
+        "src/geometry/predicates.rs",
+        "inside, on or outside the circle through three points",
+        Operation::IncircleTests,
+    ),
+    predicate(
+        "cmp-dist",
+        "geometry::cmp_dist",
+        "src/geometry/predicates.rs",
+        "which of two distances is longer",
+        Operation::DistanceEvaluations,
+    ),
+    predicate(
+        "cross-sign",
+        "geometry::cross_sign",
+        "src/geometry/predicates.rs",
+        "whether one direction turns left or right of another",
+        Operation::OrientationTests,
+    ),
+    predicate(
+        "cmp-lex",
+        "geometry::cmp_lex",
+        "src/geometry/predicates.rs",
+        "the lexicographic order of two points",
+        Operation::Comparisons,
+    ),
+];
 
 /// The turn made by three points, or the side of a directed line a point is on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -319,7 +383,7 @@ fn cross_filter(left: f64, right: f64) -> Option<Orientation> {
 /// Lexicographic order of points: by x, then by y. `-0.0` and `0.0` compare equal.
 ///
 /// The comparison is exact (it compares coordinates, it computes nothing). For NaN
-/// coordinates, which [`validate`](super::validate) rejects, the order is unspecified.
+/// coordinates, which a [`PointSet`](super::PointSet) rejects, the order is unspecified.
 ///
 /// # Complexity
 /// O(1).

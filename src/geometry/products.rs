@@ -19,7 +19,39 @@ use super::bigint::BigInt;
 use super::extended::decompose;
 use super::predicates::{pow2, UNDERFLOW_SLACK};
 use super::Point2;
+use crate::complexity::Declaration;
+use crate::count::Operation;
 use std::cmp::Ordering;
+
+/// The comparisons of products of this file, declared.
+pub(super) const DECLARATIONS: [Declaration; 2] = [
+    Declaration {
+        problem: "predicate",
+        name: "cmp-line-dist",
+        function: "geometry::cmp_line_dist",
+        file: "src/geometry/products.rs",
+        summary: "which of two points is closer to its line",
+        time: "O(1)",
+        space: "O(1)",
+        operation: Operation::DistanceEvaluations,
+        counts: "one per call",
+        source: "[Shewchuk, §4]",
+        claims: &[],
+    },
+    Declaration {
+        problem: "predicate",
+        name: "cmp-rect-area",
+        function: "geometry::cmp_rect_area",
+        file: "src/geometry/products.rs",
+        summary: "which of two rectangles on given lines is smaller",
+        time: "O(1)",
+        space: "O(1)",
+        operation: Operation::DistanceEvaluations,
+        counts: "one per call",
+        source: "[Shewchuk, §4]",
+        claims: &[],
+    },
+];
 
 /// Compares the distance from `p` to the line through `a` and `b` with the distance from
 /// `q` to the line through `c` and `d`, exact for every finite input.

@@ -36,10 +36,10 @@ pub use colouring::{
 pub use graph::{EdgeList, Graph, WeightedGraph, MAX_EDGES, MAX_VERTICES};
 pub use mst::{
     boruvka, boruvka_with, is_spanning_forest, kruskal, kruskal_with, prim, prim_with,
-    MstAlgorithm, SpanningForest,
+    spanning_forest, spanning_forest_with, MstAlgorithm, SpanningForest,
 };
 pub use traverse::{
-    bfs, bfs_with, components, dfs, dfs_with, is_connected, is_search_tree, search_trace,
-    trace_table, Components, Search, SearchKind, TraceRow, TRACE_MAX_VERTICES,
+    bfs, bfs_with, components, dfs, dfs_with, is_connected, is_search_tree, search, search_trace,
+    search_with, trace_table, Components, Search, SearchAlgorithm, TraceRow, TRACE_MAX_VERTICES,
 };
 pub use union_find::UnionFind;

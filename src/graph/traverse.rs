@@ -12,13 +12,101 @@
 //! the parent array is a tree of graph edges rooted at the start, and the seed's two tables.
 
 use super::graph::Graph;
-use crate::count::{Counter, NoCount};
+use crate::complexity::{algorithm_family, on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::{Error, Result};
 use std::fmt::Write;
+
+/// Breadth-first search's [`Declaration`]: its name, bounds, counts, source and claims.
+const BFS: Declaration = Declaration {
+    problem: "search",
+    name: "bfs",
+    function: "graph::bfs",
+    file: "src/graph/traverse.rs",
+    summary: "breadth-first: Q is a queue",
+    time: "O(n + m)",
+    space: "O(n)",
+    operation: Operation::EdgeVisits,
+    counts: "exactly 2m edge visits on a connected graph",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::NPlusM, Operation::EdgeVisits)],
+};
+
+/// Depth-first search's [`Declaration`]: its name, bounds, counts, source and claims.
+const DFS: Declaration = Declaration {
+    problem: "search",
+    name: "dfs",
+    function: "graph::dfs",
+    file: "src/graph/traverse.rs",
+    summary: "depth-first: Q is a stack",
+    time: "O(n + m)",
+    space: "O(n)",
+    operation: Operation::EdgeVisits,
+    counts: "exactly 2m edge visits on a connected graph",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::NPlusM, Operation::EdgeVisits)],
+};
+
+algorithm_family! {
+    /// The two searches, by the list discipline of Q ([`search`], [`search_trace`]).
+    ///
+    /// ```
+    /// use compgeo::graph::SearchAlgorithm;
+    ///
+    /// assert_eq!("dfs".parse::<SearchAlgorithm>()?, SearchAlgorithm::Dfs);
+    /// assert_eq!(SearchAlgorithm::Bfs.declaration().time, "O(n + m)");
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub enum SearchAlgorithm ("search algorithm") {
+        /// Breadth-first ([`bfs`], the course's B.E.A.): Q is a queue, look at its first
+        /// vertex.
+        Bfs = BFS => bfs_with,
+        /// Depth-first ([`dfs`], the course's B.E.P.): Q is a stack, look at its last
+        /// vertex.
+        Dfs = DFS => dfs_with,
+    }
+    fn run_with[C: Counter](g: &Graph, start: usize, c: &mut C) -> Result<Search>;
+}
 
 /// The longest graph [`search_trace`] accepts: each row copies the list Q, so a trace of n
 /// vertices holds up to 2n rows of up to n entries, meant for graphs a reader can follow.
 pub const TRACE_MAX_VERTICES: usize = 1000;
+
+/// The search of `g` from `start` by `algorithm`: the same as calling [`bfs`] or [`dfs`].
+///
+/// # Errors
+/// [`Error::NoSuchVertex`] if `start` is not a vertex of `g`.
+///
+/// # Complexity
+/// O(n + m) time, O(n) auxiliary space.
+///
+/// ```
+/// use compgeo::graph::{search, Graph, SearchAlgorithm};
+///
+/// let g = Graph::from_edges(4, &[[0, 1], [0, 2], [1, 3]])?;
+/// assert_eq!(search(&g, 0, SearchAlgorithm::Bfs)?.order, [0, 1, 2, 3]);
+/// assert_eq!(search(&g, 0, SearchAlgorithm::Dfs)?.order, [0, 1, 3, 2]);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn search(g: &Graph, start: usize, algorithm: SearchAlgorithm) -> Result<Search> {
+    search_with(g, start, algorithm, &mut NoCount)
+}
+
+/// [`search`], recording the searched vertices and edges in `counter`.
+///
+/// # Errors
+/// [`Error::NoSuchVertex`] if `start` is not a vertex of `g`.
+///
+/// # Complexity
+/// O(n + m) time, O(n) auxiliary space.
+pub fn search_with<C: Counter>(
+    g: &Graph,
+    start: usize,
+    algorithm: SearchAlgorithm,
+    counter: &mut C,
+) -> Result<Search> {
+    algorithm.run_with(g, start, counter)
+}
 
 /// The result of a search from one start vertex.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -29,15 +117,6 @@ pub struct Search {
     /// `parent[v]` is the vertex from which the search reached `v`: the spanning tree of the
     /// component, rooted at the start. `None` for the start and for vertices not reached.
     pub parent: Vec<Option<usize>>,
-}
-
-/// Which list discipline a search uses.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum SearchKind {
-    /// Breadth-first (B.E.A.): Q is a queue, look at its first vertex.
-    Breadth,
-    /// Depth-first (B.E.P.): Q is a stack, look at its last vertex.
-    Depth,
 }
 
 /// One row of the seed's search table: the vertex added to Q or removed from it, and Q after
@@ -245,16 +324,16 @@ pub fn dfs_with<C: Counter>(g: &Graph, start: usize, c: &mut C) -> Result<Search
 /// O(n + m + n_c²) time and O(n_c²) space for the rows.
 ///
 /// ```
-/// use compgeo::graph::{search_trace, Graph, SearchKind};
+/// use compgeo::graph::{search_trace, Graph, SearchAlgorithm};
 ///
 /// let g = Graph::from_edges(3, &[[0, 1], [0, 2]])?;
-/// let rows = search_trace(&g, 0, SearchKind::Depth)?;
+/// let rows = search_trace(&g, 0, SearchAlgorithm::Dfs)?;
 /// let added: Vec<_> = rows.iter().filter_map(|r| r.added).collect();
 /// assert_eq!(added, [0, 1, 2]);
 /// assert_eq!(rows[2].list, [0]); // 1 was removed before 2 was added
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn search_trace(g: &Graph, start: usize, kind: SearchKind) -> Result<Vec<TraceRow>> {
+pub fn search_trace(g: &Graph, start: usize, kind: SearchAlgorithm) -> Result<Vec<TraceRow>> {
     g.check_vertex(start)?;
     if g.vertex_count() > TRACE_MAX_VERTICES {
         return Err(Error::InvalidParameter {
@@ -275,8 +354,8 @@ pub fn search_trace(g: &Graph, start: usize, kind: SearchKind) -> Result<Vec<Tra
         list: vec![start],
     }];
     while let Some(&x) = match kind {
-        SearchKind::Breadth => list.front(),
-        SearchKind::Depth => list.back(),
+        SearchAlgorithm::Bfs => list.front(),
+        SearchAlgorithm::Dfs => list.back(),
     } {
         let adjacent = g.adjacent(x);
         let mut next = None;
@@ -296,8 +375,8 @@ pub fn search_trace(g: &Graph, start: usize, kind: SearchKind) -> Result<Vec<Tra
             }
             None => {
                 match kind {
-                    SearchKind::Breadth => list.pop_front(),
-                    SearchKind::Depth => list.pop_back(),
+                    SearchAlgorithm::Bfs => list.pop_front(),
+                    SearchAlgorithm::Dfs => list.pop_back(),
                 };
                 (None, Some(x))
             }
@@ -317,10 +396,10 @@ pub fn search_trace(g: &Graph, start: usize, kind: SearchKind) -> Result<Vec<Tra
 /// seed (`abce`), and separated by spaces otherwise.
 ///
 /// ```
-/// use compgeo::graph::{search_trace, trace_table, Graph, SearchKind};
+/// use compgeo::graph::{search_trace, trace_table, Graph, SearchAlgorithm};
 ///
 /// let g = Graph::from_edges(2, &[[0, 1]])?;
-/// let rows = search_trace(&g, 0, SearchKind::Breadth)?;
+/// let rows = search_trace(&g, 0, SearchAlgorithm::Bfs)?;
 /// let letter = |v: usize| char::from(b'a' + v as u8).to_string();
 /// assert_eq!(
 ///     trace_table(&rows, letter),
@@ -501,7 +580,7 @@ mod tests {
         ));
         let g = Graph::from_edges(2, &[[0, 1]]).unwrap();
         assert!(dfs(&g, 2).is_err());
-        assert!(search_trace(&g, 5, SearchKind::Depth).is_err());
+        assert!(search_trace(&g, 5, SearchAlgorithm::Dfs).is_err());
     }
 
     #[test]

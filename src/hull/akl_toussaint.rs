@@ -1,10 +1,29 @@
 //! The Akl–Toussaint heuristic: discard the points strictly inside the polygon of a few
 //! extreme points, then run the monotone chain on the survivors.
 
-use super::{chains, finish, lex_sorted_items, HullOptions};
-use crate::count::{Counter, NoCount};
+use super::collinear::finish;
+use super::lex::lex_sorted_items;
+use super::monotone_chain::chains;
+use super::HullOptions;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "hull",
+    name: "akl-toussaint",
+    function: "hull::akl_toussaint",
+    file: "src/hull/akl_toussaint.rs",
+    summary: "the eight-extreme-point filter, then the monotone chain",
+    time: "O(n log n) worst case, O(n) expected on uniform input",
+    space: "O(n)",
+    operation: Operation::Comparisons,
+    counts: "up to four per point for the filter box",
+    source: "[RD, §2.2]",
+    claims: &[on("uniform-square", Bound::Linear, Operation::Comparisons)],
+};
 
 /// The convex hull of `points` by the Akl–Toussaint filter and the monotone chain. See
 /// [`akl_toussaint_with`].
@@ -18,7 +37,11 @@ use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn akl_toussaint(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
-    akl_toussaint_with(points, options, &mut NoCount)
+    Ok(akl_toussaint_with(
+        &PointSet::new(points)?,
+        options,
+        &mut NoCount,
+    ))
 }
 
 /// The convex hull of `points` by the Akl–Toussaint filter followed by the monotone chain,
@@ -40,9 +63,10 @@ pub fn akl_toussaint(points: &[Point2], options: HullOptions) -> Result<Vec<usiz
 ///
 /// # Complexity
 ///
-/// With n = `points.len()` and s the number of survivors: time O(n + s log s), so
-/// O(n log n) in the worst case (points in convex position survive) and O(n) expected for
-/// uniform points in a square or disk; auxiliary space O(s).
+/// With n = `points.len()` and s the number of survivors: time O(n + s log s), that is
+/// O(n log n) worst case, O(n) expected on uniform input (points in convex position all
+/// survive; uniform points in a square or disk leave few); auxiliary space O(n), O(s) beyond
+/// the output.
 ///
 /// # Counts
 ///
@@ -51,30 +75,27 @@ pub fn akl_toussaint(points: &[Point2], options: HullOptions) -> Result<Vec<usiz
 /// ```
 /// use compgeo::count::Counts;
 /// use compgeo::gen::{points, PointKind};
+/// use compgeo::geometry::PointSet;
 /// use compgeo::hull::{akl_toussaint_with, monotone_chain, HullOptions};
 ///
 /// let pts = points(PointKind::UniformSquare, 2000, 1)?;
+/// let set = PointSet::new(&pts)?;
 /// let mut counts = Counts::default();
-/// let hull = akl_toussaint_with(&pts, HullOptions::default(), &mut counts)?;
+/// let hull = akl_toussaint_with(&set, HullOptions::default(), &mut counts);
 /// assert_eq!(hull, monotone_chain(&pts, HullOptions::default())?);
 /// assert!(counts.orientation_tests < 2000); // most points never reach a predicate
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn akl_toussaint_with<C: Counter>(
-    points: &[Point2],
+    points: &PointSet,
     options: HullOptions,
     counter: &mut C,
-) -> Result<Vec<usize>> {
-    let survivors = akl_toussaint_filter(points, counter)?;
+) -> Vec<usize> {
+    let survivors = akl_toussaint_filter(points, counter);
+    let points = points.points();
     let sorted = lex_sorted_items(points, survivors.into_iter(), counter);
     let strict = chains(&sorted, counter);
-    Ok(finish(
-        points,
-        sorted.iter().map(|s| s.1),
-        strict,
-        options,
-        counter,
-    ))
+    finish(points, sorted.iter().map(|s| s.1), strict, options, counter)
 }
 
 /// The indices, increasing, of the points of `points` that are not strictly inside the
@@ -107,10 +128,12 @@ pub fn akl_toussaint_with<C: Counter>(
 ///
 /// ```
 /// use compgeo::gen::{points, PointKind};
+/// use compgeo::geometry::PointSet;
 /// use compgeo::hull::{akl_toussaint_filter, graham_scan, HullOptions};
 ///
 /// let pts = points(PointKind::UniformDisk, 5000, 3)?;
-/// let kept = akl_toussaint_filter(&pts, &mut compgeo::count::NoCount)?;
+/// let set = PointSet::new(&pts)?;
+/// let kept = akl_toussaint_filter(&set, &mut compgeo::count::NoCount);
 /// assert!(kept.len() < 1000);
 /// // Any algorithm on the survivors, mapped back, gives the hull of all points.
 /// let sub: Vec<_> = kept.iter().map(|&i| pts[i]).collect();
@@ -118,22 +141,19 @@ pub fn akl_toussaint_with<C: Counter>(
 /// assert_eq!(hull, graham_scan(&pts, HullOptions::default())?);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn akl_toussaint_filter<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Vec<usize>> {
+pub fn akl_toussaint_filter<C: Counter>(points: &PointSet, counter: &mut C) -> Vec<usize> {
+    let points = points.points();
     if points.len() < 4 {
-        validate(points)?;
-        return Ok((0..points.len()).collect());
+        return (0..points.len()).collect();
     }
-    let Some(extremes) = extremes(points) else {
-        validate(points)?;
-        return Ok((0..points.len()).collect());
-    };
+    let extremes = extremes(points);
     let corners = lex_sorted_items(points, extremes.into_iter(), counter);
     let polygon: Vec<Point2> = chains(&corners, counter)
         .into_iter()
         .map(|i| points[i])
         .collect();
     if polygon.len() < 3 {
-        return Ok((0..points.len()).collect());
+        return (0..points.len()).collect();
     }
     let inner = inner_box(points, &extremes, &polygon, counter);
     let mut survivors = Vec::new();
@@ -147,22 +167,20 @@ pub fn akl_toussaint_filter<C: Counter>(points: &[Point2], counter: &mut C) -> R
             survivors.push(i);
         }
     }
-    Ok(survivors)
+    survivors
 }
 
 /// An axis-parallel box `[x_lo, x_hi, y_lo, y_hi]`.
 type Box = [f64; 4];
 
-/// The indices of the points with smallest and largest x, y, x + y and x − y, or `None` if
-/// a coordinate is not finite (the one pass over the input also validates it).
-fn extremes(points: &[Point2]) -> Option<[usize; 8]> {
+/// The indices of the points with smallest and largest x, y, x + y and x − y (the first of
+/// equals; sums that overflow compare as infinities, which only makes the choice less good).
+fn extremes(points: &[Point2]) -> [usize; 8] {
     let key = |p: Point2| [p.x, p.y, p.x + p.y, p.x - p.y];
     let first = key(points[0]);
     let (mut lo, mut hi) = (first, first);
     let (mut lo_at, mut hi_at) = ([0usize; 4], [0usize; 4]);
-    let mut finite = true;
     for (i, &p) in points.iter().enumerate() {
-        finite &= p.x.is_finite() & p.y.is_finite();
         let k = key(p);
         for d in 0..4 {
             if k[d] < lo[d] {
@@ -175,9 +193,9 @@ fn extremes(points: &[Point2]) -> Option<[usize; 8]> {
             }
         }
     }
-    finite.then_some([
+    [
         lo_at[0], lo_at[1], lo_at[2], lo_at[3], hi_at[0], hi_at[1], hi_at[2], hi_at[3],
-    ])
+    ]
 }
 
 /// The largest box spanned by the diagonal extremes, if its corners are strictly inside

@@ -1,10 +1,31 @@
 //! The seed's brute-force hull: a pair of points is a hull edge when no point lies to its
 //! right. The oracle every other algorithm is tested against.
 
-use super::{lex_sorted_items, HullOptions};
-use crate::count::{Counter, NoCount};
+use super::lex::lex_sorted_items;
+use super::HullOptions;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "hull",
+    name: "brute-force",
+    function: "hull::brute_force_hull",
+    file: "src/hull/brute_force.rs",
+    summary: "every pair of points tested against all the others",
+    time: "Θ(n³)",
+    space: "O(n)",
+    operation: Operation::OrientationTests,
+    counts: "m − 2 per ordered pair of the m distinct points that is an edge, fewer for the others",
+    source: "[RD, §2.2]",
+    claims: &[on(
+        "uniform-square",
+        Bound::Cubic,
+        Operation::OrientationTests,
+    )],
+};
 
 /// The convex hull of `points` by brute force. See [`brute_force_hull_with`].
 ///
@@ -17,7 +38,11 @@ use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn brute_force_hull(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
-    brute_force_hull_with(points, options, &mut NoCount)
+    Ok(brute_force_hull_with(
+        &PointSet::new(points)?,
+        options,
+        &mut NoCount,
+    ))
 }
 
 /// The convex hull of `points` by brute force, recording its operations in `counter`.
@@ -40,8 +65,8 @@ pub fn brute_force_hull(points: &[Point2], options: HullOptions) -> Result<Vec<u
 ///
 /// # Complexity
 ///
-/// With n = `points.len()` and m ≤ n the number of distinct points: time Θ(m³) orientation
-/// tests plus an O(n log n) sort; auxiliary space O(n).
+/// With n = `points.len()` and m ≤ n the number of distinct points: time Θ(n³) in the worst
+/// case, Θ(m³) orientation tests plus an O(n log n) sort; auxiliary space O(n).
 ///
 /// # Counts
 ///
@@ -51,28 +76,29 @@ pub fn brute_force_hull(points: &[Point2], options: HullOptions) -> Result<Vec<u
 ///
 /// ```
 /// use compgeo::count::Counts;
-/// use compgeo::geometry::Point2;
+/// use compgeo::geometry::{Point2, PointSet};
 /// use compgeo::hull::{brute_force_hull_with, HullOptions};
 ///
 /// let pts = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)].map(Point2::from);
+/// let set = PointSet::new(&pts)?;
 /// let mut counts = Counts::default();
-/// assert_eq!(brute_force_hull_with(&pts, HullOptions::default(), &mut counts)?, [0, 1, 2]);
+/// assert_eq!(brute_force_hull_with(&set, HullOptions::default(), &mut counts), [0, 1, 2]);
 /// assert_eq!(counts.orientation_tests, 6); // 6 ordered pairs, one other point each
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn brute_force_hull_with<C: Counter>(
-    points: &[Point2],
+    points: &PointSet,
     options: HullOptions,
     counter: &mut C,
-) -> Result<Vec<usize>> {
-    validate(points)?;
+) -> Vec<usize> {
+    let points = points.points();
     let unique: Vec<usize> = lex_sorted_items(points, 0..points.len(), counter)
         .into_iter()
         .map(|s| s.1)
         .collect();
     let m = unique.len();
     if m <= 2 {
-        return Ok(unique);
+        return unique;
     }
     let p = |k: usize| points[unique[k]];
     // For each position in `unique`: the edge leaving it and the points inside that edge.
@@ -126,5 +152,5 @@ pub fn brute_force_hull_with<C: Counter>(
             }
         }
     }
-    Ok(hull)
+    hull
 }

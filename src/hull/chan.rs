@@ -1,11 +1,35 @@
 //! Chan's output-sensitive hull: monotone-chain hulls of small groups, then Jarvis's march
 //! over the groups with a binary search for each group's tangent.
 
-use super::{chains, finish, lex_min, lex_sorted_items, HullOptions};
-use crate::count::{Counter, NoCount};
+use super::collinear::finish;
+use super::lex::lex_min;
+use super::lex::lex_sorted_items;
+use super::monotone_chain::chains;
+use super::HullOptions;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
+use crate::util::partition_point;
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "hull",
+    name: "chan",
+    function: "hull::chan",
+    file: "src/hull/chan.rs",
+    summary: "hulls of groups, then wrapping with tangent searches",
+    time: "O(n log h)",
+    space: "O(n)",
+    operation: Operation::OrientationTests,
+    counts: "",
+    source: "[RD, §2.2]",
+    claims: &[
+        on("uniform-disk", Bound::NLogH, Operation::OrientationTests),
+        on("cocircular", Bound::NLogH, Operation::OrientationTests),
+    ],
+};
 
 /// The convex hull of `points` by Chan's algorithm. See [`chan_with`].
 ///
@@ -18,7 +42,7 @@ use std::cmp::Ordering;
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
-    chan_with(points, options, &mut NoCount)
+    Ok(chan_with(&PointSet::new(points)?, options, &mut NoCount))
 }
 
 /// The convex hull of `points` by Chan's algorithm, recording its operations in `counter`.
@@ -72,24 +96,26 @@ pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
 /// ```
 /// use compgeo::count::Counts;
 /// use compgeo::gen::{points, PointKind};
+/// use compgeo::geometry::PointSet;
 /// use compgeo::hull::{chan_with, jarvis_march_with, HullOptions};
 ///
 /// let pts = points(PointKind::UniformDisk, 4096, 7)?;
+/// let set = PointSet::new(&pts)?;
 /// let (mut fast, mut slow) = (Counts::default(), Counts::default());
-/// let hull = chan_with(&pts, HullOptions::default(), &mut fast)?;
-/// assert_eq!(hull, jarvis_march_with(&pts, HullOptions::default(), &mut slow)?);
+/// let hull = chan_with(&set, HullOptions::default(), &mut fast);
+/// assert_eq!(hull, jarvis_march_with(&set, HullOptions::default(), &mut slow));
 /// assert!(fast.orientation_tests < slow.orientation_tests);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn chan_with<C: Counter>(
-    points: &[Point2],
+    points: &PointSet,
     options: HullOptions,
     counter: &mut C,
-) -> Result<Vec<usize>> {
-    validate(points)?;
+) -> Vec<usize> {
+    let points = points.points();
     let n = points.len();
     if n == 0 {
-        return Ok(Vec::new());
+        return Vec::new();
     }
     let start = lex_min(points, counter);
     let mut exponent = 2u32;
@@ -105,7 +131,7 @@ pub fn chan_with<C: Counter>(
         }
         exponent *= 2;
     };
-    Ok(finish(points, 0..n, strict, options, counter))
+    finish(points, 0..n, strict, options, counter)
 }
 
 /// The hulls of consecutive groups of points, stored one after another.
@@ -139,7 +165,7 @@ impl Groups {
             let len = hull.len();
             // Lexicographically increasing up to the top vertex, decreasing after it.
             let v = &vertices[start..];
-            let top = partition_point(0, len - 1, |k| {
+            let top = partition_point(0..len - 1, |k| {
                 counter.cmp_lex(v[k].0, v[k + 1].0) == Ordering::Less
             });
             spans.push(Span { start, len, top });
@@ -171,7 +197,7 @@ impl Groups {
         let k = len;
         let mut below = |i: usize, j: usize| better(p, v[i].0, v[j].0, counter);
         let falls_at_0 = below(1, 0);
-        let min = partition_point(1, k, |i| {
+        let min = partition_point(1..k, |i| {
             let falls = below((i + 1) % k, i);
             let under_0 = below(i, 0);
             if falls_at_0 {
@@ -252,28 +278,14 @@ fn vertex_at<C: Counter>(
     p: Point2,
     counter: &mut C,
 ) -> Option<usize> {
-    let k = partition_point(0, top + 1, |i| counter.cmp_lex(v[i].0, p) == Ordering::Less);
+    let k = partition_point(0..top + 1, |i| counter.cmp_lex(v[i].0, p) == Ordering::Less);
     if k <= top && counter.cmp_lex(v[k].0, p) == Ordering::Equal {
         return Some(k);
     }
-    let k = partition_point(top + 1, v.len(), |i| {
+    let k = partition_point(top + 1..v.len(), |i| {
         counter.cmp_lex(v[i].0, p) == Ordering::Greater
     });
     (k < v.len() && counter.cmp_lex(v[k].0, p) == Ordering::Equal).then_some(k)
-}
-
-/// The first `k` in `lo..hi` for which `before(k)` is false, given that it is true on a
-/// prefix of the range.
-fn partition_point(mut lo: usize, mut hi: usize, mut before: impl FnMut(usize) -> bool) -> usize {
-    while lo < hi {
-        let mid = lo + (hi - lo) / 2;
-        if before(mid) {
-            lo = mid + 1;
-        } else {
-            hi = mid;
-        }
-    }
-    lo
 }
 
 #[cfg(test)]

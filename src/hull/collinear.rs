@@ -1,8 +1,10 @@
 //! The `keep_collinear` option, shared by every algorithm except brute force (which finds the
 //! boundary points itself, so that it stays an independent oracle).
 
+use super::{is_strictly_convex_ccw, HullOptions};
 use crate::count::Counter;
 use crate::geometry::{CountedPredicates, Orientation, Point2};
+use crate::util::partition_point;
 use std::cmp::Ordering;
 
 /// `strict`, a strictly convex counter-clockwise hull starting at its lexicographically
@@ -34,7 +36,7 @@ pub(super) fn with_boundary_points<C: Counter>(
     let mut on_edges: Vec<(usize, usize)> = Vec::new();
     for i in candidates {
         let p = points[i];
-        let pos = partition_point(0, top + 1, |k| counter.cmp_lex(v(k), p) == Ordering::Less);
+        let pos = partition_point(0..top + 1, |k| counter.cmp_lex(v(k), p) == Ordering::Less);
         if pos == 0 || pos > top {
             continue;
         }
@@ -49,7 +51,7 @@ pub(super) fn with_boundary_points<C: Counter>(
             continue;
         }
         // The upper chain strict[top], ..., strict[h - 1], strict[0], decreasing.
-        let pos = partition_point(top, h + 1, |k| {
+        let pos = partition_point(top..h + 1, |k| {
             counter.cmp_lex(v(k), p) == Ordering::Greater
         });
         if pos == top || pos > h || counter.cmp_lex(v(pos), p) == Ordering::Equal {
@@ -80,16 +82,19 @@ pub(super) fn with_boundary_points<C: Counter>(
     out
 }
 
-/// The first `k` in `lo..hi` for which `before(k)` is false, given that it is true on a
-/// prefix of the range.
-fn partition_point(mut lo: usize, mut hi: usize, mut before: impl FnMut(usize) -> bool) -> usize {
-    while lo < hi {
-        let mid = lo + (hi - lo) / 2;
-        if before(mid) {
-            lo = mid + 1;
-        } else {
-            hi = mid;
-        }
+/// Applies the options to a strictly convex hull computed from `candidates` (a superset of
+/// the boundary points).
+pub(super) fn finish<C: Counter>(
+    points: &[Point2],
+    candidates: impl Iterator<Item = usize>,
+    strict: Vec<usize>,
+    options: HullOptions,
+    counter: &mut C,
+) -> Vec<usize> {
+    debug_assert!(is_strictly_convex_ccw(points, &strict));
+    if options.keep_collinear {
+        with_boundary_points(points, candidates, strict, counter)
+    } else {
+        strict
     }
-    lo
 }

@@ -1,10 +1,31 @@
 //! Graham's scan: sort by angle about the lowest-leftmost point, then keep only left turns.
 
-use super::{finish, lex_min, push_left_turn, HullOptions};
-use crate::count::{Counter, NoCount};
+use super::collinear::finish;
+use super::lex::lex_min;
+use super::HullOptions;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "hull",
+    name: "graham",
+    function: "hull::graham_scan",
+    file: "src/hull/graham.rs",
+    summary: "angular sort about the lexicographically smallest point, then the scan",
+    time: "O(n log n)",
+    space: "O(n)",
+    operation: Operation::OrientationTests,
+    counts: "at most 2n − 4 in the scan after the sort",
+    source: "[RD, §2.2]",
+    claims: &[
+        on("uniform-disk", Bound::NLogN, Operation::OrientationTests),
+        on("cocircular", Bound::NLogN, Operation::OrientationTests),
+    ],
+};
 
 /// The convex hull of `points` by Graham's scan. See [`graham_scan_with`].
 ///
@@ -17,7 +38,11 @@ use std::cmp::Ordering;
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn graham_scan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
-    graham_scan_with(points, options, &mut NoCount)
+    Ok(graham_scan_with(
+        &PointSet::new(points)?,
+        options,
+        &mut NoCount,
+    ))
 }
 
 /// The convex hull of `points` by Graham's scan, recording its operations in `counter`.
@@ -53,27 +78,28 @@ pub fn graham_scan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>
 ///
 /// ```
 /// use compgeo::count::Counts;
-/// use compgeo::geometry::Point2;
+/// use compgeo::geometry::{Point2, PointSet};
 /// use compgeo::hull::{graham_scan_with, HullOptions};
 ///
 /// let pts = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (0.2, 0.2)].map(Point2::from);
+/// let set = PointSet::new(&pts)?;
 /// let mut counts = Counts::default();
-/// assert_eq!(graham_scan_with(&pts, HullOptions::default(), &mut counts)?, [0, 1, 2]);
+/// assert_eq!(graham_scan_with(&set, HullOptions::default(), &mut counts), [0, 1, 2]);
 /// assert!(counts.orientation_tests > 0);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn graham_scan_with<C: Counter>(
-    points: &[Point2],
+    points: &PointSet,
     options: HullOptions,
     counter: &mut C,
-) -> Result<Vec<usize>> {
-    validate(points)?;
+) -> Vec<usize> {
+    let points = points.points();
     if points.is_empty() {
-        return Ok(Vec::new());
+        return Vec::new();
     }
     let order = angular_order(points, counter);
     let strict = scan(points, &order, counter);
-    Ok(finish(points, 0..points.len(), strict, options, counter))
+    finish(points, 0..points.len(), strict, options, counter)
 }
 
 /// The pivot followed by the farthest point of every direction from it, in angular order.
@@ -112,6 +138,27 @@ fn scan<C: Counter>(points: &[Point2], order: &[usize], counter: &mut C) -> Vec<
         push_left_turn(&mut stack, 2, i, |k| points[k], counter);
     }
     stack
+}
+
+/// Pops from `stack` while it holds at least `floor` items and the points (`point`) of its
+/// last two do not turn strictly left towards `item`'s, then pushes `item`.
+#[inline]
+pub(super) fn push_left_turn<T: Copy, C: Counter>(
+    stack: &mut Vec<T>,
+    floor: usize,
+    item: T,
+    point: impl Fn(T) -> Point2,
+    counter: &mut C,
+) {
+    let p = point(item);
+    while stack.len() >= floor {
+        let (a, b) = (stack[stack.len() - 2], stack[stack.len() - 1]);
+        if counter.orient2d(point(a), point(b), p) == Orientation::CounterClockwise {
+            break;
+        }
+        stack.pop();
+    }
+    stack.push(item);
 }
 
 #[cfg(test)]

@@ -1,11 +1,32 @@
 //! Jarvis's march (gift wrapping): from a hull vertex, the next one is the point every other
 //! point lies to the left of.
 
-use super::{finish, lex_min, HullOptions};
-use crate::count::{Counter, NoCount};
+use super::collinear::finish;
+use super::lex::lex_min;
+use super::HullOptions;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "hull",
+    name: "jarvis",
+    function: "hull::jarvis_march",
+    file: "src/hull/jarvis.rs",
+    summary: "gift wrapping from the lexicographically smallest point",
+    time: "Θ(nh)",
+    space: "O(h)",
+    operation: Operation::OrientationTests,
+    counts: "at most n − 1 per hull vertex",
+    source: "[RD, §2.2]",
+    claims: &[
+        on("uniform-disk", Bound::NH, Operation::OrientationTests),
+        on("cocircular", Bound::NH, Operation::OrientationTests),
+    ],
+};
 
 /// The convex hull of `points` by Jarvis's march. See [`jarvis_march_with`].
 ///
@@ -18,7 +39,11 @@ use std::cmp::Ordering;
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn jarvis_march(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
-    jarvis_march_with(points, options, &mut NoCount)
+    Ok(jarvis_march_with(
+        &PointSet::new(points)?,
+        options,
+        &mut NoCount,
+    ))
 }
 
 /// The convex hull of `points` by Jarvis's march, recording its operations in `counter`.
@@ -53,23 +78,24 @@ pub fn jarvis_march(points: &[Point2], options: HullOptions) -> Result<Vec<usize
 ///
 /// ```
 /// use compgeo::count::Counts;
-/// use compgeo::geometry::Point2;
+/// use compgeo::geometry::{Point2, PointSet};
 /// use compgeo::hull::{jarvis_march_with, HullOptions};
 ///
 /// let pts = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (0.2, 0.2)].map(Point2::from);
+/// let set = PointSet::new(&pts)?;
 /// let mut counts = Counts::default();
-/// assert_eq!(jarvis_march_with(&pts, HullOptions::default(), &mut counts)?, [0, 1, 2]);
+/// assert_eq!(jarvis_march_with(&set, HullOptions::default(), &mut counts), [0, 1, 2]);
 /// assert_eq!(counts.orientation_tests, 3 * 2); // h = 3 steps, n − 2 tests each
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn jarvis_march_with<C: Counter>(
-    points: &[Point2],
+    points: &PointSet,
     options: HullOptions,
     counter: &mut C,
-) -> Result<Vec<usize>> {
-    validate(points)?;
+) -> Vec<usize> {
+    let points = points.points();
     if points.is_empty() {
-        return Ok(Vec::new());
+        return Vec::new();
     }
     let start = lex_min(points, counter);
     let mut hull = vec![start];
@@ -105,5 +131,5 @@ pub fn jarvis_march_with<C: Counter>(
             _ => break,
         }
     }
-    Ok(finish(points, 0..points.len(), hull, options, counter))
+    finish(points, 0..points.len(), hull, options, counter)
 }

@@ -1,10 +1,32 @@
 //! Quickhull: split by the farthest point from each hull edge, recursively.
 
-use super::{finish, lex_min, HullOptions};
-use crate::count::{Counter, NoCount};
+use super::collinear::finish;
+use super::lex::lex_min;
+use super::HullOptions;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "hull",
+    name: "quickhull",
+    function: "hull::quickhull",
+    file: "src/hull/quickhull.rs",
+    summary: "divide by the farthest point from each edge",
+    time: "O(nh) worst case, O(n log n) expected",
+    space: "O(n)",
+    operation: Operation::OrientationTests,
+    counts: "",
+    source: "[RD, §2.2]",
+    claims: &[on(
+        "uniform-disk",
+        Bound::NLogN,
+        Operation::OrientationTests,
+    )],
+};
 
 /// The convex hull of `points` by Quickhull. See [`quickhull_with`].
 ///
@@ -17,7 +39,11 @@ use std::cmp::Ordering;
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn quickhull(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
-    quickhull_with(points, options, &mut NoCount)
+    Ok(quickhull_with(
+        &PointSet::new(points)?,
+        options,
+        &mut NoCount,
+    ))
 }
 
 /// The convex hull of `points` by Quickhull, recording its operations in `counter`.
@@ -43,9 +69,9 @@ pub fn quickhull(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> 
 ///
 /// # Complexity
 ///
-/// With n = `points.len()` and h the number of hull vertices: time O(n log n) expected on
-/// random input, O(nh) worst case (O(n²) on points in convex position with unbalanced
-/// splits); auxiliary space O(n).
+/// With n = `points.len()` and h the number of hull vertices: time O(nh) worst case, O(n log n)
+/// expected on random input (O(n²) on points in convex position with unbalanced splits);
+/// auxiliary space O(n).
 ///
 /// # Counts
 ///
@@ -55,23 +81,24 @@ pub fn quickhull(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> 
 ///
 /// ```
 /// use compgeo::count::Counts;
-/// use compgeo::geometry::Point2;
+/// use compgeo::geometry::{Point2, PointSet};
 /// use compgeo::hull::{quickhull_with, HullOptions};
 ///
 /// let pts = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (0.2, 0.2)].map(Point2::from);
+/// let set = PointSet::new(&pts)?;
 /// let mut counts = Counts::default();
-/// assert_eq!(quickhull_with(&pts, HullOptions::default(), &mut counts)?, [0, 1, 2]);
+/// assert_eq!(quickhull_with(&set, HullOptions::default(), &mut counts), [0, 1, 2]);
 /// assert!(counts.orientation_tests > 0);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn quickhull_with<C: Counter>(
-    points: &[Point2],
+    points: &PointSet,
     options: HullOptions,
     counter: &mut C,
-) -> Result<Vec<usize>> {
-    validate(points)?;
+) -> Vec<usize> {
+    let points = points.points();
     if points.is_empty() {
-        return Ok(Vec::new());
+        return Vec::new();
     }
     let a = lex_min(points, counter);
     let mut b = a;
@@ -81,7 +108,7 @@ pub fn quickhull_with<C: Counter>(
         }
     }
     if b == a {
-        return Ok(finish(points, 0..points.len(), vec![a], options, counter));
+        return finish(points, 0..points.len(), vec![a], options, counter);
     }
     let (pa, pb) = (points[a], points[b]);
     let (mut below, mut above) = (Vec::new(), Vec::new());
@@ -120,7 +147,7 @@ pub fn quickhull_with<C: Counter>(
             }
         }
     }
-    Ok(finish(points, 0..points.len(), hull, options, counter))
+    finish(points, 0..points.len(), hull, options, counter)
 }
 
 /// Work on the explicit stack: find the vertices right of an edge, or output one.

@@ -1,16 +1,40 @@
 //! The closest pair by the classic divide and conquer (Shamos), with exact comparisons only.
 
-use super::{at_least_two, pair_of, ClosestPair};
-use crate::count::{Counter, NoCount};
+use super::at_least;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{CountedPredicates, Point2};
+use crate::geometry::{CountedPredicates, Point2, PointPair, PointSet};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "closest-pair",
+    name: "divide-and-conquer",
+    function: "proximity::closest_pair_divide_and_conquer",
+    file: "src/proximity/closest_pair_divide_and_conquer.rs",
+    summary: "split at the median x, solve both halves, check the strip (Shamos)",
+    time: "O(n log n) in the worst case",
+    space: "O(n)",
+    operation: Operation::DistanceEvaluations,
+    counts: "strip membership, height cut-offs and candidate pairs, all exact",
+    source: "[RD, §2.4]",
+    claims: &[
+        on(
+            "uniform-square",
+            Bound::NLogN,
+            Operation::DistanceEvaluations,
+        ),
+        on("grid", Bound::NLogN, Operation::DistanceEvaluations),
+    ],
+};
 
 /// The closest pair of `points` by divide and conquer; see
 /// [`closest_pair_divide_and_conquer_with`].
 ///
 /// # Errors
-/// As [`closest_pair_divide_and_conquer_with`].
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or
+/// infinite coordinate; [`Error::TooFew`](crate::Error::TooFew) for fewer than two points.
 ///
 /// # Complexity
 /// O(n log n) time, O(n) auxiliary space.
@@ -23,15 +47,15 @@ use std::cmp::Ordering;
 /// assert_eq!(closest_pair_divide_and_conquer(&pts)?.pair, [1, 3]);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn closest_pair_divide_and_conquer(points: &[Point2]) -> Result<ClosestPair> {
-    closest_pair_divide_and_conquer_with(points, &mut NoCount)
+pub fn closest_pair_divide_and_conquer(points: &[Point2]) -> Result<PointPair> {
+    closest_pair_divide_and_conquer_with(&PointSet::new(points)?, &mut NoCount)
 }
 
 /// The closest pair of `points` by the classic O(n log n) divide and conquer, counting its
 /// comparisons and distance evaluations.
 ///
-/// The idea (the seed's divide-and-conquer scheme, `003_5b666ee3e15e6353.txt`, §2.4
-/// "Algoritmos", applied to problem 3 "El par más cercano"; Shamos and Hoey): sort by x;
+/// The idea (the course's divide-and-conquer scheme, [RD, §2.4] "Algoritmos", applied to
+/// problem 3 "El par más cercano"; Shamos and Hoey): sort by x;
 /// split at the median x; solve both halves; the best pair across the split line has both
 /// points in the strip of half-width δ (the better half's distance) around it. Sorted by y
 /// (each call returns its points merged by y, so there is no re-sorting), each strip point
@@ -44,11 +68,10 @@ pub fn closest_pair_divide_and_conquer(points: &[Point2]) -> Result<ClosestPair>
 /// closest pair may be returned; duplicates are pairs at distance zero.
 ///
 /// # Errors
-/// [`Error::TooFew`](crate::Error::TooFew) for fewer than two points;
-/// [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or infinite coordinate.
+/// [`Error::TooFew`](crate::Error::TooFew) for fewer than two points.
 ///
 /// # Complexity
-/// O(n log n) time in the worst case for n points (the sort, then O(n) per level of the
+/// O(n log n) in the worst case for n points (the sort, then O(n) per level of the
 /// recursion), O(n) auxiliary space.
 ///
 /// # Counts
@@ -57,27 +80,29 @@ pub fn closest_pair_divide_and_conquer(points: &[Point2]) -> Result<ClosestPair>
 ///
 /// ```
 /// use compgeo::count::Counts;
-/// use compgeo::proximity::closest_pair_divide_and_conquer_with;
 /// use compgeo::gen::{points, PointKind};
+/// use compgeo::geometry::PointSet;
+/// use compgeo::proximity::closest_pair_divide_and_conquer_with;
 ///
 /// let pts = points(PointKind::UniformSquare, 1024, 5)?;
 /// let mut counts = Counts::default();
-/// let best = closest_pair_divide_and_conquer_with(&pts, &mut counts)?;
+/// let best = closest_pair_divide_and_conquer_with(&PointSet::new(&pts)?, &mut counts)?;
 /// assert_ne!(best.pair[0], best.pair[1]);
 /// assert!(counts.distance_evaluations < 20 * 1024 * 10);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn closest_pair_divide_and_conquer_with<C: Counter>(
-    points: &[Point2],
+    points: &PointSet<'_>,
     counter: &mut C,
-) -> Result<ClosestPair> {
-    at_least_two(points)?;
+) -> Result<PointPair> {
+    at_least(2, points.len())?;
+    let points = points.points();
     let mut order: Vec<usize> = (0..points.len()).collect();
     order.sort_unstable_by(|&a, &b| counter.cmp_lex(points[a], points[b]));
     let mut scratch = vec![0usize; points.len()];
     let mut strip = Vec::with_capacity(points.len());
     let [a, b] = solve(points, &mut order, &mut scratch, &mut strip, counter);
-    Ok(pair_of(points, a, b))
+    Ok(PointPair::new(points, a, b))
 }
 
 /// The closest pair of `idx` (sorted by x on entry, by y on return).

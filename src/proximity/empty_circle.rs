@@ -1,12 +1,32 @@
 //! The largest empty circle centred in the convex hull.
 
 use super::{adjacency, delaunay_edges};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::delaunay::{incremental_with, Triangulation};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::geometry::construct::{circumcentre, distance, midpoint, scale_of};
-use crate::geometry::{validate, CountedPredicates, Orientation, Point2};
+use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "empty-circle",
+    name: "voronoi",
+    function: "proximity::largest_empty_circle",
+    file: "src/proximity/empty_circle.rs",
+    summary: "the best Voronoi vertex inside the hull or crossing of a Voronoi edge with it",
+    time: "O(n log n) expected on uniform-like input, O(nh) worst case",
+    space: "O(n)",
+    operation: Operation::OrientationTests,
+    counts: "the hull tests of the Voronoi vertices, O(log h) each",
+    source: "[RD, §2.4]",
+    claims: &[on(
+        "uniform-disk",
+        Bound::NLogN,
+        Operation::OrientationTests,
+    )],
+};
 
 /// A circle with no input point strictly inside.
 #[derive(Debug, Clone, PartialEq)]
@@ -41,7 +61,7 @@ pub struct EmptyCircle {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
-    largest_empty_circle_with(points, &mut NoCount)
+    largest_empty_circle_with(&PointSet::new(points)?, &mut NoCount)
 }
 
 /// The largest circle whose centre lies in the convex hull of `points` and which holds no
@@ -69,24 +89,22 @@ pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
 /// single distinct point gives radius 0 centred on it; duplicates change nothing.
 ///
 /// # Errors
-/// [`Error::Empty`] for no points; [`Error::NonFinite`] for a NaN or infinite coordinate.
+/// [`Error::TooFew`](crate::Error::TooFew) for no points; the triangulation's size limit.
 ///
 /// # Complexity
-/// O(n log n) expected time for n points (the triangulation, and an O(log h) hull test per
-/// triangle for h hull points); the walks along the hull cost the degrees of the cells
-/// they cross, O(n) for uniform-like input and O(n h) in the worst case. O(n) space.
+/// O(n log n) expected on uniform-like input, O(nh) worst case, for n points: the
+/// triangulation, and an O(log h) hull test per triangle for h hull points, then walks along
+/// the hull that cost the degrees of the cells they cross, O(n) for uniform-like input and
+/// O(nh) in the worst case. O(n) space.
 ///
 /// # Counts
 /// The triangulation's orientation and in-circle tests, the orientation tests of the hull
 /// tests and the distance evaluations of the collinear case.
 pub fn largest_empty_circle_with<C: Counter>(
-    points: &[Point2],
+    points: &PointSet<'_>,
     counter: &mut C,
 ) -> Result<EmptyCircle> {
-    validate(points)?;
-    if points.is_empty() {
-        return Err(Error::Empty { what: "point set" });
-    }
+    super::at_least(1, points.len())?;
     let t = incremental_with(points, counter)?;
     if t.is_empty() {
         return Ok(widest_gap(points, &t.hull, counter));

@@ -1,18 +1,39 @@
 //! The Euclidean minimum spanning tree: the Delaunay edges ranked exactly, then Kruskal.
 
-use super::{delaunay_edges, Emst};
-use crate::count::{Counter, NoCount};
+use super::delaunay_edges;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::delaunay::incremental_with;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::geometry::construct::distance;
-use crate::geometry::{CountedPredicates, Point2};
-use crate::graph::{kruskal_with, WeightedGraph};
+use crate::geometry::{CountedPredicates, Point2, PointSet};
+use crate::graph::{kruskal_with, SpanningForest, WeightedGraph};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "emst",
+    name: "delaunay-kruskal",
+    function: "proximity::euclidean_mst",
+    file: "src/proximity/emst.rs",
+    summary: "the Delaunay edges ranked by exact length, then Kruskal",
+    time: "O(n log n) expected",
+    space: "O(n)",
+    operation: Operation::DistanceEvaluations,
+    counts: "those of the exact length sort, after the triangulation's tests",
+    source: "[RD, §2.4]",
+    claims: &[on(
+        "uniform-square",
+        Bound::NLogN,
+        Operation::DistanceEvaluations,
+    )],
+};
 
 /// The Euclidean minimum spanning tree of `points`; see [`euclidean_mst_with`].
 ///
 /// # Errors
-/// As [`euclidean_mst_with`].
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or
+/// infinite coordinate.
 ///
 /// # Complexity
 /// O(n log n) expected time, O(n) space.
@@ -24,18 +45,18 @@ use std::cmp::Ordering;
 /// let pts = [(0.0, 0.0), (10.0, 0.0), (1.0, 0.0), (10.0, 2.0)].map(Point2::from);
 /// let t = euclidean_mst(&pts)?;
 /// assert_eq!(t.edges, [[0, 2], [1, 3], [1, 2]]);
-/// assert_eq!(t.length, 12.0);
+/// assert_eq!((t.weight, t.components), (12.0, 1));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn euclidean_mst(points: &[Point2]) -> Result<Emst> {
-    euclidean_mst_with(points, &mut NoCount)
+pub fn euclidean_mst(points: &[Point2]) -> Result<SpanningForest<[usize; 2]>> {
+    euclidean_mst_with(&PointSet::new(points)?, &mut NoCount)
 }
 
 /// The Euclidean minimum spanning tree of `points` from the Delaunay edges and Kruskal's
 /// algorithm, counting the triangulation's predicates, the distance evaluations of the
 /// length sort and Kruskal's work.
 ///
-/// The idea (`003_5b666ee3e15e6353.txt`, §2.4, problem 7 "Árbol spanning mínimo"): the
+/// The idea ([RD, §2.4], problem 7 "Árbol spanning mínimo"): the
 /// minimum spanning tree of the complete graph uses Delaunay edges only (an edge of it is
 /// the shortest link between two parts, so no point lies in the circle with that edge as
 /// diameter, which makes it a Delaunay edge). The edges are sorted by the exact
@@ -44,10 +65,11 @@ pub fn euclidean_mst(points: &[Point2]) -> Result<Emst> {
 /// the ranks as weights: small integers, exact in `f64`, so no rounded length ever decides
 /// anything and squared lengths never overflow. Kruskal breaks ties of equal rank by edge
 /// index; every tie-break gives a minimum tree. Duplicates join the point they were merged
-/// into by zero-length edges, so the tree spans every input index.
+/// into by zero-length edges, so the tree spans every input index: one component, or none
+/// for no points.
 ///
 /// # Errors
-/// [`Error::Empty`] for no points; [`Error::NonFinite`] for a NaN or infinite coordinate.
+/// The triangulation's size limit.
 ///
 /// # Complexity
 /// O(n log n) expected time (the triangulation and the sort of its O(n) edges), O(n) space.
@@ -55,10 +77,10 @@ pub fn euclidean_mst(points: &[Point2]) -> Result<Emst> {
 /// # Counts
 /// The triangulation's orientation and in-circle tests, the distance evaluations of the
 /// sort, and Kruskal's comparisons and edge visits.
-pub fn euclidean_mst_with<C: Counter>(points: &[Point2], counter: &mut C) -> Result<Emst> {
-    if points.is_empty() {
-        return Err(Error::Empty { what: "point set" });
-    }
+pub fn euclidean_mst_with<C: Counter>(
+    points: &PointSet<'_>,
+    counter: &mut C,
+) -> Result<SpanningForest<[usize; 2]>> {
     let t = incremental_with(points, counter)?;
     let mut edges = delaunay_edges(&t);
     edges.sort_unstable_by(|&[a, b], &[c, d]| {
@@ -92,12 +114,15 @@ pub fn euclidean_mst_with<C: Counter>(points: &[Point2], counter: &mut C) -> Res
             [u.min(v), u.max(v)]
         })
         .collect();
-    let length = tree
+    // `+ 0.0`: an empty sum is -0.0.
+    let weight = tree
         .iter()
         .map(|&[u, v]| distance(points[u], points[v]))
-        .sum();
-    Ok(Emst {
+        .sum::<f64>()
+        + 0.0;
+    Ok(SpanningForest {
         edges: tree,
-        length,
+        weight,
+        components: usize::from(!points.is_empty()),
     })
 }

@@ -36,6 +36,7 @@
 //! spanning tree joins equal points by zero-length edges.
 
 mod all_nearest;
+mod closest_pair;
 mod closest_pair_delaunay;
 mod closest_pair_divide_and_conquer;
 mod empty_circle;
@@ -43,7 +44,8 @@ mod emst;
 mod nearest;
 
 pub use all_nearest::{all_nearest_neighbours, all_nearest_neighbours_with};
-pub use closest_pair_delaunay::{closest_pair, closest_pair_with};
+pub use closest_pair::{closest_pair, closest_pair_with, ClosestPairAlgorithm};
+pub use closest_pair_delaunay::{closest_pair_delaunay, closest_pair_delaunay_with};
 pub use closest_pair_divide_and_conquer::{
     closest_pair_divide_and_conquer, closest_pair_divide_and_conquer_with,
 };
@@ -51,32 +53,23 @@ pub use empty_circle::{largest_empty_circle, largest_empty_circle_with, EmptyCir
 pub use emst::{euclidean_mst, euclidean_mst_with};
 pub use nearest::{nearest, NearestSearch};
 
+use crate::complexity::Declaration;
 use crate::delaunay::Triangulation;
 use crate::error::{Error, Result};
-use crate::geometry::construct::distance;
-use crate::geometry::{validate, Point2};
 use crate::util::Csr;
 
-/// Two points of the input at the smallest distance.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct ClosestPair {
-    /// Their indices, the smaller first.
-    pub pair: [usize; 2],
-    /// Their distance, rounded.
-    pub distance: f64,
-}
+/// All nearest neighbours' declaration.
+pub(crate) const ALL_NEAREST: &Declaration = &all_nearest::DECLARATION;
+/// The nearest-point search's declaration.
+pub(crate) const NEAREST: &Declaration = &nearest::DECLARATION;
+/// The Euclidean minimum spanning tree's declaration.
+pub(crate) const EMST: &Declaration = &emst::DECLARATION;
+/// The largest empty circle's declaration.
+pub(crate) const EMPTY_CIRCLE: &Declaration = &empty_circle::DECLARATION;
 
-/// A Euclidean minimum spanning tree.
-#[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct Emst {
-    /// The tree's edges `[u, v]` (`u < v`), by exactly non-decreasing length; n − 1 of them
-    /// for n input points.
-    pub edges: Vec<[usize; 2]>,
-    /// The total length, the sum of the rounded edge lengths in edge order.
-    pub length: f64,
-}
+/// The proximity algorithms that are not a choice among alternatives.
+pub(crate) const DECLARATIONS: [&Declaration; 4] = [ALL_NEAREST, NEAREST, EMST, EMPTY_CIRCLE];
+
 /// The undirected edges of the Delaunay graph: the triangulation's edges, or for collinear
 /// points (no triangles) the segments between consecutive points along their line.
 pub(crate) fn delaunay_edges(t: &Triangulation) -> Vec<[usize; 2]> {
@@ -95,22 +88,13 @@ pub(crate) fn adjacency(n: usize, edges: &[[usize; 2]]) -> (Vec<usize>, Vec<usiz
     (csr.offsets, neighbours)
 }
 
-/// The pair `[a, b]` ordered, with its rounded distance.
-pub(crate) fn pair_of(points: &[Point2], a: usize, b: usize) -> ClosestPair {
-    ClosestPair {
-        pair: [a.min(b), a.max(b)],
-        distance: distance(points[a], points[b]),
-    }
-}
-
-/// Validation for the problems about pairs.
-pub(crate) fn at_least_two(points: &[Point2]) -> Result<()> {
-    validate(points)?;
-    if points.len() < 2 {
+/// The error of a problem that needs at least `needed` points.
+pub(crate) fn at_least(needed: usize, got: usize) -> Result<()> {
+    if got < needed {
         return Err(Error::TooFew {
             what: "point set",
-            needed: 2,
-            got: points.len(),
+            needed,
+            got,
         });
     }
     Ok(())
@@ -120,6 +104,7 @@ pub(crate) fn at_least_two(points: &[Point2]) -> Result<()> {
 mod tests {
     use super::*;
     use crate::count::NoCount;
+    use crate::geometry::{Point2, PointPair, PointSet};
 
     fn pts(v: &[(f64, f64)]) -> Vec<Point2> {
         v.iter().map(|&p| Point2::from(p)).collect()
@@ -129,7 +114,9 @@ mod tests {
     fn collinear_points_use_the_path_along_their_line() {
         let p = pts(&[(0.0, 0.0), (3.0, 3.0), (1.0, 1.0), (7.0, 7.0)]);
         assert_eq!(all_nearest_neighbours(&p).unwrap(), [2, 2, 0, 1]);
-        assert_eq!(closest_pair(&p).unwrap().pair, [0, 2]);
+        for algorithm in ClosestPairAlgorithm::ALL {
+            assert_eq!(closest_pair(&p, algorithm).unwrap().pair, [0, 2]);
+        }
         assert_eq!(nearest(&p, Point2::new(6.0, 1.0)).unwrap(), 1);
         let t = euclidean_mst(&p).unwrap();
         assert_eq!(t.edges, [[0, 2], [1, 2], [1, 3]]);
@@ -138,18 +125,30 @@ mod tests {
     #[test]
     fn small_inputs() {
         let one = pts(&[(1.0, 2.0)]);
-        assert!(matches!(
-            closest_pair(&one),
-            Err(Error::TooFew { got: 1, .. })
-        ));
+        for algorithm in ClosestPairAlgorithm::ALL {
+            assert!(matches!(
+                closest_pair(&one, algorithm),
+                Err(Error::TooFew { got: 1, .. })
+            ));
+        }
         assert_eq!(nearest(&one, Point2::new(-5.0, 0.0)).unwrap(), 0);
         assert_eq!(euclidean_mst(&one).unwrap().edges, Vec::<[usize; 2]>::new());
         assert!(matches!(
             nearest(&[], Point2::new(0.0, 0.0)),
-            Err(Error::Empty { .. })
+            Err(Error::TooFew {
+                needed: 1,
+                got: 0,
+                ..
+            })
         ));
         let same = pts(&[(1.0, 2.0), (1.0, 2.0)]);
-        assert_eq!(closest_pair(&same).unwrap(), pair_of(&same, 0, 1));
+        let zero = PointPair {
+            pair: [0, 1],
+            distance: 0.0,
+        };
+        for algorithm in ClosestPairAlgorithm::ALL {
+            assert_eq!(closest_pair(&same, algorithm).unwrap(), zero);
+        }
         assert_eq!(all_nearest_neighbours(&same).unwrap(), [1, 0]);
         assert_eq!(euclidean_mst(&same).unwrap().edges, [[0, 1]]);
     }
@@ -157,7 +156,8 @@ mod tests {
     #[test]
     fn a_bad_start_is_an_error() {
         let p = pts(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (0.0, 0.0)]);
-        let s = NearestSearch::new(&p).unwrap();
+        let set = PointSet::new(&p).unwrap();
+        let s = NearestSearch::new(&set).unwrap();
         let q = Point2::new(0.1, 0.1);
         assert!(s.nearest_with(q, Some(3), &mut NoCount).is_err());
         assert!(s.nearest_with(q, Some(9), &mut NoCount).is_err());

@@ -1,21 +1,38 @@
 //! Nearest-neighbour queries: a greedy walk on the Delaunay graph towards the query.
 
-use super::{adjacency, delaunay_edges};
-use crate::count::{Counter, NoCount};
+use super::{adjacency, at_least, delaunay_edges};
+use crate::complexity::Declaration;
+use crate::count::{Counter, NoCount, Operation};
 use crate::delaunay::{incremental_with, Triangulation};
 use crate::error::{Error, Result};
-use crate::geometry::{CountedPredicates, Point2};
+use crate::geometry::{CountedPredicates, Point2, PointSet};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "nearest",
+    name: "delaunay-walk",
+    function: "proximity::NearestSearch::nearest",
+    file: "src/proximity/nearest.rs",
+    summary: "a greedy walk on the Delaunay graph towards the query",
+    time: "O(n log n) to build; O(√n) expected steps per query on uniform points",
+    space: "O(n)",
+    operation: Operation::DistanceEvaluations,
+    counts: "one per neighbour looked at during a walk",
+    source: "[RD, §2.4]",
+    claims: &[],
+};
 
 /// Nearest-neighbour queries on a fixed point set: a Delaunay triangulation and the
 /// adjacency of its vertices, built once.
 ///
 /// ```
+/// use compgeo::geometry::{Point2, PointSet};
 /// use compgeo::proximity::NearestSearch;
-/// use compgeo::geometry::Point2;
 ///
 /// let pts = [(0.0, 0.0), (4.0, 0.0), (0.0, 4.0), (4.0, 4.0), (2.0, 2.0)].map(Point2::from);
-/// let search = NearestSearch::new(&pts)?;
+/// let set = PointSet::new(&pts)?;
+/// let search = NearestSearch::new(&set)?;
 /// assert_eq!(search.nearest(Point2::new(3.5, 0.2))?, 1);
 /// assert_eq!(search.nearest(Point2::new(2.1, 1.9))?, 4);
 /// assert_eq!(search.nearest(Point2::new(-100.0, 50.0))?, 2); // outside the hull
@@ -35,14 +52,12 @@ impl<'a> NearestSearch<'a> {
     /// them for queries.
     ///
     /// # Errors
-    /// [`Error::Empty`] for no points, and the builder's errors ([`Error::NonFinite`]).
+    /// [`Error::TooFew`] for no points, and the builder's size limit.
     ///
     /// # Complexity
-    /// O(n log n) expected time, O(n) space.
-    pub fn new(points: &'a [Point2]) -> Result<NearestSearch<'a>> {
-        if points.is_empty() {
-            return Err(Error::Empty { what: "point set" });
-        }
+    /// O(n log n) to build: O(n log n) expected time, O(n) space.
+    pub fn new(points: &PointSet<'a>) -> Result<NearestSearch<'a>> {
+        at_least(1, points.len())?;
         let t = incremental_with(points, &mut NoCount)?;
         Ok(NearestSearch::from_triangulation(points, &t))
     }
@@ -52,12 +67,12 @@ impl<'a> NearestSearch<'a> {
     ///
     /// # Complexity
     /// O(n + t) time and space.
-    pub fn from_triangulation(points: &'a [Point2], t: &Triangulation) -> NearestSearch<'a> {
+    pub fn from_triangulation(points: &PointSet<'a>, t: &Triangulation) -> NearestSearch<'a> {
         let edges = delaunay_edges(t);
         let (offsets, neighbours) = adjacency(points.len(), &edges);
         let start = t.hull.first().copied().unwrap_or(0);
         NearestSearch {
-            points,
+            points: points.points(),
             start,
             offsets,
             neighbours,
@@ -71,8 +86,8 @@ impl<'a> NearestSearch<'a> {
     /// infinite.
     ///
     /// # Complexity
-    /// O(d) time per step of the walk, where d is the degree of the current vertex; O(√n)
-    /// steps expected for uniform points, O(n) in the worst case.
+    /// O(d) time per step of the walk, where d is the degree of the current vertex: O(n log n)
+    /// to build; O(√n) expected steps per query on uniform points, O(n) in the worst case.
     pub fn nearest(&self, query: Point2) -> Result<usize> {
         self.nearest_with(query, None, &mut NoCount)
     }
@@ -102,12 +117,13 @@ impl<'a> NearestSearch<'a> {
     ///
     /// ```
     /// use compgeo::count::Counts;
-    /// use compgeo::proximity::NearestSearch;
     /// use compgeo::gen::{points, PointKind};
-    /// use compgeo::geometry::Point2;
+    /// use compgeo::geometry::{Point2, PointSet};
+    /// use compgeo::proximity::NearestSearch;
     ///
     /// let pts = points(PointKind::UniformSquare, 2000, 7)?;
-    /// let search = NearestSearch::new(&pts)?;
+    /// let set = PointSet::new(&pts)?;
+    /// let search = NearestSearch::new(&set)?;
     /// let mut counts = Counts::default();
     /// let q = Point2::new(0.5, 0.5);
     /// let i = search.nearest_with(q, None, &mut counts)?;
@@ -163,7 +179,7 @@ impl<'a> NearestSearch<'a> {
 /// it once.
 ///
 /// # Errors
-/// [`Error::Empty`] for no points, [`Error::NonFinite`] for a bad point,
+/// [`Error::TooFew`] for no points, [`Error::NonFinite`] for a bad point,
 /// [`Error::InvalidParameter`] (name `"query"`) for a NaN or infinite query.
 ///
 /// # Complexity
@@ -178,5 +194,5 @@ impl<'a> NearestSearch<'a> {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn nearest(points: &[Point2], query: Point2) -> Result<usize> {
-    NearestSearch::new(points)?.nearest(query)
+    NearestSearch::new(&PointSet::new(points)?)?.nearest(query)
 }

@@ -17,8 +17,24 @@
 //! totals at most Σ_{k=2}^{n} ⌈log₂ k⌉; moves equal the inversions; stable.
 
 use super::{Counted, NoObserver, Observer, Step};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "sort",
+    name: "binary-insertion",
+    function: "sort::binary_insertion_sort",
+    file: "src/sort/binary_insertion.rs",
+    summary: "insertion by bisection",
+    time: "O(n²) worst case",
+    space: "O(1)",
+    operation: Operation::Moves,
+    counts: "at most ⌈log₂ k⌉ comparisons per step, one move per inversion",
+    source: "[RD, §2.1]",
+    claims: &[on("random", Bound::Quadratic, Operation::Moves)],
+};
 
 /// Sorts `v` in increasing order with insertion sort by bisection.
 ///

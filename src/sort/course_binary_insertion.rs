@@ -23,8 +23,24 @@
 //! otherwise); moves equal the inversions; stable; the seed's table.
 
 use super::{Counted, NoObserver, Observer, Step};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "sort",
+    name: "course-binary-insertion",
+    function: "sort::course_binary_insertion_sort",
+    file: "src/sort/course_binary_insertion.rs",
+    summary: "insertion by bisection as the course's table does it",
+    time: "O(n²) worst case",
+    space: "O(1)",
+    operation: Operation::Moves,
+    counts: "⌈log₂ k⌉ + 1 comparisons per step, one move per inversion",
+    source: "[RD, §2.1]",
+    claims: &[on("random", Bound::Quadratic, Operation::Moves)],
+};
 
 /// Sorts `v` in increasing order with the seed's insertion sort by bisection.
 ///

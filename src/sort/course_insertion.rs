@@ -17,8 +17,28 @@
 //! inversions of the input; stable; the seed's table.
 
 use super::{Counted, NoObserver, Observer, Step};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "sort",
+    name: "course-insertion",
+    function: "sort::course_insertion_sort",
+    file: "src/sort/course_insertion.rs",
+    summary: "sequential insertion as the course's table does it, from the front",
+    time: "Θ(n²)",
+    space: "O(1)",
+    operation: Operation::Comparisons,
+    counts: "n(n − 1)/2 comparisons on sorted input, as many moves on reversed input",
+    source: "[RD, §2.1]",
+    claims: &[
+        on("random", Bound::Quadratic, Operation::Comparisons),
+        on("sorted", Bound::Quadratic, Operation::Comparisons),
+        on("reversed", Bound::Quadratic, Operation::Moves),
+    ],
+};
 
 /// Sorts `v` in increasing order with the seed's sequential insertion sort.
 ///

@@ -11,8 +11,24 @@
 //! (s(n) = number of one bits of n), which is at most 2n log₂ n; agreement with `sort`.
 
 use super::{Counted, NoObserver, Observer, Step};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "sort",
+    name: "heap",
+    function: "sort::heap_sort",
+    file: "src/sort/heap.rs",
+    summary: "heap sort on a binary max-heap",
+    time: "O(n log n) worst case",
+    space: "O(1)",
+    operation: Operation::Comparisons,
+    counts: "at most 2n log₂ n comparisons",
+    source: "[RD, §2.1]",
+    claims: &[on("random", Bound::NLogN, Operation::Comparisons)],
+};
 
 /// Sorts `v` in increasing order with heap sort.
 ///

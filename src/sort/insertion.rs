@@ -19,8 +19,28 @@
 //! most n − 1; stable.
 
 use super::{Counted, NoObserver, Observer, Step};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "sort",
+    name: "insertion",
+    function: "sort::insertion_sort",
+    file: "src/sort/insertion.rs",
+    summary: "sequential insertion scanning the sorted prefix from the back",
+    time: "Θ(n²) in the worst case and Θ(n) on sorted input",
+    space: "O(1)",
+    operation: Operation::Comparisons,
+    counts: "at most n(n − 1)/2 comparisons, n − 1 on sorted input",
+    source: "[RD, §2.1]",
+    claims: &[
+        on("random", Bound::Quadratic, Operation::Comparisons),
+        on("sorted", Bound::Linear, Operation::Comparisons),
+        on("reversed", Bound::Quadratic, Operation::Comparisons),
+    ],
+};
 
 /// Sorts `v` in increasing order with sequential insertion sort.
 ///

@@ -16,8 +16,24 @@
 //! n − 1; stable.
 
 use super::{Counted, NoObserver, Observer, Step};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "sort",
+    name: "merge",
+    function: "sort::merge_sort",
+    file: "src/sort/merge.rs",
+    summary: "top-down merge sort",
+    time: "Θ(n log n)",
+    space: "O(n)",
+    operation: Operation::Comparisons,
+    counts: "at most n⌈log₂ n⌉ comparisons",
+    source: "[RD, §2.1]",
+    claims: &[on("random", Bound::NLogN, Operation::Comparisons)],
+};
 
 /// Sorts `v` in increasing order with merge sort.
 ///
@@ -66,8 +82,8 @@ where
 ///
 /// # Complexity
 ///
-/// With n = `v.len()`: time Θ(n log n) for every input; auxiliary space 3n/2 positions
-/// (`usize`) plus O(log n) recursion stack.
+/// With n = `v.len()`: time Θ(n log n) for every input; auxiliary space O(n): 3n/2
+/// positions (`usize`) plus O(log n) recursion stack.
 ///
 /// # Counts
 ///

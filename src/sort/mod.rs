@@ -29,9 +29,9 @@
 //!
 //! Each comparison sort `X` comes as `X_sort(v)` (by [`Ord`]), `X_sort_by(v, cmp)` and
 //! `X_sort_with(v, cmp, counter)`. The algorithm is written once, behind `X_sort_with`; the
-//! other two call it with [`NoCount`](crate::count::NoCount), which compiles the counting
+//! other two call it with [`NoCount`], which compiles the counting
 //! away. [`Algorithm`] names the nine comparison sorts for callers that pick one at run time
-//! (the command line, the complexity report).
+//! (the command line, the complexity report), through [`sort`], [`sort_by`] and [`sort_with`].
 //!
 //! # Counting conventions
 //!
@@ -62,11 +62,9 @@
 //!
 //! [`trace`] prints the seed's step tables from the real algorithms.
 
-use crate::count::Counter;
-use crate::Error;
+use crate::complexity::{algorithm_family, Declaration};
+use crate::count::{Counter, NoCount};
 use std::cmp::Ordering;
-use std::fmt;
-use std::str::FromStr;
 
 mod binary_insertion;
 mod bubble;
@@ -99,73 +97,56 @@ pub use radix::{radix_sort_f64, radix_sort_f64_with};
 pub use selection::{selection_sort, selection_sort_by, selection_sort_with};
 pub use trace::{trace, TRACE_MAX_LEN};
 
-/// The comparison sorts of this module, for callers that choose one at run time.
-///
-/// ```
-/// use compgeo::count::Counts;
-/// use compgeo::sort::Algorithm;
-///
-/// let algorithm: Algorithm = "binary-insertion".parse()?;
-/// let mut v = [5, 2, 4, 1];
-/// let mut counts = Counts::default();
-/// algorithm.sort_with(&mut v, i32::cmp, &mut counts);
-/// assert_eq!(v, [1, 2, 4, 5]);
-/// assert!(counts.comparisons > 0);
-/// # Ok::<(), compgeo::Error>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Algorithm {
-    /// [`bubble_sort`]: the seed's bubble sort, n(n−1)/2 comparisons.
-    Bubble,
-    /// [`selection_sort`]: the seed's selection sort, n(n−1)/2 comparisons.
-    Selection,
-    /// [`insertion_sort`]: sequential insertion scanning from the back.
-    Insertion,
-    /// [`course_insertion_sort`]: sequential insertion as the seed's table does it.
-    CourseInsertion,
-    /// [`binary_insertion_sort`]: insertion by bisection, at most ⌈log₂(k + 1)⌉ comparisons.
-    BinaryInsertion,
-    /// [`course_binary_insertion_sort`]: insertion by bisection as the seed's table does it.
-    CourseBinaryInsertion,
-    /// [`merge_sort`]: top-down merge sort.
-    Merge,
-    /// [`heap_sort`]: heap sort on a binary max-heap.
-    Heap,
-    /// [`quick_sort`]: median-of-three quicksort with a heap-sort guard (introsort).
-    Quick,
+/// The radix sort's declaration (the one sort that is not a comparison sort).
+pub(crate) const RADIX: &Declaration = &radix::DECLARATION;
+
+/// The sorts that are not a choice among comparison sorts: the radix sort.
+pub(crate) const DECLARATIONS: [&Declaration; 1] = [RADIX];
+
+algorithm_family! {
+    /// The comparison sorts of this module, for callers that choose one at run time
+    /// ([`sort`], [`sort_by`], [`sort_with`]).
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::sort::{sort_with, Algorithm};
+    ///
+    /// let algorithm: Algorithm = "binary-insertion".parse()?;
+    /// let mut v = [5, 2, 4, 1];
+    /// let mut counts = Counts::default();
+    /// sort_with(&mut v, algorithm, i32::cmp, &mut counts);
+    /// assert_eq!(v, [1, 2, 4, 5]);
+    /// assert!(counts.comparisons > 0);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub enum Algorithm ("sorting algorithm") {
+        /// [`bubble_sort`]: the course's bubble sort, n(n−1)/2 comparisons.
+        Bubble = bubble::DECLARATION => bubble_sort_with,
+        /// [`selection_sort`]: the course's selection sort, n(n−1)/2 comparisons.
+        Selection = selection::DECLARATION => selection_sort_with,
+        /// [`insertion_sort`]: sequential insertion scanning from the back.
+        Insertion = insertion::DECLARATION => insertion_sort_with,
+        /// [`course_insertion_sort`]: sequential insertion as the course's table does it.
+        CourseInsertion = course_insertion::DECLARATION => course_insertion_sort_with,
+        /// [`binary_insertion_sort`]: insertion by bisection, at most ⌈log₂(k + 1)⌉
+        /// comparisons.
+        BinaryInsertion = binary_insertion::DECLARATION => binary_insertion_sort_with,
+        /// [`course_binary_insertion_sort`]: insertion by bisection as the course's table
+        /// does it.
+        CourseBinaryInsertion = course_binary_insertion::DECLARATION
+            => course_binary_insertion_sort_with,
+        /// [`merge_sort`]: top-down merge sort.
+        Merge = merge::DECLARATION => merge_sort_with,
+        /// [`heap_sort`]: heap sort on a binary max-heap.
+        Heap = heap::DECLARATION => heap_sort_with,
+        /// [`quick_sort`]: median-of-three quicksort with a heap-sort guard (introsort).
+        Quick = quick::DECLARATION => quick_sort_with,
+    }
+    fn run_with[T, F: FnMut(&T, &T) -> Ordering, C: Counter](v: &mut [T], cmp: F, counter: &mut C)
+        -> ();
 }
 
 impl Algorithm {
-    /// Every algorithm, the course's quadratic sorts first.
-    pub const ALL: [Algorithm; 9] = [
-        Algorithm::Bubble,
-        Algorithm::Selection,
-        Algorithm::Insertion,
-        Algorithm::CourseInsertion,
-        Algorithm::BinaryInsertion,
-        Algorithm::CourseBinaryInsertion,
-        Algorithm::Merge,
-        Algorithm::Heap,
-        Algorithm::Quick,
-    ];
-
-    /// The kebab-case name used on the command line: `"bubble"`, `"selection"`, `"insertion"`,
-    /// `"course-insertion"`, `"binary-insertion"`, `"course-binary-insertion"`, `"merge"`,
-    /// `"heap"`, `"quick"`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Algorithm::Bubble => "bubble",
-            Algorithm::Selection => "selection",
-            Algorithm::Insertion => "insertion",
-            Algorithm::CourseInsertion => "course-insertion",
-            Algorithm::BinaryInsertion => "binary-insertion",
-            Algorithm::CourseBinaryInsertion => "course-binary-insertion",
-            Algorithm::Merge => "merge",
-            Algorithm::Heap => "heap",
-            Algorithm::Quick => "quick",
-        }
-    }
-
     /// Whether the algorithm keeps equal elements in their input order.
     pub fn is_stable(self) -> bool {
         matches!(
@@ -178,42 +159,43 @@ impl Algorithm {
                 | Algorithm::Merge
         )
     }
-
-    /// Sorts `v` by `cmp` with this algorithm, recording operations in `counter`: the same as
-    /// calling the algorithm's `X_sort_with`.
-    pub fn sort_with<T, F, C>(self, v: &mut [T], cmp: F, counter: &mut C)
-    where
-        F: FnMut(&T, &T) -> Ordering,
-        C: Counter,
-    {
-        match self {
-            Algorithm::Bubble => bubble_sort_with(v, cmp, counter),
-            Algorithm::Selection => selection_sort_with(v, cmp, counter),
-            Algorithm::Insertion => insertion_sort_with(v, cmp, counter),
-            Algorithm::CourseInsertion => course_insertion_sort_with(v, cmp, counter),
-            Algorithm::BinaryInsertion => binary_insertion_sort_with(v, cmp, counter),
-            Algorithm::CourseBinaryInsertion => course_binary_insertion_sort_with(v, cmp, counter),
-            Algorithm::Merge => merge_sort_with(v, cmp, counter),
-            Algorithm::Heap => heap_sort_with(v, cmp, counter),
-            Algorithm::Quick => quick_sort_with(v, cmp, counter),
-        }
-    }
 }
 
-impl fmt::Display for Algorithm {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
+/// Sorts `v` (by [`Ord`]) with `algorithm`.
+///
+/// # Complexity
+/// That of the chosen algorithm ([`Algorithm::declaration`]).
+///
+/// ```
+/// use compgeo::sort::{sort, Algorithm};
+///
+/// let mut v = [3, 1, 2];
+/// sort(&mut v, Algorithm::Heap);
+/// assert_eq!(v, [1, 2, 3]);
+/// ```
+pub fn sort<T: Ord>(v: &mut [T], algorithm: Algorithm) {
+    sort_with(v, algorithm, T::cmp, &mut NoCount);
 }
 
-impl FromStr for Algorithm {
-    type Err = Error;
+/// Sorts `v` by `cmp` with `algorithm`.
+///
+/// # Complexity
+/// That of the chosen algorithm ([`Algorithm::declaration`]).
+pub fn sort_by<T, F: FnMut(&T, &T) -> Ordering>(v: &mut [T], algorithm: Algorithm, cmp: F) {
+    sort_with(v, algorithm, cmp, &mut NoCount);
+}
 
-    /// Parses a kebab-case name; an unknown name gives [`Error::InvalidParameter`] listing the
-    /// valid ones.
-    fn from_str(s: &str) -> Result<Self, Error> {
-        crate::error::algorithm_named(s, "sorting algorithm", &Algorithm::ALL, Algorithm::name)
-    }
+/// Sorts `v` by `cmp` with `algorithm`, recording its operations in `counter`: the same as
+/// calling the algorithm's `X_sort_with`.
+///
+/// # Complexity
+/// That of the chosen algorithm ([`Algorithm::declaration`]).
+pub fn sort_with<T, F, C>(v: &mut [T], algorithm: Algorithm, cmp: F, counter: &mut C)
+where
+    F: FnMut(&T, &T) -> Ordering,
+    C: Counter,
+{
+    algorithm.run_with(v, cmp, counter)
 }
 
 /// The caller's comparator and counter together: the one place where sorting operations are

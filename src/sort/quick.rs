@@ -19,8 +19,27 @@
 
 use super::heap::heap;
 use super::{Counted, NoObserver, Observer, Step};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "sort",
+    name: "quick",
+    function: "sort::quick_sort",
+    file: "src/sort/quick.rs",
+    summary: "median-of-three quicksort with a heap-sort guard (introsort)",
+    time: "O(n log n) worst case",
+    space: "O(log n)",
+    operation: Operation::Comparisons,
+    counts: "at most 6n log₂ n + n comparisons",
+    source: "[RD, §2.1]",
+    claims: &[
+        on("random", Bound::NLogN, Operation::Comparisons),
+        on("sorted", Bound::NLogN, Operation::Comparisons),
+    ],
+};
 
 /// Ranges at least this long take their pivot as Tukey's ninther (the median of three medians
 /// of three) instead of the median of three.

@@ -28,8 +28,24 @@
 //! and on adversarial inputs that force the fallback; the counts stay within the linear bounds
 //! stated on [`radix_sort_f64_with`].
 
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::util::{from_order_key, order_key};
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(crate) const DECLARATION: Declaration = Declaration {
+    problem: "sort",
+    name: "radix-f64",
+    function: "sort::radix_sort_f64",
+    file: "src/sort/radix.rs",
+    summary: "most-significant-digit radix sort of the keys' order bits",
+    time: "O(n)",
+    space: "O(n)",
+    operation: Operation::Moves,
+    counts: "at most 24n moves and 7.5n key comparisons",
+    source: "[RD, §2.1]",
+    claims: &[on("random-f64", Bound::Linear, Operation::Moves)],
+};
 
 /// Parts longer than this are partitioned in place first. 2^16 keys and their scratch take
 /// 512 KiB each: together they fit a 1 MiB L2 cache.

@@ -10,8 +10,24 @@
 //! {1, 3, 2, 9, 5, 4}.
 
 use super::{Counted, NoObserver, Observer, Step};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "sort",
+    name: "selection",
+    function: "sort::selection_sort",
+    file: "src/sort/selection.rs",
+    summary: "the course's selection sort",
+    time: "Θ(n²)",
+    space: "O(1)",
+    operation: Operation::Comparisons,
+    counts: "exactly n(n − 1)/2 comparisons",
+    source: "[RD, §2.1]",
+    claims: &[on("random", Bound::Quadratic, Operation::Comparisons)],
+};
 
 /// Sorts `v` in increasing order with the seed's selection sort.
 ///

@@ -25,6 +25,38 @@ use super::scalar::{validate_parameter, validate_points, Finite, Point, Scalar};
 use crate::count::{Counter, NoCount};
 use crate::{Error, Result};
 use std::fmt::Debug;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::Operation;
+
+/// De Casteljau's evaluation, declared: its name, bounds, counts, source and claims.
+pub(crate) const DE_CASTELJAU: Declaration = Declaration {
+    problem: "bezier",
+    name: "de-casteljau",
+    function: "spline::Bezier::de_casteljau",
+    file: "src/spline/bezier.rs",
+    summary: "repeated affine combinations of the control points",
+    time: "Θ(n²D)",
+    space: "O(nD)",
+    operation: Operation::ArithmeticOperations,
+    counts: "exactly n(n + 1)/2 affine combinations per point",
+    source: "[PPB, §2.3]",
+    claims: &[on("uniform-square", Bound::Quadratic, Operation::ArithmeticOperations)],
+};
+
+/// Horner's evaluation, declared: its name, bounds, counts, source and claims.
+pub(crate) const HORNER: Declaration = Declaration {
+    problem: "bezier",
+    name: "horner",
+    function: "spline::Bezier::horner",
+    file: "src/spline/bezier.rs",
+    summary: "the Bernstein form rewritten for a Horner scheme",
+    time: "Θ(nD)",
+    space: "O(D)",
+    operation: Operation::ArithmeticOperations,
+    counts: "n + 1 point operations per point",
+    source: "[PPB, §2.3]",
+    claims: &[on("uniform-square", Bound::Linear, Operation::ArithmeticOperations)],
+};
 
 /// A Bézier curve of degree n (n + 1 control points in R^D, over the scalar `S`).
 ///

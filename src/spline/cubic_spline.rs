@@ -21,6 +21,38 @@ use super::interpolate::{check_nodes_and_points, check_partition};
 use super::{hermite, CompositeBezier, Point, Scalar};
 use crate::count::{Counter, NoCount};
 use crate::{Error, Result};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::Operation;
+
+/// The C² cubic spline's tangents with natural ends, declared.
+pub(crate) const NATURAL: Declaration = Declaration {
+    problem: "spline",
+    name: "cubic-natural",
+    function: "spline::cubic_spline_tangents",
+    file: "src/spline/cubic_spline.rs",
+    summary: "the tangents of the natural C² cubic spline by a tridiagonal solve",
+    time: "Θ(n·D)",
+    space: "Θ(n·D)",
+    operation: Operation::ArithmeticOperations,
+    counts: "exactly 7n + 4 point operations",
+    source: "[RD, §3.1]",
+    claims: &[on("uniform-square", Bound::Linear, Operation::ArithmeticOperations)],
+};
+
+/// The C² cubic spline's tangents with periodic ends, declared.
+pub(crate) const PERIODIC: Declaration = Declaration {
+    problem: "spline",
+    name: "cubic-periodic",
+    function: "spline::cubic_spline_tangents",
+    file: "src/spline/cubic_spline.rs",
+    summary: "the tangents of the periodic C² cubic spline by a cyclic tridiagonal solve",
+    time: "Θ(n·D)",
+    space: "Θ(n·D)",
+    operation: Operation::ArithmeticOperations,
+    counts: "Θ(n) point operations",
+    source: "[RD, §3.1]",
+    claims: &[on("uniform-square", Bound::Linear, Operation::ArithmeticOperations)],
+};
 
 /// What the spline does at its two ends (the two conditions a C² cubic spline needs besides
 /// its data).

@@ -42,6 +42,14 @@ mod quadratic_spline;
 mod reparametrised;
 mod scalar;
 
+/// The curve algorithms the report measures, declared.
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 4] = [
+    &bezier::DE_CASTELJAU,
+    &bezier::HORNER,
+    &cubic_spline::NATURAL,
+    &cubic_spline::PERIODIC,
+];
+
 pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
 pub use bezier::Bezier;
 pub use bezier_ops::MAX_FLATTEN_SEGMENTS;

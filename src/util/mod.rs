@@ -1,5 +1,6 @@
 //! Small internals shared by several modules, each written once: the counted binary heap, the
-//! order-preserving integer key of an `f64`, and the compressed adjacency lists of an edge list.
+//! order-preserving integer key of an `f64`, the compressed adjacency lists of an edge list,
+//! and a binary search over positions.
 
 mod csr;
 mod heap;
@@ -25,6 +26,27 @@ pub(crate) fn from_order_key(key: u64) -> f64 {
     // Keys with the top bit set came from non-negative floats: undo the flips of `order_key`.
     let flip = if key >> 63 == 1 { 1 << 63 } else { u64::MAX };
     f64::from_bits(key ^ flip)
+}
+
+/// The first position `k` in `range` for which `before(k)` is false, given that it is true on
+/// a prefix of the range: a binary search over positions, for predicates that look at more
+/// than one element (a position and its neighbour, or a position taken modulo a cycle's
+/// length), which `slice::partition_point` cannot express. It asks at most
+/// ⌈log₂(len + 1)⌉ questions, so counted predicates inside `before` count exactly that.
+pub(crate) fn partition_point(
+    range: std::ops::Range<usize>,
+    mut before: impl FnMut(usize) -> bool,
+) -> usize {
+    let (mut lo, mut hi) = (range.start, range.end);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if before(mid) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
 }
 
 #[cfg(test)]
@@ -56,6 +78,24 @@ mod tests {
             assert_eq!(from_order_key(order_key(a)).to_bits(), a.to_bits());
             for &b in &values {
                 assert_eq!(order_key(a).cmp(&order_key(b)), a.total_cmp(&b), "{a} {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn partition_point_agrees_with_a_scan_and_asks_logarithmically_often() {
+        for len in 0..40usize {
+            for split in 0..=len {
+                let mut asked = 0;
+                let k = partition_point(3..3 + len, |k| {
+                    asked += 1;
+                    k < 3 + split
+                });
+                assert_eq!(k, 3 + split);
+                assert!(
+                    asked <= (usize::BITS - len.leading_zeros()) as usize,
+                    "{len}"
+                );
             }
         }
     }

@@ -1,10 +1,10 @@
 //! The CSV point reader: lines `x,y`, blank lines skipped, an optional `x,y` header.
 
 use crate::cli::CliError;
-use crate::geometry::{validate, Point2};
+use crate::geometry::Point2;
 
-/// Parses CSV lines `x,y` (syntax in [`crate::cli::input`]) and validates the
-/// points.
+/// Parses CSV lines `x,y` (syntax in [`crate::cli::input`]); the command validates the points
+/// when it builds its [`PointSet`](crate::geometry::PointSet).
 ///
 /// # Errors
 /// [`CliError::Csv`] naming the line for a line without exactly two fields or a field that
@@ -44,13 +44,20 @@ pub fn parse_csv_points(text: &str) -> Result<Vec<Point2>, CliError> {
         };
         points.push(Point2::new(parse(fields[0])?, parse(fields[1])?));
     }
-    validate(&points)?;
     Ok(points)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::PointSet;
+
+    /// What a command does with the points it reads: build the validated set.
+    fn validated(pts: Result<Vec<Point2>, CliError>) -> Result<Vec<Point2>, CliError> {
+        let pts = pts?;
+        PointSet::new(&pts)?;
+        Ok(pts)
+    }
 
     fn bits(pts: &[Point2]) -> Vec<(u64, u64)> {
         pts.iter().map(|p| (p.x.to_bits(), p.y.to_bits())).collect()
@@ -72,9 +79,9 @@ mod tests {
 
     #[test]
     fn csv_errors_name_the_line_or_point() {
-        let err = parse_csv_points("0,0\n1,1\n2,2\nnan,3\n").unwrap_err();
+        let err = validated(parse_csv_points("0,0\n1,1\n2,2\nnan,3\n")).unwrap_err();
         assert_eq!(err.to_string(), "point 3 has a non-finite coordinate (NaN)");
-        let err = parse_csv_points("0,0\n\n-inf,1\n").unwrap_err();
+        let err = validated(parse_csv_points("0,0\n\n-inf,1\n")).unwrap_err();
         assert_eq!(
             err.to_string(),
             "point 1 has a non-finite coordinate (-inf)"

@@ -2,16 +2,16 @@
 //! error can name the point and its line and column.
 
 use crate::cli::CliError;
-use crate::geometry::{validate, Point2};
+use crate::geometry::Point2;
 
-/// Parses a JSON point array `[[x, y], ...]` and validates the points.
+/// Parses a JSON point array `[[x, y], ...]`; the command validates the points when it
+/// builds its [`PointSet`](crate::geometry::PointSet).
 ///
 /// # Errors
 /// [`CliError::Json`] with line and column for malformed JSON or a value that is not a
 /// number where a coordinate belongs (naming the point), [`CliError::Arity`] for a point
-/// without exactly two coordinates, and [`crate::Error::NonFinite`] (inside
-/// [`CliError::Library`]) for the first point with a NaN, infinite or overflowing
-/// coordinate.
+/// without exactly two coordinates. NaN, infinities and overflowing literals parse (so that
+/// validation can name the point) and are rejected by the [`PointSet`](crate::geometry::PointSet).
 pub fn parse_json_points(text: &str) -> Result<Vec<Point2>, CliError> {
     let mut p = JsonCursor::new(text);
     p.skip_ws();
@@ -48,7 +48,6 @@ pub fn parse_json_points(text: &str) -> Result<Vec<Point2>, CliError> {
             p.found()
         )));
     }
-    validate(&points)?;
     Ok(points)
 }
 
@@ -270,7 +269,8 @@ mod tests {
             ("[[0, 0], [0, -1e400]]", 1, "-inf"),
             ("[[nan, 1]]", 0, "NaN"),
         ] {
-            let err = json(text).unwrap_err();
+            let pts = json(text).unwrap();
+            let err = CliError::from(crate::geometry::PointSet::new(&pts).unwrap_err());
             assert!(
                 matches!(err, CliError::Library(Error::NonFinite { index: i, .. }) if i == index),
                 "{text}: {err:?}"

@@ -4,8 +4,9 @@
 //!
 //! - JSON: an array of two-element arrays, `[[x, y], ...]`. Numbers follow the JSON
 //!   grammar and are converted with correct rounding; a literal too large for `f64` (such
-//!   as `1e999`) becomes infinite and is then rejected by validation like any other
-//!   non-finite coordinate, naming the point. JSON has no NaN or infinity literals, but
+//!   as `1e999`) becomes infinite and is then rejected by validation (the command's
+//!   [`PointSet`](crate::geometry::PointSet)) like any other non-finite coordinate, naming
+//!   the point. JSON has no NaN or infinity literals, but
 //!   other tools write them (`NaN`, `Infinity`, `-Infinity`, in any letter case, or
 //!   `inf`): they are recognised so that the error names the point ("point 2 has a
 //!   non-finite coordinate (NaN)") instead of a bare syntax error.
@@ -72,7 +73,8 @@ pub enum Format {
 }
 
 impl PointInput {
-    /// Reads and validates the point set.
+    /// Reads the points; the command validates them once, building its
+    /// [`PointSet`](crate::geometry::PointSet).
     ///
     /// # Errors
     /// [`CliError::Usage`] if the format cannot be told from the extension,

@@ -8,12 +8,12 @@
 //! predicate (the flips' test), except for Fortune's sweep, which makes none: its entries
 //! count comparisons (the sort, the event queue and the beach-line breakpoint tests).
 
-use crate::complexity::{Bound, Entry, Workload};
-use crate::count::{Counter, Operation};
-use crate::delaunay::{Algorithm, Triangulation};
+use crate::complexity::{Entry, Workload};
+use crate::count::Counter;
+use crate::delaunay::{triangulate_with, Algorithm, Triangulation};
 use crate::error::Result;
 use crate::gen::{points, PointKind};
-use crate::geometry::Point2;
+use crate::geometry::{Point2, PointSet};
 
 /// One Delaunay builder on one kind of generated point set.
 struct Delaunay {
@@ -21,69 +21,30 @@ struct Delaunay {
     kind: PointKind,
 }
 
-/// The Delaunay entries: the incremental builder on four inputs, divide and conquer on
-/// uniform and parabola input, Lawson's flips on the parabola (its quadratic case),
-/// Fortune's sweep on uniform and parabola input.
+/// The Delaunay entries: every claim the builders declare, each on its input. Lawson's flips
+/// are quadratic on the parabola, where the sweep fans every point from the first one (on
+/// uniform input the flips grow about as n^1.3, so the quadratic bound would not be tight
+/// there); the others run to 2^15 (quick) and 2^20 (full) points.
 pub(super) fn entries() -> Vec<Entry> {
-    let mut out: Vec<Entry> = [
-        PointKind::UniformSquare,
-        PointKind::Clustered,
-        PointKind::Grid,
-        PointKind::Parabola,
-    ]
-    .into_iter()
-    .map(|kind| {
-        delaunay(Algorithm::Incremental, kind, Bound::NLogN)
-            .quick(256, 1 << 15)
-            .full(256, 1 << 20)
-    })
-    .collect();
-    // The seed's divide and conquer: O(n log n) in the worst case, also on the parabola.
-    for kind in [PointKind::UniformSquare, PointKind::Parabola] {
-        out.push(
-            delaunay(Algorithm::DivideAndConquer, kind, Bound::NLogN)
-                .quick(256, 1 << 15)
-                .full(256, 1 << 20),
-        );
-    }
-    // Lawson's flips from a sweep triangulation: quadratic on the parabola, where the sweep
-    // fans every point from the first one (on uniform input the flips grow about as n^1.3,
-    // so the quadratic bound would not be tight there).
-    out.push(
-        delaunay(Algorithm::Lawson, PointKind::Parabola, Bound::Quadratic)
-            .quick(64, 4096)
-            .full(64, 1 << 14),
-    );
-    // Fortune's sweep: O(n log n) expected on every input, also on the parabola, where
-    // insertion in x order goes quadratic.
-    for kind in [PointKind::UniformSquare, PointKind::Parabola] {
-        out.push(
-            Entry::new(
-                "delaunay/fortune",
-                Bound::NLogN,
-                Operation::Comparisons,
-                Delaunay {
-                    algorithm: Algorithm::Fortune,
-                    kind,
-                },
-            )
-            .input(kind.name())
-            .quick(256, 1 << 15)
-            .full(256, 1 << 20),
-        );
+    let mut out = Vec::new();
+    for algorithm in Algorithm::ALL {
+        for claim in algorithm.declaration().claims {
+            let kind: PointKind = claim
+                .input
+                .parse()
+                .expect("Delaunay claims name point generators");
+            let entry = Entry::declared(
+                algorithm.declaration(),
+                claim.input,
+                Delaunay { algorithm, kind },
+            );
+            out.push(match algorithm {
+                Algorithm::Lawson => entry.quick(64, 4096).full(64, 1 << 14),
+                _ => entry.quick(256, 1 << 15).full(256, 1 << 20),
+            });
+        }
     }
     out
-}
-
-fn delaunay(algorithm: Algorithm, kind: PointKind, bound: Bound) -> Entry {
-    let id = format!("delaunay/{}", algorithm.name());
-    Entry::new(
-        &id,
-        bound,
-        Operation::IncircleTests,
-        Delaunay { algorithm, kind },
-    )
-    .input(kind.name())
 }
 
 impl Workload for Delaunay {
@@ -95,7 +56,7 @@ impl Workload for Delaunay {
     }
 
     fn run<C: Counter>(&self, pts: &mut Vec<Point2>, counter: &mut C) -> Result<Triangulation> {
-        self.algorithm.triangulate_with(pts, counter)
+        triangulate_with(&PointSet::new(pts)?, self.algorithm, counter)
     }
 
     fn output_size(&self, _input: &Vec<Point2>, t: &Triangulation) -> Option<usize> {

@@ -9,76 +9,45 @@
 //! 20(n + 2m), to DSatur's comparisons under the same bound.
 
 use crate::complexity::{Bound, Entry, Workload};
-use crate::count::{Counter, Operation};
+use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{graph, with_random_weights, GraphKind};
 use crate::graph::{
-    bfs_with, colour_with, dfs_with, ColouringAlgorithm, Graph, MstAlgorithm, WeightedGraph,
+    colour_with, search_with, spanning_forest_with, ColouringAlgorithm, Graph, MstAlgorithm,
+    SearchAlgorithm, WeightedGraph,
 };
 
 /// Edges per vertex of the generated graphs.
 const DENSITY: usize = 4;
 
-/// The graph entries.
+/// The graph entries: every claim the searches, colourings and spanning trees declare, all on
+/// G(n, 4n) (`gnm-4n`).
 pub(super) fn entries() -> Vec<Entry> {
-    let mut out = vec![
-        linear(Entry::new(
-            "search/bfs",
-            Bound::NPlusM,
-            Operation::EdgeVisits,
-            Search { depth: false },
-        )),
-        linear(Entry::new(
-            "search/dfs",
-            Bound::NPlusM,
-            Operation::EdgeVisits,
-            Search { depth: true },
-        )),
-    ];
+    let mut out = Vec::new();
+    for algorithm in SearchAlgorithm::ALL {
+        out.push(sized(algorithm.declaration(), Search { algorithm }));
+    }
     for algorithm in ColouringAlgorithm::ALL {
-        let id = format!("colour/{}", algorithm.name());
-        let workload = Colour { algorithm };
-        out.push(match algorithm {
-            ColouringAlgorithm::Course => {
-                Entry::new(&id, Bound::Quadratic, Operation::AdjacencyTests, workload)
-                    .input("gnm-4n")
-                    .quick(64, 1 << 12)
-                    .full(64, 1 << 14)
-            }
-            ColouringAlgorithm::Dsatur | ColouringAlgorithm::DsaturTabu => linear(Entry::new(
-                &id,
-                Bound::MLogN,
-                Operation::Comparisons,
-                workload,
-            )),
-            _ => linear(Entry::new(
-                &id,
-                Bound::NPlusM,
-                Operation::EdgeVisits,
-                workload,
-            )),
-        });
+        out.push(sized(algorithm.declaration(), Colour { algorithm }));
     }
     for algorithm in MstAlgorithm::ALL {
-        let (bound, operation) = match algorithm {
-            MstAlgorithm::Prim => (Bound::MLogN, Operation::Comparisons),
-            MstAlgorithm::Kruskal => (Bound::MLogM, Operation::Comparisons),
-            MstAlgorithm::Boruvka => (Bound::MLogN, Operation::EdgeVisits),
-        };
-        let id = format!("mst/{}", algorithm.name());
-        out.push(linear(Entry::new(
-            &id,
-            bound,
-            operation,
-            Tree { algorithm },
-        )));
+        out.push(sized(algorithm.declaration(), Tree { algorithm }));
     }
     out
 }
 
-/// Sizes for the near-linear entries: n from 256 (m from 1024) up.
-fn linear(e: Entry) -> Entry {
-    e.input("gnm-4n").quick(256, 1 << 16).full(256, 1 << 20)
+/// The entry of `declaration`'s claim on `gnm-4n`: n from 256 (m from 1024) up for the
+/// near-linear claims, smaller for the quadratic one.
+fn sized<W: Workload + 'static>(
+    declaration: &'static crate::complexity::Declaration,
+    workload: W,
+) -> Entry {
+    let e = Entry::declared(declaration, "gnm-4n", workload);
+    if e.info.bound == Bound::Quadratic {
+        e.quick(64, 1 << 12).full(64, 1 << 14)
+    } else {
+        e.quick(256, 1 << 16).full(256, 1 << 20)
+    }
 }
 
 /// G(n, 4n), or the complete graph when n is too small for 4n edges.
@@ -89,7 +58,7 @@ fn random_graph(n: usize, seed: u64) -> Result<crate::graph::EdgeList> {
 
 /// BFS or DFS from vertex 0.
 struct Search {
-    depth: bool,
+    algorithm: SearchAlgorithm,
 }
 
 impl Workload for Search {
@@ -101,12 +70,7 @@ impl Workload for Search {
     }
 
     fn run<C: Counter>(&self, g: &mut Graph, counter: &mut C) -> Result<usize> {
-        let s = if self.depth {
-            dfs_with(g, 0, counter)?
-        } else {
-            bfs_with(g, 0, counter)?
-        };
-        Ok(s.order.len())
+        Ok(search_with(g, 0, self.algorithm, counter)?.order.len())
     }
 
     fn edge_count(&self, g: &Graph) -> Option<usize> {
@@ -150,7 +114,7 @@ impl Workload for Tree {
     }
 
     fn run<C: Counter>(&self, g: &mut WeightedGraph, counter: &mut C) -> Result<f64> {
-        Ok(self.algorithm.run_with(g, counter).weight)
+        Ok(spanning_forest_with(g, self.algorithm, counter).weight)
     }
 
     fn edge_count(&self, g: &WeightedGraph) -> Option<usize> {

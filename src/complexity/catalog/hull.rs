@@ -7,13 +7,13 @@
 //! farthest-point test and the calipers' direction test are signed areas too); the monotone
 //! chain and the Akl–Toussaint filter are measured on comparisons, where their cost lies.
 
-use crate::calipers::{antipodal_pairs_with, diameter_brute_force_with};
-use crate::complexity::{Bound, Entry, Workload};
-use crate::count::{Counter, NoCount, Operation};
+use crate::calipers::{diameter_with, ConvexPolygon, DiameterAlgorithm, ANTIPODAL_PAIRS};
+use crate::complexity::{Entry, Workload};
+use crate::count::{Counter, NoCount};
 use crate::error::Result;
 use crate::gen::{points, PointKind};
-use crate::geometry::Point2;
-use crate::hull::{monotone_chain_with, Algorithm, HullOptions};
+use crate::geometry::{Point2, PointSet};
+use crate::hull::{convex_hull_with, monotone_chain_with, Algorithm, HullOptions};
 
 /// One hull algorithm on one kind of generated point set.
 struct Hull {
@@ -25,116 +25,51 @@ struct Hull {
 struct BruteDiameter;
 
 /// The antipodal pairs of a convex polygon: the hull of points on a circle, computed while
-/// preparing, so only the calipers are measured.
+/// preparing, so only the calipers are measured (the check of the polygon included, as the
+/// calipers' own validation was before the polygon type existed).
 struct Calipers;
 
-/// The hull and diameter entries.
+/// The hull and diameter entries: every claim the hull algorithms declare, each on its input.
 pub(super) fn entries() -> Vec<Entry> {
-    vec![
-        hull(
-            Algorithm::BruteForce,
-            PointKind::UniformSquare,
-            Bound::Cubic,
-            Operation::OrientationTests,
-        )
-        .quick(8, 128)
-        .full(8, 512),
-        hull(
-            Algorithm::Jarvis,
-            PointKind::UniformDisk,
-            Bound::NH,
-            Operation::OrientationTests,
-        )
-        .quick(256, 1 << 14)
-        .full(256, 1 << 18),
-        hull(
-            Algorithm::Jarvis,
-            PointKind::Cocircular,
-            Bound::NH,
-            Operation::OrientationTests,
-        )
-        .quick(64, 2048)
-        .full(64, 1 << 14),
-        hull(
-            Algorithm::Graham,
-            PointKind::UniformDisk,
-            Bound::NLogN,
-            Operation::OrientationTests,
-        )
-        .quick(256, 1 << 15)
-        .full(256, 1 << 19),
-        hull(
-            Algorithm::Graham,
-            PointKind::Cocircular,
-            Bound::NLogN,
-            Operation::OrientationTests,
-        )
-        .quick(256, 1 << 15)
-        .full(256, 1 << 18),
-        hull(
-            Algorithm::MonotoneChain,
-            PointKind::UniformDisk,
-            Bound::NLogN,
-            Operation::Comparisons,
-        )
-        .quick(256, 1 << 15)
-        .full(256, 1 << 19),
-        hull(
-            Algorithm::AklToussaint,
-            PointKind::UniformSquare,
-            Bound::Linear,
-            Operation::Comparisons,
-        )
-        .quick(256, 1 << 16)
-        .full(256, 1 << 20),
-        hull(
-            Algorithm::Chan,
-            PointKind::UniformDisk,
-            Bound::NLogH,
-            Operation::OrientationTests,
-        )
-        .quick(256, 1 << 15)
-        .full(256, 1 << 19),
-        hull(
-            Algorithm::Chan,
-            PointKind::Cocircular,
-            Bound::NLogH,
-            Operation::OrientationTests,
-        )
-        .quick(256, 1 << 15)
-        .full(256, 1 << 18),
-        hull(
-            Algorithm::Quickhull,
-            PointKind::UniformDisk,
-            Bound::NLogN,
-            Operation::OrientationTests,
-        )
-        .quick(256, 1 << 15)
-        .full(256, 1 << 19),
-        Entry::new(
-            "diameter/brute-force",
-            Bound::Quadratic,
-            Operation::DistanceEvaluations,
+    let mut out = Vec::new();
+    for algorithm in Algorithm::ALL {
+        for claim in algorithm.declaration().claims {
+            let kind: PointKind = claim
+                .input
+                .parse()
+                .expect("hull claims name point generators");
+            let entry = Entry::declared(
+                algorithm.declaration(),
+                claim.input,
+                Hull { algorithm, kind },
+            );
+            out.push(match algorithm {
+                Algorithm::BruteForce => entry.quick(8, 128).full(8, 512),
+                Algorithm::Jarvis if kind == PointKind::Cocircular => {
+                    entry.quick(64, 2048).full(64, 1 << 14)
+                }
+                Algorithm::Jarvis => entry.quick(256, 1 << 14).full(256, 1 << 18),
+                Algorithm::AklToussaint => entry.quick(256, 1 << 16).full(256, 1 << 20),
+                _ if kind == PointKind::Cocircular => entry.quick(256, 1 << 15).full(256, 1 << 18),
+                _ => entry.quick(256, 1 << 15).full(256, 1 << 19),
+            });
+        }
+    }
+    out.push(
+        Entry::declared(
+            DiameterAlgorithm::BruteForce.declaration(),
+            PointKind::UniformDisk.name(),
             BruteDiameter,
         )
-        .input(PointKind::UniformDisk.name())
         .quick(64, 2048)
         .full(64, 1 << 13),
-        Entry::new(
-            "diameter/calipers",
-            Bound::Linear,
-            Operation::OrientationTests,
-            Calipers,
-        )
-        .input("convex-polygon")
-        .quick(256, 1 << 15)
-        .full(256, 1 << 18),
-    ]
-}
-
-fn hull(algorithm: Algorithm, kind: PointKind, bound: Bound, operation: Operation) -> Entry {
-    let id = format!("hull/{}", algorithm.name());
-    Entry::new(&id, bound, operation, Hull { algorithm, kind }).input(kind.name())
+    );
+    out.push(
+        Entry::declared(ANTIPODAL_PAIRS, "convex-polygon", Calipers)
+            .quick(256, 1 << 15)
+            .full(256, 1 << 18),
+    );
+    out
 }
 
 impl Workload for Hull {
@@ -146,8 +81,13 @@ impl Workload for Hull {
     }
 
     fn run<C: Counter>(&self, pts: &mut Vec<Point2>, counter: &mut C) -> Result<Vec<usize>> {
-        self.algorithm
-            .hull_with(pts, HullOptions::default(), counter)
+        let set = PointSet::new(pts)?;
+        Ok(convex_hull_with(
+            &set,
+            self.algorithm,
+            HullOptions::default(),
+            counter,
+        ))
     }
 
     fn output_size(&self, _input: &Vec<Point2>, hull: &Vec<usize>) -> Option<usize> {
@@ -164,23 +104,26 @@ impl Workload for BruteDiameter {
     }
 
     fn run<C: Counter>(&self, pts: &mut Vec<Point2>, counter: &mut C) -> Result<()> {
-        diameter_brute_force_with(pts, counter).map(drop)
+        let set = PointSet::new(pts)?;
+        diameter_with(&set, DiameterAlgorithm::BruteForce, counter).map(drop)
     }
 }
 
 impl Workload for Calipers {
     /// The points and their hull, counter-clockwise.
     type Input = (Vec<Point2>, Vec<usize>);
-    type Output = Vec<(usize, usize)>;
+    type Output = Vec<[usize; 2]>;
 
     fn prepare(&self, n: usize, seed: u64) -> Result<Self::Input> {
         let pts = points(PointKind::Cocircular, n, seed)?;
-        let hull = monotone_chain_with(&pts, HullOptions::default(), &mut NoCount)?;
+        let hull = monotone_chain_with(&PointSet::new(&pts)?, HullOptions::default(), &mut NoCount);
         Ok((pts, hull))
     }
 
     fn run<C: Counter>(&self, input: &mut Self::Input, counter: &mut C) -> Result<Self::Output> {
-        antipodal_pairs_with(&input.0, &input.1, counter)
+        let set = PointSet::new(&input.0)?;
+        let polygon = ConvexPolygon::new(&set, input.1.clone())?;
+        Ok(polygon.antipodal_pairs_with(counter))
     }
 
     fn output_size(&self, input: &Self::Input, _pairs: &Self::Output) -> Option<usize> {

@@ -46,7 +46,7 @@ use std::hint::black_box;
 use std::str::FromStr;
 use std::time::{Duration, Instant};
 
-use crate::complexity::Bound;
+use crate::complexity::{Bound, Declaration};
 use crate::count::{Counter, Counts, NoCount, Operation};
 use crate::error::{Error, Result};
 
@@ -287,6 +287,25 @@ impl Entry {
             full: SizeRange::new(1 << 8, 1 << 18),
             workload: Box::new(Holder(workload)),
         }
+    }
+
+    /// Registers `workload` as the measurement of the claim `declaration` makes on `input`:
+    /// the id, the stated bound and the counted operation are the declaration's, so the
+    /// catalog states none of them again. Sizes as for [`Entry::new`].
+    ///
+    /// # Panics
+    ///
+    /// If `declaration` makes no claim on `input`: the catalog is a constant of the crate, so
+    /// this is a programming error (the catalog's tests build every entry).
+    pub fn declared<W: Workload + 'static>(
+        declaration: &'static Declaration,
+        input: &str,
+        workload: W,
+    ) -> Entry {
+        let claim = declaration
+            .claim(input)
+            .unwrap_or_else(|| panic!("{} declares no claim on input {input:?}", declaration.id()));
+        Entry::new(&declaration.id(), claim.bound, claim.operation, workload).input(claim.input)
     }
 
     /// Names the input distribution the workload generates (e.g. `"sorted"`).

@@ -9,24 +9,23 @@
 //! evaluations (strip tests and candidate pairs), on uniform points and on a grid where
 //! every distance ties.
 
-use crate::complexity::{Bound, Entry, Workload};
-use crate::count::{Counter, Operation};
+use crate::complexity::{Declaration, Entry, Workload};
+use crate::count::Counter;
 use crate::delaunay::voronoi_with;
 use crate::error::Result;
 use crate::gen::{points, PointKind};
-use crate::geometry::Point2;
+use crate::geometry::{Point2, PointSet};
 use crate::proximity::{
-    all_nearest_neighbours_with, closest_pair_divide_and_conquer_with, closest_pair_with,
-    euclidean_mst_with, largest_empty_circle_with,
+    all_nearest_neighbours_with, closest_pair_with, euclidean_mst_with, largest_empty_circle_with,
+    ClosestPairAlgorithm,
 };
 
-/// The proximity problems, by catalog name.
+/// The problems measured here.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Problem {
     Voronoi,
     AllNearest,
-    ClosestPairDelaunay,
-    ClosestPairDivideAndConquer,
+    ClosestPair(ClosestPairAlgorithm),
     Emst,
     EmptyCircle,
 }
@@ -37,62 +36,33 @@ struct Proximity {
     kind: PointKind,
 }
 
-/// The proximity entries.
+/// The proximity entries: every claim of the Voronoi diagram and the proximity problems,
+/// each on its input.
 pub(super) fn entries() -> Vec<Entry> {
-    use Operation::{DistanceEvaluations, IncircleTests, OrientationTests};
-    use PointKind::{Grid, UniformDisk, UniformSquare};
-    [
-        (
-            Problem::Voronoi,
-            "voronoi/delaunay-dual",
-            UniformSquare,
-            IncircleTests,
-        ),
-        (
-            Problem::AllNearest,
-            "all-nearest-neighbours/delaunay",
-            UniformSquare,
-            IncircleTests,
-        ),
-        (
-            Problem::ClosestPairDelaunay,
-            "closest-pair/delaunay",
-            UniformSquare,
-            IncircleTests,
-        ),
-        (
-            Problem::ClosestPairDivideAndConquer,
-            "closest-pair/divide-and-conquer",
-            UniformSquare,
-            DistanceEvaluations,
-        ),
-        (
-            Problem::ClosestPairDivideAndConquer,
-            "closest-pair/divide-and-conquer",
-            Grid,
-            DistanceEvaluations,
-        ),
-        (
-            Problem::Emst,
-            "emst/delaunay-kruskal",
-            UniformSquare,
-            DistanceEvaluations,
-        ),
-        (
-            Problem::EmptyCircle,
-            "empty-circle/voronoi",
-            UniformDisk,
-            OrientationTests,
-        ),
-    ]
-    .into_iter()
-    .map(|(problem, id, kind, operation)| {
-        Entry::new(id, Bound::NLogN, operation, Proximity { problem, kind })
-            .input(kind.name())
-            .quick(256, 1 << 14)
-            .full(256, 1 << 19)
-    })
-    .collect()
+    let mut problems: Vec<(Problem, &'static Declaration)> = vec![
+        (Problem::Voronoi, crate::delaunay::VORONOI),
+        (Problem::AllNearest, crate::proximity::ALL_NEAREST),
+    ];
+    for a in ClosestPairAlgorithm::ALL {
+        problems.push((Problem::ClosestPair(a), a.declaration()));
+    }
+    problems.push((Problem::Emst, crate::proximity::EMST));
+    problems.push((Problem::EmptyCircle, crate::proximity::EMPTY_CIRCLE));
+    let mut out = Vec::new();
+    for (problem, declaration) in problems {
+        for claim in declaration.claims {
+            let kind: PointKind = claim
+                .input
+                .parse()
+                .expect("proximity claims name point generators");
+            out.push(
+                Entry::declared(declaration, claim.input, Proximity { problem, kind })
+                    .quick(256, 1 << 14)
+                    .full(256, 1 << 19),
+            );
+        }
+    }
+    out
 }
 
 impl Workload for Proximity {
@@ -105,15 +75,13 @@ impl Workload for Proximity {
 
     /// Runs the algorithm and returns the size of its answer, so nothing is optimised away.
     fn run<C: Counter>(&self, pts: &mut Vec<Point2>, counter: &mut C) -> Result<usize> {
+        let set = PointSet::new(pts)?;
         Ok(match self.problem {
-            Problem::Voronoi => voronoi_with(pts, counter)?.cell_count(),
-            Problem::AllNearest => all_nearest_neighbours_with(pts, counter)?.len(),
-            Problem::ClosestPairDelaunay => closest_pair_with(pts, counter)?.pair[1],
-            Problem::ClosestPairDivideAndConquer => {
-                closest_pair_divide_and_conquer_with(pts, counter)?.pair[1]
-            }
-            Problem::Emst => euclidean_mst_with(pts, counter)?.edges.len(),
-            Problem::EmptyCircle => largest_empty_circle_with(pts, counter)?.sites.len(),
+            Problem::Voronoi => voronoi_with(&set, counter)?.cell_count(),
+            Problem::AllNearest => all_nearest_neighbours_with(&set, counter)?.len(),
+            Problem::ClosestPair(a) => closest_pair_with(&set, a, counter)?.pair[1],
+            Problem::Emst => euclidean_mst_with(&set, counter)?.edges.len(),
+            Problem::EmptyCircle => largest_empty_circle_with(&set, counter)?.sites.len(),
         })
     }
 }

@@ -15,10 +15,10 @@
 //! parts; its entry counts moves (at most 24n), O(n).
 
 use crate::complexity::{Bound, Entry, Workload};
-use crate::count::{Counter, Operation};
+use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{sequence, sequence_f64, SequenceKind};
-use crate::sort::{radix_sort_f64_with, Algorithm};
+use crate::sort::{radix_sort_f64_with, sort_with, Algorithm};
 
 /// One comparison sort on one kind of generated `i64` sequence.
 struct SortKeys {
@@ -26,94 +26,39 @@ struct SortKeys {
     kind: SequenceKind,
 }
 
-/// The sorting entries.
+/// The sorting entries: every claim the sorts declare, each on its input.
 pub(super) fn entries() -> Vec<Entry> {
-    let quadratic = [
-        Algorithm::Bubble,
-        Algorithm::Selection,
-        Algorithm::Insertion,
-        Algorithm::CourseInsertion,
-        Algorithm::BinaryInsertion,
-        Algorithm::CourseBinaryInsertion,
-    ];
-    let mut out: Vec<Entry> = Algorithm::ALL
-        .into_iter()
-        .map(|algorithm| {
-            let by_bisection = [Algorithm::BinaryInsertion, Algorithm::CourseBinaryInsertion];
-            let operation = if by_bisection.contains(&algorithm) {
-                Operation::Moves
-            } else {
-                Operation::Comparisons
-            };
-            if quadratic.contains(&algorithm) {
-                quadratic_sizes(entry(
-                    algorithm,
-                    SequenceKind::Random,
-                    Bound::Quadratic,
-                    operation,
-                ))
-            } else {
-                n_log_n_sizes(entry(
-                    algorithm,
-                    SequenceKind::Random,
-                    Bound::NLogN,
-                    operation,
-                ))
-            }
-        })
-        .collect();
-    out.push(n_log_n_sizes(entry(
-        Algorithm::Insertion,
-        SequenceKind::Sorted,
-        Bound::Linear,
-        Operation::Comparisons,
-    )));
-    out.push(quadratic_sizes(entry(
-        Algorithm::Insertion,
-        SequenceKind::Reversed,
-        Bound::Quadratic,
-        Operation::Comparisons,
-    )));
-    out.push(quadratic_sizes(entry(
-        Algorithm::CourseInsertion,
-        SequenceKind::Sorted,
-        Bound::Quadratic,
-        Operation::Comparisons,
-    )));
-    out.push(quadratic_sizes(entry(
-        Algorithm::CourseInsertion,
-        SequenceKind::Reversed,
-        Bound::Quadratic,
-        Operation::Moves,
-    )));
-    out.push(n_log_n_sizes(entry(
-        Algorithm::Quick,
-        SequenceKind::Sorted,
-        Bound::NLogN,
-        Operation::Comparisons,
-    )));
+    let mut out = Vec::new();
+    for algorithm in Algorithm::ALL {
+        for claim in algorithm.declaration().claims {
+            let kind: SequenceKind = claim
+                .input
+                .parse()
+                .expect("comparison-sort claims name key sequences");
+            let entry = Entry::declared(
+                algorithm.declaration(),
+                claim.input,
+                SortKeys { algorithm, kind },
+            );
+            out.push(sizes(entry, claim.bound));
+        }
+    }
     out.push(
-        Entry::new("sort/radix-f64", Bound::Linear, Operation::Moves, RadixKeys)
-            .input("random-f64")
+        Entry::declared(crate::sort::RADIX, "random-f64", RadixKeys)
             .quick(256, 1 << 20)
             .full(256, 1 << 23),
     );
     out
 }
 
-/// Quadratic sorts: 8 doublings in the quick profile (about a second for bubble sort).
-fn quadratic_sizes(e: Entry) -> Entry {
-    e.quick(64, 1 << 13).full(64, 1 << 15)
-}
-
-/// O(n log n) sorts start at 256, where lower-order terms no longer tilt the fit.
-fn n_log_n_sizes(e: Entry) -> Entry {
-    e.quick(256, 1 << 20).full(256, 1 << 23)
-}
-
-fn entry(algorithm: Algorithm, kind: SequenceKind, bound: Bound, operation: Operation) -> Entry {
-    let id = format!("sort/{}", algorithm.name());
-    Entry::new(&id, bound, operation, SortKeys { algorithm, kind }).input(kind.name())
+/// Quadratic claims: 8 doublings in the quick profile (about a second for bubble sort).
+/// Others start at 256, where lower-order terms no longer tilt the fit.
+fn sizes(e: Entry, bound: Bound) -> Entry {
+    if bound == Bound::Quadratic {
+        e.quick(64, 1 << 13).full(64, 1 << 15)
+    } else {
+        e.quick(256, 1 << 20).full(256, 1 << 23)
+    }
 }
 
 impl Workload for SortKeys {
@@ -125,7 +70,7 @@ impl Workload for SortKeys {
     }
 
     fn run<C: Counter>(&self, keys: &mut Vec<i64>, counter: &mut C) -> Result<()> {
-        self.algorithm.sort_with(keys, i64::cmp, counter);
+        sort_with(keys, self.algorithm, i64::cmp, counter);
         Ok(())
     }
 }

@@ -8,8 +8,8 @@
 //! the parameter is drawn from [0, 1) with the same seed. Degrees stay at most 512: beyond
 //! about 1020 the binomial coefficients of Horner's scheme overflow `f64`.
 
-use crate::complexity::{Bound, Entry, Workload};
-use crate::count::{Counter, Operation};
+use crate::complexity::{Entry, Workload};
+use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{points, PointKind};
 use crate::spline::{cubic_spline_tangents_with, Bezier, EndCondition, Point};
@@ -27,40 +27,32 @@ struct Evaluate(Scheme);
 /// The spline entries.
 pub(super) fn entries() -> Vec<Entry> {
     vec![
-        Entry::new(
-            "bezier/de-casteljau",
-            Bound::Quadratic,
-            Operation::ArithmeticOperations,
+        Entry::declared(
+            crate::spline::DECLARATIONS[0],
+            PointKind::UniformSquare.name(),
             Evaluate(Scheme::DeCasteljau),
         )
-        .input(PointKind::UniformSquare.name())
         .quick(8, 256)
         .full(8, 512),
-        Entry::new(
-            "bezier/horner",
-            Bound::Linear,
-            Operation::ArithmeticOperations,
+        Entry::declared(
+            crate::spline::DECLARATIONS[1],
+            PointKind::UniformSquare.name(),
             Evaluate(Scheme::Horner),
         )
-        .input(PointKind::UniformSquare.name())
         .quick(8, 256)
         .full(8, 512),
-        Entry::new(
-            "spline/cubic-natural",
-            Bound::Linear,
-            Operation::ArithmeticOperations,
+        Entry::declared(
+            crate::spline::DECLARATIONS[2],
+            PointKind::UniformSquare.name(),
             Interpolate { periodic: false },
         )
-        .input(PointKind::UniformSquare.name())
         .quick(64, 1 << 12)
         .full(64, 1 << 16),
-        Entry::new(
-            "spline/cubic-periodic",
-            Bound::Linear,
-            Operation::ArithmeticOperations,
+        Entry::declared(
+            crate::spline::DECLARATIONS[3],
+            PointKind::UniformSquare.name(),
             Interpolate { periodic: true },
         )
-        .input(PointKind::UniformSquare.name())
         .quick(64, 1 << 12)
         .full(64, 1 << 16),
     ]

@@ -1,15 +1,31 @@
 //! The course's greedy colouring exactly as printed: every earlier vertex is asked about.
 
 use super::{check_order, is_proper_colouring, Colouring};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::graph::Graph;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "colour",
+    name: "course",
+    function: "graph::course_greedy_colouring",
+    file: "src/graph/colouring/course.rs",
+    summary: "the course's greedy colouring as printed, in vertex order",
+    time: "O(n² + m)",
+    space: "O(n)",
+    operation: Operation::AdjacencyTests,
+    counts: "exactly n(n − 1)/2 adjacency tests",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::Quadratic, Operation::AdjacencyTests)],
+};
 
 /// The seed's greedy colouring of `g` in the given vertex order; see
 /// [`course_greedy_colouring_with`].
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] (name `"order"`) if `order` is not a permutation of `0..n`.
+/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) (name `"order"`) if `order` is not a permutation of `0..n`.
 ///
 /// # Complexity
 /// O(n² + m) time, O(n) auxiliary space.
@@ -34,7 +50,7 @@ pub fn course_greedy_colouring(g: &Graph, order: &[usize]) -> Result<Colouring> 
 /// neighbours of v_i are marked once before the questions are asked.
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] (name `"order"`) if `order` is not a permutation of `0..n`,
+/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) (name `"order"`) if `order` is not a permutation of `0..n`,
 /// naming the position and vertex at fault.
 ///
 /// # Complexity

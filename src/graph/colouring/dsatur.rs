@@ -1,9 +1,25 @@
 //! DSatur (Brélaz): colour next the vertex whose neighbours already show the most colours.
 
 use super::{is_proper_colouring, Colouring, UNCOLOURED};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::graph::Graph;
 use crate::util::Heap;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "colour",
+    name: "dsatur",
+    function: "graph::dsatur",
+    file: "src/graph/colouring/dsatur.rs",
+    summary: "the vertex with the most distinct neighbour colours next (Brélaz)",
+    time: "O((n + m) log n)",
+    space: "O(n + m)",
+    operation: Operation::Comparisons,
+    counts: "heap comparisons; exactly 2m edge visits",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::MLogN, Operation::Comparisons)],
+};
 
 /// DSatur colouring; see [`dsatur_with`].
 ///

@@ -2,15 +2,31 @@
 //! looked at.
 
 use super::{check_order, is_proper_colouring, Colouring, UNCOLOURED};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::graph::Graph;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "colour",
+    name: "greedy",
+    function: "graph::greedy_colouring",
+    file: "src/graph/colouring/greedy.rs",
+    summary: "the greedy colouring in vertex order, looking only at neighbours",
+    time: "O(n + m)",
+    space: "O(n)",
+    operation: Operation::EdgeVisits,
+    counts: "exactly 2m edge visits",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::NPlusM, Operation::EdgeVisits)],
+};
 
 /// Greedy colouring of `g` in the given vertex order in O(n + m); see
 /// [`greedy_colouring_with`].
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] (name `"order"`) if `order` is not a permutation of `0..n`.
+/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) (name `"order"`) if `order` is not a permutation of `0..n`.
 ///
 /// # Complexity
 /// O(n + m) time, O(n) auxiliary space.
@@ -31,10 +47,10 @@ pub fn greedy_colouring(g: &Graph, order: &[usize]) -> Result<Colouring> {
 /// The idea: the seed's algorithm (§2.1 "Coloración de vértices") asks about every earlier
 /// vertex; it is enough to look at v_i's own neighbours. Their colours are stamped with i in
 /// an array, and the first colour without the stamp is at most deg(v_i), so the search for
-/// it costs O(deg v_i) too. The result equals [`course_greedy_colouring`]'s for the same order.
+/// it costs O(deg v_i) too. The result equals [`course_greedy_colouring`](super::course_greedy_colouring)'s for the same order.
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] (name `"order"`) if `order` is not a permutation of `0..n`.
+/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) (name `"order"`) if `order` is not a permutation of `0..n`.
 ///
 /// # Complexity
 /// O(n + m) time for n vertices and m edges; O(n) auxiliary space. A greedy colouring uses

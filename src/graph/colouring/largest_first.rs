@@ -1,14 +1,31 @@
 //! The largest-first (Welsh–Powell) vertex order for the greedy colouring, with a tie rule
 //! that keeps the order connected inside each class of equal degree.
 
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::Operation;
 use crate::graph::Graph;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "colour",
+    name: "largest-first",
+    function: "graph::largest_first_order",
+    file: "src/graph/colouring/largest_first.rs",
+    summary: "greedy in decreasing degree order (Welsh–Powell), connected within each degree",
+    time: "O(n + m)",
+    space: "O(n)",
+    operation: Operation::EdgeVisits,
+    counts: "the greedy colouring's 2m edge visits",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::NPlusM, Operation::EdgeVisits)],
+};
 
 /// The largest-first (Welsh–Powell) order: vertices by decreasing degree; among vertices of
 /// equal degree, the one with the most neighbours already in the order comes first.
 ///
 /// Not in the seed, which colours in a given order and shows (§2.1 "Coloración de vértices",
 /// the congress example) that a better order can save colours; this is the classic heuristic
-/// order for [`greedy_colouring`].
+/// order for [`greedy_colouring`](super::greedy_colouring).
 ///
 /// Welsh and Powell fix only the decreasing degrees. The tie rule here makes the order
 /// *connected* inside a class of equal degree: a vertex with an already ordered neighbour is

@@ -12,11 +12,10 @@
 //! facts (K_n, even and odd cycles, trees), the seed's count of n(n−1)/2 adjacency tests, and
 //! DSatur against petgraph.
 
+use crate::complexity::algorithm_family;
 use crate::count::{Counter, NoCount};
 use crate::error::{Error, Result};
 use crate::graph::Graph;
-use std::fmt;
-use std::str::FromStr;
 
 mod course;
 mod dsatur;
@@ -41,79 +40,37 @@ pub struct Colouring {
     pub count: usize,
 }
 
-/// The colouring strategies, by their command-line names.
-///
-/// ```
-/// use compgeo::graph::ColouringAlgorithm;
-///
-/// assert_eq!("dsatur".parse::<ColouringAlgorithm>()?, ColouringAlgorithm::Dsatur);
-/// assert_eq!(ColouringAlgorithm::LargestFirst.name(), "largest-first");
-/// # Ok::<(), compgeo::Error>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum ColouringAlgorithm {
-    /// The seed's algorithm in vertex order ([`course_greedy_colouring`]), `course`.
-    Course,
-    /// The O(n + m) greedy in vertex order ([`greedy_colouring`]), `greedy`.
-    Greedy,
-    /// Greedy in [`largest_first_order`], `largest-first`.
-    LargestFirst,
-    /// Greedy in [`smallest_last_order`], `smallest-last`.
-    SmallestLast,
-    /// [`dsatur`], `dsatur`.
-    Dsatur,
-    /// [`dsatur_tabu`](super::dsatur_tabu): DSatur, then a tabu search for fewer colours,
-    /// `dsatur-tabu`.
-    DsaturTabu,
-}
-
-impl ColouringAlgorithm {
-    /// Every strategy, in the order above.
-    pub const ALL: [ColouringAlgorithm; 6] = [
-        ColouringAlgorithm::Course,
-        ColouringAlgorithm::Greedy,
-        ColouringAlgorithm::LargestFirst,
-        ColouringAlgorithm::SmallestLast,
-        ColouringAlgorithm::Dsatur,
-        ColouringAlgorithm::DsaturTabu,
-    ];
-
-    /// The kebab-case name.
-    pub fn name(self) -> &'static str {
-        match self {
-            ColouringAlgorithm::Course => "course",
-            ColouringAlgorithm::Greedy => "greedy",
-            ColouringAlgorithm::LargestFirst => "largest-first",
-            ColouringAlgorithm::SmallestLast => "smallest-last",
-            ColouringAlgorithm::Dsatur => "dsatur",
-            ColouringAlgorithm::DsaturTabu => "dsatur-tabu",
-        }
+algorithm_family! {
+    /// The colouring strategies, for callers that choose one at run time ([`colour`]).
+    ///
+    /// ```
+    /// use compgeo::graph::ColouringAlgorithm;
+    ///
+    /// assert_eq!("dsatur".parse::<ColouringAlgorithm>()?, ColouringAlgorithm::Dsatur);
+    /// assert_eq!(ColouringAlgorithm::LargestFirst.name(), "largest-first");
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub enum ColouringAlgorithm ("colouring algorithm") {
+        /// The course's algorithm in vertex order ([`course_greedy_colouring`]).
+        Course = course::DECLARATION => course_in_vertex_order_with,
+        /// The O(n + m) greedy in vertex order ([`greedy_colouring`]).
+        Greedy = greedy::DECLARATION => greedy_in_vertex_order_with,
+        /// Greedy in [`largest_first_order`].
+        LargestFirst = largest_first::DECLARATION => greedy_largest_first_with,
+        /// Greedy in [`smallest_last_order`].
+        SmallestLast = smallest_last::DECLARATION => greedy_smallest_last_with,
+        /// [`dsatur`].
+        Dsatur = dsatur::DECLARATION => dsatur_with,
+        /// [`dsatur_tabu`]: DSatur, then a tabu search for fewer colours.
+        DsaturTabu = tabu::DECLARATION => dsatur_tabu_with,
     }
-}
-
-impl fmt::Display for ColouringAlgorithm {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for ColouringAlgorithm {
-    type Err = Error;
-    fn from_str(s: &str) -> Result<Self> {
-        crate::error::algorithm_named(
-            s,
-            "colouring algorithm",
-            &ColouringAlgorithm::ALL,
-            ColouringAlgorithm::name,
-        )
-    }
+    fn run_with[C: Counter](g: &Graph, c: &mut C) -> Colouring;
 }
 
 /// Colours `g` with `strategy`; see [`colour_with`].
 ///
 /// # Complexity
-/// That of the strategy: O(n²) for `Course`, O(n + m) for the other greedy orders,
-/// O((n + m) log n) for `Dsatur` and `DsaturTabu`.
+/// That of the strategy ([`ColouringAlgorithm::declaration`]).
 ///
 /// ```
 /// use compgeo::graph::{colour, is_proper_colouring, Graph, ColouringAlgorithm};
@@ -144,19 +101,31 @@ pub fn colour(g: &Graph, strategy: ColouringAlgorithm) -> Colouring {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn colour_with<C: Counter>(g: &Graph, strategy: ColouringAlgorithm, c: &mut C) -> Colouring {
-    let natural: Vec<usize> = match strategy {
-        ColouringAlgorithm::Course | ColouringAlgorithm::Greedy => (0..g.vertex_count()).collect(),
-        ColouringAlgorithm::LargestFirst => largest_first_order(g),
-        ColouringAlgorithm::SmallestLast => smallest_last_order(g),
-        ColouringAlgorithm::Dsatur => return dsatur_with(g, c),
-        ColouringAlgorithm::DsaturTabu => return dsatur_tabu_with(g, c),
-    };
-    let result = match strategy {
-        ColouringAlgorithm::Course => course_greedy_colouring_with(g, &natural, c),
-        _ => greedy_colouring_with(g, &natural, c),
-    };
-    result.expect("the orders built here are permutations")
+    strategy.run_with(g, c)
 }
+
+/// The course's greedy colouring in the vertex order `0..n`.
+fn course_in_vertex_order_with<C: Counter>(g: &Graph, c: &mut C) -> Colouring {
+    let order: Vec<usize> = (0..g.vertex_count()).collect();
+    course_greedy_colouring_with(g, &order, c).expect("0..n is a permutation")
+}
+
+/// The greedy colouring in the vertex order `0..n`.
+fn greedy_in_vertex_order_with<C: Counter>(g: &Graph, c: &mut C) -> Colouring {
+    let order: Vec<usize> = (0..g.vertex_count()).collect();
+    greedy_colouring_with(g, &order, c).expect("0..n is a permutation")
+}
+
+/// The greedy colouring in [`largest_first_order`].
+fn greedy_largest_first_with<C: Counter>(g: &Graph, c: &mut C) -> Colouring {
+    greedy_colouring_with(g, &largest_first_order(g), c).expect("the order is a permutation")
+}
+
+/// The greedy colouring in [`smallest_last_order`].
+fn greedy_smallest_last_with<C: Counter>(g: &Graph, c: &mut C) -> Colouring {
+    greedy_colouring_with(g, &smallest_last_order(g), c).expect("the order is a permutation")
+}
+
 /// Whether `colour` is a proper colouring of `g`: one colour per vertex and no edge whose
 /// ends share a colour.
 ///

@@ -1,11 +1,28 @@
 //! The smallest-last (degeneracy) vertex order for the greedy colouring.
 
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::Operation;
 use crate::graph::Graph;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "colour",
+    name: "smallest-last",
+    function: "graph::smallest_last_order",
+    file: "src/graph/colouring/smallest_last.rs",
+    summary: "greedy in smallest-last (degeneracy) order",
+    time: "O(n + m)",
+    space: "O(n)",
+    operation: Operation::EdgeVisits,
+    counts: "the greedy colouring's 2m edge visits",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::NPlusM, Operation::EdgeVisits)],
+};
 
 /// The smallest-last (degeneracy) order: repeatedly remove a vertex of least remaining
 /// degree; colour in the reverse order of removal.
 ///
-/// Not in the seed; like [`largest_first_order`] it feeds the seed's greedy scheme (§2.1
+/// Not in the seed; like [`largest_first_order`](super::largest_first_order) it feeds the seed's greedy scheme (§2.1
 /// "Coloración de vértices") a better order.
 ///
 /// Each vertex then has at most d earlier neighbours, d the graph's degeneracy (the

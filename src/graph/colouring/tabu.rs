@@ -22,11 +22,27 @@
 //! seed, so a graph always gets the same colouring.
 
 use super::{dsatur_with, is_proper_colouring, Colouring};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::{Error, Result};
 use crate::gen::Rng;
 use crate::graph::Graph;
 use std::collections::VecDeque;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "colour",
+    name: "dsatur-tabu",
+    function: "graph::dsatur_tabu",
+    file: "src/graph/colouring/tabu.rs",
+    summary: "DSatur, then a tabu search for fewer colours",
+    time: "O((n + m) log n)",
+    space: "O(n + m)",
+    operation: Operation::Comparisons,
+    counts: "DSatur's heap comparisons plus at most 20(n + 2m) search steps",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::MLogN, Operation::Comparisons)],
+};
 
 /// The default search budget of [`dsatur_tabu`], in elementary steps per vertex and per
 /// edge end: 20·(n + 2m) steps for n vertices and m edges.

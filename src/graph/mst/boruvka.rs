@@ -2,8 +2,24 @@
 //! round.
 
 use super::{edge_keys, finish, SpanningForest};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::graph::{UnionFind, WeightedGraph};
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "mst",
+    name: "boruvka",
+    function: "graph::boruvka",
+    file: "src/graph/mst/boruvka.rs",
+    summary: "every tree adds its lightest outgoing edge, round after round",
+    time: "O(m log n)",
+    space: "O(n + m)",
+    operation: Operation::EdgeVisits,
+    counts: "at most ⌈log₂ n⌉ rounds over the remaining edges",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::MLogN, Operation::EdgeVisits)],
+};
 
 /// Borůvka's algorithm; see [`boruvka_with`].
 ///

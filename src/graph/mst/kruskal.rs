@@ -1,8 +1,24 @@
 //! Kruskal's algorithm: the edges in order of weight, each added when it joins two trees.
 
 use super::{edge_keys, finish, SpanningForest};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::graph::{UnionFind, WeightedGraph};
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "mst",
+    name: "kruskal",
+    function: "graph::kruskal",
+    file: "src/graph/mst/kruskal.rs",
+    summary: "the edges by weight, each joining two trees of a union–find",
+    time: "O(m log m)",
+    space: "O(n + m)",
+    operation: Operation::Comparisons,
+    counts: "those of the edge sort, then one edge visit per edge examined",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::MLogM, Operation::Comparisons)],
+};
 
 /// Kruskal's algorithm; see [`kruskal_with`].
 ///

@@ -14,13 +14,9 @@
 //! The tests compare the weight with brute force over every spanning forest of small graphs,
 //! the three algorithms with each other, and with petgraph on larger graphs.
 
-use crate::count::Counter;
-#[cfg(test)]
-use crate::count::NoCount;
-use crate::error::{Error, Result};
+use crate::complexity::algorithm_family;
+use crate::count::{Counter, NoCount};
 use crate::graph::{UnionFind, WeightedGraph};
-use std::fmt;
-use std::str::FromStr;
 
 mod boruvka;
 mod kruskal;
@@ -30,94 +26,77 @@ pub use boruvka::{boruvka, boruvka_with};
 pub use kruskal::{kruskal, kruskal_with};
 pub use prim::{prim, prim_with};
 
-/// A minimum spanning forest.
+/// A minimum spanning forest: one tree per connected component, and its total weight.
+///
+/// One shape for every spanning tree of the crate. For a graph ([`prim`], [`kruskal`],
+/// [`boruvka`]) an edge is its index into the graph's edge list (`E = usize`); for the
+/// Euclidean tree of a point set ([`crate::proximity::euclidean_mst`]) it is the pair of
+/// point indices `[u, v]` it joins (`E = [usize; 2]`), and the weight is its length.
 #[derive(Debug, Clone, PartialEq)]
-pub struct SpanningForest {
-    /// The forest's edges as indices into the graph's edge list, ascending.
-    pub edges: Vec<usize>,
-    /// The total weight, summed in ascending edge index order (so equal edge sets give
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SpanningForest<E = usize> {
+    /// The forest's edges: for a graph, edge indices, ascending; for a point set, pairs
+    /// `[u, v]` with `u < v`, by exactly non-decreasing length.
+    pub edges: Vec<E>,
+    /// The total weight, summed in the order of `edges` (so equal edge lists give
     /// bit-identical totals).
     pub weight: f64,
-    /// The number of trees, i.e. connected components of the graph (0 for the empty graph).
+    /// The number of trees, i.e. connected components (0 for no vertices).
     pub components: usize,
 }
 
-/// The spanning-tree algorithms, by their command-line names.
-///
-/// ```
-/// use compgeo::graph::MstAlgorithm;
-///
-/// assert_eq!("boruvka".parse::<MstAlgorithm>()?, MstAlgorithm::Boruvka);
-/// assert_eq!(MstAlgorithm::Kruskal.name(), "kruskal");
-/// # Ok::<(), compgeo::Error>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum MstAlgorithm {
-    /// [`prim`], `prim`.
-    Prim,
-    /// [`kruskal`], `kruskal`.
-    Kruskal,
-    /// [`boruvka`], `boruvka`.
-    Boruvka,
-}
-
-impl MstAlgorithm {
-    /// Every algorithm, in the order above.
-    pub const ALL: [MstAlgorithm; 3] = [
-        MstAlgorithm::Prim,
-        MstAlgorithm::Kruskal,
-        MstAlgorithm::Boruvka,
-    ];
-
-    /// The kebab-case name.
-    pub fn name(self) -> &'static str {
-        match self {
-            MstAlgorithm::Prim => "prim",
-            MstAlgorithm::Kruskal => "kruskal",
-            MstAlgorithm::Boruvka => "boruvka",
-        }
-    }
-
-    /// Runs the algorithm, counting its work.
-    ///
-    /// # Complexity
-    /// That of the algorithm: O(m log m) for each (O(m log n) on simple graphs).
+algorithm_family! {
+    /// The spanning-tree algorithms, for callers that choose one at run time
+    /// ([`spanning_forest`]).
     ///
     /// ```
-    /// use compgeo::count::Counts;
-    /// use compgeo::graph::{MstAlgorithm, WeightedGraph};
+    /// use compgeo::graph::MstAlgorithm;
     ///
-    /// let g = WeightedGraph::from_edges(3, &[[0, 1], [1, 2], [2, 0]], &[1.0, 2.0, 3.0])?;
-    /// for a in MstAlgorithm::ALL {
-    ///     assert_eq!(a.run_with(&g, &mut Counts::default()).edges, [0, 1]);
-    /// }
+    /// assert_eq!("boruvka".parse::<MstAlgorithm>()?, MstAlgorithm::Boruvka);
+    /// assert_eq!(MstAlgorithm::Kruskal.name(), "kruskal");
     /// # Ok::<(), compgeo::Error>(())
     /// ```
-    pub fn run_with<C: Counter>(self, g: &WeightedGraph, c: &mut C) -> SpanningForest {
-        match self {
-            MstAlgorithm::Prim => prim_with(g, c),
-            MstAlgorithm::Kruskal => kruskal_with(g, c),
-            MstAlgorithm::Boruvka => boruvka_with(g, c),
-        }
+    pub enum MstAlgorithm ("spanning-tree algorithm") {
+        /// [`prim`]: the course's greedy tree.
+        Prim = prim::DECLARATION => prim_with,
+        /// [`kruskal`]: edges by weight, union–find.
+        Kruskal = kruskal::DECLARATION => kruskal_with,
+        /// [`boruvka`]: lightest outgoing edges of every tree at once.
+        Boruvka = boruvka::DECLARATION => boruvka_with,
     }
+    fn run_with[C: Counter](g: &WeightedGraph, c: &mut C) -> SpanningForest;
 }
 
-impl fmt::Display for MstAlgorithm {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
+/// The minimum spanning forest of `g` by `algorithm`: the same as calling its function.
+///
+/// Every algorithm returns the same forest: edges are ranked by weight, then index.
+///
+/// # Complexity
+/// That of the chosen algorithm ([`MstAlgorithm::declaration`]).
+///
+/// ```
+/// use compgeo::graph::{spanning_forest, MstAlgorithm, WeightedGraph};
+///
+/// let g = WeightedGraph::from_edges(3, &[[0, 1], [1, 2], [2, 0]], &[1.0, 2.0, 3.0])?;
+/// for a in MstAlgorithm::ALL {
+///     assert_eq!(spanning_forest(&g, a).edges, [0, 1]);
+/// }
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn spanning_forest(g: &WeightedGraph, algorithm: MstAlgorithm) -> SpanningForest {
+    spanning_forest_with(g, algorithm, &mut NoCount)
 }
 
-impl FromStr for MstAlgorithm {
-    type Err = Error;
-    fn from_str(s: &str) -> Result<Self> {
-        crate::error::algorithm_named(
-            s,
-            "spanning-tree algorithm",
-            &MstAlgorithm::ALL,
-            MstAlgorithm::name,
-        )
-    }
+/// [`spanning_forest`], counting the chosen algorithm's work.
+///
+/// # Complexity
+/// That of the chosen algorithm ([`MstAlgorithm::declaration`]).
+pub fn spanning_forest_with<C: Counter>(
+    g: &WeightedGraph,
+    algorithm: MstAlgorithm,
+    c: &mut C,
+) -> SpanningForest {
+    algorithm.run_with(g, c)
 }
 
 /// Whether `edges` (indices into `g`'s edge list) form a spanning forest of `g`: distinct
@@ -217,7 +196,7 @@ mod tests {
         for n in [0, 1, 4] {
             let g = WeightedGraph::from_edges(n, &[], &[]).unwrap();
             for a in MstAlgorithm::ALL {
-                let f = a.run_with(&g, &mut NoCount);
+                let f = spanning_forest_with(&g, a, &mut NoCount);
                 assert_eq!((f.edges.len(), f.weight, f.components), (0, 0.0, n));
             }
         }

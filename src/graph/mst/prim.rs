@@ -2,9 +2,25 @@
 //! new vertex.
 
 use super::{edge_keys, finish, SpanningForest};
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::graph::WeightedGraph;
 use crate::util::Heap;
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "mst",
+    name: "prim",
+    function: "graph::prim",
+    file: "src/graph/mst/prim.rs",
+    summary: "the course's greedy tree: the lightest edge to a new vertex, from a binary heap",
+    time: "O(m log m)",
+    space: "O(n + m)",
+    operation: Operation::Comparisons,
+    counts: "heap comparisons; O(m log n) on simple graphs",
+    source: "[RD, §2.1]",
+    claims: &[on("gnm-4n", Bound::MLogN, Operation::Comparisons)],
+};
 
 /// Prim's algorithm; see [`prim_with`].
 ///

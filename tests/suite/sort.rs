@@ -6,8 +6,8 @@ use compgeo::count::{Counts, NoCount};
 use compgeo::sort::{
     binary_insertion_sort_with, bubble_sort, bubble_sort_with, course_binary_insertion_sort_with,
     course_insertion_sort_with, heap_sort_with, insertion_sort_with, merge_sort_with,
-    quick_sort_with, radix_sort_f64, radix_sort_f64_with, selection_sort_with, trace, Algorithm,
-    TRACE_MAX_LEN,
+    quick_sort_with, radix_sort_f64, radix_sort_f64_with, selection_sort_with, sort_with, trace,
+    Algorithm, TRACE_MAX_LEN,
 };
 use compgeo::Error;
 use proptest::prelude::*;
@@ -20,7 +20,7 @@ use std::cmp::Ordering;
 fn counts_of(algorithm: Algorithm, v: &[i64]) -> (Vec<i64>, Counts) {
     let mut v = v.to_vec();
     let mut c = Counts::default();
-    algorithm.sort_with(&mut v, i64::cmp, &mut c);
+    sort_with(&mut v, algorithm, i64::cmp, &mut c);
     (v, c)
 }
 
@@ -385,7 +385,7 @@ proptest! {
             expected.sort();
             for algorithm in Algorithm::ALL {
                 let mut got = v.clone();
-                algorithm.sort_with(&mut got, i64::cmp, &mut NoCount);
+                sort_with(&mut got, algorithm, i64::cmp, &mut NoCount);
                 prop_assert_eq!(&got, &expected, "{}", algorithm);
             }
         }
@@ -403,7 +403,7 @@ proptest! {
         all_sorted.sort();
         for algorithm in Algorithm::ALL {
             let mut got = tagged.clone();
-            algorithm.sort_with(&mut got, by_key, &mut NoCount);
+            sort_with(&mut got, algorithm, by_key, &mut NoCount);
             if algorithm.is_stable() {
                 prop_assert_eq!(&got, &stable, "{}", algorithm);
             } else {
@@ -422,7 +422,7 @@ proptest! {
         expected.sort_by(f64::total_cmp);
         for algorithm in Algorithm::ALL {
             let mut got = v.clone();
-            algorithm.sort_with(&mut got, f64::total_cmp, &mut NoCount);
+            sort_with(&mut got, algorithm, f64::total_cmp, &mut NoCount);
             prop_assert_eq!(bits(&got), bits(&expected), "{}", algorithm);
         }
     }

@@ -3,16 +3,14 @@
 
 use compgeo::count::Counts;
 use compgeo::gen::{points, PointKind};
-use compgeo::geometry::{cmp_lex, orient2d, Orientation, Point2};
+use compgeo::geometry::{cmp_lex, orient2d, Orientation, Point2, PointSet};
 use compgeo::hull::{
-    brute_force_hull, convex_hull, encloses, is_strictly_convex_ccw, Algorithm, HullOptions,
+    brute_force_hull, convex_hull, convex_hull_with, encloses, is_strictly_convex_ccw, Algorithm,
+    HullOptions,
 };
 use compgeo::Error;
 use proptest::prelude::*;
 use std::cmp::Ordering;
-
-#[cfg(feature = "cli")]
-mod common;
 
 const STRICT: HullOptions = HullOptions {
     keep_collinear: false,
@@ -246,9 +244,8 @@ fn jarvis_is_quadratic_on_cocircular_points_and_linear_per_vertex_otherwise() {
     for n in [64, 256] {
         let circle = points(PointKind::Cocircular, n, 5).unwrap();
         let mut counts = Counts::default();
-        let hull = Algorithm::Jarvis
-            .hull_with(&circle, STRICT, &mut counts)
-            .unwrap();
+        let set = PointSet::new(&circle).unwrap();
+        let hull = convex_hull_with(&set, Algorithm::Jarvis, STRICT, &mut counts);
         assert_eq!(hull.len(), n, "every cocircular point is a vertex");
         assert!(counts.orientation_tests >= (n * (n - 2)) as u64);
         assert!(counts.orientation_tests <= (n * n) as u64);
@@ -271,9 +268,8 @@ fn chan_makes_o_n_log_h_orientation_tests() {
         for n in [1000, 8000] {
             let pts = points(kind, n, 3).unwrap();
             let mut counts = Counts::default();
-            let hull = Algorithm::Chan
-                .hull_with(&pts, STRICT, &mut counts)
-                .unwrap();
+            let set = PointSet::new(&pts).unwrap();
+            let hull = convex_hull_with(&set, Algorithm::Chan, STRICT, &mut counts);
             let lg_h = (hull.len().max(2) as f64).log2();
             let bound = 16.0 * n as f64 * lg_h + 16.0 * n as f64;
             assert!(
@@ -299,7 +295,7 @@ fn algorithm_names_round_trip() {
 #[cfg(feature = "cli")]
 #[test]
 fn cli_hull_prints_the_hull_of_every_algorithm_and_rejects_bad_input() {
-    use common::{assert_rejected, run_json};
+    use crate::common::{assert_rejected, run_json};
     let input = "[[0,0],[2,0],[1,1],[2,2],[0,2],[1,0],[0,0]]";
     for algorithm in Algorithm::ALL {
         for (flag, expected) in [

@@ -1,8 +1,6 @@
 //! Delaunay triangulations: every result passes the exact checker; the incremental builder
 //! agrees with spade on general-position input; degenerate and bad input.
 
-mod common;
-
 use compgeo::count::Counts;
 use compgeo::delaunay::{
     check_delaunay, find_duplicates, incremental, incremental_with, Triangulation,
@@ -34,7 +32,7 @@ fn triangle_set(t: &Triangulation) -> BTreeSet<[usize; 3]> {
 }
 
 fn spade_triangle_set(pts: &[Point2]) -> BTreeSet<[usize; 3]> {
-    common::spade_triangles(pts).into_iter().collect()
+    crate::common::spade_triangles(pts).into_iter().collect()
 }
 
 #[test]
@@ -238,7 +236,7 @@ fn non_finite_coordinates_are_errors() {
 fn counting_changes_nothing_and_counts_each_kind_of_test() {
     let pts = points(PointKind::UniformSquare, 2000, 4).unwrap();
     let mut counts = Counts::default();
-    let counted = incremental_with(&pts, &mut counts).unwrap();
+    let counted = incremental_with(&crate::common::set(&pts), &mut counts).unwrap();
     assert_eq!(counted, incremental(&pts).unwrap());
     // Each of the n - 3 insertions tests at least the three edges of its new triangles.
     assert!(counts.incircle_tests >= 3 * (2000 - 3));
@@ -253,7 +251,7 @@ fn parabola_in_x_order_stays_near_linear_in_flips() {
     let per_point = |n: usize| {
         let pts = points(PointKind::Parabola, n, 0).unwrap();
         let mut counts = Counts::default();
-        incremental_with(&pts, &mut counts).unwrap();
+        incremental_with(&crate::common::set(&pts), &mut counts).unwrap();
         counts.incircle_tests as f64 / n as f64
     };
     let (small, large) = (per_point(2000), per_point(32_000));
@@ -266,7 +264,7 @@ fn parabola_in_x_order_stays_near_linear_in_flips() {
 #[cfg(feature = "cli")]
 #[test]
 fn cli_prints_the_triangulation_and_rejects_bad_input() {
-    use common::{assert_rejected, run_json};
+    use crate::common::{assert_rejected, run_json};
     use compgeo::delaunay::Algorithm;
     let pts = points(PointKind::Grid, 30, 3).unwrap();
     let mut with_copy = pts.clone();
@@ -282,7 +280,8 @@ fn cli_prints_the_triangulation_and_rejects_bad_input() {
         let hull: Vec<usize> = serde_json::from_value(v["hull"].clone()).unwrap();
         let duplicates: Vec<[usize; 2]> = serde_json::from_value(v["duplicates"].clone()).unwrap();
         // The printed triangles, relinked, pass the exact checker on the printed input.
-        let t = Triangulation::from_triangles(&with_copy, &tris, duplicates).unwrap();
+        let t = Triangulation::from_triangles(&crate::common::set(&with_copy), &tris, duplicates)
+            .unwrap();
         assert_eq!(t.hull, hull);
         assert_eq!(check_delaunay(&with_copy, &t), Ok(()));
         assert_eq!(t.duplicates, [[30, 4]]);

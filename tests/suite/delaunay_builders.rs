@@ -14,9 +14,7 @@ use compgeo::geometry::Point2;
 use compgeo::{Error, Result};
 use proptest::prelude::*;
 
-mod common;
-
-use common::{is_unique_delaunay, triangle_set};
+use crate::common::{is_unique_delaunay, triangle_set};
 
 type Builder = fn(&[Point2]) -> Result<Triangulation>;
 
@@ -106,7 +104,7 @@ fn builders_agree_on_general_position_input() {
             );
             assert_eq!(
                 triangle_set(&results[0]),
-                common::spade_triangles(&pts),
+                crate::common::spade_triangles(&pts),
                 "{what}: spade"
             );
         }
@@ -295,13 +293,13 @@ fn non_finite_input_is_rejected() {
 fn counted_variants_return_the_same_triangulation() {
     let pts = points(PointKind::Clustered, 400, 9).unwrap();
     let mut counts = Counts::default();
-    let t = divide_and_conquer_with(&pts, &mut counts).unwrap();
+    let t = divide_and_conquer_with(&crate::common::set(&pts), &mut counts).unwrap();
     assert_eq!(t, divide_and_conquer(&pts).unwrap());
     assert!(counts.comparisons >= pts.len() as u64 - 1);
     assert!(counts.orientation_tests > 0 && counts.incircle_tests > 0);
 
     let mut counts = Counts::default();
-    let t = lawson_with(&pts, &mut counts).unwrap();
+    let t = lawson_with(&crate::common::set(&pts), &mut counts).unwrap();
     assert_eq!(t, lawson(&pts).unwrap());
     // Every interior edge is checked at least once; the sweep pops each point at most once
     // per chain, and each chain's loop ends with one failed test per point.
@@ -317,8 +315,8 @@ fn lawson_is_quadratic_on_the_parabola_and_divide_and_conquer_is_not() {
     let tests = |n: usize| {
         let pts = points(PointKind::Parabola, n, 0).unwrap();
         let (mut lw, mut dc) = (Counts::default(), Counts::default());
-        lawson_with(&pts, &mut lw).unwrap();
-        divide_and_conquer_with(&pts, &mut dc).unwrap();
+        lawson_with(&crate::common::set(&pts), &mut lw).unwrap();
+        divide_and_conquer_with(&crate::common::set(&pts), &mut dc).unwrap();
         (lw.incircle_tests as f64, dc.incircle_tests as f64)
     };
     let (lw1, dc1) = tests(200);
@@ -330,7 +328,7 @@ fn lawson_is_quadratic_on_the_parabola_and_divide_and_conquer_is_not() {
 #[cfg(feature = "cli")]
 #[test]
 fn cli_runs_each_builder_and_rejects_bad_input() {
-    use common::{assert_rejected, run_json};
+    use crate::common::{assert_rejected, run_json};
     let mut pts = points(PointKind::UniformDisk, 40, 2).unwrap();
     pts.push(pts[7]);
     let input = serde_json::to_string(&pts.iter().map(|p| [p.x, p.y]).collect::<Vec<_>>()).unwrap();
@@ -339,7 +337,12 @@ fn cli_runs_each_builder_and_rejects_bad_input() {
         assert_eq!(v["algorithm"], *name);
         let want = build(&pts).unwrap();
         let tris: Vec<[usize; 3]> = serde_json::from_value(v["triangles"].clone()).unwrap();
-        let printed = Triangulation::from_triangles(&pts, &tris, want.duplicates.clone()).unwrap();
+        let printed = Triangulation::from_triangles(
+            &crate::common::set(&pts),
+            &tris,
+            want.duplicates.clone(),
+        )
+        .unwrap();
         assert_eq!(triangle_set(&printed), triangle_set(&want), "{name}");
         assert_eq!(v["hull"], serde_json::json!(want.hull), "{name}");
         assert_eq!(v["duplicates"], serde_json::json!([[40, 7]]), "{name}");
@@ -401,7 +404,7 @@ proptest! {
         let what = format!("{pts:?}");
         let results = build_all_checked(&pts, &what);
         if assert_agree_if_unique(&pts, &results, &what) && results[0].duplicates.is_empty() {
-            prop_assert_eq!(triangle_set(&results[0]), common::spade_triangles(&pts));
+            prop_assert_eq!(triangle_set(&results[0]), crate::common::spade_triangles(&pts));
         }
     }
 }

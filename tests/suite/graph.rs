@@ -7,9 +7,6 @@ use compgeo::graph::*;
 use compgeo::Error;
 use proptest::prelude::*;
 
-#[cfg(feature = "cli")]
-mod common;
-
 /// A random simple-or-not graph: n in 1..=max_n, up to max_m edges (loops and repeats
 /// allowed, the graph type must cope).
 fn arb_edges(max_n: usize, max_m: usize) -> impl Strategy<Value = (usize, Vec<[usize; 2]>)> {
@@ -95,7 +92,7 @@ fn seed_rows(rows: &[(&str, &str, &str)]) -> String {
 
 #[test]
 fn seed_dfs_table() {
-    let rows = search_trace(&seed_toys(), 0, SearchKind::Depth).unwrap();
+    let rows = search_trace(&seed_toys(), 0, SearchAlgorithm::Dfs).unwrap();
     let expected = seed_rows(&[
         ("a", "-", "a"),
         ("b", "-", "ab"),
@@ -119,7 +116,7 @@ fn seed_dfs_table() {
 
 #[test]
 fn seed_bfs_table() {
-    let rows = search_trace(&seed_toys(), 0, SearchKind::Breadth).unwrap();
+    let rows = search_trace(&seed_toys(), 0, SearchAlgorithm::Bfs).unwrap();
     let expected = seed_rows(&[
         ("a", "-", "a"),
         ("b", "-", "ab"),
@@ -219,7 +216,7 @@ proptest! {
         prop_assert_eq!(&r.order, &order);
         let degree_sum: usize = r.order.iter().map(|&v| g.degree(v)).sum();
         prop_assert_eq!(c.edge_visits, degree_sum as u64);
-        let trace = search_trace(&g, s, SearchKind::Depth).unwrap();
+        let trace = search_trace(&g, s, SearchAlgorithm::Dfs).unwrap();
         prop_assert_eq!(trace.len(), 2 * order.len());
         prop_assert!(trace.last().unwrap().list.is_empty());
     }
@@ -689,7 +686,7 @@ fn spanning_trees_agree_with_petgraph() {
             .collect();
         theirs.sort_unstable();
         for a in MstAlgorithm::ALL {
-            let f = a.run_with(&g, &mut Counts::default());
+            let f = spanning_forest_with(&g, a, &mut Counts::default());
             assert!(is_spanning_forest(&g, &f.edges));
             let mut ours: Vec<[usize; 2]> = f.edges.iter().map(|&e| g.endpoints(e)).collect();
             ours.sort_unstable();
@@ -707,7 +704,7 @@ proptest! {
         let g = WeightedGraph::from_edges(n, &edges, &w).unwrap();
         let best = brute_force_forest_weight(&g);
         let forests: Vec<SpanningForest> =
-            MstAlgorithm::ALL.iter().map(|a| a.run_with(&g, &mut Counts::default())).collect();
+            MstAlgorithm::ALL.iter().map(|&a| spanning_forest_with(&g, a, &mut Counts::default())).collect();
         for f in &forests {
             prop_assert!(is_spanning_forest(&g, &f.edges));
             prop_assert_eq!(f.weight, best);
@@ -779,14 +776,11 @@ mod cli {
     fn search_and_colour_output_match_the_library() {
         let g = generated(GraphKind::Gnm, 60, 90, 5);
         let input = json_of(&g);
-        for (cmd, kind) in [("bfs", SearchKind::Breadth), ("dfs", SearchKind::Depth)] {
+        for (cmd, kind) in [("bfs", SearchAlgorithm::Bfs), ("dfs", SearchAlgorithm::Dfs)] {
             let (code, out, err) = run(&[cmd, "-s", "3", "-"], &input);
             assert_eq!((code, err.as_str()), (0, ""));
             let v: Value = serde_json::from_str(&out).unwrap();
-            let expected = match kind {
-                SearchKind::Breadth => bfs(&g, 3).unwrap(),
-                SearchKind::Depth => dfs(&g, 3).unwrap(),
-            };
+            let expected = search(&g, 3, kind).unwrap();
             assert_eq!(usizes(&v["order"]), expected.order);
             assert_eq!(v["components"], components(&g).count);
             assert_eq!(v["counts"]["vertex_visits"], expected.order.len());

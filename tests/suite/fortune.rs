@@ -7,14 +7,12 @@
 
 use compgeo::count::Counts;
 use compgeo::delaunay::{
-    check_delaunay, fortune, fortune_with, incremental, Algorithm, Triangulation,
+    check_delaunay, fortune, fortune_with, incremental, triangulate_with, Algorithm, Triangulation,
 };
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::Point2;
 
-mod common;
-
-use common::{is_unique_delaunay, triangle_set};
+use crate::common::{is_unique_delaunay, triangle_set};
 
 /// Runs Fortune's sweep on `pts` and asserts the exact checker passes.
 fn checked(pts: &[Point2], what: &str) -> Triangulation {
@@ -145,9 +143,7 @@ fn registered_as_an_algorithm() {
     assert!(Algorithm::ALL.contains(&Algorithm::Fortune));
     let pts = points(PointKind::Gaussian, 300, 4).unwrap();
     let mut counts = Counts::default();
-    let t = Algorithm::Fortune
-        .triangulate_with(&pts, &mut counts)
-        .unwrap();
+    let t = triangulate_with(&crate::common::set(&pts), Algorithm::Fortune, &mut counts).unwrap();
     assert_eq!(t, fortune(&pts).unwrap());
     assert!(counts.comparisons > 0);
 }
@@ -160,7 +156,7 @@ fn counts_grow_as_n_log_n_on_the_parabola_and_uniform_input() {
         let per_point = |n: usize| {
             let pts = points(kind, n, 0).unwrap();
             let mut c = Counts::default();
-            let t = fortune_with(&pts, &mut c).unwrap();
+            let t = fortune_with(&crate::common::set(&pts), &mut c).unwrap();
             assert_eq!(t, fortune(&pts).unwrap());
             assert_eq!(c.incircle_tests, 0);
             // At least one convergence check per circle event (= triangle).

@@ -12,9 +12,6 @@ use compgeo::count::{Counter, Operation};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-#[cfg(feature = "cli")]
-mod common;
-
 /// Doubling sizes `2^lo ..= 2^hi`.
 fn sizes(lo: u32, hi: u32) -> Vec<f64> {
     (lo..=hi).map(|k| f64::from(1u32 << k)).collect()

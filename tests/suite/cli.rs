@@ -9,8 +9,7 @@ use serde_json::Value;
 use std::collections::HashSet;
 use std::path::PathBuf;
 
-mod common;
-use common::{assert_rejected, run, run_json};
+use crate::common::{assert_rejected, run, run_json};
 
 /// A file in Cargo's per-test scratch directory.
 fn temp_file(name: &str, contents: &str) -> PathBuf {

@@ -1,0 +1,167 @@
+//! The minimum-area rectangle enclosing a convex polygon: one side along an edge, four
+//! calipers rotated once around it, the areas compared exactly.
+
+use super::frame::{area, direction, Frame};
+use super::sides::{four_calipers, Sides};
+use super::ConvexPolygon;
+use crate::complexity::Declaration;
+use crate::count::{Counter, NoCount, Operation};
+use crate::error::Result;
+use crate::geometry::{CountedPredicates, Point2};
+
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "min-area-rectangle",
+    name: "calipers",
+    function: "calipers::ConvexPolygon::min_area_rectangle",
+    file: "src/calipers/rectangle.rs",
+    summary: "four calipers rotated once around the hull, each edge's rectangle scored exactly",
+    time: "Θ(h) after the hull",
+    space: "O(1)",
+    operation: Operation::OrientationTests,
+    counts: "at most 9h for the calipers, and h − 1 exact area comparisons",
+    source: "[RD, §2.3]",
+    claims: &[],
+};
+
+/// A minimum-area enclosing rectangle: the polygon edge one side lies on, the vertices that
+/// touch the other three sides, and the corners.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Rectangle {
+    /// The hull edge `[i, j]` that one side lies on (counter-clockwise, so the rectangle is
+    /// left of `i -> j`).
+    pub edge: [usize; 2],
+    /// The vertices touching the other sides, counter-clockwise from the edge:
+    /// `[right, top, left]` (extreme along the edge's direction, farthest from its line,
+    /// extreme against its direction).
+    pub support: [usize; 3],
+    /// The corners, counter-clockwise, starting on the edge's line below `left`. These are
+    /// constructions (projections onto the lines), rounded to within a few ulps of the
+    /// hull's largest coordinate; the edge and the support vertices are exact.
+    pub corners: [Point2; 4],
+    /// The area, rounded: height times length, each from the support vertices' own
+    /// differences (`inf` if it exceeds `f64::MAX`; 0 for collinear input).
+    pub area: f64,
+}
+
+impl ConvexPolygon<'_> {
+    /// The minimum-area rectangle enclosing the polygon; see
+    /// [`min_area_rectangle_with`](Self::min_area_rectangle_with).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::TooFew`](crate::Error::TooFew) for a polygon without vertices.
+    ///
+    /// ```
+    /// use compgeo::calipers::ConvexPolygon;
+    /// use compgeo::geometry::{Point2, PointSet};
+    ///
+    /// // A diamond: the best rectangle is the tilted square on its sides, area 2, not the
+    /// // axis-parallel box of area 4.
+    /// let pts = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)].map(Point2::from);
+    /// let r = ConvexPolygon::hull(&PointSet::new(&pts)?).min_area_rectangle()?;
+    /// assert_eq!(r.edge, [3, 0]);
+    /// assert!((r.area - 2.0).abs() < 1e-12);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn min_area_rectangle(&self) -> Result<Rectangle> {
+        self.min_area_rectangle_with(&mut NoCount)
+    }
+
+    /// The minimum-area rectangle enclosing the polygon, by rotating four calipers,
+    /// recording the operations in `counter`.
+    ///
+    /// Idea: a minimum-area enclosing rectangle has a side along an edge of the hull
+    /// (Freeman and Shapira, 1975). For each edge, in counter-clockwise order, three more
+    /// calipers track the vertex extreme along the edge's direction, the one farthest from
+    /// its line and the one extreme against its direction; each only moves forward, so
+    /// together they go around the polygon a bounded number of times. The extremes along the
+    /// direction are found with the sign of a dot product, which is
+    /// [`cross_sign`](crate::geometry::cross_sign) of the edge turned by a right angle (an
+    /// exact swap and negation of coordinates). Edges are compared by
+    /// [`cmp_rect_area`](crate::geometry::cmp_rect_area), exact; of equal areas the first
+    /// edge counter-clockwise from the first vertex wins.
+    ///
+    /// Not among the course's algorithms; it extends [RD, §2.3] "Algoritmo de girar
+    /// calibres" from two calipers to four.
+    ///
+    /// Degenerate polygons: a single vertex gives a rectangle with four equal corners; two
+    /// (collinear points) the segment between them (`corners` `[a, b, b, a]`); both have
+    /// area 0.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::TooFew`](crate::Error::TooFew) for a polygon without vertices.
+    ///
+    /// # Complexity
+    ///
+    /// With h the number of vertices: time Θ(h) after the hull, auxiliary space O(1).
+    ///
+    /// # Counts
+    ///
+    /// At most 9h orientation tests for the calipers (as for
+    /// [`width_with`](Self::width_with)) and h − 1 distance evaluations (area comparisons).
+    ///
+    /// ```
+    /// use compgeo::calipers::ConvexPolygon;
+    /// use compgeo::count::Counts;
+    /// use compgeo::gen::{points, PointKind};
+    /// use compgeo::geometry::PointSet;
+    ///
+    /// let pts = points(PointKind::UniformSquare, 1000, 4)?;
+    /// let mut counts = Counts::default();
+    /// let r = ConvexPolygon::hull(&PointSet::new(&pts)?).min_area_rectangle_with(&mut counts)?;
+    /// assert!(r.area > 0.9 && r.area <= 1.0); // nearly the unit square
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn min_area_rectangle_with<C: Counter>(&self, counter: &mut C) -> Result<Rectangle> {
+        let hull = self.vertices();
+        let h = hull.len();
+        match h {
+            0 => return Err(ConvexPolygon::empty()),
+            1 | 2 => {
+                let (i, j) = (hull[0], hull[h - 1]);
+                let (a, b) = (self.points[i], self.points[j]);
+                return Ok(Rectangle {
+                    edge: [i, j],
+                    support: [j, i, i],
+                    corners: [a, b, b, a],
+                    area: 0.0,
+                });
+            }
+            _ => {}
+        }
+        let v = |k: usize| self.at(k);
+        let key = |s: Sides| [v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)];
+        let mut best: Option<Sides> = None;
+        four_calipers(self, counter, |s, counter| {
+            if best
+                .is_none_or(|b| counter.cmp_rect_area(key(s), key(b)) == std::cmp::Ordering::Less)
+            {
+                best = Some(s);
+            }
+        });
+        let s = best.expect("a polygon has edges");
+        let frame = Frame::new([v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)]);
+        let [a, _, top, left, right] = frame.points;
+        let u = direction(v(s.edge), v(s.edge + 1));
+        let along = |p: Point2| u.0 * (p.x - a.x) + u.1 * (p.y - a.y);
+        let height = u.0 * (top.y - a.y) - u.1 * (top.x - a.x);
+        let (lo, hi) = (along(left), along(right));
+        let on_line = |t: f64| Point2::new(a.x + t * u.0, a.y + t * u.1);
+        let lifted = |p: Point2| Point2::new(p.x - height * u.1, p.y + height * u.0);
+        let corners = [
+            on_line(lo),
+            on_line(hi),
+            lifted(on_line(hi)),
+            lifted(on_line(lo)),
+        ];
+        Ok(Rectangle {
+            edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
+            support: [s.right, s.top, s.left].map(|k| hull[k % h]),
+            corners: corners.map(|c| Point2::new(frame.unscale(c.x), frame.unscale(c.y))),
+            area: area(u, [v(s.edge), v(s.top), v(s.left), v(s.right)]),
+        })
+    }
+}

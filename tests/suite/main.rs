@@ -1,0 +1,25 @@
+//! The integration tests, one binary: each module tests one part of the crate against its
+//! oracles (brute force, exact rationals, a second algorithm, a peer crate), its degenerate
+//! and bad inputs, and its command line.
+//!
+//! One binary instead of one per file: the peer crates (spade, delaunator, geo, petgraph,
+//! kurbo, ...) are linked once. Run one part with `cargo test --test suite hull::`.
+
+mod common;
+
+mod calipers;
+mod cli;
+mod complexity;
+mod delaunay;
+mod degenerate;
+mod delaunay_builders;
+mod fortune;
+mod gen;
+mod graph;
+mod hull;
+mod predicates;
+mod proximity;
+mod sort;
+mod voronoi;
+mod width;
+mod registry;
