@@ -17,7 +17,7 @@
 //! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull; exact checkers |
 //! | [`calipers`] | diameter by brute force and by rotating calipers, antipodal pairs |
 //! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the seed's divide and conquer, Lawson's flips, Fortune's sweep), exact checker; the Voronoi diagram and the proximity problems on it |
-//! | [`spline`] | Bernstein basis and Bézier curves, generic over the scalar (`f64`, exact rationals) and the dimension |
+//! | [`spline`] | curves, generic over the scalar (`f64`, exact rationals) and the dimension: the curve traits, [`spline::bezier`] (Bernstein basis, Bézier, reparametrised and composite curves, one algorithm per file), [`spline::interpolate`] (polynomial, Hermite and spline interpolation, least squares), Frenet frames |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command |
 //!
 //! ## Algorithms and their bounds
@@ -58,7 +58,7 @@
 //! | [`calipers::diameter_brute_force`] | Θ(n²) distance evaluations |
 //! | [`calipers::width`], [`calipers::min_area_rectangle`] | the hull's time plus Θ(h) |
 //! | [`spline::vandermonde`], [`spline::vandermonde_hermite`] | Θ(n³) for n conditions (dense elimination) |
-//! | [`spline::lagrange`], [`spline::aitken`] | Θ(n²) per evaluation, n nodes |
+//! | [`spline::lagrange`] (evaluation by the basis, or [`spline::LagrangeForm::aitken`]) | Θ(n²) per evaluation, n nodes |
 //! | [`spline::newton`], [`spline::newton_hermite`] | Θ(n²) divided differences, Θ(n) per evaluation |
 //! | [`spline::cubic_spline`] (natural, clamped, Bessel, periodic) | Θ(n), exactly 7n + 4 point operations (open ends) |
 //! | [`spline::hermite`], [`spline::quadratic_spline`], [`spline::closed_quadratic_spline`] | Θ(n) |
@@ -77,8 +77,8 @@
 //! | [`delaunay::euclidean_mst`] | O(n log n) expected; Delaunay edges ranked exactly, then Kruskal |
 //! | [`delaunay::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case |
 //! | [`spline::Bezier::de_casteljau`] (degree n) | Θ(n²): exactly n(n+1)/2 affine combinations per point |
-//! | [`spline::Bezier::horner`], [`spline::Bezier::eval`] | Θ(n): n + 1 point operations per point |
-//! | [`spline::Bezier::split`], [`spline::Bezier::blossom`], [`spline::Bezier::derivative_at`] | Θ(n²) |
+//! | [`spline::Bezier::horner`], [`spline::Curve::eval`] of a Bézier curve | Θ(n): n + 1 point operations per point |
+//! | [`spline::Bezier::split`], [`spline::Bezier::blossom`], [`spline::CurveDerivative::derivative_at`] of a Bézier curve | Θ(n²) |
 //! | [`spline::Bezier::elevate_to`] (degree n to m) | Θ(mn) |
 //! | [`spline::Bezier::flatten`] | Θ(s·n²) for s segments, s = O(√(bound/tolerance)) |
 //! | [`spline::intersections`] | O(k·d·(m² + n²)) for k crossings found at depth d |

@@ -4,23 +4,18 @@
 
 #[cfg(feature = "cli")]
 mod common;
+mod spline_common;
 
 use compgeo::count::Counts;
 use compgeo::geometry::Point2;
 use compgeo::hull::{monotone_chain, HullOptions};
 use compgeo::spline::{
-    bernstein, bernstein_all, bernstein_derivative, intersections, Bezier, Finite, Point, Scalar,
+    bernstein, bernstein_all, bernstein_derivative, intersections, Bezier, Curve, CurveDerivative,
+    Finite, Point, Scalar,
 };
 use compgeo::Error;
-use num_bigint::BigInt;
-use num_rational::BigRational;
 use proptest::prelude::*;
-
-type Q = BigRational;
-
-fn q(n: i64, d: i64) -> Q {
-    Q::new(BigInt::from(n), BigInt::from(d))
-}
+use spline_common::{q, Q};
 
 fn qp<const D: usize>(c: [(i64, i64); D]) -> Point<Q, D> {
     Point::new(c.map(|(n, d)| q(n, d)))

@@ -7,7 +7,7 @@ mod spline_common;
 
 use compgeo::spline::{
     bezier_frenet, cubic_spline, curvature_vector, frenet_frame, is_g2, is_g2_join, newton, Bezier,
-    CompositeBezier, EndCondition, Point,
+    CompositeBezier, Curve, CurveDerivative, EndCondition, Point,
 };
 use compgeo::Error;
 use proptest::prelude::*;

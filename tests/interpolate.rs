@@ -9,10 +9,10 @@
 mod spline_common;
 
 use compgeo::spline::{
-    aitken, bernstein_all, c1_partition, closed_quadratic_spline, cubic_spline,
-    cubic_spline_tangents, estimate_tangents, fit_bezier, hermite, lagrange, lagrange_basis,
-    newton, newton_hermite, parameterise, quadratic_spline, vandermonde, vandermonde_hermite,
-    Bezier, CompositeBezier, EndCondition, FitOptions, HermiteNode, Parameterisation, Point,
+    bernstein_all, c1_partition, closed_quadratic_spline, cubic_spline, cubic_spline_tangents,
+    estimate_tangents, fit_bezier, hermite, lagrange, lagrange_basis, newton, newton_hermite,
+    parameterise, quadratic_spline, vandermonde, vandermonde_hermite, Bezier, CompositeBezier,
+    Curve, CurveDerivative, EndCondition, FitOptions, HermiteNode, Parameterisation, Point,
     Polynomial, Scalar,
 };
 use compgeo::Error;
@@ -51,7 +51,7 @@ fn seed_003_hermite_example_reproduces_the_printed_control_points() {
         .collect();
     assert_eq!(printed.len(), 4);
 
-    let curve = hermite(&points, &tangents, &knots).unwrap();
+    let curve = hermite(&knots, &points, &tangents).unwrap();
     let got: Vec<&[Point<Q, 2>]> = curve.pieces().iter().map(|b| b.control()).collect();
     assert_eq!(got, printed.iter().map(Vec::as_slice).collect::<Vec<_>>());
     // It interpolates the data exactly and is C¹ exactly.
@@ -65,9 +65,9 @@ fn seed_003_hermite_example_reproduces_the_printed_control_points() {
     // The f64 path agrees to rounding.
     let f = |p: &Point<Q, 2>| p.to_f64();
     let curve64 = hermite(
+        &knots.iter().map(Scalar::to_f64).collect::<Vec<_>>(),
         &points.iter().map(f).collect::<Vec<_>>(),
         &tangents.iter().map(f).collect::<Vec<_>>(),
-        &knots.iter().map(Scalar::to_f64).collect::<Vec<_>>(),
     )
     .unwrap();
     for (a, b) in curve64
@@ -164,17 +164,17 @@ fn clamped_spline_reproduces_a_cubic_and_bessel_a_parabola() {
         p2(qi(0), qi(1)),
         p2(qi(1), qi(0)),
     ]);
-    let dc = c.derivative();
+    let dc = c.derivative_curve().unwrap();
     let knots = vec![qi(-1), q(-1, 4), q(1, 2), qi(2), q(7, 3)];
-    let pts: Vec<_> = knots.iter().map(|u| c.eval(u)).collect();
+    let pts: Vec<_> = knots.iter().map(|u| c.eval(u).unwrap()).collect();
     let end = EndCondition::Clamped {
-        start: dc.eval(&knots[0]),
-        end: dc.eval(&knots[4]),
+        start: dc.eval(&knots[0]).unwrap(),
+        end: dc.eval(&knots[4]).unwrap(),
     };
     let s = cubic_spline(&knots, &pts, &end).unwrap();
     for k in 0..=8 {
         let u = knots[0].clone() + &(q(k, 8) * &(knots[4].clone() - &knots[0]));
-        assert_eq!(s.eval(&u).unwrap(), c.eval(&u));
+        assert_eq!(s.eval(&u).unwrap(), c.eval(&u).unwrap());
     }
     // Bessel's tangents are exact for parabolas, so the spline is the parabola.
     let par = Polynomial::new(vec![
@@ -182,13 +182,13 @@ fn clamped_spline_reproduces_a_cubic_and_bessel_a_parabola() {
         p2(qi(-3), qi(2)),
         p2(q(1, 2), qi(5)),
     ]);
-    let pts: Vec<_> = knots.iter().map(|u| par.eval(u)).collect();
+    let pts: Vec<_> = knots.iter().map(|u| par.eval(u).unwrap()).collect();
     let s = cubic_spline(&knots, &pts, &EndCondition::Bessel).unwrap();
     let m = cubic_spline_tangents(&knots, &pts, &EndCondition::Bessel).unwrap();
-    let dpar = par.derivative();
-    assert_eq!(m[0], dpar.eval(&knots[0]));
-    assert_eq!(m[4], dpar.eval(&knots[4]));
-    assert_eq!(s.eval(&q(1, 7)).unwrap(), par.eval(&q(1, 7)));
+    let dpar = par.derivative_curve().unwrap();
+    assert_eq!(m[0], dpar.eval(&knots[0]).unwrap());
+    assert_eq!(m[4], dpar.eval(&knots[4]).unwrap());
+    assert_eq!(s.eval(&q(1, 7)).unwrap(), par.eval(&q(1, 7)).unwrap());
 }
 
 #[test]
@@ -199,11 +199,11 @@ fn estimated_tangents_are_exact_on_parabolas() {
         p2(qi(-3), q(2, 3)),
     ]);
     let knots = vec![qi(0), q(1, 5), qi(1), q(3, 2), qi(4)];
-    let pts: Vec<_> = knots.iter().map(|u| par.eval(u)).collect();
-    let d = estimate_tangents(&pts, &knots).unwrap();
-    let dpar = par.derivative();
+    let pts: Vec<_> = knots.iter().map(|u| par.eval(u).unwrap()).collect();
+    let d = estimate_tangents(&knots, &pts).unwrap();
+    let dpar = par.derivative_curve().unwrap();
     for (u, t) in knots.iter().zip(&d) {
-        assert_eq!(*t, dpar.eval(u));
+        assert_eq!(*t, dpar.eval(u).unwrap());
     }
 }
 
@@ -251,7 +251,7 @@ fn bad_input_gives_clear_errors() {
     );
     assert!(e.to_string().contains("strictly increasing"), "{e}");
     // NaN coordinate and NaN knot.
-    let e = hermite(&[p(0.0), p(f64::NAN)], &[p(0.0), p(0.0)], &[0.0, 1.0]).unwrap_err();
+    let e = hermite(&[0.0, 1.0], &[p(0.0), p(f64::NAN)], &[p(0.0), p(0.0)]).unwrap_err();
     assert!(matches!(e, Error::NonFinite { index: 1, .. }), "{e}");
     let e = newton(&[0.0, f64::NAN], &[p(0.0), p(1.0)]).unwrap_err();
     assert!(
@@ -259,7 +259,7 @@ fn bad_input_gives_clear_errors() {
         "{e}"
     );
     // Mismatched lengths.
-    let e = hermite(&pts, &[p(0.0)], &[0.0, 1.0, 2.0]).unwrap_err();
+    let e = hermite(&[0.0, 1.0, 2.0], &pts, &[p(0.0)]).unwrap_err();
     assert!(
         matches!(
             e,
@@ -279,8 +279,8 @@ fn bad_input_gives_clear_errors() {
     for e in [
         vandermonde(&[0.0, 1.0, 0.0], &pts).unwrap_err(),
         newton(&[0.0, 1.0, 0.0], &pts).unwrap_err(),
-        lagrange(&[0.0, 1.0, 0.0], &pts, &0.5).unwrap_err(),
-        aitken(&[0.0, 1.0, 0.0], &pts, &0.5).unwrap_err(),
+        lagrange(&[0.0, 1.0, 0.0], &pts).unwrap_err(),
+        lagrange_basis(&[0.0, 1.0, 0.0], &0.5).unwrap_err(),
     ] {
         assert!(e.to_string().contains("nodes 0 and 2 are equal"), "{e}");
     }
@@ -309,7 +309,7 @@ fn bad_input_gives_clear_errors() {
         ),
         "{e}"
     );
-    let e = hermite(&pts[..1], &pts[..1], &[0.0]).unwrap_err();
+    let e = hermite(&[0.0], &pts[..1], &pts[..1]).unwrap_err();
     assert!(
         matches!(
             e,
@@ -378,12 +378,15 @@ proptest! {
         let rev_pts: Vec<_> = pts.iter().rev().cloned().collect();
         let nw = newton(&rev_nodes, &rev_pts).unwrap();
         prop_assert_eq!(&nw.to_polynomial(), &v);
-        let want = v.eval(&u);
-        prop_assert_eq!(&lagrange(&nodes, &pts, &u).unwrap(), &want);
-        prop_assert_eq!(&aitken(&nodes, &pts, &u).unwrap(), &want);
-        prop_assert_eq!(&nw.eval(&u), &want);
+        let want = v.eval(&u).unwrap();
+        let lg = lagrange(&nodes, &pts).unwrap();
+        prop_assert_eq!(&lg.eval(&u).unwrap(), &want);
+        prop_assert_eq!(&lg.aitken(&u).unwrap(), &want);
+        prop_assert_eq!(&nw.eval(&u).unwrap(), &want);
+        prop_assert_eq!(&lg.to_newton().unwrap().to_polynomial(), &v);
         for (x, p) in nodes.iter().zip(&pts) {
-            prop_assert_eq!(&v.eval(x), p);
+            prop_assert_eq!(&v.eval(x).unwrap(), p);
+            prop_assert_eq!(&lg.eval(x).unwrap(), p);
         }
         let basis = lagrange_basis(&nodes, &u).unwrap();
         prop_assert_eq!(basis.into_iter().fold(qi(0), |a, b| a + b), qi(1));
@@ -410,8 +413,8 @@ proptest! {
         for node in &data {
             let mut d = poly.clone();
             for value in &node.values {
-                prop_assert_eq!(&d.eval(&node.u), value);
-                d = d.derivative();
+                prop_assert_eq!(&d.eval(&node.u).unwrap(), value);
+                d = d.derivative_curve().unwrap();
             }
         }
     }
@@ -562,7 +565,7 @@ proptest! {
 fn extrapolate(c: &CompositeBezier<Q, 2>, u: &Q) -> Point<Q, 2> {
     let ts = [qi(0), q(1, 3), q(2, 3), qi(1)];
     let vals: Vec<_> = ts.iter().map(|t| c.eval(t).unwrap()).collect();
-    vandermonde(&ts, &vals).unwrap().eval(u)
+    vandermonde(&ts, &vals).unwrap().eval(u).unwrap()
 }
 
 #[test]
@@ -574,11 +577,12 @@ fn quadratic_splines_follow_seed_001_section_2() {
         p2(q(3, 2), qi(-1)),
     ]);
     let knots = vec![qi(0), q(1, 2), qi(2), q(9, 4), qi(3)];
-    let pts: Vec<_> = knots.iter().map(|u| par.eval(u)).collect();
-    let c = quadratic_spline(&knots, &pts, &par.derivative().eval(&knots[0])).unwrap();
+    let pts: Vec<_> = knots.iter().map(|u| par.eval(u).unwrap()).collect();
+    let start = par.derivative_curve().unwrap().eval(&knots[0]).unwrap();
+    let c = quadratic_spline(&knots, &pts, &start).unwrap();
     for k in 0..=12 {
         let u = q(k, 4);
-        assert_eq!(c.eval(&u).unwrap(), par.eval(&u));
+        assert_eq!(c.eval(&u).unwrap(), par.eval(&u).unwrap());
     }
     // Closed: an odd number of pieces is always regular, an even one never (B_i telescopes).
     let square = [(0, 0), (2, 0), (2, 2), (0, 2), (0, 0)].map(|(x, y)| p2(qi(x), qi(y)));
