@@ -803,3 +803,80 @@ fn cli_rejects_bad_input_with_exit_code_2() {
         assert!(line.contains(needle), "{args:?}: {line}");
     }
 }
+
+/// The curve traits' properties (`spline_common::curve_properties`) on the Bézier types.
+mod traits {
+    use super::spline_common::curve_properties::{curve_property_tests, eighths, points, Family};
+    use compgeo::spline::{Bezier, CompositeBezier, Reparametrised, Scalar};
+    use proptest::prelude::*;
+
+    /// Control polygons of degree 0 to `max`, coordinates in eighths within ±10.
+    fn polygon(max: usize) -> impl Strategy<Value = Vec<(i64, i64)>> {
+        prop::collection::vec((-80i64..=80, -80i64..=80), 1..=max + 1)
+    }
+
+    struct Bezier6;
+
+    impl Family for Bezier6 {
+        type Data = Vec<(i64, i64)>;
+        type Curve<S: Scalar> = Bezier<S, 2>;
+        const TOLERANCE: f64 = 1e-12;
+        fn data() -> BoxedStrategy<Self::Data> {
+            polygon(6).boxed()
+        }
+        fn build<S: Scalar>(data: &Self::Data) -> Bezier<S, 2> {
+            Bezier::new(points(data)).unwrap()
+        }
+    }
+
+    struct OverAnInterval;
+
+    impl Family for OverAnInterval {
+        /// The polygon, a and b − a in eighths.
+        type Data = (Vec<(i64, i64)>, i64, i64);
+        type Curve<S: Scalar> = Reparametrised<S, 2>;
+        const TOLERANCE: f64 = 1e-12;
+        fn data() -> BoxedStrategy<Self::Data> {
+            (polygon(5), -8i64..=8, 1i64..=16).boxed()
+        }
+        fn build<S: Scalar>((polygon, a, width): &Self::Data) -> Reparametrised<S, 2> {
+            Bezier::new(points(polygon))
+                .unwrap()
+                .reparametrise(eighths(*a), eighths(a + width))
+                .unwrap()
+        }
+    }
+
+    struct Composite;
+
+    impl Family for Composite {
+        /// The first knot, then (gap, polygon) per piece, in eighths.
+        type Data = (i64, Vec<(i64, Vec<(i64, i64)>)>);
+        type Curve<S: Scalar> = CompositeBezier<S, 2>;
+        const TOLERANCE: f64 = 1e-12;
+        fn data() -> BoxedStrategy<Self::Data> {
+            (
+                -8i64..=0,
+                prop::collection::vec((1i64..=12, polygon(4)), 1..=3),
+            )
+                .boxed()
+        }
+        fn build<S: Scalar>((start, pieces): &Self::Data) -> CompositeBezier<S, 2> {
+            let mut knots = vec![*start];
+            for (gap, _) in pieces {
+                knots.push(knots.last().unwrap() + gap);
+            }
+            CompositeBezier::new(
+                knots.into_iter().map(eighths).collect(),
+                pieces.iter().map(|(_, p)| points(p)).collect(),
+            )
+            .unwrap()
+        }
+    }
+
+    curve_property_tests! {
+        bezier_curves_have_the_curve_properties: Bezier6, 48;
+        reparametrised_curves_have_the_curve_properties: OverAnInterval, 32;
+        composite_curves_have_the_curve_properties: Composite, 32;
+    }
+}

@@ -624,3 +624,169 @@ fn least_squares_fit_rejects_underdetermined_data() {
     assert!(fit_bezier(&[0.0, 0.5, 1.0], &pts, 1, &short).is_err());
     assert!(fit_bezier::<f64, 1>(&[], &[], 1, &FitOptions::default()).is_err());
 }
+
+/// The curve traits' properties (`spline_common::curve_properties`) on every interpolation
+/// result: the three polynomial forms, the Hermite curve and the cubic and quadratic splines.
+mod traits {
+    use super::spline_common::curve_properties::{
+        curve_property_tests, eighths, point, points, Family,
+    };
+    use compgeo::spline::{
+        closed_quadratic_spline, cubic_spline, hermite, lagrange, newton, quadratic_spline,
+        vandermonde, CompositeBezier, EndCondition, LagrangeForm, NewtonForm, Polynomial, Scalar,
+    };
+    use proptest::prelude::*;
+
+    type Pairs = Vec<(i64, i64)>;
+
+    /// 2 to `max` distinct nodes in [−1, 2] (eighths), in a random order, and a point per node.
+    fn nodes_and_points(max: usize) -> impl Strategy<Value = (Vec<i64>, Pairs)> {
+        prop::collection::btree_set(-8i64..=16, 2..=max).prop_flat_map(|set| {
+            let nodes: Vec<i64> = set.into_iter().collect();
+            let n = nodes.len();
+            (
+                Just(nodes).prop_shuffle(),
+                prop::collection::vec((-80i64..=80, -80i64..=80), n),
+            )
+        })
+    }
+
+    /// An increasing partition of `pieces` intervals (knots in eighths) starting in [−1, 0],
+    /// with a point per knot.
+    fn knots_and_points(
+        pieces: std::ops::RangeInclusive<usize>,
+    ) -> impl Strategy<Value = (Vec<i64>, Pairs)> {
+        (-8i64..=0, prop::collection::vec(1i64..=12, pieces)).prop_flat_map(|(start, gaps)| {
+            let mut knots = vec![start];
+            for g in &gaps {
+                knots.push(knots.last().unwrap() + g);
+            }
+            let n = knots.len();
+            (
+                Just(knots),
+                prop::collection::vec((-80i64..=80, -80i64..=80), n),
+            )
+        })
+    }
+
+    fn knots<S: Scalar>(k: &[i64]) -> Vec<S> {
+        k.iter().copied().map(eighths).collect()
+    }
+
+    /// A polynomial interpolant built from distinct nodes and points by `$build`.
+    macro_rules! polynomial_family {
+        ($family:ident, $curve:ident, $build:ident) => {
+            struct $family;
+
+            impl Family for $family {
+                type Data = (Vec<i64>, Pairs);
+                type Curve<S: Scalar> = $curve<S, 2>;
+                const TOLERANCE: f64 = 1e-9;
+                fn data() -> BoxedStrategy<Self::Data> {
+                    nodes_and_points(6).boxed()
+                }
+                fn build<S: Scalar>((nodes, pts): &Self::Data) -> $curve<S, 2> {
+                    $build(&knots(nodes), &points(pts)).unwrap()
+                }
+            }
+        };
+    }
+
+    polynomial_family!(Power, Polynomial, vandermonde);
+    polynomial_family!(Newton, NewtonForm, newton);
+    polynomial_family!(Lagrange, LagrangeForm, lagrange);
+
+    struct Hermite;
+
+    impl Family for Hermite {
+        /// Knots, points and tangents.
+        type Data = (Vec<i64>, Pairs, Pairs);
+        type Curve<S: Scalar> = CompositeBezier<S, 2>;
+        const TOLERANCE: f64 = 1e-12;
+        fn data() -> BoxedStrategy<Self::Data> {
+            knots_and_points(1..=4)
+                .prop_flat_map(|(k, p)| {
+                    let n = k.len();
+                    (
+                        Just(k),
+                        Just(p),
+                        prop::collection::vec((-80i64..=80, -80i64..=80), n),
+                    )
+                })
+                .boxed()
+        }
+        fn build<S: Scalar>((k, p, d): &Self::Data) -> CompositeBezier<S, 2> {
+            hermite(&knots(k), &points(p), &points(d)).unwrap()
+        }
+    }
+
+    struct Cubic;
+
+    impl Family for Cubic {
+        /// The end condition (natural, clamped, Bessel, periodic), knots and points.
+        type Data = (usize, Vec<i64>, Pairs);
+        type Curve<S: Scalar> = CompositeBezier<S, 2>;
+        const TOLERANCE: f64 = 1e-11;
+        fn data() -> BoxedStrategy<Self::Data> {
+            (0usize..4, knots_and_points(2..=5))
+                .prop_map(|(kind, (k, mut p))| {
+                    if kind == 3 {
+                        let first = p[0];
+                        *p.last_mut().unwrap() = first;
+                    }
+                    (kind, k, p)
+                })
+                .boxed()
+        }
+        fn build<S: Scalar>((kind, k, p): &Self::Data) -> CompositeBezier<S, 2> {
+            let end = match kind {
+                0 => EndCondition::Natural,
+                1 => EndCondition::Clamped {
+                    start: point((8, -16)),
+                    end: point((0, 24)),
+                },
+                2 => EndCondition::Bessel,
+                _ => EndCondition::Periodic,
+            };
+            cubic_spline(&knots(k), &points(p), &end).unwrap()
+        }
+    }
+
+    struct Quadratic;
+
+    impl Family for Quadratic {
+        /// Closed or open (with a start tangent), knots and points.
+        type Data = (bool, (i64, i64), Vec<i64>, Pairs);
+        type Curve<S: Scalar> = CompositeBezier<S, 2>;
+        const TOLERANCE: f64 = 1e-10;
+        fn data() -> BoxedStrategy<Self::Data> {
+            let tangent = (-40i64..=40, -40i64..=40);
+            let open = (tangent, knots_and_points(1..=4)).prop_map(|(v, (k, p))| (false, v, k, p));
+            // A closed spline needs an odd number of pieces (an even one is singular).
+            let closed = prop_oneof![knots_and_points(3..=3), knots_and_points(5..=5)].prop_map(
+                |(k, mut p)| {
+                    let first = p[0];
+                    *p.last_mut().unwrap() = first;
+                    (true, (0, 0), k, p)
+                },
+            );
+            prop_oneof![open, closed].boxed()
+        }
+        fn build<S: Scalar>((closed, v, k, p): &Self::Data) -> CompositeBezier<S, 2> {
+            if *closed {
+                closed_quadratic_spline(&knots(k), &points(p)).unwrap()
+            } else {
+                quadratic_spline(&knots(k), &points(p), &point(*v)).unwrap()
+            }
+        }
+    }
+
+    curve_property_tests! {
+        power_forms_have_the_curve_properties: Power, 32;
+        newton_forms_have_the_curve_properties: Newton, 32;
+        lagrange_forms_have_the_curve_properties: Lagrange, 32;
+        hermite_curves_have_the_curve_properties: Hermite, 32;
+        cubic_splines_have_the_curve_properties: Cubic, 48;
+        quadratic_splines_have_the_curve_properties: Quadratic, 32;
+    }
+}
