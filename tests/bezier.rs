@@ -413,7 +413,7 @@ fn segment_distance(p: Point<f64, 2>, a: Point<f64, 2>, b: Point<f64, 2>) -> f64
     (p - closest).norm_squared().sqrt()
 }
 
-/// 003 §3.2: moving P₁ of a cubic moves the curve by at most 4/9 of the displacement, because
+/// [RD, §3.2]: moving P₁ of a cubic moves the curve by at most 4/9 of the displacement, because
 /// max B₁³ on [0, 1] is 4/9, attained at t = 1/3.
 #[test]
 fn max_of_b13_on_the_unit_interval_is_four_ninths() {
@@ -441,7 +441,7 @@ fn max_of_b13_on_the_unit_interval_is_four_ninths() {
 
 #[test]
 fn linear_precision_and_the_seeds_conversion_formula() {
-    // 000 §2.8 Obs. 8: a linear polynomial a₀ + a₁t has Bézier points a₀ + (j/n) a₁, here
+    // [PPB, §2.8, Obs. 8]: a linear polynomial a₀ + a₁t has Bézier points a₀ + (j/n) a₁, here
     // elevated to degree 4 they are evenly spaced.
     let line = Bezier::from_monomial(&[qp([(1, 1), (2, 1)]), qp([(4, 1), (-8, 1)])]).unwrap();
     let e = line.elevate_to(4).unwrap();

@@ -86,7 +86,7 @@ fn plane_curvature_is_signed_by_the_turn() {
 
 #[test]
 fn bezier_end_curvature_matches_the_seeds_formula() {
-    // 000 §4.4 Obs. 8: κ at b_0 is (n − 1)/n ‖Δb_0 × Δ²b_0‖ / ‖Δb_0‖³.
+    // [PPB, §4.4, Obs. 8]: κ at b_0 is (n − 1)/n ‖Δb_0 × Δ²b_0‖ / ‖Δb_0‖³.
     let b = Bezier::new(vec![
         Point::new([0.0, 0.0, 0.0]),
         Point::new([1.0, 2.0, 0.5]),

@@ -101,7 +101,7 @@ fn seed_003_c1_exercise_gets_its_partition_exactly() {
 
 #[test]
 fn cr_builder_matches_the_seeds_q2_formula() {
-    // 003 §3.2: Q_2 = λ² (P_n − 2P_{n−1} + P_{n−2}) + 2λ (P_n − P_{n−1}) + P_n.
+    // [RD, §3.2]: Q_2 = λ² (P_n − 2P_{n−1} + P_{n−2}) + 2λ (P_n − P_{n−1}) + P_n.
     let p = |x: i64, y: i64| p2(qi(x), qi(y));
     let first = vec![p(0, 0), p(1, 3), p(4, 2), p(5, 5)];
     let mut curve = CompositeBezier::new(vec![qi(0), qi(2)], vec![first.clone()]).unwrap();

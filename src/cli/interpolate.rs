@@ -38,7 +38,7 @@ enum Method {
         #[command(flatten)]
         data: CurveData,
         /// Tangents at the points, JSON [[x, y], ...] [default: estimated from parabolas
-        /// through three consecutive points, PPB §4.5]
+        /// through three consecutive points, [PPB, §4.5]]
         #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
         tangents: Option<String>,
     },

@@ -32,6 +32,7 @@
 
 use super::bezier::nearly_equal;
 use super::curve::CurveDerivative;
+use super::interpolate::{eliminate_below, pivot};
 use super::scalar::{pow2_scale, validate_points, Point, Scalar};
 use super::{Bezier, CompositeBezier};
 use crate::{Error, Result};
@@ -293,24 +294,15 @@ fn not_regular() -> Error {
 }
 
 /// Whether `det[x_1, ..., x_D] < 0`, by Gaussian elimination in S (exact for rationals; the
-/// pivot is the first nonzero entry, or the largest one for rounded scalars).
+/// pivot is the first nonzero entry, or the largest one for rounded scalars): the sign of
+/// the product of the pivots, flipped once per row swap.
 fn determinant_is_negative<S: Scalar, const D: usize>(columns: &[Point<S, D>]) -> bool {
     let mut a: Vec<Vec<S>> = (0..D)
         .map(|row| columns.iter().map(|c| c[row].clone()).collect())
         .collect();
     let mut negative = false;
     for col in 0..D {
-        let pivot = if S::EXACT {
-            (col..D).find(|&r| !a[r][col].is_zero())
-        } else {
-            (col..D).filter(|&r| !a[r][col].is_zero()).max_by(|&r, &s| {
-                a[r][col]
-                    .abs()
-                    .partial_cmp(&a[s][col].abs())
-                    .unwrap_or(std::cmp::Ordering::Equal)
-            })
-        };
-        let Some(p) = pivot else {
+        let Some(p) = pivot(&a, col) else {
             return false;
         };
         if p != col {
@@ -320,14 +312,7 @@ fn determinant_is_negative<S: Scalar, const D: usize>(columns: &[Point<S, D>]) -
         if a[col][col] < S::zero() {
             negative = !negative;
         }
-        let (top, rest) = a.split_at_mut(col + 1);
-        let pivot_row = &top[col];
-        for row in rest {
-            let factor = row[col].clone() / &pivot_row[col];
-            for (x, p) in row[col..].iter_mut().zip(&pivot_row[col..]) {
-                *x -= factor.clone() * p;
-            }
-        }
+        eliminate_below(&mut a, col, |_, _| {});
     }
     negative
 }

@@ -21,35 +21,13 @@ pub(crate) fn solve_dense<S: Scalar, const D: usize>(
 ) -> Option<Vec<Point<S, D>>> {
     let n = a.len();
     for col in 0..n {
-        let pivot = if S::EXACT {
-            (col..n).find(|&r| !a[r][col].is_zero())?
-        } else {
-            let best = (col..n).max_by(|&r, &s| {
-                a[r][col]
-                    .abs()
-                    .partial_cmp(&a[s][col].abs())
-                    .unwrap_or(std::cmp::Ordering::Equal)
-            })?;
-            if a[best][col].is_zero() {
-                return None;
-            }
-            best
-        };
+        let pivot = pivot(&a, col)?;
         a.swap(col, pivot);
         b.swap(col, pivot);
-        let (top, rest) = a.split_at_mut(col + 1);
-        let pivot_row = &top[col];
-        for (offset, row) in rest.iter_mut().enumerate() {
-            if row[col].is_zero() {
-                continue;
-            }
-            let factor = row[col].clone() / &pivot_row[col];
-            for (x, p) in row[col..].iter_mut().zip(&pivot_row[col..]) {
-                *x -= factor.clone() * p;
-            }
-            let delta = b[col].clone() * &factor;
-            b[col + 1 + offset] -= &delta;
-        }
+        eliminate_below(&mut a, col, |row, factor| {
+            let delta = b[col].clone() * factor;
+            b[row] -= &delta;
+        });
     }
     for col in (0..n).rev() {
         let mut x = b[col].clone();
@@ -60,6 +38,47 @@ pub(crate) fn solve_dense<S: Scalar, const D: usize>(
         b[col] = x / &a[col][col];
     }
     Some(b)
+}
+
+/// The pivot row for column `col` of a square matrix whose columns before `col` are
+/// eliminated: for exact scalars the first row from `col` on with a nonzero entry, for rounded
+/// ones the row of largest magnitude (partial pivoting); `None` if the column is zero there
+/// (the matrix is singular).
+pub(crate) fn pivot<S: Scalar>(a: &[Vec<S>], col: usize) -> Option<usize> {
+    let rows = col..a.len();
+    let best = if S::EXACT {
+        rows.into_iter().find(|&r| !a[r][col].is_zero())?
+    } else {
+        rows.max_by(|&r, &s| {
+            a[r][col]
+                .abs()
+                .partial_cmp(&a[s][col].abs())
+                .unwrap_or(std::cmp::Ordering::Equal)
+        })?
+    };
+    (!a[best][col].is_zero()).then_some(best)
+}
+
+/// Subtracts multiples of row `col` (whose entry in column `col` is nonzero) from the rows
+/// below it so that column `col` is zero there, and calls `each(row, factor)` for every row
+/// changed, so that the caller can apply the same step to its right-hand sides.
+pub(crate) fn eliminate_below<S: Scalar>(
+    a: &mut [Vec<S>],
+    col: usize,
+    mut each: impl FnMut(usize, &S),
+) {
+    let (top, rest) = a.split_at_mut(col + 1);
+    let pivot_row = &top[col];
+    for (offset, row) in rest.iter_mut().enumerate() {
+        if row[col].is_zero() {
+            continue;
+        }
+        let factor = row[col].clone() / &pivot_row[col];
+        for (x, p) in row[col..].iter_mut().zip(&pivot_row[col..]) {
+            *x -= factor.clone() * p;
+        }
+        each(col + 1 + offset, &factor);
+    }
 }
 
 /// Thomas' algorithm for a tridiagonal system with point right-hand sides: row `i` is
