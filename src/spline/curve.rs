@@ -144,8 +144,9 @@ pub trait CurveDerivative<S: Scalar, const D: usize>: Curve<S, D> {
 
     /// The r-th derivative at `t` (order 0 is the point itself).
     ///
-    /// The default differentiates the curve r times; types with a direct scheme (the
-    /// tetrahedral algorithm of Bézier curves) override it.
+    /// The default differentiates the curve r times and evaluates the last derivative (which
+    /// has the same domain, so it checks `t` as [`Curve::eval`] does); types with a direct
+    /// scheme (the tetrahedral algorithm of Bézier curves) override it.
     ///
     /// # Errors
     ///
@@ -154,7 +155,6 @@ pub trait CurveDerivative<S: Scalar, const D: usize>: Curve<S, D> {
         if r == 0 {
             return self.eval(t);
         }
-        self.domain().check(t, "t")?;
         self.derivative_curve()?.derivative_at(t, r - 1)
     }
 }
