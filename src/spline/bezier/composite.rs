@@ -147,16 +147,6 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
             .map(|(r, d)| d / &power(&h, r))
             .collect()
     }
-
-    /// The local parameter of `u` on piece `i`.
-    fn local(&self, i: usize, u: &S) -> S {
-        (u.clone() - &self.partition[i]) / self.width(i)
-    }
-
-    /// The length `u_{i+1} − u_i` of interval `i`.
-    fn width(&self, i: usize) -> S {
-        self.partition[i + 1].clone() - &self.partition[i]
-    }
 }
 
 /// A composite curve is defined on its partition.
@@ -275,6 +265,18 @@ impl<S: Scalar, const D: usize> Subsegment<S, D> for CompositeBezier<S, D> {
             });
         }
         Ok(CompositeBezier { partition, pieces })
+    }
+}
+
+impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
+    /// The local parameter of `u` on piece `i`.
+    fn local(&self, i: usize, u: &S) -> S {
+        (u.clone() - &self.partition[i]) / self.width(i)
+    }
+
+    /// The length `u_{i+1} − u_i` of interval `i`.
+    fn width(&self, i: usize) -> S {
+        self.partition[i + 1].clone() - &self.partition[i]
     }
 }
 

@@ -201,7 +201,24 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         }
         Ok(self.blossom_unchecked(args))
     }
+}
 
+/// The piece of a Bézier curve over [a, b] in the global parameter: [`Bezier::restrict`] to
+/// [a, b], reparametrised over [a, b] (Θ(n³D)).
+impl<S: Scalar, const D: usize> Subsegment<S, D> for Bezier<S, D> {
+    type Segment = Reparametrised<S, D>;
+
+    fn subsegment(&self, a: &S, b: &S) -> Result<Reparametrised<S, D>> {
+        check_interval(&self.domain(), a, b)?;
+        Ok(Reparametrised::new_unchecked(
+            self.restrict(a, b)?,
+            a.clone(),
+            b.clone(),
+        ))
+    }
+}
+
+impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// De Casteljau's algorithm without validation (t finite), counting.
     pub(super) fn de_casteljau_unchecked<C: Counter>(&self, t: &S, counter: &mut C) -> Point<S, D> {
         let mut q = self.control().to_vec();
@@ -231,21 +248,6 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         let mut q = self.control().to_vec();
         de_casteljau_levels(&mut q, args, &mut NoCount);
         q.swap_remove(0)
-    }
-}
-
-/// The piece of a Bézier curve over [a, b] in the global parameter: [`Bezier::restrict`] to
-/// [a, b], reparametrised over [a, b] (Θ(n³D)).
-impl<S: Scalar, const D: usize> Subsegment<S, D> for Bezier<S, D> {
-    type Segment = Reparametrised<S, D>;
-
-    fn subsegment(&self, a: &S, b: &S) -> Result<Reparametrised<S, D>> {
-        check_interval(&self.domain(), a, b)?;
-        Ok(Reparametrised::new_unchecked(
-            self.restrict(a, b)?,
-            a.clone(),
-            b.clone(),
-        ))
     }
 }
 
