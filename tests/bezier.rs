@@ -807,7 +807,10 @@ fn cli_rejects_bad_input_with_exit_code_2() {
 /// The curve traits' properties (`spline_common::curve_properties`) on the Bézier types.
 mod traits {
     use super::spline_common::curve_properties::{curve_property_tests, eighths, points, Family};
-    use compgeo::spline::{Bezier, CompositeBezier, Reparametrised, Scalar};
+    use super::Q;
+    use compgeo::spline::{
+        Bezier, CompositeBezier, Curve, Point, Reparametrised, Scalar, Subsegment,
+    };
     use proptest::prelude::*;
 
     /// Control polygons of degree 0 to `max`, coordinates in eighths within ±10.
@@ -850,7 +853,10 @@ mod traits {
     struct Composite;
 
     impl Family for Composite {
-        /// The first knot, then (gap, polygon) per piece, in eighths.
+        /// The first knot, then (gap, polygon) per piece, in eighths; each piece after the
+        /// first starts where the previous one ends (a C⁰ curve: where pieces do not meet, a
+        /// subsegment ending at the knot ends with the left piece, see
+        /// `subsegments_end_with_the_left_piece_where_pieces_do_not_meet`).
         type Data = (i64, Vec<(i64, Vec<(i64, i64)>)>);
         type Curve<S: Scalar> = CompositeBezier<S, 2>;
         const TOLERANCE: f64 = 1e-12;
@@ -859,6 +865,13 @@ mod traits {
                 -8i64..=0,
                 prop::collection::vec((1i64..=12, polygon(4)), 1..=3),
             )
+                .prop_map(|(start, mut pieces)| {
+                    for i in 1..pieces.len() {
+                        let end = *pieces[i - 1].1.last().unwrap();
+                        pieces[i].1[0] = end;
+                    }
+                    (start, pieces)
+                })
                 .boxed()
         }
         fn build<S: Scalar>((start, pieces): &Self::Data) -> CompositeBezier<S, 2> {
@@ -872,6 +885,28 @@ mod traits {
             )
             .unwrap()
         }
+    }
+
+    /// At an interior knot where the pieces do not meet the curve is the right piece (as
+    /// `derivative_at` is), but a subsegment ending there is the left piece up to its end:
+    /// the proptest's reproduction on closed intervals holds wherever the curve is
+    /// continuous.
+    #[test]
+    fn subsegments_end_with_the_left_piece_where_pieces_do_not_meet() {
+        let p = |x: i64, y: i64| Point::new([Q::from_i64(x), Q::from_i64(y)]);
+        let (zero, one, two) = (Q::from_i64(0), Q::from_i64(1), Q::from_i64(2));
+        let c = CompositeBezier::new(
+            vec![zero.clone(), one.clone(), two.clone()],
+            vec![vec![p(0, 0), p(1, 1)], vec![p(5, 5), p(6, 4)]],
+        )
+        .unwrap();
+        assert_eq!(c.eval(&one).unwrap(), p(5, 5));
+        let left = c.subsegment(&zero, &one).unwrap();
+        assert_eq!(left.partition(), [zero.clone(), one.clone()]);
+        assert_eq!(left.eval(&one).unwrap(), p(1, 1));
+        let right = c.subsegment(&one, &two).unwrap();
+        assert_eq!(right.pieces(), &c.pieces()[1..]);
+        assert_eq!(right.eval(&one).unwrap(), p(5, 5));
     }
 
     curve_property_tests! {

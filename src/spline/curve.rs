@@ -166,7 +166,9 @@ pub trait Subsegment<S: Scalar, const D: usize>: Curve<S, D> {
     type Segment: Curve<S, D>;
 
     /// The piece over [a, b], a < b both in the domain: a curve that agrees with this one at
-    /// every u ∈ [a, b] (the parameter is kept, see [`Curve`]).
+    /// every u ∈ [a, b] (the parameter is kept, see [`Curve`]). The one exception is a
+    /// piecewise curve whose pieces do not meet at an interior knot b: the curve takes the
+    /// right piece's value there, the piece over [a, b] ends with the left piece's end.
     ///
     /// # Errors
     ///

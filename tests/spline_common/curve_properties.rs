@@ -12,8 +12,11 @@
 //!    property). Both also reject NaN.
 //! 2. **Subsegments reproduce the curve exactly**: cut at c, the pieces over [a, c] and
 //!    [c, b] evaluate with `==` to the curve at every sample on their side, and their Bézier
-//!    polygons meet at the curve's point at c. Empty, reversed and (for bounded domains)
-//!    out-of-domain intervals are errors, and so is evaluation outside a bounded domain.
+//!    polygons meet at the curve's point at c (the families build continuous curves; where
+//!    a piecewise curve's pieces do not meet, a piece ending at the knot ends with the left
+//!    piece, which `tests/bezier.rs` checks on its own). Empty, reversed and (for bounded
+//!    domains) out-of-domain intervals are errors, and so is evaluation outside a bounded
+//!    domain.
 //! 3. **Derivatives are differences of blossoms**: on each polynomial piece `B` of degree n
 //!    over [a_k, b_k] (from the subsegment over [a, b]) at the local parameter s,
 //!    `p'(t) = n (B[s, …, s, 1] − B[s, …, s, 0]) / (b_k − a_k)` and

@@ -225,7 +225,8 @@ impl<S: Scalar, const D: usize> CurveDerivative<S, D> for CompositeBezier<S, D> 
 
 /// The piece over [a, b] is the composite curve over `a, u_{i+1}, …, u_j, b` (the knots
 /// strictly between a and b): the pieces strictly inside are kept, the first and the last are
-/// restricted by blossoming.
+/// restricted by blossoming. A knot b belongs to the piece on its left here (the curve's
+/// value at b is the right piece's, which differs where the pieces do not meet).
 impl<S: Scalar, const D: usize> Subsegment<S, D> for CompositeBezier<S, D> {
     type Segment = CompositeBezier<S, D>;
 
