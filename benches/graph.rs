@@ -159,9 +159,7 @@ fn mst(c: &mut Criterion) {
         group.throughput(Throughput::Elements(list.edges.len() as u64));
         for a in MstAlgorithm::ALL {
             group.bench_function(BenchmarkId::new(a.name(), n), |b| {
-                b.iter(|| {
-                    spanning_forest(black_box(&ours), a).weight
-                })
+                b.iter(|| spanning_forest(black_box(&ours), a).weight)
             });
         }
         group.bench_function(BenchmarkId::new("petgraph-kruskal", n), |b| {

@@ -1,8 +1,9 @@
-//! Cubic Bézier evaluation throughput: compgeo's generic `Bezier<f64, 2>::eval` against a
-//! hand-written `f64` cubic (the same Horner-type scheme of 000 §2.3 Obs. 4 on a fixed array,
-//! and the plain Bernstein sum), kurbo's `CubicBez::eval` and lyon_geom's
-//! `CubicBezierSegment::sample`, over 10⁶ parameters in [0, 1]; then one evaluation by de
-//! Casteljau (Θ(n²)) and by Horner (Θ(n)) over log-spaced degrees n.
+//! Cubic Bézier evaluation throughput: compgeo's generic `Bezier<f64, 2>` evaluation
+//! (`Curve::eval`) against a hand-written `f64` cubic (the same Horner-type scheme of
+//! [PPB, §2.3, Obs. 4] on a fixed array, and the plain Bernstein sum), kurbo's
+//! `CubicBez::eval` and lyon_geom's `CubicBezierSegment::sample`, over 10⁶ parameters in
+//! [0, 1]; then one evaluation by de Casteljau (Θ(n²)) and by Horner (Θ(n)) over log-spaced
+//! degrees n.
 //!
 //! Measured on 2 cores shared with other builds (load 3–8): criterion's times move by ±30%
 //! between runs of the group, so the ratios to kurbo below are each from one run. Run with
@@ -11,7 +12,7 @@
 //! 1.16×, lyon_geom 1.05×; another, kurbo 3.14 ms: 0.95×, 1.08×, 0.97×, 1.02×, 1.10×, 0.97×.
 //! An interleaved harness (each variant in turn, 200 rounds, minimum time) gave kurbo
 //! 1.98 ms, `eval` 1.01×, `at` 1.01×, `eval_each` 0.96×, hand-written 0.97×, `horner_with`
-//! 0.90×. Before the changes of `spline/horner.rs`, `eval` was 1.58× and `eval_each` 1.33×
+//! 0.90×. Before the changes of `spline/bezier/horner.rs`, `eval` was 1.58× and `eval_each` 1.33×
 //! (quiet machine): the result's finiteness check went through the stack and integer
 //! registers, the control points were reloaded from the heap at every call, results of
 //! out-of-line paths were merged through memory, and `eval_each` spent a pre-pass per chunk
@@ -19,7 +20,7 @@
 
 use compgeo::count::NoCount;
 use compgeo::gen::{points, PointKind};
-use compgeo::spline::{Bezier, Finite, Point};
+use compgeo::spline::{Bezier, Curve, Finite, Point};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use kurbo::ParamCurve;
 use std::hint::black_box;

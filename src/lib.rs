@@ -18,7 +18,7 @@
 //! | [`calipers`] | rotating calipers on a [`ConvexPolygon`](calipers::ConvexPolygon): antipodal pairs, diameter, width, minimum-area rectangle; the diameter by brute force | `src/calipers/`, one file per problem |
 //! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the course's divide and conquer, Lawson's flips, Fortune's sweep), the exact checker, the Voronoi diagram and its clipping | `src/delaunay/`, one file per builder |
 //! | [`proximity`] | closest pair (on the Delaunay triangulation, by divide and conquer), nearest search, all nearest neighbours, Euclidean MST, largest empty circle | `src/proximity/`, one file per problem |
-//! | [`spline`] | Bernstein basis and Bézier curves, interpolation, generic over the scalar (`f64`, exact rationals) and the dimension | `src/spline/` |
+//! | [`spline`] | curves, generic over the scalar (`f64`, exact rationals) and the dimension: the curve traits, [`spline::bezier`] (Bernstein basis, Bézier, reparametrised and composite curves, one algorithm per file), [`spline::interpolate`] (polynomial, Hermite and spline interpolation, least squares), Frenet frames | `src/spline/`: `bezier/` and `interpolate/` one algorithm per file |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command | `src/cli/` |
 //!
 //! Every algorithm's own file is in the table below.
@@ -88,10 +88,10 @@
 //! | `nearest/delaunay-walk`: [`proximity::NearestSearch::nearest`] | O(n log n) to build; O(√n) expected steps per query on uniform points | O(n) | distance evaluations: one per neighbour looked at during a walk | [RD, §2.4] | `src/proximity/nearest.rs` |
 //! | `emst/delaunay-kruskal`: [`proximity::euclidean_mst`] | O(n log n) expected | O(n) | distance evaluations: those of the exact length sort, after the triangulation's tests | [RD, §2.4] | `src/proximity/emst.rs` |
 //! | `empty-circle/voronoi`: [`proximity::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case | O(n) | orientation tests: the hull tests of the Voronoi vertices, O(log h) each | [RD, §2.4] | `src/proximity/empty_circle.rs` |
-//! | `bezier/de-casteljau`: [`spline::Bezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations per point | [PPB, §2.3] | `src/spline/bezier.rs` |
-//! | `bezier/horner`: [`spline::Bezier::horner`] | Θ(nD) | O(D) | arithmetic operations: n + 1 point operations per point | [PPB, §2.3] | `src/spline/bezier.rs` |
-//! | `spline/cubic-natural`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: exactly 7n + 4 point operations | [RD, §3.1] | `src/spline/cubic_spline.rs` |
-//! | `spline/cubic-periodic`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: Θ(n) point operations | [RD, §3.1] | `src/spline/cubic_spline.rs` |
+//! | `bezier/de-casteljau`: [`spline::Bezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations per point | [PPB, §2.3] | `src/spline/bezier/de_casteljau.rs` |
+//! | `bezier/horner`: [`spline::Bezier::horner`] | Θ(nD) | O(D) | arithmetic operations: n + 1 point operations per point | [PPB, §2.3] | `src/spline/bezier/horner.rs` |
+//! | `spline/cubic-natural`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: exactly 7n + 4 point operations | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
+//! | `spline/cubic-periodic`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: Θ(n) point operations | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
 //! <!-- /algorithms -->
 //!
 //! The curve kernels (each generic over the scalar and the dimension):
@@ -99,12 +99,12 @@
 //! | algorithm | bound |
 //! |---|---|
 //! | [`spline::vandermonde`], [`spline::vandermonde_hermite`] | Θ(n³) for n conditions (dense elimination) |
-//! | [`spline::lagrange`], [`spline::aitken`] | Θ(n²) per evaluation, n nodes |
+//! | [`spline::lagrange`] (evaluation by the basis, or [`spline::LagrangeForm::aitken`]) | Θ(n²) per evaluation, n nodes |
 //! | [`spline::newton`], [`spline::newton_hermite`] | Θ(n²) divided differences, Θ(n) per evaluation |
 //! | [`spline::hermite`], [`spline::quadratic_spline`], [`spline::closed_quadratic_spline`] | Θ(n) |
 //! | [`spline::fit_bezier`] | Θ(m n² + n³) for m points, degree n |
 //! | [`spline::frenet_frame`] | Θ(d³) in R^d |
-//! | [`spline::Bezier::split`], [`spline::Bezier::blossom`], [`spline::Bezier::derivative_at`] | Θ(n²) |
+//! | [`spline::Bezier::split`], [`spline::Bezier::blossom`], [`spline::CurveDerivative::derivative_at`] of a Bézier curve | Θ(n²) |
 //! | [`spline::Bezier::elevate_to`] (degree n to m) | Θ(mn) |
 //! | [`spline::Bezier::flatten`] | Θ(s·n²) for s segments, s = O(√(bound/tolerance)) |
 //! | [`spline::intersections`] | O(k·d·(m² + n²)) for k crossings found at depth d |

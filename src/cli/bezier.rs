@@ -10,8 +10,9 @@ use super::input::parse_number_arrays;
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
-use crate::spline::{parse_scalar, Bezier, ParseScalar, Point, Scalar};
-use clap::{Args, Subcommand, ValueEnum};
+use crate::spline::bezier::{evaluate_with, Evaluation};
+use crate::spline::{parse_scalar, Bezier, CurveDerivative, ParseScalar, Point, Scalar};
+use clap::{Args, Subcommand};
 use num_rational::BigRational;
 use serde_json::{json, Value};
 use std::io::Read;
@@ -33,9 +34,9 @@ enum Op {
         /// The parameter: a decimal or a fraction such as 1/3
         #[arg(long = "t", value_name = "T", allow_hyphen_values = true)]
         t: String,
-        /// de-casteljau (n(n+1)/2 affine combinations) or horner (n + 1 steps)
-        #[arg(long, value_enum, default_value = "de-casteljau")]
-        algorithm: EvalAlgorithm,
+        #[arg(long, default_value = "de-casteljau", help = Evaluation::names(),
+            long_help = Evaluation::help())]
+        algorithm: Evaluation,
     },
     /// The control points of the two pieces over [0, t] and [t, 1]
     Split {
@@ -76,15 +77,6 @@ struct CurveArgs {
     /// Compute in exact rationals and print every coordinate as a string such as "47/18"
     #[arg(long)]
     exact: bool,
-}
-
-/// The evaluation schemes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum EvalAlgorithm {
-    /// de Casteljau's algorithm, Θ(n²)
-    DeCasteljau,
-    /// The Horner-type scheme of 000 §2.3 Obs. 4, Θ(n)
-    Horner,
 }
 
 /// Runs `compgeo bezier`.
@@ -170,15 +162,8 @@ fn run_typed<S: JsonScalar, const D: usize>(
         Op::Eval { t, algorithm, .. } => {
             let t: S = parse_scalar(t, "t")?;
             let mut counts = Counts::default();
-            let p = match algorithm {
-                EvalAlgorithm::DeCasteljau => b.de_casteljau_with(&t, &mut counts)?,
-                EvalAlgorithm::Horner => b.horner_with(&t, &mut counts)?,
-            };
-            let name = match algorithm {
-                EvalAlgorithm::DeCasteljau => "de-casteljau",
-                EvalAlgorithm::Horner => "horner",
-            };
-            json!({"point": point(&p)?, "degree": n, "algorithm": name, "counts": counts})
+            let p = evaluate_with(&b, &t, *algorithm, &mut counts)?;
+            json!({"point": point(&p)?, "degree": n, "algorithm": algorithm.name(), "counts": counts})
         }
         Op::Split { t, .. } => {
             let c: S = parse_scalar(t, "t")?;

@@ -15,8 +15,8 @@ use super::input::parse_number_arrays;
 use super::output::print_json;
 use super::CliError;
 use crate::spline::{
-    aitken, cubic_spline_tangents, estimate_tangents, hermite, lagrange, lagrange_basis, newton,
-    newton_hermite, parameterise, parse_scalar, CompositeBezier, EndCondition, HermiteNode,
+    cubic_spline_tangents, estimate_tangents, hermite, lagrange, newton, newton_hermite,
+    parameterise, parse_scalar, CompositeBezier, Curve, EndCondition, HermiteNode,
     Parameterisation, Point,
 };
 use clap::{Args, Subcommand, ValueEnum};
@@ -38,7 +38,7 @@ enum Method {
         #[command(flatten)]
         data: CurveData,
         /// Tangents at the points, JSON [[x, y], ...] [default: estimated from parabolas
-        /// through three consecutive points, 000 §4.5]
+        /// through three consecutive points, [PPB, §4.5]]
         #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
         tangents: Option<String>,
     },
@@ -170,9 +170,9 @@ fn run_typed<S: JsonScalar, const D: usize>(
             let knots = knots_of(data, &pts)?;
             let tangents = match tangents {
                 Some(text) => read_points::<S, D>(text, "tangent coordinate")?,
-                None => estimate_tangents(&pts, &knots)?,
+                None => estimate_tangents(&knots, &pts)?,
             };
-            let curve = hermite(&pts, &tangents, &knots)?;
+            let curve = hermite(&knots, &pts, &tangents)?;
             composite_json(&curve, &tangents)?
         }
         Method::Spline {
@@ -202,7 +202,7 @@ fn run_typed<S: JsonScalar, const D: usize>(
                 }
             };
             let tangents = cubic_spline_tangents(&knots, &pts, &condition)?;
-            let curve = hermite(&pts, &tangents, &knots)?;
+            let curve = hermite(&knots, &pts, &tangents)?;
             composite_json(&curve, &tangents)?
         }
         Method::Lagrange {
@@ -210,6 +210,7 @@ fn run_typed<S: JsonScalar, const D: usize>(
             aitken: use_aitken,
         } => {
             let nodes = read_scalars::<S>(&data.nodes, "node")?;
+            let form = lagrange(&nodes, &pts)?;
             let at = match &data.at {
                 Some(text) => read_scalars::<S>(text, "u")?,
                 None => Vec::new(),
@@ -218,17 +219,12 @@ fn run_typed<S: JsonScalar, const D: usize>(
             let mut bases = Vec::with_capacity(at.len());
             for u in &at {
                 let p = if *use_aitken {
-                    aitken(&nodes, &pts, u)?
+                    form.aitken(u)?
                 } else {
-                    lagrange(&nodes, &pts, u)?
+                    form.eval(u)?
                 };
                 values.push(point(&p)?);
-                let basis = lagrange_basis(&nodes, u)?;
-                bases.push(scalars(&basis)?);
-            }
-            if at.is_empty() {
-                // Validate the data even when nothing is evaluated.
-                newton(&nodes, &pts)?;
+                bases.push(scalars(&form.basis(u)?)?);
             }
             json!({
                 "algorithm": if *use_aitken { "aitken" } else { "lagrange" },
@@ -270,7 +266,7 @@ fn run_typed<S: JsonScalar, const D: usize>(
             };
             let values = at
                 .iter()
-                .map(|u| point(&form.eval(u)))
+                .map(|u| point(&form.eval(u)?))
                 .collect::<Result<Vec<_>, _>>()?;
             json!({
                 "nodes": scalars(form.nodes())?,

@@ -9,8 +9,8 @@
 //! and a `run` function; adding one means a variant in the private `Command` enum and an arm
 //! in `run`. Everything here is private to the crate except [`main`], which the binary calls:
 //! the command line is a front end, not a library API.
-//! Commands read their input with [`input`] (points and graphs), print with
-//! [`output::print_json`], and report problems as [`CliError`].
+//! Commands read their input with `input` (points and graphs), print with
+//! `output::print_json`, and report problems as `CliError`.
 
 mod bezier;
 mod delaunay;

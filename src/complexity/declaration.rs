@@ -142,6 +142,11 @@ pub fn declarations() -> Vec<&'static Declaration> {
             .map(|a| a.declaration()),
     );
     all.extend(crate::proximity::DECLARATIONS);
+    all.extend(
+        crate::spline::BezierEvaluation::ALL
+            .iter()
+            .map(|a| a.declaration()),
+    );
     all.extend(crate::spline::DECLARATIONS);
     all
 }

@@ -1,9 +1,13 @@
 //! The Frenet frame, curvature and torsion of a parametric curve, and G¹ / G² checks at the
 //! joins of composite curves.
 //!
-//! Seed 003 §3.1 ("Triedro de Frenet": `t = α'/‖α'‖`, `b = α'×α''/‖α'×α''‖`, `n = b×t`;
+//! The problem: the moving frame and the curvatures of a curve at a parameter, from its
+//! derivatives there. The idea: orthogonalise the derivatives `x', x'', …` (Gram–Schmidt); the
+//! lengths of the residuals give the curvatures.
+//!
+//! Follows [RD, §3.1] ("Triedro de Frenet": `t = α'/‖α'‖`, `b = α'×α''/‖α'×α''‖`, `n = b×t`;
 //! `κ = ‖α'×α''‖/‖α'‖³`, `τ = det(α', α'', α''')/‖α'×α''‖²`; Def. 3.2–3.3: G¹ is a continuous
-//! unit tangent, G² a continuous curvature vector `κ n`); seed 000 §7.6 (the frame in R^d by
+//! unit tangent, G² a continuous curvature vector `κ n`) and [PPB, §7.6] (the frame in R^d by
 //! Gram–Schmidt of `x', ..., x⁽ᵈ⁾` with `f_iᵀ x⁽ⁱ⁾ > 0`, positively oriented, and the
 //! curvatures `κ_1, ..., κ_{d−1}`).
 //!
@@ -19,9 +23,18 @@
 //!
 //! The curvature vector `κ n = (‖x'‖² x'' − (x'·x'') x') / ‖x'‖⁴` needs no square root, so
 //! [`curvature_vector`] is exact with rationals and the G² check built on it too.
+//!
+//! # Complexity
+//!
+//! Θ(r²D + D³) for a frame from r ≤ D derivatives in R^D (Gram–Schmidt and one determinant),
+//! plus the derivatives themselves (Θ(D·n²D) for a Bézier curve of degree n); Θ(D) for a
+//! curvature vector, Θ(n²D) for a G² check of pieces of degree n.
 
-use super::composite::{nearly_equal, pow2_scale};
-use super::{Bezier, CompositeBezier, Point, Scalar};
+use super::bezier::nearly_equal;
+use super::curve::CurveDerivative;
+use super::interpolate::{eliminate_below, pivot};
+use super::scalar::{pow2_scale, validate_points, Point, Scalar};
+use super::{Bezier, CompositeBezier};
 use crate::{Error, Result};
 
 /// The Frenet frame of a curve in R^D at one parameter: orthonormal vectors `f_1, ..., f_k`
@@ -80,7 +93,7 @@ impl<const D: usize> FrenetFrame<D> {
 /// The Frenet frame and curvatures from the derivatives `x', x'', ..., x⁽ʳ⁾` of a curve at one
 /// parameter (at most D of them are used).
 ///
-/// The idea (seed 000 §7.6): Gram–Schmidt orthogonalisation of the derivatives gives the frame;
+/// The idea ([PPB, §7.6]): Gram–Schmidt orthogonalisation of the derivatives gives the frame;
 /// the lengths `E_i` of the orthogonal residuals give the curvatures `κ_i = E_{i+1}/(E_1 E_i)`.
 /// The frame stops at the first derivative that depends on the previous ones. See the module
 /// doc for what is exact.
@@ -109,7 +122,7 @@ impl<const D: usize> FrenetFrame<D> {
 pub fn frenet_frame<S: Scalar, const D: usize>(
     derivatives: &[Point<S, D>],
 ) -> Result<FrenetFrame<D>> {
-    super::validate_points(derivatives, "derivatives")?;
+    validate_points(derivatives, "derivatives")?;
     let r = derivatives.len().min(D);
     // Scaling the curve by s scales every curvature by 1/s: work at unit scale in f64.
     let refs: Vec<&Point<S, D>> = derivatives[..r].iter().collect();
@@ -217,7 +230,7 @@ pub fn curvature_vector<S: Scalar, const D: usize>(
     first: &Point<S, D>,
     second: &Point<S, D>,
 ) -> Result<Point<S, D>> {
-    super::validate_points(&[first.clone(), second.clone()], "derivatives")?;
+    validate_points(&[first.clone(), second.clone()], "derivatives")?;
     // κn of the curve scaled by s is κn / s: compute at unit scale (f64), then scale back.
     let s = pow2_scale(&[first, second]);
     let (first, second) = (first.clone() * &s, second.clone() * &s);
@@ -230,7 +243,7 @@ pub fn curvature_vector<S: Scalar, const D: usize>(
 }
 
 /// Whether pieces `i − 1` and `i` of a composite curve meet with G² continuity at `u_i`
-/// (seed 003 Def. 3.3): G¹ and equal curvature vectors `κ n` from both sides.
+/// ([RD, §3.1, Def. 3.3]): G¹ and equal curvature vectors `κ n` from both sides.
 ///
 /// `tolerance` is relative as in [`CompositeBezier::join`]; with rationals pass zero for an
 /// exact answer.
@@ -242,7 +255,7 @@ pub fn curvature_vector<S: Scalar, const D: usize>(
 /// ```
 /// use compgeo::spline::{is_g2_join, CompositeBezier, Point};
 ///
-/// // Seed 003 §3.1: (t, 0, 0) then (2t, 4t², 0) is G¹ but neither C¹ nor G².
+/// // [RD, §3.1]: (t, 0, 0) then (2t, 4t², 0) is G¹ but neither C¹ nor G².
 /// let p = |x: f64, y: f64| Point::new([x, y, 0.0]);
 /// let c = CompositeBezier::new(
 ///     vec![-1.0, 0.0, 0.5],
@@ -281,24 +294,15 @@ fn not_regular() -> Error {
 }
 
 /// Whether `det[x_1, ..., x_D] < 0`, by Gaussian elimination in S (exact for rationals; the
-/// pivot is the first nonzero entry, or the largest one for rounded scalars).
+/// pivot is the first nonzero entry, or the largest one for rounded scalars): the sign of
+/// the product of the pivots, flipped once per row swap.
 fn determinant_is_negative<S: Scalar, const D: usize>(columns: &[Point<S, D>]) -> bool {
     let mut a: Vec<Vec<S>> = (0..D)
         .map(|row| columns.iter().map(|c| c[row].clone()).collect())
         .collect();
     let mut negative = false;
     for col in 0..D {
-        let pivot = if S::EXACT {
-            (col..D).find(|&r| !a[r][col].is_zero())
-        } else {
-            (col..D).filter(|&r| !a[r][col].is_zero()).max_by(|&r, &s| {
-                a[r][col]
-                    .abs()
-                    .partial_cmp(&a[s][col].abs())
-                    .unwrap_or(std::cmp::Ordering::Equal)
-            })
-        };
-        let Some(p) = pivot else {
+        let Some(p) = pivot(&a, col) else {
             return false;
         };
         if p != col {
@@ -308,14 +312,7 @@ fn determinant_is_negative<S: Scalar, const D: usize>(columns: &[Point<S, D>]) -
         if a[col][col] < S::zero() {
             negative = !negative;
         }
-        let (top, rest) = a.split_at_mut(col + 1);
-        let pivot_row = &top[col];
-        for row in rest {
-            let factor = row[col].clone() / &pivot_row[col];
-            for (x, p) in row[col..].iter_mut().zip(&pivot_row[col..]) {
-                *x -= factor.clone() * p;
-            }
-        }
+        eliminate_below(&mut a, col, |_, _| {});
     }
     negative
 }

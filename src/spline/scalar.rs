@@ -78,7 +78,7 @@ pub trait Scalar:
     /// # Panics
     ///
     /// If `den == 0`. Kernels only call it with nonzero constants (binomial coefficients,
-    /// degrees); user-supplied ratios go through [`parse_scalar`].
+    /// degrees); user-supplied ratios go through [`parse_scalar`](super::parse_scalar()).
     fn from_ratio(num: i64, den: i64) -> Self;
 
     /// The value of a finite `f64`, exactly (every finite double is a rational number);
@@ -436,99 +436,6 @@ impl<S: Scalar> Finite<S> {
         self.0
     }
 }
-
-/// Parses a number written as an integer (`-3`), a decimal with an optional exponent
-/// (`2.5`, `1e-3`, `-0.125E2`) or a fraction of two such numbers (`47/18`, `1.5/4`) into the
-/// scalar `S`.
-///
-/// The text is read exactly as a rational first, so for `BigRational` the result is the exact
-/// value written (`0.1` is 1/10, not the double nearest to it); for `f64` it is the double
-/// nearest to that rational, rounded once (with feature `exact`) or as `str::parse` rounds
-/// decimals and then one division (without it).
-///
-/// # Errors
-///
-/// [`Error::InvalidParameter`] naming `name` if the text is not such a number, the
-/// denominator is zero, or the value is not finite as an `f64` (`1e400`).
-///
-/// ```
-/// use compgeo::spline::parse_scalar;
-///
-/// assert_eq!(parse_scalar::<f64>("3/4", "t").unwrap(), 0.75);
-/// assert!(parse_scalar::<f64>("1/0", "t").is_err());
-/// assert!(parse_scalar::<f64>("nan", "t").is_err());
-/// ```
-pub fn parse_scalar<S: Scalar + ParseScalar>(text: &str, name: &'static str) -> Result<S> {
-    S::parse_scalar(text.trim()).map_err(|reason| Error::InvalidParameter {
-        name,
-        reason: format!("{reason} (got {text:?})"),
-    })
-}
-
-/// How a [`Scalar`] reads itself from text; see [`parse_scalar`].
-pub trait ParseScalar: Sized {
-    /// Reads the value, or says why the text is not a valid finite number.
-    fn parse_scalar(text: &str) -> std::result::Result<Self, String>;
-}
-
-impl ParseScalar for f64 {
-    fn parse_scalar(text: &str) -> std::result::Result<Self, String> {
-        #[cfg(feature = "exact")]
-        {
-            let r = <num_rational::BigRational as ParseScalar>::parse_scalar(text)?;
-            let x = Scalar::to_f64(&r);
-            if x.is_finite() {
-                Ok(x)
-            } else {
-                Err("the number is outside the range of f64".to_string())
-            }
-        }
-        #[cfg(not(feature = "exact"))]
-        {
-            let (num, den) = split_fraction(text)?;
-            let n = parse_plain_f64(num)?;
-            let x = match den {
-                None => n,
-                Some(d) => {
-                    let d = parse_plain_f64(d)?;
-                    if d == 0.0 {
-                        return Err("the denominator is zero".to_string());
-                    }
-                    n / d
-                }
-            };
-            if x.is_finite() {
-                Ok(x)
-            } else {
-                Err("the number is outside the range of f64".to_string())
-            }
-        }
-    }
-}
-
-#[cfg(feature = "exact")]
-impl ParseScalar for num_rational::BigRational {
-    fn parse_scalar(text: &str) -> std::result::Result<Self, String> {
-        let (num, den) = split_fraction(text)?;
-        let n = parse_decimal_exact(num)?;
-        let value = match den {
-            None => n,
-            Some(d) => {
-                let d = parse_decimal_exact(d)?;
-                if Scalar::is_zero(&d) {
-                    return Err("the denominator is zero".to_string());
-                }
-                n / d
-            }
-        };
-        if Scalar::to_f64(&value).is_finite() {
-            Ok(value)
-        } else {
-            Err("the number is outside the range of f64".to_string())
-        }
-    }
-}
-
 /// Validates that every coordinate of every point is finite.
 ///
 /// # Errors
@@ -577,12 +484,28 @@ fn non_finite_parameter(name: &'static str, value: f64) -> Error {
     }
 }
 
-/// The binomial coefficient C(n, k) in `S`, by the multiplicative formula (each partial
-/// product C(n − k + i, i) is an integer, so it is exact for rationals and for `f64` as long as
-/// it stays below 2^53).
+/// The binomial coefficient C(n, k) in `S` (zero when `k > n`): from a table of exact
+/// integers for n < 64, else by the multiplicative formula, whose partial products
+/// C(n − k + i, i) are integers, so it is exact for rationals and for `f64` as long as they
+/// stay below 2^53.
+///
+/// # Complexity
+///
+/// O(1) for n < 64, else O(min(k, n − k)) field operations.
+///
+/// ```
+/// use compgeo::spline::binomial;
+///
+/// assert_eq!(binomial::<f64>(5, 2), 10.0);
+/// assert_eq!(binomial::<f64>(3, 4), 0.0);
+/// ```
+#[inline]
 pub fn binomial<S: Scalar>(n: usize, k: usize) -> S {
     if k > n {
         return S::zero();
+    }
+    if n < BINOMIAL_ROWS {
+        return S::from_i64(BINOMIALS[n * (n + 1) / 2 + k] as i64);
     }
     let k = k.min(n - k);
     let mut c = S::one();
@@ -592,87 +515,65 @@ pub fn binomial<S: Scalar>(n: usize, k: usize) -> S {
     c
 }
 
-fn split_fraction(text: &str) -> std::result::Result<(&str, Option<&str>), String> {
-    if text.is_empty() {
-        return Err("expected a number".to_string());
-    }
-    match text.split_once('/') {
-        None => Ok((text, None)),
-        Some((n, d)) if !d.contains('/') => Ok((n.trim(), Some(d.trim()))),
-        Some(_) => Err("a fraction has one '/'".to_string()),
-    }
-}
+/// Rows 0..63 of Pascal's triangle (all fit in an i64), row n starting at n(n + 1)/2.
+pub(crate) const BINOMIAL_ROWS: usize = 64;
 
-#[cfg(not(feature = "exact"))]
-fn parse_plain_f64(text: &str) -> std::result::Result<f64, String> {
-    check_decimal_syntax(text)?;
-    text.parse::<f64>().map_err(|e| e.to_string())
-}
+static BINOMIALS: [u64; BINOMIAL_ROWS * (BINOMIAL_ROWS + 1) / 2] = pascal();
 
-/// Checks `[+-]digits[.digits][(e|E)[+-]digits]` with at least one mantissa digit, so that
-/// `inf`, `nan` and hexadecimal never pass.
-fn check_decimal_syntax(text: &str) -> std::result::Result<(), String> {
-    let bad = || "expected an integer, a decimal or a fraction p/q".to_string();
-    let s = text.strip_prefix(['+', '-']).unwrap_or(text);
-    let (mantissa, exponent) = match s.find(['e', 'E']) {
-        Some(i) => (&s[..i], Some(&s[i + 1..])),
-        None => (s, None),
-    };
-    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
-    let digits = |d: &str| d.bytes().all(|b| b.is_ascii_digit());
-    if int.len() + frac.len() == 0 || !digits(int) || !digits(frac) {
-        return Err(bad());
-    }
-    if let Some(e) = exponent {
-        let e = e.strip_prefix(['+', '-']).unwrap_or(e);
-        if e.is_empty() || !digits(e) {
-            return Err(bad());
+const fn pascal() -> [u64; BINOMIAL_ROWS * (BINOMIAL_ROWS + 1) / 2] {
+    let mut table = [0u64; BINOMIAL_ROWS * (BINOMIAL_ROWS + 1) / 2];
+    let mut n = 0;
+    while n < BINOMIAL_ROWS {
+        let row = n * (n + 1) / 2;
+        table[row] = 1;
+        table[row + n] = 1;
+        let mut k = 1;
+        while k < n {
+            let prev = (n - 1) * n / 2;
+            table[row + k] = table[prev + k - 1] + table[prev + k];
+            k += 1;
         }
+        n += 1;
     }
-    Ok(())
+    table
 }
 
-#[cfg(feature = "exact")]
-fn parse_decimal_exact(text: &str) -> std::result::Result<num_rational::BigRational, String> {
-    use num_bigint::BigInt;
-    use num_rational::BigRational;
-    check_decimal_syntax(text)?;
-    let (negative, s) = match text.strip_prefix('-') {
-        Some(rest) => (true, rest),
-        None => (false, text.strip_prefix('+').unwrap_or(text)),
-    };
-    let (mantissa, exponent) = match s.find(['e', 'E']) {
-        Some(i) => (&s[..i], &s[i + 1..]),
-        None => (s, ""),
-    };
-    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
-    let exponent: i64 = if exponent.is_empty() {
-        0
-    } else {
-        exponent
-            .parse()
-            .map_err(|_| "the exponent is too large".to_string())?
-    };
-    // Beyond this the value is 0 or infinite as an f64 anyway; refuse before building
-    // a huge power of ten.
-    let shift = exponent - frac.len() as i64;
-    if shift.abs() > 2000 {
-        return Err("the number is outside the range of f64".to_string());
+/// The falling factorial `n (n − 1) ⋯ (n − r + 1)` (r factors; 1 for r = 0, and 0 for
+/// r > n): the factor of an r-th derivative of a polynomial of degree n, and n! for r = n.
+pub(crate) fn falling_factorial<S: Scalar>(n: usize, r: usize) -> S {
+    let mut f = S::one();
+    for k in 0..r.min(n + 1) {
+        f = f * S::from_i64((n - k) as i64);
     }
-    let digits: BigInt = format!("{int}{frac}")
-        .parse()
-        .map_err(|_| "expected digits".to_string())?;
-    let ten = BigInt::from(10);
-    let pow = num_traits::pow(ten, shift.unsigned_abs() as usize);
-    let mut value = if shift >= 0 {
-        BigRational::from_integer(digits * pow)
-    } else {
-        BigRational::new(digits, pow)
-    };
-    if negative {
-        value = -value;
+    f
+}
+
+/// `xᵏ`, by k − 1 multiplications.
+pub(crate) fn power<S: Scalar>(x: &S, k: usize) -> S {
+    let mut p = S::one();
+    for _ in 0..k {
+        p = p * x;
     }
-    Ok(value)
+    p
+}
+
+/// For rounded scalars, the power of two `2^−e` that brings the largest coordinate of
+/// `vectors` into `[1, 2)` (e clamped to ±1020 so the factor is a normal double); one for
+/// exact scalars and for all-zero input. Multiplying by it is exact unless a coordinate
+/// underflows, which only happens to coordinates below 2^−1074 relative to the largest.
+pub(crate) fn pow2_scale<S: Scalar, const D: usize>(vectors: &[&Point<S, D>]) -> S {
+    if S::EXACT {
+        return S::one();
+    }
+    let max = vectors
+        .iter()
+        .flat_map(|v| v.coords().iter())
+        .fold(0.0f64, |m, c| m.max(c.to_f64().abs()));
+    if max == 0.0 || !max.is_finite() {
+        return S::one();
+    }
+    let e = (max.log2().floor() as i32).clamp(-1020, 1020);
+    S::from_f64(2f64.powi(-e)).unwrap_or_else(S::one)
 }
 
 #[cfg(test)]
@@ -680,26 +581,22 @@ mod tests {
     use super::*;
 
     #[test]
-    fn decimal_syntax_rejects_words_and_accepts_forms() {
-        for good in ["0", "-3", "+2.5", ".5", "5.", "1e-3", "-0.125E+2"] {
-            assert!(check_decimal_syntax(good).is_ok(), "{good}");
-        }
-        for bad in ["", "-", ".", "inf", "NaN", "0x10", "1e", "1.2.3", "1 2"] {
-            assert!(check_decimal_syntax(bad).is_err(), "{bad}");
-        }
-    }
-
-    #[test]
-    fn binomials_match_pascal() {
-        for n in 0..30usize {
+    fn binomials_match_pascal_and_the_product_formula() {
+        for n in 0..70usize {
             for k in 1..n {
                 let lhs: f64 = binomial(n, k);
                 let rhs: f64 = binomial::<f64>(n - 1, k - 1) + binomial::<f64>(n - 1, k);
-                assert_eq!(lhs, rhs, "C({n},{k})");
+                // Exact below 2^53; beyond it both sides are rounded once or twice.
+                assert!((lhs - rhs).abs() <= lhs * 1e-15, "C({n},{k})");
             }
             assert_eq!(binomial::<f64>(n, 0), 1.0);
             assert_eq!(binomial::<f64>(n, n + 1), 0.0);
         }
+        assert_eq!(BINOMIALS[63 * 64 / 2 + 31], 916_312_070_471_295_267);
+        assert_eq!(falling_factorial::<f64>(5, 2), 20.0);
+        assert_eq!(falling_factorial::<f64>(4, 4), 24.0);
+        assert_eq!(falling_factorial::<f64>(2, 3), 0.0);
+        assert_eq!(power(&3.0, 4), 81.0);
     }
 
     #[test]
@@ -749,24 +646,5 @@ mod tests {
                 }
             }
         }
-    }
-
-    #[cfg(feature = "exact")]
-    #[test]
-    fn exact_parsing_keeps_decimals_exact() {
-        use num_bigint::BigInt;
-        use num_rational::BigRational;
-        let r = |n: i64, d: i64| BigRational::new(BigInt::from(n), BigInt::from(d));
-        let p = |s: &str| <BigRational as ParseScalar>::parse_scalar(s).unwrap();
-        assert_eq!(p("0.1"), r(1, 10));
-        assert_eq!(p("47/18"), r(47, 18));
-        assert_eq!(p("-1.5e2/4"), r(-75, 2));
-        assert_eq!(p("2.5E-1"), r(1, 4));
-        assert!(<BigRational as ParseScalar>::parse_scalar("3/0").is_err());
-        assert!(<BigRational as ParseScalar>::parse_scalar("1e5000").is_err());
-        assert_eq!(
-            <f64 as ParseScalar>::parse_scalar("1/3").unwrap(),
-            1.0 / 3.0
-        );
     }
 }

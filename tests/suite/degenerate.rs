@@ -152,7 +152,10 @@ fn copies_of_one_point() {
     assert_eq!(all_nearest_neighbours(&p).unwrap(), [1, 0, 0]);
     assert_eq!(nearest(&p, Point2::new(7.0, 7.0)).unwrap(), 0);
     let t = euclidean_mst(&p).unwrap();
-    assert_eq!((t.edges, t.weight, t.components), (vec![[0, 1], [0, 2]], 0.0, 1));
+    assert_eq!(
+        (t.edges, t.weight, t.components),
+        (vec![[0, 1], [0, 2]], 0.0, 1)
+    );
     let c = largest_empty_circle(&p).unwrap();
     assert_eq!((c.centre, c.radius), (p[0], 0.0));
 }

@@ -6,20 +6,26 @@
 //! kurbo, ...) are linked once. Run one part with `cargo test --test suite hull::`.
 
 mod common;
+mod spline_common;
 
+mod bezier;
+mod bezier_eval;
 mod calipers;
 mod cli;
 mod complexity;
-mod delaunay;
 mod degenerate;
+mod delaunay;
 mod delaunay_builders;
 mod fortune;
+mod frenet;
 mod gen;
 mod graph;
 mod hull;
+mod interpolate;
+mod interpolate_cli;
 mod predicates;
 mod proximity;
+mod registry;
 mod sort;
 mod voronoi;
 mod width;
-mod registry;

@@ -85,7 +85,12 @@ fn names_are_kebab_case_and_ids_unique() {
         );
         let mut inputs = HashSet::new();
         for c in d.claims {
-            assert!(inputs.insert(c.input), "{} claims {} twice", d.id(), c.input);
+            assert!(
+                inputs.insert(c.input),
+                "{} claims {} twice",
+                d.id(),
+                c.input
+            );
         }
     }
 }
@@ -159,9 +164,10 @@ fn every_declared_item_exists_and_states_its_bound() {
             ));
             continue;
         }
-        let states = docs.iter().filter_map(|doc| complexity_section(doc)).any(|c| {
-            c.contains(&squash(d.time)) && c.contains(&squash(d.space))
-        });
+        let states = docs
+            .iter()
+            .filter_map(|doc| complexity_section(doc))
+            .any(|c| c.contains(&squash(d.time)) && c.contains(&squash(d.space)));
         if !states {
             wrong.push(format!(
                 "{}: the `# Complexity` docs of {} (or its `_with` form) in {} do not state the \
@@ -195,12 +201,19 @@ fn every_catalog_entry_measures_a_declared_claim_and_every_claim_is_measured() {
             "{}",
             e.info.key()
         );
-        assert!(measured.insert(e.info.key()), "{} is measured twice", e.info.key());
+        assert!(
+            measured.insert(e.info.key()),
+            "{} is measured twice",
+            e.info.key()
+        );
     }
     for d in declarations() {
         for c in d.claims {
             let key = format!("{}/{}", d.id(), c.input);
-            assert!(measured.contains(&key), "the claim {key} is not in the catalog");
+            assert!(
+                measured.contains(&key),
+                "the claim {key} is not in the catalog"
+            );
         }
     }
 }
@@ -213,12 +226,19 @@ macro_rules! check_family {
         for a in <$family>::ALL {
             let d = a.declaration();
             assert_eq!(d.problem, $problem);
-            assert!(registered.contains(&d.id()), "{} is not in declarations()", d.id());
+            assert!(
+                registered.contains(&d.id()),
+                "{} is not in declarations()",
+                d.id()
+            );
             assert_eq!(a.name(), d.name);
             assert_eq!(a.name().parse::<$family>().unwrap(), a);
             assert_eq!(a.to_string(), a.name());
         }
-        let err = "no-such-algorithm".parse::<$family>().unwrap_err().to_string();
+        let err = "no-such-algorithm"
+            .parse::<$family>()
+            .unwrap_err()
+            .to_string();
         for a in <$family>::ALL {
             assert!(err.contains(a.name()), "{err}");
         }
@@ -235,10 +255,13 @@ fn every_family_enum_is_its_declarations() {
     check_family!(compgeo::calipers::DiameterAlgorithm, "diameter");
     check_family!(compgeo::delaunay::Algorithm, "delaunay");
     check_family!(compgeo::proximity::ClosestPairAlgorithm, "closest-pair");
+    check_family!(compgeo::spline::BezierEvaluation, "bezier");
 }
 
 /// The declarations of one family, as the command line lists them.
-fn family(declarations: impl IntoIterator<Item = &'static Declaration>) -> Vec<&'static Declaration> {
+fn family(
+    declarations: impl IntoIterator<Item = &'static Declaration>,
+) -> Vec<&'static Declaration> {
     declarations.into_iter().collect()
 }
 
@@ -248,23 +271,50 @@ fn the_command_line_help_lists_every_declared_algorithm() {
     use crate::common::run;
     let d = |a: &'static Declaration| a;
     for (command, members) in [
-        ("sort", family(compgeo::sort::Algorithm::ALL.map(|a| d(a.declaration())))),
-        ("colour", family(compgeo::graph::ColouringAlgorithm::ALL.map(|a| d(a.declaration())))),
-        ("mst", family(compgeo::graph::MstAlgorithm::ALL.map(|a| d(a.declaration())))),
-        ("hull", family(compgeo::hull::Algorithm::ALL.map(|a| d(a.declaration())))),
-        ("diameter", family(compgeo::calipers::DiameterAlgorithm::ALL.map(|a| d(a.declaration())))),
-        ("delaunay", family(compgeo::delaunay::Algorithm::ALL.map(|a| d(a.declaration())))),
+        (
+            "bezier eval",
+            family(compgeo::spline::BezierEvaluation::ALL.map(|a| d(a.declaration()))),
+        ),
+        (
+            "sort",
+            family(compgeo::sort::Algorithm::ALL.map(|a| d(a.declaration()))),
+        ),
+        (
+            "colour",
+            family(compgeo::graph::ColouringAlgorithm::ALL.map(|a| d(a.declaration()))),
+        ),
+        (
+            "mst",
+            family(compgeo::graph::MstAlgorithm::ALL.map(|a| d(a.declaration()))),
+        ),
+        (
+            "hull",
+            family(compgeo::hull::Algorithm::ALL.map(|a| d(a.declaration()))),
+        ),
+        (
+            "diameter",
+            family(compgeo::calipers::DiameterAlgorithm::ALL.map(|a| d(a.declaration()))),
+        ),
+        (
+            "delaunay",
+            family(compgeo::delaunay::Algorithm::ALL.map(|a| d(a.declaration()))),
+        ),
         (
             "closest-pair",
             family(compgeo::proximity::ClosestPairAlgorithm::ALL.map(|a| d(a.declaration()))),
         ),
     ] {
-        let (code, help, _) = run(&[command, "--help"], None);
+        let mut args: Vec<&str> = command.split(' ').collect();
+        args.push("--help");
+        let (code, help, _) = run(&args, None);
         assert_eq!(code, 0, "{command} --help");
         let help = help.split_whitespace().collect::<Vec<_>>().join(" ");
         for d in members {
             let line = format!("{}: {}, {}", d.name, d.summary, d.time);
-            assert!(help.contains(&line), "`{command} --help` lacks {line:?}:\n{help}");
+            assert!(
+                help.contains(&line),
+                "`{command} --help` lacks {line:?}:\n{help}"
+            );
         }
     }
 }

@@ -1,7 +1,8 @@
-//! Catalog entries of [`crate::spline`]: one evaluation of a Bézier curve of degree n, by de
-//! Casteljau's algorithm (n(n + 1)/2 affine combinations, Θ(n²)) and by the Horner-type
-//! scheme of 000 §2.3 Obs. 4 (n + 1 point operations, Θ(n)); C² cubic spline interpolation of
-//! n points (natural and periodic end conditions, Θ(n) by a tridiagonal solve).
+//! Catalog entries of [`crate::spline`]: one evaluation of a Bézier curve of degree n by each
+//! scheme of [`Evaluation`] (de Casteljau's algorithm, n(n + 1)/2 affine combinations, Θ(n²);
+//! the Horner-type scheme of [PPB, §2.3, Obs. 4], n + 1 point operations, Θ(n)); C² cubic
+//! spline interpolation of n points (natural and periodic end conditions, Θ(n) by a
+//! tridiagonal solve, [SPL, §3]).
 //!
 //! The counted operation is the arithmetic step on points
 //! ([`Operation::ArithmeticOperations`]). Control points are uniform in the unit square and
@@ -12,50 +13,38 @@ use crate::complexity::{Entry, Workload};
 use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{points, PointKind};
+use crate::spline::bezier::{evaluate_with, Evaluation};
 use crate::spline::{cubic_spline_tangents_with, Bezier, EndCondition, Point};
 
-/// The evaluation schemes measured.
-#[derive(Clone, Copy)]
-enum Scheme {
-    DeCasteljau,
-    Horner,
-}
-
 /// One evaluation of a random curve of degree n at a random parameter.
-struct Evaluate(Scheme);
+struct Evaluate(Evaluation);
 
-/// The spline entries.
+/// The spline entries: every claim of the Bézier evaluation schemes and the cubic splines.
 pub(super) fn entries() -> Vec<Entry> {
-    vec![
-        Entry::declared(
-            crate::spline::DECLARATIONS[0],
-            PointKind::UniformSquare.name(),
-            Evaluate(Scheme::DeCasteljau),
-        )
-        .quick(8, 256)
-        .full(8, 512),
-        Entry::declared(
-            crate::spline::DECLARATIONS[1],
-            PointKind::UniformSquare.name(),
-            Evaluate(Scheme::Horner),
-        )
-        .quick(8, 256)
-        .full(8, 512),
-        Entry::declared(
-            crate::spline::DECLARATIONS[2],
-            PointKind::UniformSquare.name(),
-            Interpolate { periodic: false },
-        )
-        .quick(64, 1 << 12)
-        .full(64, 1 << 16),
-        Entry::declared(
-            crate::spline::DECLARATIONS[3],
-            PointKind::UniformSquare.name(),
-            Interpolate { periodic: true },
-        )
-        .quick(64, 1 << 12)
-        .full(64, 1 << 16),
-    ]
+    let mut entries: Vec<Entry> = Evaluation::ALL
+        .into_iter()
+        .map(|scheme| {
+            Entry::declared(
+                scheme.declaration(),
+                PointKind::UniformSquare.name(),
+                Evaluate(scheme),
+            )
+            .quick(8, 256)
+            .full(8, 512)
+        })
+        .collect();
+    for (declaration, periodic) in crate::spline::DECLARATIONS.into_iter().zip([false, true]) {
+        entries.push(
+            Entry::declared(
+                declaration,
+                PointKind::UniformSquare.name(),
+                Interpolate { periodic },
+            )
+            .quick(64, 1 << 12)
+            .full(64, 1 << 16),
+        );
+    }
+    entries
 }
 
 /// The tangents of the C² cubic spline through n random points at the knots 0, 1, ..., n − 1
@@ -107,9 +96,6 @@ impl Workload for Evaluate {
 
     fn run<C: Counter>(&self, input: &mut Self::Input, c: &mut C) -> Result<Self::Output> {
         let (curve, t) = input;
-        match self.0 {
-            Scheme::DeCasteljau => curve.de_casteljau_with(t, c),
-            Scheme::Horner => curve.horner_with(t, c),
-        }
+        evaluate_with(curve, t, self.0, c)
     }
 }

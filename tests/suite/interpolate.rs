@@ -6,18 +6,16 @@
 //! `tests/frenet.rs`, the `compgeo interpolate` command in `tests/interpolate_cli.rs`.
 #![cfg(feature = "exact")]
 
-mod spline_common;
-
+use crate::spline_common::{p2, pairs, q, qi, Q};
 use compgeo::spline::{
-    aitken, bernstein_all, c1_partition, closed_quadratic_spline, cubic_spline,
-    cubic_spline_tangents, estimate_tangents, fit_bezier, hermite, lagrange, lagrange_basis,
-    newton, newton_hermite, parameterise, quadratic_spline, vandermonde, vandermonde_hermite,
-    Bezier, CompositeBezier, EndCondition, FitOptions, HermiteNode, Parameterisation, Point,
+    bernstein_all, c1_partition, closed_quadratic_spline, cubic_spline, cubic_spline_tangents,
+    estimate_tangents, fit_bezier, hermite, lagrange, lagrange_basis, newton, newton_hermite,
+    parameterise, quadratic_spline, vandermonde, vandermonde_hermite, Bezier, CompositeBezier,
+    Curve, CurveDerivative, EndCondition, FitOptions, HermiteNode, Parameterisation, Point,
     Polynomial, Scalar,
 };
 use compgeo::Error;
 use proptest::prelude::*;
-use spline_common::{p2, pairs, q, qi, Q};
 
 /// Reads `{ 0, \frac{1}{2}, ... }` into rationals.
 fn partition(line: &str) -> Vec<Q> {
@@ -38,7 +36,7 @@ fn partition(line: &str) -> Vec<Q> {
 
 #[test]
 fn seed_003_hermite_example_reproduces_the_printed_control_points() {
-    let text = include_str!("fixtures/seed003_hermite_example.txt");
+    let text = include_str!("../fixtures/seed003_hermite_example.txt");
     let line = |prefix: &str| text.lines().find(|l| l.starts_with(prefix)).unwrap();
     let points = pairs(line("$$Q_0"));
     let tangents = pairs(line("$$D_0"));
@@ -51,7 +49,7 @@ fn seed_003_hermite_example_reproduces_the_printed_control_points() {
         .collect();
     assert_eq!(printed.len(), 4);
 
-    let curve = hermite(&points, &tangents, &knots).unwrap();
+    let curve = hermite(&knots, &points, &tangents).unwrap();
     let got: Vec<&[Point<Q, 2>]> = curve.pieces().iter().map(|b| b.control()).collect();
     assert_eq!(got, printed.iter().map(Vec::as_slice).collect::<Vec<_>>());
     // It interpolates the data exactly and is C¹ exactly.
@@ -65,9 +63,9 @@ fn seed_003_hermite_example_reproduces_the_printed_control_points() {
     // The f64 path agrees to rounding.
     let f = |p: &Point<Q, 2>| p.to_f64();
     let curve64 = hermite(
+        &knots.iter().map(Scalar::to_f64).collect::<Vec<_>>(),
         &points.iter().map(f).collect::<Vec<_>>(),
         &tangents.iter().map(f).collect::<Vec<_>>(),
-        &knots.iter().map(Scalar::to_f64).collect::<Vec<_>>(),
     )
     .unwrap();
     for (a, b) in curve64
@@ -101,7 +99,7 @@ fn seed_003_c1_exercise_gets_its_partition_exactly() {
 
 #[test]
 fn cr_builder_matches_the_seeds_q2_formula() {
-    // 003 §3.2: Q_2 = λ² (P_n − 2P_{n−1} + P_{n−2}) + 2λ (P_n − P_{n−1}) + P_n.
+    // [RD, §3.2]: Q_2 = λ² (P_n − 2P_{n−1} + P_{n−2}) + 2λ (P_n − P_{n−1}) + P_n.
     let p = |x: i64, y: i64| p2(qi(x), qi(y));
     let first = vec![p(0, 0), p(1, 3), p(4, 2), p(5, 5)];
     let mut curve = CompositeBezier::new(vec![qi(0), qi(2)], vec![first.clone()]).unwrap();
@@ -164,17 +162,17 @@ fn clamped_spline_reproduces_a_cubic_and_bessel_a_parabola() {
         p2(qi(0), qi(1)),
         p2(qi(1), qi(0)),
     ]);
-    let dc = c.derivative();
+    let dc = c.derivative_curve().unwrap();
     let knots = vec![qi(-1), q(-1, 4), q(1, 2), qi(2), q(7, 3)];
-    let pts: Vec<_> = knots.iter().map(|u| c.eval(u)).collect();
+    let pts: Vec<_> = knots.iter().map(|u| c.eval(u).unwrap()).collect();
     let end = EndCondition::Clamped {
-        start: dc.eval(&knots[0]),
-        end: dc.eval(&knots[4]),
+        start: dc.eval(&knots[0]).unwrap(),
+        end: dc.eval(&knots[4]).unwrap(),
     };
     let s = cubic_spline(&knots, &pts, &end).unwrap();
     for k in 0..=8 {
         let u = knots[0].clone() + &(q(k, 8) * &(knots[4].clone() - &knots[0]));
-        assert_eq!(s.eval(&u).unwrap(), c.eval(&u));
+        assert_eq!(s.eval(&u).unwrap(), c.eval(&u).unwrap());
     }
     // Bessel's tangents are exact for parabolas, so the spline is the parabola.
     let par = Polynomial::new(vec![
@@ -182,13 +180,13 @@ fn clamped_spline_reproduces_a_cubic_and_bessel_a_parabola() {
         p2(qi(-3), qi(2)),
         p2(q(1, 2), qi(5)),
     ]);
-    let pts: Vec<_> = knots.iter().map(|u| par.eval(u)).collect();
+    let pts: Vec<_> = knots.iter().map(|u| par.eval(u).unwrap()).collect();
     let s = cubic_spline(&knots, &pts, &EndCondition::Bessel).unwrap();
     let m = cubic_spline_tangents(&knots, &pts, &EndCondition::Bessel).unwrap();
-    let dpar = par.derivative();
-    assert_eq!(m[0], dpar.eval(&knots[0]));
-    assert_eq!(m[4], dpar.eval(&knots[4]));
-    assert_eq!(s.eval(&q(1, 7)).unwrap(), par.eval(&q(1, 7)));
+    let dpar = par.derivative_curve().unwrap();
+    assert_eq!(m[0], dpar.eval(&knots[0]).unwrap());
+    assert_eq!(m[4], dpar.eval(&knots[4]).unwrap());
+    assert_eq!(s.eval(&q(1, 7)).unwrap(), par.eval(&q(1, 7)).unwrap());
 }
 
 #[test]
@@ -199,11 +197,11 @@ fn estimated_tangents_are_exact_on_parabolas() {
         p2(qi(-3), q(2, 3)),
     ]);
     let knots = vec![qi(0), q(1, 5), qi(1), q(3, 2), qi(4)];
-    let pts: Vec<_> = knots.iter().map(|u| par.eval(u)).collect();
-    let d = estimate_tangents(&pts, &knots).unwrap();
-    let dpar = par.derivative();
+    let pts: Vec<_> = knots.iter().map(|u| par.eval(u).unwrap()).collect();
+    let d = estimate_tangents(&knots, &pts).unwrap();
+    let dpar = par.derivative_curve().unwrap();
     for (u, t) in knots.iter().zip(&d) {
-        assert_eq!(*t, dpar.eval(u));
+        assert_eq!(*t, dpar.eval(u).unwrap());
     }
 }
 
@@ -251,7 +249,7 @@ fn bad_input_gives_clear_errors() {
     );
     assert!(e.to_string().contains("strictly increasing"), "{e}");
     // NaN coordinate and NaN knot.
-    let e = hermite(&[p(0.0), p(f64::NAN)], &[p(0.0), p(0.0)], &[0.0, 1.0]).unwrap_err();
+    let e = hermite(&[0.0, 1.0], &[p(0.0), p(f64::NAN)], &[p(0.0), p(0.0)]).unwrap_err();
     assert!(matches!(e, Error::NonFinite { index: 1, .. }), "{e}");
     let e = newton(&[0.0, f64::NAN], &[p(0.0), p(1.0)]).unwrap_err();
     assert!(
@@ -259,7 +257,7 @@ fn bad_input_gives_clear_errors() {
         "{e}"
     );
     // Mismatched lengths.
-    let e = hermite(&pts, &[p(0.0)], &[0.0, 1.0, 2.0]).unwrap_err();
+    let e = hermite(&[0.0, 1.0, 2.0], &pts, &[p(0.0)]).unwrap_err();
     assert!(
         matches!(
             e,
@@ -279,8 +277,8 @@ fn bad_input_gives_clear_errors() {
     for e in [
         vandermonde(&[0.0, 1.0, 0.0], &pts).unwrap_err(),
         newton(&[0.0, 1.0, 0.0], &pts).unwrap_err(),
-        lagrange(&[0.0, 1.0, 0.0], &pts, &0.5).unwrap_err(),
-        aitken(&[0.0, 1.0, 0.0], &pts, &0.5).unwrap_err(),
+        lagrange(&[0.0, 1.0, 0.0], &pts).unwrap_err(),
+        lagrange_basis(&[0.0, 1.0, 0.0], &0.5).unwrap_err(),
     ] {
         assert!(e.to_string().contains("nodes 0 and 2 are equal"), "{e}");
     }
@@ -309,7 +307,7 @@ fn bad_input_gives_clear_errors() {
         ),
         "{e}"
     );
-    let e = hermite(&pts[..1], &pts[..1], &[0.0]).unwrap_err();
+    let e = hermite(&[0.0], &pts[..1], &pts[..1]).unwrap_err();
     assert!(
         matches!(
             e,
@@ -378,12 +376,15 @@ proptest! {
         let rev_pts: Vec<_> = pts.iter().rev().cloned().collect();
         let nw = newton(&rev_nodes, &rev_pts).unwrap();
         prop_assert_eq!(&nw.to_polynomial(), &v);
-        let want = v.eval(&u);
-        prop_assert_eq!(&lagrange(&nodes, &pts, &u).unwrap(), &want);
-        prop_assert_eq!(&aitken(&nodes, &pts, &u).unwrap(), &want);
-        prop_assert_eq!(&nw.eval(&u), &want);
+        let want = v.eval(&u).unwrap();
+        let lg = lagrange(&nodes, &pts).unwrap();
+        prop_assert_eq!(&lg.eval(&u).unwrap(), &want);
+        prop_assert_eq!(&lg.aitken(&u).unwrap(), &want);
+        prop_assert_eq!(&nw.eval(&u).unwrap(), &want);
+        prop_assert_eq!(&lg.to_newton().unwrap().to_polynomial(), &v);
         for (x, p) in nodes.iter().zip(&pts) {
-            prop_assert_eq!(&v.eval(x), p);
+            prop_assert_eq!(&v.eval(x).unwrap(), p);
+            prop_assert_eq!(&lg.eval(x).unwrap(), p);
         }
         let basis = lagrange_basis(&nodes, &u).unwrap();
         prop_assert_eq!(basis.into_iter().fold(qi(0), |a, b| a + b), qi(1));
@@ -410,8 +411,8 @@ proptest! {
         for node in &data {
             let mut d = poly.clone();
             for value in &node.values {
-                prop_assert_eq!(&d.eval(&node.u), value);
-                d = d.derivative();
+                prop_assert_eq!(&d.eval(&node.u).unwrap(), value);
+                d = d.derivative_curve().unwrap();
             }
         }
     }
@@ -562,7 +563,7 @@ proptest! {
 fn extrapolate(c: &CompositeBezier<Q, 2>, u: &Q) -> Point<Q, 2> {
     let ts = [qi(0), q(1, 3), q(2, 3), qi(1)];
     let vals: Vec<_> = ts.iter().map(|t| c.eval(t).unwrap()).collect();
-    vandermonde(&ts, &vals).unwrap().eval(u)
+    vandermonde(&ts, &vals).unwrap().eval(u).unwrap()
 }
 
 #[test]
@@ -574,11 +575,12 @@ fn quadratic_splines_follow_seed_001_section_2() {
         p2(q(3, 2), qi(-1)),
     ]);
     let knots = vec![qi(0), q(1, 2), qi(2), q(9, 4), qi(3)];
-    let pts: Vec<_> = knots.iter().map(|u| par.eval(u)).collect();
-    let c = quadratic_spline(&knots, &pts, &par.derivative().eval(&knots[0])).unwrap();
+    let pts: Vec<_> = knots.iter().map(|u| par.eval(u).unwrap()).collect();
+    let start = par.derivative_curve().unwrap().eval(&knots[0]).unwrap();
+    let c = quadratic_spline(&knots, &pts, &start).unwrap();
     for k in 0..=12 {
         let u = q(k, 4);
-        assert_eq!(c.eval(&u).unwrap(), par.eval(&u));
+        assert_eq!(c.eval(&u).unwrap(), par.eval(&u).unwrap());
     }
     // Closed: an odd number of pieces is always regular, an even one never (B_i telescopes).
     let square = [(0, 0), (2, 0), (2, 2), (0, 2), (0, 0)].map(|(x, y)| p2(qi(x), qi(y)));
@@ -619,4 +621,170 @@ fn least_squares_fit_rejects_underdetermined_data() {
     };
     assert!(fit_bezier(&[0.0, 0.5, 1.0], &pts, 1, &short).is_err());
     assert!(fit_bezier::<f64, 1>(&[], &[], 1, &FitOptions::default()).is_err());
+}
+
+/// The curve traits' properties (`spline_common::curve_properties`) on every interpolation
+/// result: the three polynomial forms, the Hermite curve and the cubic and quadratic splines.
+mod traits {
+    use crate::spline_common::curve_properties::{
+        curve_property_tests, eighths, point, points, Family,
+    };
+    use compgeo::spline::{
+        closed_quadratic_spline, cubic_spline, hermite, lagrange, newton, quadratic_spline,
+        vandermonde, CompositeBezier, EndCondition, LagrangeForm, NewtonForm, Polynomial, Scalar,
+    };
+    use proptest::prelude::*;
+
+    type Pairs = Vec<(i64, i64)>;
+
+    /// 2 to `max` distinct nodes in [−1, 2] (eighths), in a random order, and a point per node.
+    fn nodes_and_points(max: usize) -> impl Strategy<Value = (Vec<i64>, Pairs)> {
+        prop::collection::btree_set(-8i64..=16, 2..=max).prop_flat_map(|set| {
+            let nodes: Vec<i64> = set.into_iter().collect();
+            let n = nodes.len();
+            (
+                Just(nodes).prop_shuffle(),
+                prop::collection::vec((-80i64..=80, -80i64..=80), n),
+            )
+        })
+    }
+
+    /// An increasing partition of `pieces` intervals (knots in eighths) starting in [−1, 0],
+    /// with a point per knot.
+    fn knots_and_points(
+        pieces: std::ops::RangeInclusive<usize>,
+    ) -> impl Strategy<Value = (Vec<i64>, Pairs)> {
+        (-8i64..=0, prop::collection::vec(1i64..=12, pieces)).prop_flat_map(|(start, gaps)| {
+            let mut knots = vec![start];
+            for g in &gaps {
+                knots.push(knots.last().unwrap() + g);
+            }
+            let n = knots.len();
+            (
+                Just(knots),
+                prop::collection::vec((-80i64..=80, -80i64..=80), n),
+            )
+        })
+    }
+
+    fn knots<S: Scalar>(k: &[i64]) -> Vec<S> {
+        k.iter().copied().map(eighths).collect()
+    }
+
+    /// A polynomial interpolant built from distinct nodes and points by `$build`.
+    macro_rules! polynomial_family {
+        ($family:ident, $curve:ident, $build:ident) => {
+            struct $family;
+
+            impl Family for $family {
+                type Data = (Vec<i64>, Pairs);
+                type Curve<S: Scalar> = $curve<S, 2>;
+                const TOLERANCE: f64 = 1e-9;
+                fn data() -> BoxedStrategy<Self::Data> {
+                    nodes_and_points(6).boxed()
+                }
+                fn build<S: Scalar>((nodes, pts): &Self::Data) -> $curve<S, 2> {
+                    $build(&knots(nodes), &points(pts)).unwrap()
+                }
+            }
+        };
+    }
+
+    polynomial_family!(Power, Polynomial, vandermonde);
+    polynomial_family!(Newton, NewtonForm, newton);
+    polynomial_family!(Lagrange, LagrangeForm, lagrange);
+
+    struct Hermite;
+
+    impl Family for Hermite {
+        /// Knots, points and tangents.
+        type Data = (Vec<i64>, Pairs, Pairs);
+        type Curve<S: Scalar> = CompositeBezier<S, 2>;
+        const TOLERANCE: f64 = 1e-12;
+        fn data() -> BoxedStrategy<Self::Data> {
+            knots_and_points(1..=4)
+                .prop_flat_map(|(k, p)| {
+                    let n = k.len();
+                    (
+                        Just(k),
+                        Just(p),
+                        prop::collection::vec((-80i64..=80, -80i64..=80), n),
+                    )
+                })
+                .boxed()
+        }
+        fn build<S: Scalar>((k, p, d): &Self::Data) -> CompositeBezier<S, 2> {
+            hermite(&knots(k), &points(p), &points(d)).unwrap()
+        }
+    }
+
+    struct Cubic;
+
+    impl Family for Cubic {
+        /// The end condition (natural, clamped, Bessel, periodic), knots and points.
+        type Data = (usize, Vec<i64>, Pairs);
+        type Curve<S: Scalar> = CompositeBezier<S, 2>;
+        const TOLERANCE: f64 = 1e-11;
+        fn data() -> BoxedStrategy<Self::Data> {
+            (0usize..4, knots_and_points(2..=5))
+                .prop_map(|(kind, (k, mut p))| {
+                    if kind == 3 {
+                        let first = p[0];
+                        *p.last_mut().unwrap() = first;
+                    }
+                    (kind, k, p)
+                })
+                .boxed()
+        }
+        fn build<S: Scalar>((kind, k, p): &Self::Data) -> CompositeBezier<S, 2> {
+            let end = match kind {
+                0 => EndCondition::Natural,
+                1 => EndCondition::Clamped {
+                    start: point((8, -16)),
+                    end: point((0, 24)),
+                },
+                2 => EndCondition::Bessel,
+                _ => EndCondition::Periodic,
+            };
+            cubic_spline(&knots(k), &points(p), &end).unwrap()
+        }
+    }
+
+    struct Quadratic;
+
+    impl Family for Quadratic {
+        /// Closed or open (with a start tangent), knots and points.
+        type Data = (bool, (i64, i64), Vec<i64>, Pairs);
+        type Curve<S: Scalar> = CompositeBezier<S, 2>;
+        const TOLERANCE: f64 = 1e-10;
+        fn data() -> BoxedStrategy<Self::Data> {
+            let tangent = (-40i64..=40, -40i64..=40);
+            let open = (tangent, knots_and_points(1..=4)).prop_map(|(v, (k, p))| (false, v, k, p));
+            // A closed spline needs an odd number of pieces (an even one is singular).
+            let closed = prop_oneof![knots_and_points(3..=3), knots_and_points(5..=5)].prop_map(
+                |(k, mut p)| {
+                    let first = p[0];
+                    *p.last_mut().unwrap() = first;
+                    (true, (0, 0), k, p)
+                },
+            );
+            prop_oneof![open, closed].boxed()
+        }
+        fn build<S: Scalar>((closed, v, k, p): &Self::Data) -> CompositeBezier<S, 2> {
+            if *closed {
+                closed_quadratic_spline(&knots(k), &points(p)).unwrap()
+            } else {
+                quadratic_spline(&knots(k), &points(p), &point(*v)).unwrap()
+            }
+        }
+    }
+
+    curve_property_tests! {
+        power_forms_have_the_curve_properties: Power, 32;
+        newton_forms_have_the_curve_properties: Newton, 32;
+        lagrange_forms_have_the_curve_properties: Lagrange, 32;
+        hermite_curves_have_the_curve_properties: Hermite, 32;
+        cubic_splines_have_the_curve_properties: Cubic, 48;
+        quadratic_splines_have_the_curve_properties: Quadratic, 32;
+    }
 }

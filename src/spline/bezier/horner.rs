@@ -1,18 +1,50 @@
-//! Horner-type evaluation of Bézier curves (`000_f3201fe9758fe02a.txt` §2.3, Obs. 4) and
-//! what makes it fast on `f64`: the nesting itself (closed forms for degrees 1 to 3, a loop
-//! with tabulated binomials above), the control polygon's storage (lines, quadratics and
-//! cubics inline, cubics with their binomially scaled points), the bound on |t| under which no
-//! step can overflow, and the checked path beyond it (de Casteljau's algorithm when Horner's
-//! scheme overflows).
+//! Horner-type evaluation of Bézier curves, the crate's fast evaluation, and what makes it
+//! fast on `f64`.
 //!
-//! The public entry points are on [`Bezier`]: `eval`, `at`, `horner`, `horner_with` (in
-//! `bezier.rs`) and `eval_each` (in `bezier_ops.rs`). The `spline` benchmark compares them
-//! with a hand-written `f64` cubic and kurbo.
+//! The problem: the point b(t) in Θ(n) instead of de Casteljau's Θ(n²). The idea: write
+//! `b(t) = (1 − t)ⁿ Σᵢ C(n, i) bᵢ sⁱ` with s = t/(1 − t) and nest it as Horner's rule does,
+//! with the factor (1 − t)ⁿ distributed over the nesting so that no division remains. What
+//! makes it fast: closed forms for degrees 1 to 3 and a loop with tabulated binomials above;
+//! the control polygon's storage (lines, quadratics and cubics inline, cubics with their
+//! binomially scaled points); the bound on |t| under which no step can overflow, fixed when
+//! the curve is built; and the checked path beyond it (de Casteljau's algorithm when
+//! Horner's scheme overflows).
+//!
+//! Follows [PPB, §2.3, Obs. 4].
+//!
+//! # Complexity
+//!
+//! Θ(nD) time and O(D) auxiliary space per point (Θ(n²D) and O(nD) in the overflow case).
+//!
+//! The entry points are [`Curve::eval`] (the [`Curve`] implementation of [`Bezier`]),
+//! [`Bezier::at`], [`Bezier::eval_each`], [`Bezier::horner`] and [`Bezier::horner_with`]. The
+//! `spline` benchmark compares them with a hand-written `f64` cubic, kurbo and lyon_geom.
 
-use super::bezier::Bezier;
-use super::scalar::{binomial, validate_parameter, Point, Scalar};
-use crate::count::{Counter, NoCount};
-use crate::Result;
+use super::curve::Bezier;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
+use crate::spline::curve::{Curve, Domain};
+use crate::spline::scalar::{binomial, validate_parameter, Finite, Point, Scalar, BINOMIAL_ROWS};
+use crate::{Error, Result};
+
+/// Horner's evaluation, declared: its name, bounds, counts, source and claims.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "bezier",
+    name: "horner",
+    function: "spline::Bezier::horner",
+    file: "src/spline/bezier/horner.rs",
+    summary: "the Bernstein form rewritten for a Horner scheme",
+    time: "Θ(nD)",
+    space: "O(D)",
+    operation: Operation::ArithmeticOperations,
+    counts: "n + 1 point operations per point",
+    source: "[PPB, §2.3]",
+    claims: &[on(
+        "uniform-square",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
+};
 
 /// A control polygon: lines, quadratics and cubics inline, other degrees on the heap.
 ///
@@ -74,6 +106,206 @@ impl<S, const D: usize> Polygon<S, D> {
     }
 }
 
+/// A Bézier curve evaluates at every real parameter, by Horner's scheme.
+impl<S: Scalar, const D: usize> Curve<S, D> for Bezier<S, D> {
+    /// [`Domain::Real`]: the polynomial is defined everywhere; the control polygon describes
+    /// its segment over [0, 1].
+    fn domain(&self) -> Domain<S> {
+        Domain::Real
+    }
+
+    /// The point b(t), by the Horner-type scheme ([`Bezier::horner`]): the fast evaluation.
+    ///
+    /// Horner scales the control points by binomial coefficients, which can overflow `f64`
+    /// for coordinates near the top of its range; then the result is recomputed by de
+    /// Casteljau's algorithm, which only forms affine combinations. On `f64`, a value that is
+    /// itself beyond the double range (t far outside [0, 1]) comes out infinite.
+    ///
+    /// Whether Horner's scheme can overflow is known before it runs: [`Bezier::new`] bounds
+    /// |t| from the degree and the largest coordinate, and one comparison of t with that
+    /// bound, which also rejects NaN and ±∞, decides between the plain scheme and the checked
+    /// path (parameter validation, Horner, finiteness check, de Casteljau). Lines,
+    /// quadratics and cubics keep their control points inside the curve value and are
+    /// evaluated by closed forms compiled into the caller; other degrees by an out-of-line
+    /// call.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidParameter`] if `t` is NaN or infinite.
+    ///
+    /// # Complexity
+    ///
+    /// Θ(nD) time, O(D) auxiliary space (Θ(n²D) time and O(nD) space in the overflow case).
+    ///
+    /// ```
+    /// use compgeo::spline::{Bezier, Curve, Point};
+    ///
+    /// // b(t) = (t², t³) in the monomial basis.
+    /// let b = Bezier::new(vec![
+    ///     Point::new([0.0, 0.0]),
+    ///     Point::new([0.0, 0.0]),
+    ///     Point::new([1.0 / 3.0, 0.0]),
+    ///     Point::new([1.0, 1.0]),
+    /// ])?;
+    /// assert_eq!(b.eval(&2.0)?, Point::new([4.0, 8.0]));
+    /// assert_eq!(b.eval(&-10.0)?, Point::new([100.0, -1000.0]));
+    /// assert!(b.eval(&f64::NAN).is_err());
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    // Always inlined: a call would return the point through memory, and the caller's
+    // loop could no longer keep the control points in registers (about 3× slower).
+    #[inline(always)]
+    fn eval(&self, t: &S) -> Result<Point<S, D>> {
+        if self.horner_is_safe(t) {
+            if let Some(p) = self.closed_form(t) {
+                return Ok(p);
+            }
+        }
+        self.eval_general_checked(t).map(in_registers)
+    }
+}
+
+impl<S: Scalar, const D: usize> Bezier<S, D> {
+    /// The point b(t) at a parameter validated beforehand: [`Curve::eval`] without the
+    /// `Result`, for loops over many parameters checked once (or generated finite).
+    ///
+    /// # Complexity
+    ///
+    /// As [`Curve::eval`]: Θ(nD) time, O(D) auxiliary space.
+    ///
+    /// ```
+    /// use compgeo::spline::{Bezier, Finite, Point};
+    ///
+    /// let b = Bezier::new(vec![Point::new([0.0]), Point::new([0.0]), Point::new([1.0])])?;
+    /// let ts = [0.0, 0.5, 2.0].map(|t| Finite::new(t, "t")).into_iter().collect::<Result<Vec<_>, _>>()?;
+    /// let ys: Vec<_> = ts.iter().map(|t| b.at(t)[0]).collect();
+    /// assert_eq!(ys, [0.0, 0.25, 4.0]);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    // Always inlined: a call would return the point through memory, and the caller's
+    // loop could no longer keep the control points in registers (about 3× slower).
+    #[inline(always)]
+    pub fn at(&self, t: &Finite<S>) -> Point<S, D> {
+        let t = t.get();
+        if self.horner_is_safe(t) {
+            if let Some(p) = self.closed_form(t) {
+                return p;
+            }
+        }
+        in_registers(self.eval_general(t))
+    }
+
+    /// Calls `f(b(tᵢ))` for every parameter tᵢ in order: [`Curve::eval`] over a batch, for
+    /// sampling a curve densely (plotting, tables).
+    ///
+    /// Idea: the degree is looked at once, so lines, quadratics and cubics run their closed
+    /// form of the Horner nesting in a loop of their own, with the control points held in
+    /// local variables (registers, for `f64`). Per parameter, one comparison with the curve's
+    /// Horner bound (see [`Curve::eval`]) rules out NaN, ±∞ and any overflow; parameters
+    /// that fail it take the checked path, out of line.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidParameter`] naming the index of the first NaN or infinite parameter. As
+    /// with [`Iterator::try_for_each`], `f` has then been called for every parameter before
+    /// that one, in order, and for none after it.
+    ///
+    /// # Complexity
+    ///
+    /// Θ(m·nD) time for m parameters, O(D) auxiliary space (as [`Curve::eval`] per
+    /// parameter, overflow case included).
+    ///
+    /// ```
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// let b = Bezier::new(vec![Point::new([0.0]), Point::new([0.0]), Point::new([1.0])])?;
+    /// let mut ys = Vec::new();
+    /// b.eval_each(&[0.0, 0.5, 2.0], |p| ys.push(p[0]))?;
+    /// assert_eq!(ys, [0.0, 0.25, 4.0]);
+    ///
+    /// ys.clear();
+    /// assert!(b.eval_each(&[0.5, f64::NAN, 1.0], |p| ys.push(p[0])).is_err());
+    /// assert_eq!(ys, [0.25]);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    #[inline]
+    pub fn eval_each<F: FnMut(Point<S, D>)>(&self, ts: &[S], mut f: F) -> Result<()> {
+        if let Some([b0, c1, c2, b3]) = self.cubic_horner_points() {
+            let (b0, c1, c2, b3) = (b0.clone(), c1.clone(), c2.clone(), b3.clone());
+            return self.each_with(ts, &mut f, |t| {
+                horner_cubic(&b0, &c1, &c2, &b3, t, &(S::one() - t))
+            });
+        }
+        match self.control() {
+            [b0, b1] => {
+                let (b0, b1) = (b0.clone(), b1.clone());
+                self.each_with(ts, &mut f, |t| horner_line(&b0, &b1, t, &(S::one() - t)))
+            }
+            [b0, b1, b2] => {
+                let (b0, b1, b2) = (b0.clone(), b1.clone(), b2.clone());
+                self.each_with(ts, &mut f, |t| {
+                    horner_quadratic(&b0, &b1, &b2, t, &(S::one() - t))
+                })
+            }
+            _ => self.each_with(ts, &mut f, |t| in_registers(self.eval_general(t))),
+        }
+    }
+
+    /// The point b(t) by the Horner-type scheme. See [`Bezier::horner_with`].
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidParameter`] if `t` is NaN or infinite.
+    pub fn horner(&self, t: &S) -> Result<Point<S, D>> {
+        self.horner_with(t, &mut NoCount)
+    }
+
+    /// The point b(t) by the Horner-type scheme of the seed, counting its point operations.
+    ///
+    /// Idea: `b(t) = (1 − t)ⁿ Σᵢ C(n, i) bᵢ sⁱ` with s = t/(1 − t) is a polynomial in s, and
+    /// Horner's rule evaluates it with n multiply-adds. The seed notes that this fails near
+    /// t = 1 and switches to the mirrored form there; here the factor (1 − t)ⁿ is instead
+    /// distributed over the nesting, one factor (1 − t) per step:
+    /// `(⋯((b₀(1 − t) + C(n,1) t b₁)(1 − t) + C(n,2) t² b₂)(1 − t) + ⋯) + tⁿ bₙ`.
+    /// No division remains, so no parameter fails and no branch is taken: every real t,
+    /// also outside [0, 1], costs the same n + 1 steps.
+    ///
+    /// Follows [PPB, §2.3, Obs. 4].
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidParameter`] if `t` is NaN or infinite.
+    ///
+    /// # Complexity
+    ///
+    /// Θ(nD) time: n multiply-adds of points and one scaling, plus O(n) scalar operations
+    /// (binomials from a table for n < 64, by their ratio recurrence above; a cubic keeps its
+    /// scaled points 3b₁ and 3b₂ from construction); O(D) auxiliary space. On `f64` the
+    /// binomials overflow for n above about 1020.
+    ///
+    /// # Counts
+    ///
+    /// One [`arithmetic_operation`](Counter::arithmetic_operation) per multiply-add and one
+    /// for the final scaling: n + 1.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// let b = Bezier::new((0..5).map(|i| Point::new([(i * i) as f64])).collect())?;
+    /// let mut c = Counts::default();
+    /// let p = b.horner_with(&0.25, &mut c)?;
+    /// assert_eq!(p, b.de_casteljau(&0.25)?);
+    /// assert_eq!(c.arithmetic_operations, 5);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    #[inline]
+    pub fn horner_with<C: Counter>(&self, t: &S, counter: &mut C) -> Result<Point<S, D>> {
+        validate_parameter(t, "t")?;
+        Ok(self.horner_unchecked(t, counter))
+    }
+}
+
 impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// `true` if Horner's scheme at `t` provably stays within the `f64` range, which needs t
     /// finite: always for exact scalars, else `|t|` at most the bound of [`horner_limit`].
@@ -107,7 +339,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         }
     }
 
-    /// [`Bezier::eval`] where [`Bezier::closed_form`] does not apply: validates `t`, then
+    /// [`Curve::eval`] where [`Bezier::closed_form`] does not apply: validates `t`, then
     /// [`Bezier::eval_general`]. Out of line, so that evaluation loops stay small.
     #[inline(never)]
     pub(super) fn eval_general_checked(&self, t: &S) -> Result<Point<S, D>> {
@@ -124,13 +356,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         if p.is_finite() {
             return p;
         }
-        let mut q = self.control().to_vec();
-        for k in 1..q.len() {
-            for i in 0..q.len() - k {
-                q[i] = Point::lerp(&q[i], &q[i + 1], t);
-            }
-        }
-        q.swap_remove(0)
+        self.de_casteljau_unchecked(t, &mut NoCount)
     }
 
     /// Horner's scheme of Obs. 4 without validation (t finite), counting.
@@ -164,7 +390,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         for (i, bi) in b.iter().enumerate().take(n).skip(1) {
             ti = ti * t;
             let coefficient = if n < BINOMIAL_ROWS {
-                binomial_coefficient::<S>(n, i)
+                binomial::<S>(n, i)
             } else {
                 c = c * S::from_i64((n - i + 1) as i64) / S::from_i64(i as i64);
                 c.clone()
@@ -174,6 +400,39 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         }
         counter.arithmetic_operation();
         acc + &(b[n].clone() * (ti * t))
+    }
+
+    /// [`Bezier::eval_each`]'s loop for one evaluation `g` (a closed form, or Horner's
+    /// scheme): `g` where the Horner bound allows it, the checked path elsewhere.
+    #[inline(always)]
+    fn each_with<F, G>(&self, ts: &[S], f: &mut F, g: G) -> Result<()>
+    where
+        F: FnMut(Point<S, D>),
+        G: Fn(&S) -> Point<S, D>,
+    {
+        for (i, t) in ts.iter().enumerate() {
+            let p = if self.horner_is_safe(t) {
+                g(t)
+            } else {
+                in_registers(self.eval_each_slow(i, t)?)
+            };
+            f(p);
+        }
+        Ok(())
+    }
+
+    /// The checked evaluation of parameter number `index`, out of line (it never sees `f`, so
+    /// the caller's closure state can stay in registers).
+    #[cold]
+    #[inline(never)]
+    fn eval_each_slow(&self, index: usize, t: &S) -> Result<Point<S, D>> {
+        if !t.is_finite() {
+            return Err(Error::InvalidParameter {
+                name: "t",
+                reason: format!("parameter {index} must be finite, got {}", t.to_f64()),
+            });
+        }
+        Ok(self.eval_general(t))
     }
 }
 
@@ -267,55 +526,9 @@ pub(super) fn horner_limit<S: Scalar, const D: usize>(control: &[Point<S, D>]) -
     (w - 1.0) / 2.0
 }
 
-/// C(n, k) in `S`: from a table of exact integers for n < 64, else by the product formula.
-#[inline]
-pub(crate) fn binomial_coefficient<S: Scalar>(n: usize, k: usize) -> S {
-    if n < BINOMIAL_ROWS && k <= n {
-        S::from_i64(BINOMIALS[n * (n + 1) / 2 + k] as i64)
-    } else {
-        binomial(n, k)
-    }
-}
-
-/// Rows 0..63 of Pascal's triangle (all fit in an i64), row n starting at n(n + 1)/2.
-const BINOMIAL_ROWS: usize = 64;
-
-static BINOMIALS: [u64; BINOMIAL_ROWS * (BINOMIAL_ROWS + 1) / 2] = pascal();
-
-const fn pascal() -> [u64; BINOMIAL_ROWS * (BINOMIAL_ROWS + 1) / 2] {
-    let mut table = [0u64; BINOMIAL_ROWS * (BINOMIAL_ROWS + 1) / 2];
-    let mut n = 0;
-    while n < BINOMIAL_ROWS {
-        let row = n * (n + 1) / 2;
-        table[row] = 1;
-        table[row + n] = 1;
-        let mut k = 1;
-        while k < n {
-            let prev = (n - 1) * n / 2;
-            table[row + k] = table[prev + k - 1] + table[prev + k];
-            k += 1;
-        }
-        n += 1;
-    }
-    table
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn binomial_table_matches_product_formula() {
-        for n in 0..BINOMIAL_ROWS {
-            for k in 0..=n {
-                let product: f64 = binomial(n, k);
-                let table: f64 = binomial_coefficient(n, k);
-                // Both are the same integer rounded to f64 once at most.
-                assert!((product - table).abs() <= product * 1e-15, "C({n},{k})");
-            }
-        }
-        assert_eq!(BINOMIALS[63 * 64 / 2 + 31], 916_312_070_471_295_267);
-    }
 
     /// Deterministic coordinates of magnitude up to `m`, both signs, some zero.
     fn polygon(n: usize, m: f64, seed: u64) -> Vec<Point<f64, 2>> {

@@ -1,15 +1,25 @@
 //! Newton interpolation: divided differences, also at repeated (confluent) nodes, which turns
-//! it into Hermite interpolation.
+//! it into Hermite interpolation, and the [`NewtonForm`] curve they define.
 //!
-//! Seed 000 §4.3 (the Newton basis `P_i(u) = (u − u_0)···(u − u_{i−1})`, the recurrence of
-//! divided differences, Obs. 5–6: `[u_i ⋯ u_i] q = q⁽ⁿ⁾(u_i)/n!` at `n + 1` equal nodes) and
-//! §4.4 (Hermite interpolation as the confluent case); seed 003 §3.1 ("Newton": the nodes need
-//! not be in increasing order).
+//! The problem: the polynomial through points (and derivatives) at nodes in any order, in a
+//! basis that a new node only extends. The idea: in the Newton basis
+//! `P_i(u) = (u − u_0)···(u − u_{i−1})` the coefficients are the divided differences
+//! `[u_0 ⋯ u_i] q`, computed by a triangular table; at `r + 1` equal nodes the difference is
+//! `q⁽ʳ⁾(u)/r!`, the limit of the difference quotient.
+//!
+//! Follows [PPB, §4.3] (the Newton basis, the recurrence of divided differences, Obs. 5–6),
+//! [PPB, §4.4] (Hermite interpolation as the confluent case) and [RD, §3.1] ("Newton": the
+//! nodes need not be in increasing order).
+//!
+//! # Complexity
+//!
+//! Θ(N²D) time and Θ(ND) space for N conditions in R^D; Θ(ND) per evaluation.
 
-use super::interpolate::{
-    check_distinct, check_hermite, check_nodes_and_points, finite, HermiteNode,
-};
-use super::{Point, Polynomial, Scalar};
+use super::polynomial::{nested_to_bezier, HermiteNode, Polynomial};
+use super::validate::{check_distinct, check_hermite, check_nodes_and_points, finite};
+use crate::spline::bezier::Reparametrised;
+use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
+use crate::spline::scalar::{falling_factorial, validate_parameter, Point, Scalar};
 use crate::Result;
 
 /// A polynomial in Newton form: `p(u) = Σ_i c_i (u − z_0)···(u − z_{i−1})`, with the nodes
@@ -32,16 +42,6 @@ impl<S: Scalar, const D: usize> NewtonForm<S, D> {
         &self.coefficients
     }
 
-    /// `p(u)` by nested multiplication (Horner's rule for the Newton basis): `n` steps.
-    pub fn eval(&self, u: &S) -> Point<S, D> {
-        let n = self.coefficients.len();
-        let mut acc = self.coefficients[n - 1].clone();
-        for i in (0..n - 1).rev() {
-            acc = acc * (u.clone() - &self.nodes[i]) + &self.coefficients[i];
-        }
-        acc
-    }
-
     /// The same polynomial in the power basis, by expanding the nested form: Θ(n²·D).
     pub fn to_polynomial(&self) -> Polynomial<S, D> {
         let n = self.coefficients.len();
@@ -61,10 +61,67 @@ impl<S: Scalar, const D: usize> NewtonForm<S, D> {
     }
 }
 
+impl<S: Scalar, const D: usize> Curve<S, D> for NewtonForm<S, D> {
+    /// [`Domain::Real`].
+    fn domain(&self) -> Domain<S> {
+        Domain::Real
+    }
+
+    /// `p(u)` by nested multiplication (Horner's rule for the Newton basis): `n` steps.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) if `u` is NaN or infinite.
+    ///
+    /// # Complexity
+    ///
+    /// Θ(nD) time, O(D) auxiliary space.
+    fn eval(&self, u: &S) -> Result<Point<S, D>> {
+        validate_parameter(u, "u")?;
+        let n = self.coefficients.len();
+        let mut acc = self.coefficients[n - 1].clone();
+        for i in (0..n - 1).rev() {
+            acc = acc * (u.clone() - &self.nodes[i]) + &self.coefficients[i];
+        }
+        Ok(acc)
+    }
+}
+
+/// The derivative of a Newton form is a polynomial in the power basis.
+impl<S: Scalar, const D: usize> CurveDerivative<S, D> for NewtonForm<S, D> {
+    type Derivative = Polynomial<S, D>;
+
+    /// The derivative of [`to_polynomial`](NewtonForm::to_polynomial).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Overflow`](crate::Error::Overflow) as for [`Polynomial`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(n²D).
+    fn derivative_curve(&self) -> Result<Polynomial<S, D>> {
+        self.to_polynomial().derivative_curve()
+    }
+}
+
+/// The piece over [a, b] is the Bézier form on [a, b], from the nested form directly.
+impl<S: Scalar, const D: usize> Subsegment<S, D> for NewtonForm<S, D> {
+    type Segment = Reparametrised<S, D>;
+
+    /// # Complexity
+    ///
+    /// Θ(n²D) (Horner's rule in the Bernstein basis).
+    fn subsegment(&self, a: &S, b: &S) -> Result<Reparametrised<S, D>> {
+        check_interval(&self.domain(), a, b)?;
+        nested_to_bezier(&self.nodes, &self.coefficients, a, b)
+    }
+}
+
 /// The Newton form of the polynomial through the points `p_i` at the distinct nodes `u_i`
 /// (any order), by the triangular table of divided differences.
 ///
-/// The idea (seed 000 §4.3): `[u_i] q = p_i` and
+/// The idea ([PPB, §4.3]): `[u_i] q = p_i` and
 /// `[u_i ⋯ u_j] q = ([u_{i+1} ⋯ u_j] q − [u_i ⋯ u_{j−1}] q) / (u_j − u_i)`; the top diagonal
 /// of the table gives the coefficients. Adding a node later only adds a term (the basis is
 /// permanent), unlike the Lagrange form.
@@ -81,11 +138,11 @@ impl<S: Scalar, const D: usize> NewtonForm<S, D> {
 /// Θ(n²·D) time and Θ(n·D) auxiliary space for `n + 1` nodes in R^D. Nothing is counted.
 ///
 /// ```
-/// use compgeo::spline::{newton, Point};
+/// use compgeo::spline::{newton, Curve, Point};
 ///
 /// // y = u² at 3, 1, 2 (any order).
 /// let p = newton(&[3.0, 1.0, 2.0], &[Point::new([9.0]), Point::new([1.0]), Point::new([4.0])])?;
-/// assert_eq!(p.eval(&5.0), Point::new([25.0]));
+/// assert_eq!(p.eval(&5.0)?, Point::new([25.0]));
 /// assert_eq!(p.coefficients()[2], Point::new([1.0])); // the leading coefficient
 /// # Ok::<(), compgeo::Error>(())
 /// ```
@@ -95,21 +152,13 @@ pub fn newton<S: Scalar, const D: usize>(
 ) -> Result<NewtonForm<S, D>> {
     check_nodes_and_points(nodes, points)?;
     check_distinct(nodes)?;
-    let data: Vec<HermiteNode<S, D>> = nodes
-        .iter()
-        .zip(points)
-        .map(|(u, p)| HermiteNode {
-            u: u.clone(),
-            values: vec![p.clone()],
-        })
-        .collect();
-    checked(divided_differences(&data))
+    newton_unchecked(nodes, points)
 }
 
 /// The Newton form of the Hermite interpolant: values and derivatives at distinct nodes, by
 /// divided differences at repeated nodes.
 ///
-/// The idea (seed 000 §4.3 Obs. 5–6 and §4.4): a node with value and `k` derivatives is
+/// The idea ([PPB, §4.3, Obs. 5–6] and [PPB, §4.4]): a node with value and `k` derivatives is
 /// repeated `k + 1` times; in the table, a difference over `r + 1` equal nodes is
 /// `q⁽ʳ⁾(u)/r!` (the limit of the difference quotient), every other entry follows the usual
 /// recurrence. The resulting polynomial of degree `N − 1` (N conditions) matches every given
@@ -127,7 +176,7 @@ pub fn newton<S: Scalar, const D: usize>(
 /// Θ(N²·D) time and Θ(N·D) auxiliary space for `N` conditions. Nothing is counted.
 ///
 /// ```
-/// use compgeo::spline::{newton_hermite, HermiteNode, Point};
+/// use compgeo::spline::{newton_hermite, Curve, HermiteNode, Point};
 ///
 /// // u³ from value, slope and second derivative at 0 and its value at 1.
 /// let data = [
@@ -135,7 +184,7 @@ pub fn newton<S: Scalar, const D: usize>(
 ///     HermiteNode { u: 1.0, values: vec![Point::new([1.0])] },
 /// ];
 /// let p = newton_hermite(&data)?;
-/// assert_eq!(p.eval(&2.0), Point::new([8.0]));
+/// assert_eq!(p.eval(&2.0)?, Point::new([8.0]));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn newton_hermite<S: Scalar, const D: usize>(
@@ -143,6 +192,22 @@ pub fn newton_hermite<S: Scalar, const D: usize>(
 ) -> Result<NewtonForm<S, D>> {
     check_hermite(data)?;
     checked(divided_differences(data))
+}
+
+/// The Newton form of validated data: distinct finite nodes, as many finite points.
+pub(super) fn newton_unchecked<S: Scalar, const D: usize>(
+    nodes: &[S],
+    points: &[Point<S, D>],
+) -> Result<NewtonForm<S, D>> {
+    let data: Vec<HermiteNode<S, D>> = nodes
+        .iter()
+        .zip(points)
+        .map(|(u, p)| HermiteNode {
+            u: u.clone(),
+            values: vec![p.clone()],
+        })
+        .collect();
+    checked(divided_differences(&data))
 }
 
 /// The form, or an error if an `f64` divided difference overflowed.
@@ -170,9 +235,8 @@ fn divided_differences<S: Scalar, const D: usize>(data: &[HermiteNode<S, D>]) ->
     let mut column: Vec<Point<S, D>> = owner.iter().map(|&k| data[k].values[0].clone()).collect();
     let mut coefficients = Vec::with_capacity(n);
     coefficients.push(column[0].clone());
-    let mut factorial = S::one();
     for j in 1..n {
-        factorial = factorial * S::from_i64(j as i64);
+        let factorial: S = falling_factorial(j, j);
         for i in 0..n - j {
             column[i] = if owner[i] == owner[i + j] {
                 // j + 1 copies of one node: the j-th derivative over j!.

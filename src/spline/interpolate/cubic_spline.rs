@@ -1,10 +1,10 @@
 //! C² cubic spline interpolation with natural, clamped, Bessel and periodic end conditions,
 //! in O(n) by a tridiagonal (or cyclic tridiagonal) solve.
 //!
-//! Seed 003 §3.1 ("Spline cúbico": a C² function made of cubics with zero second derivative at
-//! its ends); seed 001 §3 ("Cúbicas C2 a trozos": the natural condition (10), the clamped
+//! Follows [RD, §3.1] ("Spline cúbico": a C² function made of cubics with zero second derivative at
+//! its ends), [SPL, §3] ("Cúbicas C2 a trozos": the natural condition (10), the clamped
 //! tangents (11), Bessel's tangents from the parabola through the first and last three
-//! points, and the periodic case of closed curves); seed 000 §4.5 for the Hermite form the
+//! points, and the periodic case of closed curves) and [PPB, §4.5] for the Hermite form the
 //! result is returned in.
 //!
 //! The unknowns are the tangents `m_i = s'(u_i)`: with `h_i = u_{i+1} − u_i` and
@@ -16,27 +16,39 @@
 //! stable in `f64` and never meets a zero pivot with rationals. The tangents then give the
 //! cubic Bézier pieces of [`hermite`](super::hermite()) (the C² spline is the C¹ Hermite
 //! interpolant of its own tangents).
+//!
+//! # Complexity
+//!
+//! Θ(nD) time and space for n + 1 points in R^D: exactly 7n + 4 counted point operations with
+//! the open end conditions, at most 8n with the periodic one.
 
-use super::interpolate::{check_nodes_and_points, check_partition};
-use super::{hermite, CompositeBezier, Point, Scalar};
-use crate::count::{Counter, NoCount};
-use crate::{Error, Result};
+use super::hermite::hermite;
+use super::linear::{count, solve_cyclic, solve_tridiagonal};
+use super::parameterise::parabola_end_tangent;
+use super::validate::{check_knots_and_points, finite};
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::Operation;
+use crate::count::{Counter, NoCount, Operation};
+use crate::spline::scalar::{Point, Scalar};
+use crate::spline::CompositeBezier;
+use crate::{Error, Result};
 
 /// The C² cubic spline's tangents with natural ends, declared.
 pub(crate) const NATURAL: Declaration = Declaration {
     problem: "spline",
     name: "cubic-natural",
     function: "spline::cubic_spline_tangents",
-    file: "src/spline/cubic_spline.rs",
+    file: "src/spline/interpolate/cubic_spline.rs",
     summary: "the tangents of the natural C² cubic spline by a tridiagonal solve",
     time: "Θ(n·D)",
     space: "Θ(n·D)",
     operation: Operation::ArithmeticOperations,
     counts: "exactly 7n + 4 point operations",
     source: "[RD, §3.1]",
-    claims: &[on("uniform-square", Bound::Linear, Operation::ArithmeticOperations)],
+    claims: &[on(
+        "uniform-square",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// The C² cubic spline's tangents with periodic ends, declared.
@@ -44,23 +56,27 @@ pub(crate) const PERIODIC: Declaration = Declaration {
     problem: "spline",
     name: "cubic-periodic",
     function: "spline::cubic_spline_tangents",
-    file: "src/spline/cubic_spline.rs",
+    file: "src/spline/interpolate/cubic_spline.rs",
     summary: "the tangents of the periodic C² cubic spline by a cyclic tridiagonal solve",
     time: "Θ(n·D)",
     space: "Θ(n·D)",
     operation: Operation::ArithmeticOperations,
     counts: "Θ(n) point operations",
     source: "[RD, §3.1]",
-    claims: &[on("uniform-square", Bound::Linear, Operation::ArithmeticOperations)],
+    claims: &[on(
+        "uniform-square",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// What the spline does at its two ends (the two conditions a C² cubic spline needs besides
 /// its data).
 #[derive(Clone, Debug, PartialEq)]
 pub enum EndCondition<S, const D: usize> {
-    /// Zero second derivative at both ends (seed 003 Def. 3.5; seed 001 (10)).
+    /// Zero second derivative at both ends ([RD, §3.1, Def. 3.5]; [SPL, §3, (10)]).
     Natural,
-    /// Prescribed first derivatives at the two ends (seed 001 (11)).
+    /// Prescribed first derivatives at the two ends ([SPL, §3, (11)]).
     Clamped {
         /// `s'(u_0)`.
         start: Point<S, D>,
@@ -68,7 +84,7 @@ pub enum EndCondition<S, const D: usize> {
         end: Point<S, D>,
     },
     /// The end tangents of the parabolas through the first three and the last three points
-    /// (seed 001 §3, Bessel's condition; seed 000 §4.5's end estimate). Needs three points.
+    /// ([SPL, §3], Bessel's condition; the end estimate of [PPB, §4.5]). Needs three points.
     Bessel,
     /// A closed curve: the first and last points must be equal, and the value, first and
     /// second derivatives agree there (the system closes cyclically). Needs three points
@@ -150,15 +166,7 @@ pub fn cubic_spline_tangents_with<S: Scalar, const D: usize, C: Counter>(
         EndCondition::Natural | EndCondition::Clamped { .. } => 2,
         EndCondition::Bessel | EndCondition::Periodic => 3,
     };
-    if points.len() < needed {
-        return Err(Error::TooFew {
-            what: "points",
-            needed,
-            got: points.len(),
-        });
-    }
-    check_nodes_and_points(partition, points)?;
-    check_partition(partition, needed, "partition")?;
+    check_knots_and_points(partition, points, needed)?;
     let n = points.len() - 1;
     let h: Vec<S> = partition.windows(2).map(|w| w[1].clone() - &w[0]).collect();
     let delta: Vec<Point<S, D>> = (0..n)
@@ -168,13 +176,15 @@ pub fn cubic_spline_tangents_with<S: Scalar, const D: usize, C: Counter>(
     count(counter, 4 * n);
     let three = S::from_i64(3);
     let two = S::from_i64(2);
-    // Row i of the interior equations: (sub, diag, sup, rhs).
+    // Row i of the C² equations, i − 1 and i + 1 taken cyclically (row 0 only for a periodic
+    // spline): (sub, diag, sup, rhs).
     let interior = |i: usize| {
-        let rhs = (delta[i - 1].clone() * &h[i] + &(delta[i].clone() * &h[i - 1])) * &three;
+        let before = (i + n - 1) % n;
+        let rhs = (delta[before].clone() * &h[i] + &(delta[i].clone() * &h[before])) * &three;
         (
             h[i].clone(),
-            (h[i - 1].clone() + &h[i]) * &two,
-            h[i - 1].clone(),
+            (h[before].clone() + &h[i]) * &two,
+            h[before].clone(),
             rhs,
         )
     };
@@ -186,30 +196,14 @@ pub fn cubic_spline_tangents_with<S: Scalar, const D: usize, C: Counter>(
             });
         }
         // Unknowns m_0..m_{n-1} with m_n = m_0; row 0 wraps to h_{n-1}, δ_{n-1}.
-        let mut sub = Vec::with_capacity(n);
-        let mut diag = Vec::with_capacity(n);
-        let mut sup = Vec::with_capacity(n);
-        let mut rhs = Vec::with_capacity(n);
-        let rhs0 = (delta[n - 1].clone() * &h[0] + &(delta[0].clone() * &h[n - 1])) * &three;
-        sub.push(h[0].clone());
-        diag.push((h[n - 1].clone() + &h[0]) * &two);
-        sup.push(h[n - 1].clone());
-        rhs.push(rhs0);
-        for i in 1..n {
-            let (a, b, c, r) = interior(i);
-            sub.push(a);
-            diag.push(b);
-            sup.push(c);
-            rhs.push(r);
+        let mut rows = Rows::with_capacity(n);
+        for i in 0..n {
+            rows.push(interior(i));
         }
-        let mut m = solve_cyclic(&sub, &diag, &sup, rhs, counter);
+        let mut m = solve_cyclic(&rows.sub, &rows.diag, &rows.sup, rows.rhs, counter);
         m.push(m[0].clone());
         return finite(m);
     }
-    let mut sub = Vec::with_capacity(n + 1);
-    let mut diag = Vec::with_capacity(n + 1);
-    let mut sup = Vec::with_capacity(n + 1);
-    let mut rhs = Vec::with_capacity(n + 1);
     let (first, last) = match end {
         EndCondition::Natural => (None, None),
         EndCondition::Clamped { start, end } => {
@@ -230,43 +224,24 @@ pub fn cubic_spline_tangents_with<S: Scalar, const D: usize, C: Counter>(
         }
         EndCondition::Periodic => unreachable!("handled above"),
     };
+    let mut rows = Rows::with_capacity(n + 1);
     // Row 0: m_0 given, or natural 2 m_0 + m_1 = 3 δ_0.
-    match first {
-        Some(t) => {
-            diag.push(S::one());
-            sup.push(S::zero());
-            rhs.push(t);
-        }
-        None => {
-            diag.push(two.clone());
-            sup.push(S::one());
-            rhs.push(delta[0].clone() * &three);
-        }
-    }
-    sub.push(S::zero());
+    rows.push(match first {
+        Some(t) => (S::zero(), S::one(), S::zero(), t),
+        None => (S::zero(), two.clone(), S::one(), delta[0].clone() * &three),
+    });
     for i in 1..n {
-        let (a, b, c, r) = interior(i);
-        sub.push(a);
-        diag.push(b);
-        sup.push(c);
-        rhs.push(r);
+        rows.push(interior(i));
     }
     // Row n: m_n given, or natural m_{n-1} + 2 m_n = 3 δ_{n-1}.
-    match last {
-        Some(t) => {
-            sub.push(S::zero());
-            diag.push(S::one());
-            rhs.push(t);
-        }
-        None => {
-            sub.push(S::one());
-            diag.push(two);
-            rhs.push(delta[n - 1].clone() * &three);
-        }
-    }
-    sup.push(S::zero());
+    rows.push(match last {
+        Some(t) => (S::zero(), S::one(), S::zero(), t),
+        None => (S::one(), two, S::zero(), delta[n - 1].clone() * &three),
+    });
     count(counter, 2);
-    finite(solve_tridiagonal(&sub, &diag, &sup, rhs, counter))
+    finite(solve_tridiagonal(
+        &rows.sub, &rows.diag, &rows.sup, rows.rhs, counter,
+    ))
 }
 
 /// The C² cubic spline through `points` at the knots `partition`, as a composite cubic Bézier
@@ -284,7 +259,7 @@ pub fn cubic_spline_tangents_with<S: Scalar, const D: usize, C: Counter>(
 /// Θ(n·D) time and Θ(n·D) space for `n + 1` points in R^D. Nothing is counted.
 ///
 /// ```
-/// use compgeo::spline::{cubic_spline, EndCondition, Point};
+/// use compgeo::spline::{cubic_spline, Curve, CurveDerivative, EndCondition, Point};
 ///
 /// let pts = [Point::new([0.0, 0.0]), Point::new([1.0, 2.0]), Point::new([3.0, 1.0])];
 /// let s = cubic_spline(&[0.0, 1.0, 2.0], &pts, &EndCondition::Natural)?;
@@ -300,147 +275,33 @@ pub fn cubic_spline<S: Scalar, const D: usize>(
     end: &EndCondition<S, D>,
 ) -> Result<CompositeBezier<S, D>> {
     let tangents = cubic_spline_tangents(partition, points, end)?;
-    hermite(points, &tangents, partition)
+    hermite(partition, points, &tangents)
 }
 
-/// The derivative at the first knot of the parabola through three consecutive points, from
-/// its two chord slopes: `p'(u_0) = 2 δ_0 − p'(u_1)` with
-/// `p'(u_1) = (h_1 δ_0 + h_0 δ_1)/(h_0 + h_1)` (seed 000 §4.5). With the arguments mirrored
-/// (`h_{n−1}, h_{n−2}, δ_{n−1}, δ_{n−2}`) it gives the derivative at the last knot.
-pub(crate) fn parabola_end_tangent<S: Scalar, const D: usize>(
-    h0: &S,
-    h1: &S,
-    delta0: &Point<S, D>,
-    delta1: &Point<S, D>,
-) -> Point<S, D> {
-    let inner = (delta0.clone() * h1 + &(delta1.clone() * h0)) / (h0.clone() + h1);
-    delta0.clone() * S::from_i64(2) - &inner
-}
-
-/// Thomas' algorithm for a tridiagonal system with point right-hand sides: row `i` is
-/// `sub[i] x_{i−1} + diag[i] x_i + sup[i] x_{i+1} = rhs[i]` (`sub[0]`, `sup[n−1]` unused).
-/// The callers' matrices are strictly diagonally dominant, so no pivot is zero.
-fn solve_tridiagonal<S: Scalar, const D: usize, C: Counter>(
-    sub: &[S],
-    diag: &[S],
-    sup: &[S],
-    mut rhs: Vec<Point<S, D>>,
-    counter: &mut C,
-) -> Vec<Point<S, D>> {
-    let n = diag.len();
-    // One scaling of the first row, a multiply-add and a scaling per later row, one
-    // multiply-add per row back.
-    count(counter, 3 * n - 1);
-    // One division per row: points are scaled by the pivot's reciprocal.
-    let mut c = Vec::with_capacity(n);
-    let mut inverse = S::one() / &diag[0];
-    c.push(sup[0].clone() * &inverse);
-    rhs[0] = rhs[0].clone() * &inverse;
-    for i in 1..n {
-        inverse = S::one() / (diag[i].clone() - &(sub[i].clone() * &c[i - 1]));
-        c.push(sup[i].clone() * &inverse);
-        let prev = rhs[i - 1].clone() * &sub[i];
-        rhs[i] = (rhs[i].clone() - &prev) * &inverse;
-    }
-    for i in (0..n - 1).rev() {
-        let next = rhs[i + 1].clone() * &c[i];
-        rhs[i] -= &next;
-    }
-    rhs
-}
-
-/// A cyclic tridiagonal system: as [`solve_tridiagonal`] plus the corners
-/// `A[0][n−1] = sub[0]` and `A[n−1][0] = sup[n−1]`, by the Sherman–Morrison formula
-/// (two tridiagonal solves). Needs `n ≥ 2`; for `n = 2` the corners fold into the
-/// off-diagonals.
-fn solve_cyclic<S: Scalar, const D: usize, C: Counter>(
-    sub: &[S],
-    diag: &[S],
-    sup: &[S],
+/// The rows of a (cyclic) tridiagonal system, as [`solve_tridiagonal`] and [`solve_cyclic`]
+/// take them.
+struct Rows<S, const D: usize> {
+    sub: Vec<S>,
+    diag: Vec<S>,
+    sup: Vec<S>,
     rhs: Vec<Point<S, D>>,
-    counter: &mut C,
-) -> Vec<Point<S, D>> {
-    let n = diag.len();
-    if n == 2 {
-        count(counter, 4);
-        let (a, b) = (diag[0].clone(), sup[0].clone() + &sub[0]);
-        let (c, d) = (sub[1].clone() + &sup[1], diag[1].clone());
-        let det = a.clone() * &d - &(b.clone() * &c);
-        let x0 = (rhs[0].clone() * &d - &(rhs[1].clone() * &b)) / &det;
-        let x1 = (rhs[1].clone() * &a - &(rhs[0].clone() * &c)) / &det;
-        return vec![x0, x1];
-    }
-    let (beta, alpha) = (sub[0].clone(), sup[n - 1].clone());
-    // A = T + w vᵀ with w = (γ, 0, ..., 0, α), v = (1, 0, ..., 0, β/γ).
-    let gamma = -diag[0].clone();
-    let mut modified = diag.to_vec();
-    modified[0] = diag[0].clone() - &gamma;
-    modified[n - 1] = diag[n - 1].clone() - &(alpha.clone() * &beta / &gamma);
-    let y = solve_tridiagonal(sub, &modified, sup, rhs, counter);
-    let mut w = vec![Point::<S, 1>::zero(); n];
-    w[0] = Point::new([gamma.clone()]);
-    w[n - 1] = Point::new([alpha]);
-    // The correction's system has scalar right-hand sides: bookkeeping, not counted.
-    let z = solve_tridiagonal(sub, &modified, sup, w, &mut NoCount);
-    count(counter, n + 1);
-    let ratio = beta / &gamma;
-    let vz = z[0][0].clone() + &(z[n - 1][0].clone() * &ratio);
-    let vy = y[0].clone() + &(y[n - 1].clone() * &ratio);
-    let factor = vy / &(S::one() + &vz);
-    y.into_iter()
-        .zip(z)
-        .map(|(yi, zi)| yi - &(factor.clone() * &zi[0]))
-        .collect()
 }
 
-/// The tangents, or an error if an `f64` one overflowed.
-fn finite<S: Scalar, const D: usize>(tangents: Vec<Point<S, D>>) -> Result<Vec<Point<S, D>>> {
-    if tangents.iter().all(Point::is_finite) {
-        Ok(tangents)
-    } else {
-        Err(super::hermite::overflow())
-    }
-}
-
-/// Records `k` arithmetic operations.
-fn count<C: Counter>(counter: &mut C, k: usize) {
-    for _ in 0..k {
-        counter.arithmetic_operation();
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Multiplies the cyclic matrix by `x` (the oracle for the solver).
-    fn cyclic_times(sub: &[f64], diag: &[f64], sup: &[f64], x: &[f64]) -> Vec<f64> {
-        let n = x.len();
-        (0..n)
-            .map(|i| sub[i] * x[(i + n - 1) % n] + diag[i] * x[i] + sup[i] * x[(i + 1) % n])
-            .collect()
-    }
-
-    #[test]
-    fn cyclic_solver_inverts_the_cyclic_matrix() {
-        for n in 2..7 {
-            let sub: Vec<f64> = (0..n).map(|i| 1.0 + i as f64 * 0.25).collect();
-            let sup: Vec<f64> = (0..n).map(|i| 0.5 + i as f64 * 0.125).collect();
-            let diag: Vec<f64> = (0..n).map(|i| 2.0 * (sub[i] + sup[i]) + 0.5).collect();
-            let x: Vec<f64> = (0..n).map(|i| (i as f64 - 1.5) * 0.75).collect();
-            let mut b = cyclic_times(&sub, &diag, &sup, &x);
-            if n == 2 {
-                // For two unknowns both neighbours are the other one.
-                b = vec![
-                    (sub[0] + sup[0]) * x[1] + diag[0] * x[0],
-                    (sub[1] + sup[1]) * x[0] + diag[1] * x[1],
-                ];
-            }
-            let rhs = b.iter().map(|&v| Point::new([v])).collect();
-            let got = solve_cyclic(&sub, &diag, &sup, rhs, &mut NoCount);
-            for (g, want) in got.iter().zip(&x) {
-                assert!((g[0] - want).abs() < 1e-12, "n = {n}: {g:?} vs {want}");
-            }
+impl<S: Scalar, const D: usize> Rows<S, D> {
+    fn with_capacity(n: usize) -> Self {
+        Rows {
+            sub: Vec::with_capacity(n),
+            diag: Vec::with_capacity(n),
+            sup: Vec::with_capacity(n),
+            rhs: Vec::with_capacity(n),
         }
+    }
+
+    /// Appends the row `(sub, diag, sup, rhs)`.
+    fn push(&mut self, (a, b, c, r): (S, S, S, Point<S, D>)) {
+        self.sub.push(a);
+        self.diag.push(b);
+        self.sup.push(c);
+        self.rhs.push(r);
     }
 }

@@ -2,25 +2,16 @@
 //! back end (so every identity holds with `==`), plus the `f64` path against it, the
 //! convex-hull property with exact orientations, degenerate and bad input, and the CLI.
 
-#[cfg(feature = "cli")]
-mod common;
-
+use crate::spline_common::{q, Q};
 use compgeo::count::Counts;
 use compgeo::geometry::Point2;
 use compgeo::hull::{monotone_chain, HullOptions};
 use compgeo::spline::{
-    bernstein, bernstein_all, bernstein_derivative, intersections, Bezier, Finite, Point, Scalar,
+    bernstein, bernstein_all, bernstein_derivative, intersections, Bezier, Curve, CurveDerivative,
+    Finite, Point, Scalar,
 };
 use compgeo::Error;
-use num_bigint::BigInt;
-use num_rational::BigRational;
 use proptest::prelude::*;
-
-type Q = BigRational;
-
-fn q(n: i64, d: i64) -> Q {
-    Q::new(BigInt::from(n), BigInt::from(d))
-}
 
 fn qp<const D: usize>(c: [(i64, i64); D]) -> Point<Q, D> {
     Point::new(c.map(|(n, d)| q(n, d)))
@@ -418,7 +409,7 @@ fn segment_distance(p: Point<f64, 2>, a: Point<f64, 2>, b: Point<f64, 2>) -> f64
     (p - closest).norm_squared().sqrt()
 }
 
-/// 003 §3.2: moving P₁ of a cubic moves the curve by at most 4/9 of the displacement, because
+/// [RD, §3.2]: moving P₁ of a cubic moves the curve by at most 4/9 of the displacement, because
 /// max B₁³ on [0, 1] is 4/9, attained at t = 1/3.
 #[test]
 fn max_of_b13_on_the_unit_interval_is_four_ninths() {
@@ -446,7 +437,7 @@ fn max_of_b13_on_the_unit_interval_is_four_ninths() {
 
 #[test]
 fn linear_precision_and_the_seeds_conversion_formula() {
-    // 000 §2.8 Obs. 8: a linear polynomial a₀ + a₁t has Bézier points a₀ + (j/n) a₁, here
+    // [PPB, §2.8, Obs. 8]: a linear polynomial a₀ + a₁t has Bézier points a₀ + (j/n) a₁, here
     // elevated to degree 4 they are evenly spaced.
     let line = Bezier::from_monomial(&[qp([(1, 1), (2, 1)]), qp([(4, 1), (-8, 1)])]).unwrap();
     let e = line.elevate_to(4).unwrap();
@@ -629,7 +620,7 @@ fn bad_input_is_an_error_never_a_panic() {
 #[cfg(feature = "cli")]
 #[test]
 fn cli_evaluates_splits_elevates_and_differentiates_exactly() {
-    use common::run_json;
+    use crate::common::run_json;
     let cubic = r#"[[0, 0], ["1/3", 2], [3, 2], [4, 0]]"#;
     let v = run_json(
         &[
@@ -744,7 +735,7 @@ fn cli_evaluates_splits_elevates_and_differentiates_exactly() {
 #[cfg(feature = "cli")]
 #[test]
 fn cli_rejects_bad_input_with_exit_code_2() {
-    use common::assert_rejected;
+    use crate::common::assert_rejected;
     let ok = "[[0, 0], [1, 1]]";
     for (args, needle) in [
         (
@@ -806,5 +797,117 @@ fn cli_rejects_bad_input_with_exit_code_2() {
     ] {
         let line = assert_rejected(&args, None);
         assert!(line.contains(needle), "{args:?}: {line}");
+    }
+}
+
+/// The curve traits' properties (`spline_common::curve_properties`) on the Bézier types.
+mod traits {
+    use super::Q;
+    use crate::spline_common::curve_properties::{curve_property_tests, eighths, points, Family};
+    use compgeo::spline::{
+        Bezier, CompositeBezier, Curve, Point, Reparametrised, Scalar, Subsegment,
+    };
+    use proptest::prelude::*;
+
+    /// Control polygons of degree 0 to `max`, coordinates in eighths within ±10.
+    fn polygon(max: usize) -> impl Strategy<Value = Vec<(i64, i64)>> {
+        prop::collection::vec((-80i64..=80, -80i64..=80), 1..=max + 1)
+    }
+
+    struct Bezier6;
+
+    impl Family for Bezier6 {
+        type Data = Vec<(i64, i64)>;
+        type Curve<S: Scalar> = Bezier<S, 2>;
+        const TOLERANCE: f64 = 1e-12;
+        fn data() -> BoxedStrategy<Self::Data> {
+            polygon(6).boxed()
+        }
+        fn build<S: Scalar>(data: &Self::Data) -> Bezier<S, 2> {
+            Bezier::new(points(data)).unwrap()
+        }
+    }
+
+    struct OverAnInterval;
+
+    impl Family for OverAnInterval {
+        /// The polygon, a and b − a in eighths.
+        type Data = (Vec<(i64, i64)>, i64, i64);
+        type Curve<S: Scalar> = Reparametrised<S, 2>;
+        const TOLERANCE: f64 = 1e-12;
+        fn data() -> BoxedStrategy<Self::Data> {
+            (polygon(5), -8i64..=8, 1i64..=16).boxed()
+        }
+        fn build<S: Scalar>((polygon, a, width): &Self::Data) -> Reparametrised<S, 2> {
+            Bezier::new(points(polygon))
+                .unwrap()
+                .reparametrise(eighths(*a), eighths(a + width))
+                .unwrap()
+        }
+    }
+
+    struct Composite;
+
+    impl Family for Composite {
+        /// The first knot, then (gap, polygon) per piece, in eighths; each piece after the
+        /// first starts where the previous one ends (a C⁰ curve: where pieces do not meet, a
+        /// subsegment ending at the knot ends with the left piece, see
+        /// `subsegments_end_with_the_left_piece_where_pieces_do_not_meet`).
+        type Data = (i64, Vec<(i64, Vec<(i64, i64)>)>);
+        type Curve<S: Scalar> = CompositeBezier<S, 2>;
+        const TOLERANCE: f64 = 1e-12;
+        fn data() -> BoxedStrategy<Self::Data> {
+            (
+                -8i64..=0,
+                prop::collection::vec((1i64..=12, polygon(4)), 1..=3),
+            )
+                .prop_map(|(start, mut pieces)| {
+                    for i in 1..pieces.len() {
+                        let end = *pieces[i - 1].1.last().unwrap();
+                        pieces[i].1[0] = end;
+                    }
+                    (start, pieces)
+                })
+                .boxed()
+        }
+        fn build<S: Scalar>((start, pieces): &Self::Data) -> CompositeBezier<S, 2> {
+            let mut knots = vec![*start];
+            for (gap, _) in pieces {
+                knots.push(knots.last().unwrap() + gap);
+            }
+            CompositeBezier::new(
+                knots.into_iter().map(eighths).collect(),
+                pieces.iter().map(|(_, p)| points(p)).collect(),
+            )
+            .unwrap()
+        }
+    }
+
+    /// At an interior knot where the pieces do not meet the curve is the right piece (as
+    /// `derivative_at` is), but a subsegment ending there is the left piece up to its end:
+    /// the proptest's reproduction on closed intervals holds wherever the curve is
+    /// continuous.
+    #[test]
+    fn subsegments_end_with_the_left_piece_where_pieces_do_not_meet() {
+        let p = |x: i64, y: i64| Point::new([Q::from_i64(x), Q::from_i64(y)]);
+        let (zero, one, two) = (Q::from_i64(0), Q::from_i64(1), Q::from_i64(2));
+        let c = CompositeBezier::new(
+            vec![zero.clone(), one.clone(), two.clone()],
+            vec![vec![p(0, 0), p(1, 1)], vec![p(5, 5), p(6, 4)]],
+        )
+        .unwrap();
+        assert_eq!(c.eval(&one).unwrap(), p(5, 5));
+        let left = c.subsegment(&zero, &one).unwrap();
+        assert_eq!(left.partition(), [zero.clone(), one.clone()]);
+        assert_eq!(left.eval(&one).unwrap(), p(1, 1));
+        let right = c.subsegment(&one, &two).unwrap();
+        assert_eq!(right.pieces(), &c.pieces()[1..]);
+        assert_eq!(right.eval(&one).unwrap(), p(5, 5));
+    }
+
+    curve_property_tests! {
+        bezier_curves_have_the_curve_properties: Bezier6, 48;
+        reparametrised_curves_have_the_curve_properties: OverAnInterval, 32;
+        composite_curves_have_the_curve_properties: Composite, 32;
     }
 }

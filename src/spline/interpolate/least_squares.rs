@@ -1,20 +1,31 @@
 //! Least-squares fitting of a Bézier curve to points at given parameters, optionally weighted
 //! and optionally interpolating the first and last points.
 //!
-//! Seed 000 §4.6 (the residual `R = C X − P` with `C_ij = B_jⁿ(u_i)`, one column per
-//! coordinate, Obs. 10; the weighted sum `Σ w_i² r_i²`) and §4.7 (the theorem: the residual is
-//! minimal under the constraint `D x = q` for the solution of the bordered system (2),
+//! The problem: the Bézier curve of a given degree closest to more points than it can
+//! interpolate. The idea: the control points are the unknowns of `C X = P` with the Bernstein
+//! matrix `C_ij = B_jⁿ(u_i)`; the least-squares solution solves the normal equations, bordered
+//! by the interpolation constraints when the ends are clamped.
+//!
+//! Follows [PPB, §4.6] (the residual `R = C X − P`, one column per coordinate, Obs. 10; the
+//! weighted sum `Σ w_i² r_i²`) and [PPB, §4.7] (the theorem: the residual is minimal under
+//! the constraint `D x = q` for the solution of the bordered system (2),
 //! `[CᵀC Dᵀ; D 0] [x; y] = [Cᵀp; q]`, and with weights (3), `CᵀW²C` and `CᵀW²p`; without
 //! constraints the normal equations `CᵀC x = Cᵀp`, Obs. 11).
+//!
+//! # Complexity
+//!
+//! Θ(m·n² + n³ + m·n·D) time and Θ(n² + m·n + n·D) space for m points and degree n.
 
-use super::interpolate::{check_finite_nodes, check_nodes_and_points, singular, solve_dense};
-use super::{bernstein_all, Bezier, Point, Scalar};
+use super::linear::solve_dense;
+use super::validate::{check_finite_nodes, check_nodes_and_points, singular};
+use crate::spline::scalar::{Point, Scalar};
+use crate::spline::{bernstein_all, Bezier};
 use crate::{Error, Result};
 
 /// What a least-squares fit may add to plain Gauss normal equations.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct FitOptions<S> {
-    /// Weights `w_i` of the points: the fit minimises `Σ w_i² ‖r_i‖²` (seed 000 §4.6). `None`
+    /// Weights `w_i` of the points: the fit minimises `Σ w_i² ‖r_i‖²` ([PPB, §4.6]). `None`
     /// weighs every point 1.
     pub weights: Option<Vec<S>>,
     /// Interpolate the first and the last point exactly: the constraint `b_0 = p_1`,
@@ -23,7 +34,7 @@ pub struct FitOptions<S> {
 }
 
 /// The Bézier curve of degree `degree` over [0, 1] that fits `points` at the parameters
-/// `params` best in the least-squares sense (seed 000 §4.7).
+/// `params` best in the least-squares sense ([PPB, §4.7]).
 ///
 /// The idea: the control points are the unknowns of the linear system `C X = P` with the
 /// Bernstein matrix `C_ij = B_jⁿ(u_i)`; with more points than unknowns the residual is

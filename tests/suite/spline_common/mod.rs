@@ -1,7 +1,10 @@
-//! Exact-rational helpers shared by the spline tests: short constructors and a reader for
-//! the integer pairs printed in the seeds.
+//! Exact-rational helpers shared by the spline tests: short constructors, a reader for the
+//! integer pairs printed in the seeds, and the properties every curve type must have
+//! (`curve_properties`).
 // Each test crate compiles its own copy and uses only some of the helpers.
 #![allow(dead_code)]
+
+pub mod curve_properties;
 
 use compgeo::spline::Point;
 use num_bigint::BigInt;

@@ -1,6 +1,6 @@
 //! C¹ piecewise quadratic (parabolic) interpolation, open and closed.
 //!
-//! Seed 001 §2 ("Parábolas C1 a trozos"): piece i has the control points
+//! Follows [SPL, §2] ("Parábolas C1 a trozos"): piece i has the control points
 //! `c_{2i}, c_{2i+1}, c_{2i+2}` over `[u_i, u_{i+1}]`, the joints are the data
 //! (`c_{2i} = a_i`), and C¹ continuity at `u_i` is relation (2),
 //! `c_{2i} = (Δu_i c_{2i−1} + Δu_{i−1} c_{2i+1}) / (Δu_{i−1} + Δu_i)`. An open curve through
@@ -12,13 +12,19 @@
 //! The open spline is only as well conditioned as the seed warns: each inner point reflects
 //! the previous one through a data point with the ratio `Δu_i/Δu_{i−1}`, so a perturbation of
 //! the start tangent travels along the whole curve.
+//!
+//! # Complexity
+//!
+//! Θ(ND) time and space for N + 1 points in R^D (one pass; the closed spline solves its
+//! cyclic system by telescoping, also in one pass).
 
-use super::interpolate::{check_nodes_and_points, check_partition, singular};
-use super::{CompositeBezier, Point, Scalar};
+use super::validate::{check_knots_and_points, overflow, singular};
+use crate::spline::scalar::{Point, Scalar};
+use crate::spline::CompositeBezier;
 use crate::{Error, Result};
 
 /// The C¹ quadratic spline through `points` at the knots `partition` whose first derivative at
-/// `u_0` is `start_tangent` (seed 001 §2).
+/// `u_0` is `start_tangent` ([SPL, §2]).
 ///
 /// The idea: `c_1 = a_0 + Δu_0 v / 2` (a parabola's end derivative is `2 (c_1 − c_0)/Δu`),
 /// then relation (2) solved for the next inner point,
@@ -35,7 +41,7 @@ use crate::{Error, Result};
 /// Θ(N·D) time and space for `N + 1` points in R^D. Nothing is counted.
 ///
 /// ```
-/// use compgeo::spline::{quadratic_spline, Point};
+/// use compgeo::spline::{quadratic_spline, Curve, Point};
 ///
 /// // Samples of the parabola u² with its slope 0 at u = 0 give the parabola back.
 /// let pts: Vec<_> = [0.0, 1.0, 4.0, 9.0].iter().map(|&y| Point::new([y])).collect();
@@ -49,7 +55,7 @@ pub fn quadratic_spline<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
     start_tangent: &Point<S, D>,
 ) -> Result<CompositeBezier<S, D>> {
-    check(partition, points, 2)?;
+    check_knots_and_points(partition, points, 2)?;
     if let Some(c) = start_tangent.coords().iter().find(|c| !c.is_finite()) {
         return Err(Error::NonFinite {
             index: points.len(),
@@ -69,7 +75,7 @@ pub fn quadratic_spline<S: Scalar, const D: usize>(
 }
 
 /// The closed C¹ quadratic spline through `points` (first and last equal) at the knots
-/// `partition`: `N` pieces, C¹ also where the curve closes (seed 001 §2, relations (5)).
+/// `partition`: `N` pieces, C¹ also where the curve closes ([SPL, §2], relations (5)).
 ///
 /// The idea: write every inner point as `c_{2i+1} = A_i + B_i c_1` by the recurrence of
 /// [`quadratic_spline`], then the C¹ condition at the closing point fixes `c_1`. The factors
@@ -106,7 +112,7 @@ pub fn closed_quadratic_spline<S: Scalar, const D: usize>(
     partition: &[S],
     points: &[Point<S, D>],
 ) -> Result<CompositeBezier<S, D>> {
-    check(partition, points, 3)?;
+    check_knots_and_points(partition, points, 3)?;
     let n = points.len() - 1;
     if points[0] != points[n] {
         return Err(Error::InvalidParameter {
@@ -132,7 +138,7 @@ pub fn closed_quadratic_spline<S: Scalar, const D: usize>(
             "points",
             &format!(
                 "a closed C1 quadratic spline with an even number of pieces ({n}) is singular \
-                 (001 §2): give an odd number of pieces"
+                 (SPL §2): give an odd number of pieces"
             ),
         ));
     }
@@ -147,22 +153,6 @@ pub fn closed_quadratic_spline<S: Scalar, const D: usize>(
     build(partition, points, inner)
 }
 
-fn check<S: Scalar, const D: usize>(
-    partition: &[S],
-    points: &[Point<S, D>],
-    needed: usize,
-) -> Result<()> {
-    if points.len() < needed {
-        return Err(Error::TooFew {
-            what: "points",
-            needed,
-            got: points.len(),
-        });
-    }
-    check_nodes_and_points(partition, points)?;
-    check_partition(partition, needed, "partition")
-}
-
 /// The composite curve with pieces `a_i, inner_i, a_{i+1}`.
 fn build<S: Scalar, const D: usize>(
     partition: &[S],
@@ -170,7 +160,7 @@ fn build<S: Scalar, const D: usize>(
     inner: Vec<Point<S, D>>,
 ) -> Result<CompositeBezier<S, D>> {
     if inner.iter().any(|p| !p.is_finite()) {
-        return Err(super::hermite::overflow());
+        return Err(overflow());
     }
     let pieces = inner
         .into_iter()

@@ -1,20 +1,24 @@
-//! Piecewise cubic Hermite interpolation as a composite cubic Bézier curve, with given or
-//! estimated tangents, and the parameterisations that choose the knots.
+//! Choosing knots and tangents from the data: the uniform, chord-length and centripetal
+//! parameterisations, and tangents estimated from the parabolas through consecutive points.
 //!
-//! Seed 003 §3.2 ("Interpolación cúbica de Hermite": `P_{3i±1} = Q_i ± (Δu/3) D_i` and the
-//! worked example through (0,1), (5,2), (10,5), (6,9), (5,4)); seed 000 §4.5 (the Bézier points
-//! `b_{3i+1} = p_i + d_i Δu_i/3`, `b_{3i+2} = p_{i+1} − d_{i+1} Δu_i/3`; tangents from the
-//! parabola through three consecutive points and the end conditions
-//! `d_0 = 2 Δp_0/Δu_0 − d_1`; uniform, chord-length and centripetal parameterisations);
-//! seed 001 §4 ("Cúbicas C1 a trozos", equations (12)).
+//! The problem: an interpolant needs knots (and a Hermite interpolant tangents) the data may
+//! not give. The idea: make the knot gaps follow the chords (their lengths, or the square
+//! roots of their lengths), and take at each point the derivative of the parabola through it
+//! and its two neighbours.
+//!
+//! Follows [PPB, §4.5] (the parameterisations, the tangent estimates and the end conditions
+//! `d_0 = 2 Δp_0/Δu_0 − d_1`) and [SPL, §3] (Bessel's end tangents).
+//!
+//! # Complexity
+//!
+//! Θ(mD) time and Θ(mD) space for m + 1 points in R^D.
 
-use super::cubic_spline::parabola_end_tangent;
-use super::interpolate::{check_nodes_and_points, check_partition};
-use super::{CompositeBezier, Point, Scalar};
+use super::validate::check_knots_and_points;
+use crate::spline::scalar::{validate_points, Point, Scalar};
 use crate::{Error, Result};
 
 /// How to choose the knots `u_0 < u_1 < ...` of an interpolant from its points
-/// (seed 000 §4.5). Every variant starts at `u_0 = 0`.
+/// ([PPB, §4.5]). Every variant starts at `u_0 = 0`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Parameterisation {
     /// `Δu_i = 1`: the knots are `0, 1, 2, ...`.
@@ -25,66 +29,7 @@ pub enum Parameterisation {
     Centripetal,
 }
 
-/// The piecewise cubic C¹ curve through `points` with the derivatives `tangents` at the knots
-/// `partition`, as a composite cubic Bézier curve.
-///
-/// The idea (seed 003 §3.2, seed 000 §4.5): the cubic over `[u_i, u_{i+1}]` with
-/// `h_i = u_{i+1} − u_i` has Bézier points `p_i`, `p_i + h_i d_i / 3`,
-/// `p_{i+1} − h_i d_{i+1} / 3`, `p_{i+1}`, since a cubic's end derivatives are
-/// `3 (b_1 − b_0)/h` and `3 (b_3 − b_2)/h`. Exact with rationals: the seed's worked example
-/// comes out digit for digit.
-///
-/// # Errors
-///
-/// [`Error::TooFew`] for fewer than two points; [`Error::InvalidParameter`] for mismatched
-/// lengths (`"points"`, `"tangents"`) or a non-finite, non-increasing partition
-/// (`"partition"`), and (`"points"`) when an `f64` control point overflows;
-/// [`Error::NonFinite`] for a bad coordinate.
-///
-/// # Complexity
-///
-/// Θ(m·D) time and space for `m + 1` points in R^D. Nothing is counted.
-///
-/// ```
-/// use compgeo::spline::{hermite, Point};
-///
-/// let p = |x: f64, y: f64| Point::new([x, y]);
-/// let c = hermite(&[p(0.0, 1.0), p(5.0, 2.0)], &[p(6.0, 12.0), p(12.0, -12.0)], &[0.0, 0.5])?;
-/// assert_eq!(c.pieces()[0].control(), [p(0.0, 1.0), p(1.0, 3.0), p(3.0, 4.0), p(5.0, 2.0)]);
-/// # Ok::<(), compgeo::Error>(())
-/// ```
-pub fn hermite<S: Scalar, const D: usize>(
-    points: &[Point<S, D>],
-    tangents: &[Point<S, D>],
-    partition: &[S],
-) -> Result<CompositeBezier<S, D>> {
-    check_points_partition(points, partition)?;
-    if tangents.len() != points.len() {
-        return Err(Error::InvalidParameter {
-            name: "tangents",
-            reason: format!("{} tangents for {} points", tangents.len(), points.len()),
-        });
-    }
-    super::validate_points(tangents, "tangents")?;
-    let three = S::from_i64(3);
-    let pieces: Vec<Vec<Point<S, D>>> = (0..points.len() - 1)
-        .map(|i| {
-            let third = (partition[i + 1].clone() - &partition[i]) / &three;
-            vec![
-                points[i].clone(),
-                points[i].clone() + &(tangents[i].clone() * &third),
-                points[i + 1].clone() - &(tangents[i + 1].clone() * &third),
-                points[i + 1].clone(),
-            ]
-        })
-        .collect();
-    if pieces.iter().flatten().any(|p| !p.is_finite()) {
-        return Err(overflow());
-    }
-    CompositeBezier::new(partition.to_vec(), pieces)
-}
-
-/// Tangents for Hermite interpolation estimated from the data (seed 000 §4.5): at an interior
+/// Tangents for Hermite interpolation estimated from the data ([PPB, §4.5]): at an interior
 /// knot the derivative of the parabola through the point and its two neighbours,
 /// `d_i = (1 − α_i) Δp_{i−1}/Δu_{i−1} + α_i Δp_i/Δu_i` with `α_i = Δu_{i−1}/(Δu_{i−1} + Δu_i)`;
 /// at the ends `d_0 = 2 Δp_0/Δu_0 − d_1` and `d_m = 2 Δp_{m−1}/Δu_{m−1} − d_{m−1}` (the end
@@ -93,7 +38,7 @@ pub fn hermite<S: Scalar, const D: usize>(
 ///
 /// # Errors
 ///
-/// As [`hermite`] without the tangents.
+/// As [`hermite`](super::hermite()) without the tangents.
 ///
 /// # Complexity
 ///
@@ -104,15 +49,15 @@ pub fn hermite<S: Scalar, const D: usize>(
 ///
 /// // Samples of the parabola u² get its exact derivative 2u everywhere.
 /// let pts = [Point::new([0.0]), Point::new([1.0]), Point::new([9.0]), Point::new([16.0])];
-/// let d = estimate_tangents(&pts, &[0.0, 1.0, 3.0, 4.0])?;
+/// let d = estimate_tangents(&[0.0, 1.0, 3.0, 4.0], &pts)?;
 /// assert_eq!(d, vec![Point::new([0.0]), Point::new([2.0]), Point::new([6.0]), Point::new([8.0])]);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn estimate_tangents<S: Scalar, const D: usize>(
-    points: &[Point<S, D>],
     partition: &[S],
+    points: &[Point<S, D>],
 ) -> Result<Vec<Point<S, D>>> {
-    check_points_partition(points, partition)?;
+    check_knots_and_points(partition, points, 2)?;
     let m = points.len() - 1;
     let h: Vec<S> = partition.windows(2).map(|w| w[1].clone() - &w[0]).collect();
     let delta: Vec<Point<S, D>> = (0..m)
@@ -167,7 +112,7 @@ pub fn parameterise<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
     kind: Parameterisation,
 ) -> Result<Vec<S>> {
-    super::validate_points(points, "points")?;
+    validate_points(points, "points")?;
     if kind == Parameterisation::Uniform {
         return Ok((0..points.len()).map(|i| S::from_i64(i as i64)).collect());
     }
@@ -208,28 +153,16 @@ pub fn parameterise<S: Scalar, const D: usize>(
     Ok(knots)
 }
 
-/// The error for finite data whose Bézier points are beyond the `f64` range.
-pub(crate) fn overflow() -> Error {
-    Error::InvalidParameter {
-        name: "points",
-        reason: "the control points overflow f64 (large coordinates, tangents or knot gaps); \
-                 use exact rationals"
-            .to_string(),
-    }
-}
-
-/// Points and partition of an interpolant: at least two, equal lengths, finite, increasing.
-fn check_points_partition<S: Scalar, const D: usize>(
-    points: &[Point<S, D>],
-    partition: &[S],
-) -> Result<()> {
-    if points.len() < 2 {
-        return Err(Error::TooFew {
-            what: "points",
-            needed: 2,
-            got: points.len(),
-        });
-    }
-    check_nodes_and_points(partition, points)?;
-    check_partition(partition, 2, "partition")
+/// The derivative at the first knot of the parabola through three consecutive points, from
+/// its two chord slopes: `p'(u_0) = 2 δ_0 − p'(u_1)` with
+/// `p'(u_1) = (h_1 δ_0 + h_0 δ_1)/(h_0 + h_1)` ([PPB, §4.5]). With the arguments mirrored
+/// (`h_{n−1}, h_{n−2}, δ_{n−1}, δ_{n−2}`) it gives the derivative at the last knot.
+pub(super) fn parabola_end_tangent<S: Scalar, const D: usize>(
+    h0: &S,
+    h1: &S,
+    delta0: &Point<S, D>,
+    delta1: &Point<S, D>,
+) -> Point<S, D> {
+    let inner = (delta0.clone() * h1 + &(delta1.clone() * h0)) / (h0.clone() + h1);
+    delta0.clone() * S::from_i64(2) - &inner
 }

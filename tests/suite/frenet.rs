@@ -3,15 +3,13 @@
 //! input: scaling a curve by a power of two scales its curvatures exactly).
 #![cfg(feature = "exact")]
 
-mod spline_common;
-
+use crate::spline_common::{p2, q, qi, Q};
 use compgeo::spline::{
     bezier_frenet, cubic_spline, curvature_vector, frenet_frame, is_g2, is_g2_join, newton, Bezier,
-    CompositeBezier, EndCondition, Point,
+    CompositeBezier, Curve, CurveDerivative, EndCondition, Point,
 };
 use compgeo::Error;
 use proptest::prelude::*;
-use spline_common::{p2, q, qi, Q};
 
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [
@@ -86,7 +84,7 @@ fn plane_curvature_is_signed_by_the_turn() {
 
 #[test]
 fn bezier_end_curvature_matches_the_seeds_formula() {
-    // 000 §4.4 Obs. 8: κ at b_0 is (n − 1)/n ‖Δb_0 × Δ²b_0‖ / ‖Δb_0‖³.
+    // [PPB, §4.4, Obs. 8]: κ at b_0 is (n − 1)/n ‖Δb_0 × Δ²b_0‖ / ‖Δb_0‖³.
     let b = Bezier::new(vec![
         Point::new([0.0, 0.0, 0.0]),
         Point::new([1.0, 2.0, 0.5]),

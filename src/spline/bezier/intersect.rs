@@ -1,17 +1,25 @@
 //! Intersections of two planar Bézier curves by recursive subdivision with bounding-box
 //! pruning.
 //!
-//! Follows `000_f3201fe9758fe02a.txt` §3.7 (the program INTERSECTAR): pieces whose boxes
-//! are disjoint cannot meet; otherwise the piece that is not yet flat is halved, and once
-//! both are flat their chords stand in for them. The flatness test is the error bound of
-//! §3.5, `n(n − 1)/8 · max ‖Δ²bᵢ‖∞ ≤ tolerance`, so a chord is within the tolerance of its
-//! piece. Whether two chords meet is decided with the exact [`orient2d`]; only the
-//! parameters of the crossing are computed in floating point.
+//! The problem: the points where the segments b[0, 1] and c[0, 1] of two planar curves
+//! meet. The idea: pieces whose boxes are disjoint cannot meet; otherwise the piece that is
+//! not yet flat is halved, and once both are flat their chords stand in for them. The
+//! flatness test is the error bound of [PPB, §3.5], `n(n − 1)/8 · max ‖Δ²bᵢ‖∞ ≤ tolerance`,
+//! so a chord is within the tolerance of its piece. Whether two chords meet is decided with
+//! the exact [`orient2d`]; only the parameters of the crossing are computed in floating point.
+//!
+//! Follows [PPB, §3.7] (the program INTERSECTAR).
+//!
+//! # Complexity
+//!
+//! O(k·d·(m² + n²)) time for k transversal crossings of curves of degrees m and n found at a
+//! depth d = O(log(size/tolerance)); O(d(m + n)) auxiliary space.
 
-use super::bezier::{bounding_box_of, Bezier};
-use super::bezier_ops::flatness_bound;
-use super::scalar::{validate_parameter, Point};
+use super::curve::{bounding_box_of, Bezier};
+use super::flatten::flatness_bound;
 use crate::geometry::{orient2d, Orientation, Point2};
+use crate::spline::curve::Curve;
+use crate::spline::scalar::{validate_parameter, Point};
 use crate::{Error, Result};
 
 /// One intersection of two curves: the parameters on each and the point.
@@ -37,7 +45,7 @@ pub const MAX_INTERSECTION_PAIRS: usize = 1 << 20;
 /// with exact orientation tests. Crossings found twice (at a shared end of two pieces) and
 /// crossings closer than `tolerance` to one already found are reported once, sorted by `s`.
 ///
-/// Follows `000_f3201fe9758fe02a.txt` §3.7 (with the bound of §3.5 as the flatness test).
+/// Follows [PPB, §3.7] (with the bound of [PPB, §3.5] as the flatness test).
 ///
 /// # Errors
 ///

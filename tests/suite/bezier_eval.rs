@@ -4,7 +4,7 @@
 //! checked path beyond it), the point is Horner's when that is finite and de Casteljau's when
 //! Horner's scheme overflows.
 
-use compgeo::spline::{Bezier, Finite, Point};
+use compgeo::spline::{Bezier, Curve, Finite, Point};
 use compgeo::Error;
 use proptest::prelude::*;
 

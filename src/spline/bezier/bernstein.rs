@@ -6,17 +6,22 @@
 //! `Bᵢⁿ⁺¹(t) = t·Bᵢ₋₁ⁿ(t) + (1 − t)·Bᵢⁿ(t)`; the derivative is
 //! `d/dt Bᵢⁿ(t) = n (Bᵢ₋₁ⁿ⁻¹(t) − Bᵢⁿ⁻¹(t))`.
 //!
-//! Follows `000_f3201fe9758fe02a.txt` §2.1 (properties, the triangular scheme of Obs. 1) and
-//! §2.4 (derivative), and `003_5b666ee3e15e6353.txt` §3.2 "Polinomios De Bernstein".
+//! Follows [PPB, §2.1] (properties, the triangular scheme of Obs. 1), [PPB, §2.4] (derivative)
+//! and [RD, §3.2] ("Polinomios De Bernstein").
+//!
+//! # Complexity
+//!
+//! O(n) field operations for one value, Θ(n²) for the whole basis of degree n, O(n² + r²) for
+//! an r-th derivative; O(n) space.
 
-use super::scalar::{binomial, validate_parameter, Scalar};
+use crate::spline::scalar::{binomial, falling_factorial, validate_parameter, Scalar};
 use crate::Result;
 
 /// The value `Bᵢⁿ(t) = C(n, i) tⁱ (1 − t)ⁿ⁻ⁱ` (zero when `i > n`), for any t.
 ///
 /// Idea: the closed form, with the powers taken by repeated multiplication.
 ///
-/// Follows `000_f3201fe9758fe02a.txt` §2.1 (definition).
+/// Follows [PPB, §2.1] (definition).
 ///
 /// # Errors
 ///
@@ -56,7 +61,7 @@ pub fn bernstein<S: Scalar>(n: usize, i: usize, t: &S) -> Result<S> {
 /// `Bᵢᵏ⁺¹ = t·Bᵢ₋₁ᵏ + (1 − t)·Bᵢᵏ`, in place, right to left: no binomial coefficients and no
 /// powers, only multiplications by t and 1 − t.
 ///
-/// Follows `000_f3201fe9758fe02a.txt` §2.1, Obs. 1 (the triangular scheme).
+/// Follows [PPB, §2.1, Obs. 1] (the triangular scheme).
 ///
 /// # Errors
 ///
@@ -84,8 +89,7 @@ pub fn bernstein_all<S: Scalar>(n: usize, t: &S) -> Result<Vec<S>> {
 /// `n!/(n − r)! · Σⱼ (−1)ʲ C(r, j) Bᵢ₋ᵣ₊ⱼⁿ⁻ʳ(t)`: an r-th backward difference of the basis of
 /// degree n − r, which is computed once with [`bernstein_all`]'s recurrence.
 ///
-/// Follows `000_f3201fe9758fe02a.txt` §2.4 (derivative of a Bernstein polynomial) and
-/// `003_5b666ee3e15e6353.txt` §3.2 ("Derivada").
+/// Follows [PPB, §2.4] (derivative of a Bernstein polynomial) and [RD, §3.2] ("Derivada").
 ///
 /// # Errors
 ///
@@ -126,15 +130,6 @@ pub fn bernstein_derivative<S: Scalar>(n: usize, i: usize, r: usize, t: &S) -> R
         }
     }
     Ok(falling_factorial::<S>(n, r) * sum)
-}
-
-/// `n (n − 1) ⋯ (n − r + 1)`, the factor of an r-th derivative of a degree-n polynomial.
-pub(crate) fn falling_factorial<S: Scalar>(n: usize, r: usize) -> S {
-    let mut f = S::one();
-    for k in 0..r.min(n + 1) {
-        f = f * S::from_i64((n - k) as i64);
-    }
-    f
 }
 
 /// The triangular scheme of Obs. 1, without validation.

@@ -1,0 +1,115 @@
+//! Degree elevation of Bézier curves: by one, and to any degree in one step by Zhou's
+//! formula.
+//!
+//! The problem: the control points of the same curve in a higher degree (to join curves of
+//! different degrees, or to bring a polygon closer to its curve). The idea: the blossom of
+//! degree n + 1 that averages the degree-n blossom over the argument left out is symmetric,
+//! multi-affine and agrees on the diagonal, so its values are the new Bézier points
+//! `cᵢ = i/(n+1) bᵢ₋₁ + (1 − i/(n+1)) bᵢ`; repeating it m − n times sums to Zhou's
+//! polyhypergeometric weights.
+//!
+//! Follows [PPB, §3.11] (elevation by one) and [PPB, §3.12] (Zhou's formula).
+//!
+//! # Complexity
+//!
+//! Θ(nD) for one degree, Θ(m·n·D) to degree m; Θ(mD) space for the result.
+//!
+//! Invariants the tests check (exactly on rationals): the elevated curve evaluates to the
+//! original, Zhou's formula to degree n + 1 equals elevation by one, to degree n the curve
+//! itself.
+
+use super::curve::Bezier;
+use crate::spline::scalar::{binomial, Point, Scalar};
+use crate::{Error, Result};
+
+impl<S: Scalar, const D: usize> Bezier<S, D> {
+    /// The same curve with degree n + 1: `cᵢ = i/(n+1) bᵢ₋₁ + (1 − i/(n+1)) bᵢ`.
+    ///
+    /// Idea: the blossom of degree n + 1 that averages the degree-n blossom over the argument
+    /// left out is symmetric, multi-affine and agrees on the diagonal, so its values give the
+    /// new Bézier points.
+    ///
+    /// Follows [PPB, §3.11].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(nD) time and space for the result.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Overflow`] if rounding carries a new point beyond the range of `f64` (only
+    /// for coordinates within an ulp of ±`f64::MAX`).
+    ///
+    /// ```
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// let line = Bezier::new(vec![Point::new([0.0]), Point::new([2.0])])?;
+    /// let q = line.elevate()?;
+    /// assert_eq!(q.control(), [Point::new([0.0]), Point::new([1.0]), Point::new([2.0])]);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn elevate(&self) -> Result<Self> {
+        let b = self.control();
+        let n = self.degree();
+        let den = (n + 1) as i64;
+        let mut control = Vec::with_capacity(n + 2);
+        control.push(b[0].clone());
+        for i in 1..=n {
+            let w = S::from_ratio(i as i64, den);
+            let v = S::one() - &w;
+            control.push(Point::combine(&b[i - 1], &w, &b[i], &v));
+        }
+        control.push(b[n].clone());
+        Bezier::derived(control, "degree elevation")
+    }
+
+    /// The same curve with degree m ≥ n, in one step by Zhou's formula
+    /// `dₖ = Σᵢ bᵢ C(n, i) C(m − n, k − i) / C(m, k)`.
+    ///
+    /// Follows [PPB, §3.12] (Zhou's formula, the polyhypergeometric
+    /// distribution).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidParameter`] if `m < n` (that would be degree reduction, an
+    /// approximation); [`Error::Overflow`] as for [`Bezier::elevate`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(m·n·D) time (each of the m + 1 points sums at most n + 1 terms), Θ(mD) space for the
+    /// result.
+    ///
+    /// ```
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// let b = Bezier::new(vec![Point::new([0.0]), Point::new([3.0])])?;
+    /// let e = b.elevate_to(3)?;
+    /// assert_eq!(e.control(), (0..4).map(|i| Point::new([i as f64])).collect::<Vec<_>>());
+    /// assert!(b.elevate_to(0).is_err());
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn elevate_to(&self, m: usize) -> Result<Self> {
+        let n = self.degree();
+        if m < n {
+            return Err(Error::InvalidParameter {
+                name: "degree",
+                reason: format!("cannot elevate a curve of degree {n} to degree {m}"),
+            });
+        }
+        let b = self.control();
+        let mut control = Vec::with_capacity(m + 1);
+        for k in 0..=m {
+            let mut d = Point::zero();
+            let den: S = binomial(m, k);
+            for (i, bi) in b.iter().enumerate().take(k.min(n) + 1) {
+                if k - i > m - n {
+                    continue;
+                }
+                let w = binomial::<S>(n, i) * binomial::<S>(m - n, k - i) / &den;
+                d += &(bi.clone() * w);
+            }
+            control.push(d);
+        }
+        Bezier::derived(control, "degree elevation")
+    }
+}
