@@ -75,6 +75,36 @@ pub enum Error {
     },
 }
 
+/// A broken invariant, found by one of the crate's checkers
+/// ([`check_strictly_convex_ccw`](crate::hull::check_strictly_convex_ccw),
+/// [`check_delaunay`](crate::delaunay::check_delaunay),
+/// [`check_colouring`](crate::graph::check_colouring), ...): which property fails, and where
+/// (the indices involved).
+///
+/// ```
+/// use compgeo::graph::{check_colouring, Graph};
+///
+/// let g = Graph::from_edges(3, &[[0, 1], [1, 2]])?;
+/// let v = check_colouring(&g, &[0, 0, 1]).unwrap_err();
+/// assert_eq!(v.to_string(), "edge [0, 1] joins two vertices of colour 0");
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{reason}")]
+pub struct Violation {
+    /// The property that fails, with the indices involved.
+    pub reason: String,
+}
+
+impl Violation {
+    /// The violation described by `reason`.
+    pub fn new(reason: impl Into<String>) -> Violation {
+        Violation {
+            reason: reason.into(),
+        }
+    }
+}
+
 /// `Result` with the crate's [`enum@Error`].
 pub type Result<T> = std::result::Result<T, Error>;
 

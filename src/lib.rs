@@ -132,8 +132,13 @@
 //! ## Conventions
 //!
 //! The plane is oriented with y up: a counter-clockwise turn is positive. Every finite `f64`
-//! is valid input; NaN and infinities are rejected with [`Error::NonFinite`]. Sorting is the
-//! exception: it orders every `f64`, NaN included, by [`f64::total_cmp`].
+//! is valid input. NaN and infinities are rejected with an error that names them: a point
+//! coordinate with [`Error::NonFinite`] (when the [`PointSet`](geometry::PointSet) is built),
+//! an edge weight with [`Error::NonFiniteWeight`], a curve parameter, knot or control value
+//! with [`Error::InvalidParameter`] naming the parameter. Sorting is the exception: it orders
+//! every `f64`, NaN included, by [`f64::total_cmp`]. Degenerate input (no points, one point,
+//! duplicates, collinear points) has one policy, described in `docs/design.md`: structures
+//! exist for every input, answers that need k points are [`Error::TooFew`] below k.
 
 pub mod calipers;
 pub mod complexity;
@@ -152,4 +157,4 @@ mod util;
 #[cfg(feature = "cli")]
 pub mod cli;
 
-pub use error::{Error, Result};
+pub use error::{Error, Result, Violation};

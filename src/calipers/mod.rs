@@ -62,7 +62,7 @@ use crate::complexity::Declaration;
 use crate::count::{Counter, NoCount};
 use crate::error::{Error, Result};
 use crate::geometry::{Point2, PointSet};
-use crate::hull::{akl_toussaint_with, is_strictly_convex_ccw, HullOptions};
+use crate::hull::{akl_toussaint_with, check_strictly_convex_ccw, HullOptions};
 
 /// The antipodal pairs' declaration, for the catalog.
 pub(crate) const ANTIPODAL_PAIRS: &Declaration = &antipodal::DECLARATION;
@@ -138,10 +138,10 @@ impl<'a> ConvexPolygon<'a> {
                 reason: format!("vertex {i} is out of range for {} points", points.len()),
             });
         }
-        if !is_strictly_convex_ccw(points, &vertices) {
+        if let Err(v) = check_strictly_convex_ccw(points, &vertices) {
             return Err(Error::InvalidParameter {
                 name: "polygon",
-                reason: "the polygon is not strictly convex and counter-clockwise".into(),
+                reason: format!("not strictly convex and counter-clockwise: {v}"),
             });
         }
         Ok(ConvexPolygon {

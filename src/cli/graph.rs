@@ -26,7 +26,7 @@ pub(super) struct SearchArgs {
     /// The start vertex
     #[arg(long, short)]
     start: usize,
-    /// Print the seed's Add / Remove / Q table instead of JSON
+    /// Print the course's Add / Remove / Q table instead of JSON
     #[arg(long)]
     trace: bool,
     #[command(flatten)]

@@ -48,7 +48,7 @@ enum Command {
     Gen(gen::GenArgs),
     /// Print the size, distinct count and bounding box of a point set
     Stats(stats::StatsArgs),
-    /// Measure every algorithm against its stated bound and write the HTML/SVG/JSON report
+    /// Measure the catalogued algorithms against their declared bounds and write the HTML/SVG/JSON report
     Report(report::ReportArgs),
     /// Sort numbers with a chosen algorithm and print the operation counts (or --trace)
     Sort(sort::SortArgs),
@@ -60,7 +60,7 @@ enum Command {
     Colour(graph::ColourArgs),
     /// Minimum spanning tree (forest) of a weighted graph with a chosen algorithm
     Mst(graph::MstArgs),
-    /// Convex hull of a point set: vertex indices counter-clockwise from the lowest-leftmost
+    /// Convex hull of a point set: vertex indices counter-clockwise from the lexicographically smallest
     Hull(hull::HullArgs),
     /// Diameter of a point set: the farthest pair, by rotating calipers or brute force
     Diameter(diameter::DiameterArgs),

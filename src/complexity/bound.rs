@@ -1,6 +1,6 @@
 //! Stated time bounds: the O-classes an algorithm can claim, and their growth functions f.
 //!
-//! The course (seed `003_5b666ee3e15e6353.txt`, ch. 2, "Complejidad de un algoritmo") defines
+//! The course ([RD, ch. 2], "Complejidad de un algoritmo") defines
 //! the complexity T(n) of an algorithm as its number of operations in the worst case, and says
 //! that T(n) is O(g(n)) when T(n) < C·g(n) for some constant C and every n ≥ n₀. A [`Bound`]
 //! names g; [`Bound::eval`] computes it, so the engine can check that measured cost / g stays

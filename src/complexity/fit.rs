@@ -1,7 +1,7 @@
 //! Fitting measured growth against a stated bound, and the verdict.
 //!
 //! The course calls T(n) O(g(n)) when T(n) ≤ C·g(n) for every n ≥ n₀ (seed
-//! `003_5b666ee3e15e6353.txt`, ch. 2, "Complejidad de un algoritmo"): the ratio T(n)/g(n) stays
+//! [RD, ch. 2], "Complejidad de un algoritmo"): the ratio T(n)/g(n) stays
 //! bounded. From measurements at sizes n₁ < ... < n_k the engine estimates the trend of that
 //! ratio by least squares on a log-log scale:
 //!

@@ -1,7 +1,7 @@
 //! The complexity engine: every algorithm proves its own growth.
 //!
 //! The course measures the complexity of an algorithm by counting its operations as the input
-//! grows (seed `003_5b666ee3e15e6353.txt`, ch. 2, "Complejidad de un algoritmo"). This module
+//! grows ([RD, ch. 2], "Complejidad de un algoritmo"). This module
 //! turns that into a measurement:
 //!
 //! | step | item |

@@ -2,6 +2,7 @@
 //! from elsewhere).
 
 use super::triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
+use crate::error::Violation;
 use crate::geometry::{cmp_lex, incircle, orient2d, InCircle, Orientation, Point2, PointSet};
 use crate::hull::{monotone_chain, HullOptions};
 use std::cmp::Ordering;
@@ -31,7 +32,7 @@ use std::cmp::Ordering;
 /// number).
 ///
 /// # Errors
-/// A message naming the first violated property, with the indices involved.
+/// A [`Violation`] naming the first violated property, with the indices involved.
 ///
 /// # Complexity
 /// O(n log n + t) time and O(n + t) auxiliary space for n points and t triangles: one
@@ -51,10 +52,15 @@ use std::cmp::Ordering;
 /// // diagonal 0-2 is Delaunay now.
 /// let pts = [(0.0, 0.0), (2.0, 0.0), (1.5, 1.0), (0.0, 1.0)].map(Point2::from);
 /// let t = Triangulation::from_triangles(&PointSet::new(&pts)?, &[[0, 1, 3], [1, 2, 3]], Vec::new())?;
-/// assert!(check_delaunay(&pts, &t).unwrap_err().contains("not locally Delaunay"));
+/// assert!(check_delaunay(&pts, &t).unwrap_err().reason.contains("not locally Delaunay"));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn check_delaunay(points: &[Point2], t: &Triangulation) -> Result<(), String> {
+pub fn check_delaunay(points: &[Point2], t: &Triangulation) -> Result<(), Violation> {
+    check(points, t).map_err(Violation::new)
+}
+
+/// [`check_delaunay`], each property's failure as its message.
+fn check(points: &[Point2], t: &Triangulation) -> Result<(), String> {
     PointSet::new(points).map_err(|e| e.to_string())?;
     let n = points.len();
     let len = t.triangles.len();
@@ -248,6 +254,7 @@ mod tests {
         unlinked.halfedges[f] = EMPTY;
         assert!(check_delaunay(&p, &unlinked)
             .unwrap_err()
+            .reason
             .contains("boundary"));
 
         let mut wrong_hull = t.clone();
@@ -262,6 +269,7 @@ mod tests {
         );
         assert!(check_delaunay(&p, &square.unwrap())
             .unwrap_err()
+            .reason
             .contains("neither a vertex"));
     }
 

@@ -1,4 +1,4 @@
-//! The seed's divide-and-conquer Delaunay triangulation, with Guibas and Stolfi's merge.
+//! The course's divide-and-conquer Delaunay triangulation, with Guibas and Stolfi's merge.
 
 use super::quad_edge::{Edge, Mesh};
 use super::{Triangulation, EMPTY};
@@ -58,9 +58,9 @@ pub fn divide_and_conquer(points: &[Point2]) -> Result<Triangulation> {
 /// The working structure is the primal half of Guibas and Stolfi's quad-edge
 /// structure (half-edge rings around each vertex).
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.4 "Algoritmos", 1. "Divide y vencerás" (steps
+/// Follows [RD, §2.4] "Algoritmos", 1. "Divide y vencerás" (steps
 /// 1–4, on the dual: the merge step builds the Delaunay edges that cross the dividing
-/// chain σ), with the merge of Guibas and Stolfi (1985), which the seed's reference
+/// chain σ), with the merge of Guibas and Stolfi (1985), which the course's reference
 /// (Preparata and Shamos, pp. 205–214) describes for the Voronoi diagram.
 ///
 /// Every decision is an exact [`orient2d`](crate::geometry::orient2d) or

@@ -70,7 +70,7 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// sites a, b, c get a circle event exactly when a, b, c turn counter-clockwise (their
 /// breakpoints converge).
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.4 "Algoritmos", 2. "Fortune" (the seed refers to
+/// Follows [RD, §2.4] "Algoritmos", 2. "Fortune" (the course refers to
 /// de Berg et al., *Computational Geometry*, ch. 7), sweeping upwards instead of downwards.
 ///
 /// Exactness. Every decision is exact for every finite input, 1e300 and subnormals in one set

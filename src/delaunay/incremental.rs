@@ -42,9 +42,9 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// randomized order (BRIO) sorted along a Hilbert curve in each round, so the walks are
 /// short and the expected number of flips is O(n) on every input.
 ///
-/// It computes the triangulation the seed defines (`003_5b666ee3e15e6353.txt`, §2.4
+/// It computes the triangulation the course defines ([RD, §2.4]
 /// "Triangulación de Delaunay", Definition 2.34 and Theorem 2.35) without building the
-/// Voronoi diagram; the seed's own construction is the divide and conquer.
+/// Voronoi diagram; the course's own construction is the divide and conquer.
 ///
 /// Degenerate input follows the [module conventions](super): duplicates are merged and
 /// reported, collinear input and fewer than three distinct points give no triangles, and

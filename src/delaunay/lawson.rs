@@ -62,9 +62,9 @@ pub fn lawson(points: &[Point2]) -> Result<Triangulation> {
 /// triangulation, so no triangulation comes back, and there are finitely many. When no edge
 /// is left to flip, every edge is locally Delaunay, so the triangulation is Delaunay.
 ///
-/// Not in the seed as an algorithm: `003_5b666ee3e15e6353.txt`, §2.4 "Triangulación" asks
+/// Not in the course as an algorithm: [RD, §2.4] "Triangulación" asks
 /// for a triangulation and answers "Considerar la Triangulación de Delaunay"; the sweep is
-/// the seed's §2.2 "Scan de Graham - Variante" with the popped chain edges turned into
+/// the course's §2.2 "Scan de Graham - Variante" with the popped chain edges turned into
 /// triangles, and Lawson's flips (Lawson, 1977) turn that triangulation into Delaunay's.
 ///
 /// Degenerate input: duplicates are merged (reported in `duplicates`, the smallest index

@@ -1,7 +1,7 @@
 //! Delaunay triangulations (compact half-edge arrays, exact predicates, an exact checker) and
 //! the Voronoi diagram as their dual.
 //!
-//! The seed (`003_5b666ee3e15e6353.txt`, §2.4 "Problemas de proximidad", "Diagrama de
+//! The course ([RD, §2.4] "Problemas de proximidad", "Diagrama de
 //! Voronoi" and "Triangulación de Delaunay", Definition 2.34 and Theorem 2.35) defines the
 //! Delaunay triangulation as the dual of the Voronoi diagram for points in general
 //! position: the triangles whose circumcircles hold no other point. compgeo does not assume
@@ -29,7 +29,7 @@
 //! | builder | time | file |
 //! |---|---|---|
 //! | [`incremental`] | O(n log n) expected on every input | `incremental.rs` (+ `hilbert.rs`, its insertion order) |
-//! | [`divide_and_conquer`] | O(n log n) worst case (the seed's algorithm) | `divide_conquer.rs` (+ `quad_edge.rs`, its working structure) |
+//! | [`divide_and_conquer`] | O(n log n) worst case (the course's algorithm) | `divide_conquer.rs` (+ `quad_edge.rs`, its working structure) |
 //! | [`lawson`] | O(n²) worst case (flips from a sweep triangulation; for teaching) | `lawson.rs` |
 //! | [`fortune`] | O(n log n) expected on every input (Fortune's sweep, the Voronoi diagram first) | `fortune.rs` (+ `beach_line.rs`, its treap; exact predicates in `geometry/sweep_predicates.rs`) |
 //!

@@ -130,7 +130,7 @@ impl Voronoi {
 /// The Voronoi diagram of `points`, computed as the dual of their Delaunay triangulation
 /// (the crate's [`incremental`](super::incremental) builder).
 ///
-/// The idea (`003_5b666ee3e15e6353.txt`, §2.4 "Diagrama de Voronoi", Observations 2.29 and
+/// The idea ([RD, §2.4] "Diagrama de Voronoi", Observations 2.29 and
 /// Theorems 2.30–2.32, Corollary 2.33 and Definition 2.34): the Voronoi vertices are the
 /// centres of the empty circles through three sites, i.e. the circumcentres of the Delaunay
 /// triangles, and the cell of a site is the polygon of the circumcentres of the triangles

@@ -1,48 +1,47 @@
 //! Seeded graphs: random families and the named graphs the colouring and MST modules are
 //! tested and measured on.
 
-use super::parse_kind;
 use super::points::ceil_sqrt;
 use super::rng::Rng;
 use crate::error::{Error, Result};
 use crate::graph::{EdgeList, MAX_EDGES, MAX_VERTICES};
+use crate::util::named_enum;
 use std::collections::HashSet;
-use std::fmt;
-use std::str::FromStr;
 
-/// The family a graph is drawn from. See [`graph`] for what each kind produces.
-///
-/// Names are `gnm`, `grid`, `complete`, `cycle`, `tree`, `petersen`, `mycielski`, `queen`,
-/// `crown`.
-///
-/// ```
-/// use compgeo::gen::GraphKind;
-///
-/// assert_eq!("crown".parse::<GraphKind>()?, GraphKind::Crown);
-/// assert_eq!(GraphKind::Gnm.name(), "gnm");
-/// assert_eq!(GraphKind::ALL.len(), 9);
-/// # Ok::<(), compgeo::Error>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum GraphKind {
-    /// Uniform random simple graph with `n` vertices and `m` edges, G(n, m).
-    Gnm,
-    /// A near-square grid graph on `n` vertices.
-    Grid,
-    /// The complete graph K_n.
-    Complete,
-    /// The cycle C_n, `n >= 3`.
-    Cycle,
-    /// A uniform random labelled tree on `n` vertices.
-    Tree,
-    /// The Petersen graph (10 vertices, 15 edges, 3-regular).
-    Petersen,
-    /// The Mycielski graph M_n (triangle-free, chromatic number `n`).
-    Mycielski,
-    /// The queen graph of an `n x n` chessboard.
-    Queen,
-    /// The crown graph on `2n` vertices: K_{n,n} minus a perfect matching.
-    Crown,
+named_enum! {
+    /// The family a graph is drawn from. See [`graph`] for what each kind produces.
+    ///
+    /// Names are `gnm`, `grid`, `complete`, `cycle`, `tree`, `petersen`, `mycielski`, `queen`,
+    /// `crown`.
+    ///
+    /// ```
+    /// use compgeo::gen::GraphKind;
+    ///
+    /// assert_eq!("crown".parse::<GraphKind>()?, GraphKind::Crown);
+    /// assert_eq!(GraphKind::Gnm.name(), "gnm");
+    /// assert_eq!(GraphKind::ALL.len(), 9);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub enum GraphKind ("graph kind") {
+        /// Uniform random simple graph with `n` vertices and `m` edges, G(n, m).
+        Gnm = "gnm",
+        /// A near-square grid graph on `n` vertices.
+        Grid = "grid",
+        /// The complete graph K_n.
+        Complete = "complete",
+        /// The cycle C_n, `n >= 3`.
+        Cycle = "cycle",
+        /// A uniform random labelled tree on `n` vertices.
+        Tree = "tree",
+        /// The Petersen graph (10 vertices, 15 edges, 3-regular).
+        Petersen = "petersen",
+        /// The Mycielski graph M_n (triangle-free, chromatic number `n`).
+        Mycielski = "mycielski",
+        /// The queen graph of an `n x n` chessboard.
+        Queen = "queen",
+        /// The crown graph on `2n` vertices: K_{n,n} minus a perfect matching.
+        Crown = "crown",
+    }
 }
 
 /// A graph of the given kind, the same for the same `seed` on every machine.
@@ -75,7 +74,7 @@ pub enum GraphKind {
 ///   `n >= 2`).
 ///
 /// The course's facts `chi(K_n) = n`, `chi(C_2p) = 2`, `chi(C_2p+1) = 3`, `chi(T) = 2`
-/// (seed `003_5b666ee3e15e6353.txt`, §2.1 "Coloración de vértices") are checked on these
+/// ([RD, §2.1] "Coloración de vértices") are checked on these
 /// families. Edges come with `u < v`, without duplicates, sorted lexicographically, and
 /// unweighted (see [`with_random_weights`]). `n = 0` gives the empty graph for every kind
 /// except `Cycle`, `Petersen` and `Mycielski`.
@@ -148,51 +147,6 @@ pub fn with_random_weights(g: EdgeList, seed: u64) -> EdgeList {
     EdgeList {
         weights: Some(weights),
         ..g
-    }
-}
-
-impl GraphKind {
-    /// Every kind, in declaration order.
-    pub const ALL: [GraphKind; 9] = [
-        GraphKind::Gnm,
-        GraphKind::Grid,
-        GraphKind::Complete,
-        GraphKind::Cycle,
-        GraphKind::Tree,
-        GraphKind::Petersen,
-        GraphKind::Mycielski,
-        GraphKind::Queen,
-        GraphKind::Crown,
-    ];
-
-    /// The kebab-case name, as accepted by [`FromStr`].
-    pub fn name(self) -> &'static str {
-        match self {
-            GraphKind::Gnm => "gnm",
-            GraphKind::Grid => "grid",
-            GraphKind::Complete => "complete",
-            GraphKind::Cycle => "cycle",
-            GraphKind::Tree => "tree",
-            GraphKind::Petersen => "petersen",
-            GraphKind::Mycielski => "mycielski",
-            GraphKind::Queen => "queen",
-            GraphKind::Crown => "crown",
-        }
-    }
-}
-
-impl fmt::Display for GraphKind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for GraphKind {
-    type Err = Error;
-
-    /// Parses a kebab-case name; the error lists every valid name.
-    fn from_str(s: &str) -> Result<Self> {
-        parse_kind(s, "graph kind", &Self::ALL, |k| k.name())
     }
 }
 

@@ -41,20 +41,7 @@ pub use sequences::{sequence, sequence_f64, SequenceKind, RANDOM_KEY_BOUND};
 
 pub(crate) use rng::Rng;
 
-use crate::error::Result;
-
 /// The most points [`points`] generates in one call: 2^27. It keeps every exactly
 /// constructed kind exact (parabola `x^2 <= 2^52`, collinear and grid coordinates below
 /// 2^53) and turns absurd sizes into an error instead of an allocation failure.
 pub const MAX_POINTS: usize = 1 << 27;
-
-/// Finds the kind named `s` among `all`, or lists the valid names; the error's parameter is
-/// `what` itself ("graph kind", …).
-fn parse_kind<K: Copy>(
-    s: &str,
-    what: &'static str,
-    all: &[K],
-    name: impl Fn(K) -> &'static str,
-) -> Result<K> {
-    crate::error::named(s, what, what, all, name)
-}

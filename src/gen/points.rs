@@ -4,55 +4,55 @@
 use super::cocircular;
 use super::gaussian::normal_pair;
 use super::rng::Rng;
-use super::{parse_kind, MAX_POINTS};
+use super::MAX_POINTS;
 use crate::error::{Error, Result};
 use crate::geometry::{cmp_dist, Point2};
+use crate::util::named_enum;
 use std::cmp::Ordering;
-use std::fmt;
-use std::str::FromStr;
 
-/// The distribution or configuration a point set is drawn from.
-///
-/// Names (for the command line and reports) are kebab-case: `uniform-square`,
-/// `uniform-disk`, `gaussian`, `clustered`, `cocircular`, `parabola`, `grid`,
-/// `rotated-grid`, `near-duplicates`, `collinear`, `huge`, `tiny`. See [`points`] for what
-/// each kind produces.
-///
-/// ```
-/// use compgeo::gen::PointKind;
-///
-/// let kind: PointKind = "rotated-grid".parse()?;
-/// assert_eq!(kind, PointKind::RotatedGrid);
-/// assert_eq!(kind.name(), "rotated-grid");
-/// assert!("hexagon".parse::<PointKind>().is_err());
-/// # Ok::<(), compgeo::Error>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum PointKind {
-    /// Uniform in the unit square `[0, 1)^2`.
-    UniformSquare,
-    /// Uniform in the open unit disk `x^2 + y^2 < 1`.
-    UniformDisk,
-    /// Independent standard normal coordinates (mean 0, standard deviation 1).
-    Gaussian,
-    /// A few tight clusters, alternately gaussian and uniform, with centres in `[0, 1)^2`.
-    Clustered,
-    /// Distinct integer points exactly on one circle centred at the origin.
-    Cocircular,
-    /// `(x, x^2)` for consecutive integers `x`, in increasing `x`.
-    Parabola,
-    /// An integer grid, about `sqrt(n)` by `sqrt(n)`.
-    Grid,
-    /// An integer lattice that is a rotated (and scaled) grid, not axis-aligned.
-    RotatedGrid,
-    /// Clusters of 2 to 4 points one ulp apart in x and/or y.
-    NearDuplicates,
-    /// Integer points exactly on one line.
-    Collinear,
-    /// Magnitudes between 1e200 and 1e300, both signs.
-    Huge,
-    /// Magnitudes between 1e-300 and 1e-140 and subnormals, both signs.
-    Tiny,
+named_enum! {
+    /// The distribution or configuration a point set is drawn from.
+    ///
+    /// Names (for the command line and reports) are kebab-case: `uniform-square`,
+    /// `uniform-disk`, `gaussian`, `clustered`, `cocircular`, `parabola`, `grid`,
+    /// `rotated-grid`, `near-duplicates`, `collinear`, `huge`, `tiny`. See [`points`] for what
+    /// each kind produces.
+    ///
+    /// ```
+    /// use compgeo::gen::PointKind;
+    ///
+    /// let kind: PointKind = "rotated-grid".parse()?;
+    /// assert_eq!(kind, PointKind::RotatedGrid);
+    /// assert_eq!(kind.name(), "rotated-grid");
+    /// assert!("hexagon".parse::<PointKind>().is_err());
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub enum PointKind ("point kind") {
+        /// Uniform in the unit square `[0, 1)^2`.
+        UniformSquare = "uniform-square",
+        /// Uniform in the open unit disk `x^2 + y^2 < 1`.
+        UniformDisk = "uniform-disk",
+        /// Independent standard normal coordinates (mean 0, standard deviation 1).
+        Gaussian = "gaussian",
+        /// A few tight clusters, alternately gaussian and uniform, with centres in `[0, 1)^2`.
+        Clustered = "clustered",
+        /// Distinct integer points exactly on one circle centred at the origin.
+        Cocircular = "cocircular",
+        /// `(x, x^2)` for consecutive integers `x`, in increasing `x`.
+        Parabola = "parabola",
+        /// An integer grid, about `sqrt(n)` by `sqrt(n)`.
+        Grid = "grid",
+        /// An integer lattice that is a rotated (and scaled) grid, not axis-aligned.
+        RotatedGrid = "rotated-grid",
+        /// Clusters of 2 to 4 points one ulp apart in x and/or y.
+        NearDuplicates = "near-duplicates",
+        /// Integer points exactly on one line.
+        Collinear = "collinear",
+        /// Magnitudes between 1e200 and 1e300, both signs.
+        Huge = "huge",
+        /// Magnitudes between 1e-300 and 1e-140 and subnormals, both signs.
+        Tiny = "tiny",
+    }
 }
 
 /// `n` points of the given kind, the same for the same `seed` on every machine.
@@ -149,57 +149,6 @@ pub fn points(kind: PointKind, n: usize, seed: u64) -> Result<Vec<Point2>> {
 /// The most points [`PointKind::Cocircular`] can produce: the lattice-point count
 /// `4 * 5 * 3^9` of its largest radius `5^2 * 13 * 17 * 29 * 37 * 41 * 53 * 61 * 73 * 89`.
 pub const MAX_COCIRCULAR: usize = cocircular::MAX_POINTS;
-
-impl PointKind {
-    /// Every kind, in declaration order.
-    pub const ALL: [PointKind; 12] = [
-        PointKind::UniformSquare,
-        PointKind::UniformDisk,
-        PointKind::Gaussian,
-        PointKind::Clustered,
-        PointKind::Cocircular,
-        PointKind::Parabola,
-        PointKind::Grid,
-        PointKind::RotatedGrid,
-        PointKind::NearDuplicates,
-        PointKind::Collinear,
-        PointKind::Huge,
-        PointKind::Tiny,
-    ];
-
-    /// The kebab-case name, as accepted by [`FromStr`].
-    pub fn name(self) -> &'static str {
-        match self {
-            PointKind::UniformSquare => "uniform-square",
-            PointKind::UniformDisk => "uniform-disk",
-            PointKind::Gaussian => "gaussian",
-            PointKind::Clustered => "clustered",
-            PointKind::Cocircular => "cocircular",
-            PointKind::Parabola => "parabola",
-            PointKind::Grid => "grid",
-            PointKind::RotatedGrid => "rotated-grid",
-            PointKind::NearDuplicates => "near-duplicates",
-            PointKind::Collinear => "collinear",
-            PointKind::Huge => "huge",
-            PointKind::Tiny => "tiny",
-        }
-    }
-}
-
-impl fmt::Display for PointKind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for PointKind {
-    type Err = Error;
-
-    /// Parses a kebab-case name; the error lists every valid name.
-    fn from_str(s: &str) -> Result<Self> {
-        parse_kind(s, "point kind", &Self::ALL, |k| k.name())
-    }
-}
 
 fn too_many(n: usize, limit: usize, what: &str) -> Error {
     Error::InvalidParameter {

@@ -1,32 +1,31 @@
 //! Seeded number sequences for the sorting algorithms.
 
-use super::parse_kind;
 use super::rng::Rng;
-use crate::error::{Error, Result};
-use std::fmt;
-use std::str::FromStr;
 
-/// The order a sequence of keys comes in. See [`sequence`] for the values.
-///
-/// Names are `random`, `sorted`, `reversed`, `few-distinct`.
-///
-/// ```
-/// use compgeo::gen::SequenceKind;
-///
-/// assert_eq!("few-distinct".parse::<SequenceKind>()?, SequenceKind::FewDistinct);
-/// assert_eq!(SequenceKind::Reversed.name(), "reversed");
-/// # Ok::<(), compgeo::Error>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum SequenceKind {
-    /// Independent uniform keys.
-    Random,
-    /// Strictly increasing keys.
-    Sorted,
-    /// Strictly decreasing keys.
-    Reversed,
-    /// Keys drawn from a set of 8 distinct values.
-    FewDistinct,
+use crate::util::named_enum;
+
+named_enum! {
+    /// The order a sequence of keys comes in. See [`sequence`] for the values.
+    ///
+    /// Names are `random`, `sorted`, `reversed`, `few-distinct`.
+    ///
+    /// ```
+    /// use compgeo::gen::SequenceKind;
+    ///
+    /// assert_eq!("few-distinct".parse::<SequenceKind>()?, SequenceKind::FewDistinct);
+    /// assert_eq!(SequenceKind::Reversed.name(), "reversed");
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub enum SequenceKind ("sequence kind") {
+        /// Independent uniform keys.
+        Random = "random",
+        /// Strictly increasing keys.
+        Sorted = "sorted",
+        /// Strictly decreasing keys.
+        Reversed = "reversed",
+        /// Keys drawn from a set of 8 distinct values.
+        FewDistinct = "few-distinct",
+    }
 }
 
 /// The largest magnitude of a [`SequenceKind::Random`] key: 2^53, so every key is exact as
@@ -43,8 +42,8 @@ pub const RANDOM_KEY_BOUND: i64 = 1 << 53;
 ///   chosen uniformly (so fewer than 8 may appear when `n` is small).
 ///
 /// Sorting algorithms' worst and best cases (`Reversed`, `Sorted`) and duplicate handling
-/// (`FewDistinct`) follow the course's sorting section (seed `003_5b666ee3e15e6353.txt`,
-/// §2.1 "Algoritmos de ordenación").
+/// (`FewDistinct`) follow the course's sorting section ([RD, §2.1] "Algoritmos de
+/// ordenación").
 ///
 /// # Complexity
 /// O(n) time and space.
@@ -110,41 +109,6 @@ pub fn sequence_f64(n: usize, seed: u64) -> Vec<f64> {
             f64::from_bits(sign | exponent << 52 | mantissa)
         })
         .collect()
-}
-
-impl SequenceKind {
-    /// Every kind, in declaration order.
-    pub const ALL: [SequenceKind; 4] = [
-        SequenceKind::Random,
-        SequenceKind::Sorted,
-        SequenceKind::Reversed,
-        SequenceKind::FewDistinct,
-    ];
-
-    /// The kebab-case name, as accepted by [`FromStr`].
-    pub fn name(self) -> &'static str {
-        match self {
-            SequenceKind::Random => "random",
-            SequenceKind::Sorted => "sorted",
-            SequenceKind::Reversed => "reversed",
-            SequenceKind::FewDistinct => "few-distinct",
-        }
-    }
-}
-
-impl fmt::Display for SequenceKind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for SequenceKind {
-    type Err = Error;
-
-    /// Parses a kebab-case name; the error lists every valid name.
-    fn from_str(s: &str) -> Result<Self> {
-        parse_kind(s, "sequence kind", &Self::ALL, |k| k.name())
-    }
 }
 
 fn random_key(rng: &mut Rng) -> i64 {

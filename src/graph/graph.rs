@@ -4,8 +4,8 @@
 //!
 //! Both are built from an [`EdgeList`] (or a plain edge slice) in O(n + m) time with a
 //! two-pass counting sort, so every neighbour list comes out in ascending vertex order:
-//! traversals then follow the seed's convention that "the first new neighbour" is the one
-//! with the smallest id (seed `003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de búsqueda").
+//! traversals then follow the course's convention that "the first new neighbour" is the one
+//! with the smallest id ([RD, §2.1] "Algoritmos de búsqueda").
 
 use crate::error::{Error, Result};
 use crate::util::Csr;

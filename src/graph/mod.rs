@@ -1,5 +1,5 @@
 //! Graphs: a compact CSR graph type, breadth- and depth-first search, greedy vertex
-//! colouring and minimum spanning trees, following seed `003_5b666ee3e15e6353.txt`, §2.1
+//! colouring and minimum spanning trees, following [RD, §2.1]
 //! ("Algoritmo voraz", "Coloración de vértices", "Árbol Spanning Minimal", "Algoritmos de
 //! búsqueda").
 //!
@@ -15,12 +15,12 @@
 //! | [`greedy_colouring`] (any order, [`largest_first_order`], [`smallest_last_order`]) | O(n + m) | edge visits |
 //! | [`dsatur`] | O((n + m) log n) | heap comparisons |
 //! | [`dsatur_tabu`] (DSatur, then [`tabu_recolour`] for fewer colours) | O((n + m) log n) | heap comparisons and moves evaluated |
-//! | [`prim`] (the seed's greedy tree) | O(m log n) | heap comparisons |
+//! | [`prim`] (the course's greedy tree) | O(m log n) | heap comparisons |
 //! | [`kruskal`] | O(m log m) | sort comparisons |
 //! | [`boruvka`] | O(m log n) | edge visits |
 
 mod colouring;
-// The file name `graph.rs` is the layout ARCHITECTURE.md prescribes.
+// `graph/graph.rs` holds the graph types, as the module map of the crate docs says.
 #[allow(clippy::module_inception)]
 mod graph;
 mod mst;
@@ -28,18 +28,19 @@ mod traverse;
 mod union_find;
 
 pub use colouring::{
-    colour, colour_with, course_greedy_colouring, course_greedy_colouring_with, dsatur,
-    dsatur_tabu, dsatur_tabu_with, dsatur_with, greedy_colouring, greedy_colouring_with,
-    is_proper_colouring, largest_first_order, smallest_last_order, tabu_recolour,
-    tabu_recolour_with, Colouring, ColouringAlgorithm, TABU_EFFORT,
+    check_colouring, colour, colour_with, course_greedy_colouring, course_greedy_colouring_with,
+    dsatur, dsatur_tabu, dsatur_tabu_with, dsatur_with, greedy_colouring, greedy_colouring_with,
+    largest_first_order, smallest_last_order, tabu_recolour, tabu_recolour_with, Colouring,
+    ColouringAlgorithm, TABU_EFFORT,
 };
 pub use graph::{EdgeList, Graph, WeightedGraph, MAX_EDGES, MAX_VERTICES};
 pub use mst::{
-    boruvka, boruvka_with, is_spanning_forest, kruskal, kruskal_with, prim, prim_with,
+    boruvka, boruvka_with, check_spanning_forest, kruskal, kruskal_with, prim, prim_with,
     spanning_forest, spanning_forest_with, MstAlgorithm, SpanningForest,
 };
 pub use traverse::{
-    bfs, bfs_with, components, dfs, dfs_with, is_connected, is_search_tree, search, search_trace,
-    search_with, trace_table, Components, Search, SearchAlgorithm, TraceRow, TRACE_MAX_VERTICES,
+    bfs, bfs_with, check_search_tree, components, dfs, dfs_with, is_connected, search,
+    search_trace, search_with, trace_table, Components, Search, SearchAlgorithm, TraceRow,
+    TRACE_MAX_VERTICES,
 };
 pub use union_find::UnionFind;

@@ -1,7 +1,7 @@
 //! Breadth-first and depth-first search from a start vertex: visit order, the spanning tree
-//! as a parent array, connected components, and the seed's add/remove trace of the list Q.
+//! as a parent array, connected components, and the course's add/remove trace of the list Q.
 //!
-//! Both searches follow the seed's scheme (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de
+//! Both searches follow the course's scheme ([RD, §2.1] "Algoritmos de
 //! búsqueda"): keep a list Q holding the start; look at the first (BFS, a queue) or the last
 //! (DFS, a stack) vertex x of Q; if x is adjacent to a new vertex y, append y, else remove x.
 //! "A new vertex" is the smallest unvisited neighbour, since neighbour lists are ascending.
@@ -9,12 +9,12 @@
 //! total (once from each end) and the searches run in O(n + m) without recursion.
 //!
 //! The tests check that every vertex of the start's component is visited exactly once, that
-//! the parent array is a tree of graph edges rooted at the start, and the seed's two tables.
+//! the parent array is a tree of graph edges rooted at the start, and the course's two tables.
 
 use super::graph::Graph;
 use crate::complexity::{algorithm_family, on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Violation};
 use std::fmt::Write;
 
 /// Breadth-first search's [`Declaration`]: its name, bounds, counts, source and claims.
@@ -119,7 +119,7 @@ pub struct Search {
     pub parent: Vec<Option<usize>>,
 }
 
-/// One row of the seed's search table: the vertex added to Q or removed from it, and Q after
+/// One row of the course's search table: the vertex added to Q or removed from it, and Q after
 /// the step.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct TraceRow {
@@ -165,7 +165,7 @@ pub fn bfs(g: &Graph, start: usize) -> Result<Search> {
 
 /// Breadth-first search from `start`, counting its work.
 ///
-/// The idea: the seed's B.E.A. (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de búsqueda"):
+/// The idea: the course's B.E.A. ([RD, §2.1] "Algoritmos de búsqueda"):
 /// Q is a queue; while it is not empty, its first vertex x adds its new neighbours one by one
 /// in ascending order, then leaves Q. The visit order is the order of arrival in Q, and each
 /// vertex's parent is the x that added it, so depths in the tree are graph distances from the
@@ -240,7 +240,7 @@ pub fn dfs(g: &Graph, start: usize) -> Result<Search> {
 
 /// Depth-first search from `start`, counting its work.
 ///
-/// The idea: the seed's B.E.P. (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de búsqueda"):
+/// The idea: the course's B.E.P. ([RD, §2.1] "Algoritmos de búsqueda"):
 /// Q is a stack; while it is not empty, look at its last vertex x: if x has a new neighbour,
 /// push the smallest one, else pop x. Each stacked vertex keeps a cursor into its neighbour
 /// list, so no neighbour is looked at twice from the same vertex. Iterative: the depth of the
@@ -308,10 +308,10 @@ pub fn dfs_with<C: Counter>(g: &Graph, start: usize, c: &mut C) -> Result<Search
     Ok(finish(order, parent, start))
 }
 
-/// The seed's step table of a search: one row per vertex added to Q and one per vertex
+/// The course's step table of a search: one row per vertex added to Q and one per vertex
 /// removed, with Q after each step.
 ///
-/// The rows are exactly those of the seed's tables (`003_5b666ee3e15e6353.txt`, §2.1
+/// The rows are exactly those of the course's tables ([RD, §2.1]
 /// "Algoritmos de búsqueda", columns Añadir / Quitar / Q): the first row adds the start, and
 /// a component of n_c vertices gives 2·n_c rows. The visit order is the order of the `added`
 /// entries, the same as [`bfs`] or [`dfs`] return. [`trace_table`] prints the rows.
@@ -390,8 +390,8 @@ pub fn search_trace(g: &Graph, start: usize, kind: SearchAlgorithm) -> Result<Ve
     Ok(rows)
 }
 
-/// Prints search rows as the seed's three-column table, `Add`, `Remove`, `Q`, tab-separated,
-/// with `-` for an empty cell and `∅` for an empty Q; `name` writes a vertex (the seed uses
+/// Prints search rows as the course's three-column table, `Add`, `Remove`, `Q`, tab-separated,
+/// with `-` for an empty cell and `∅` for an empty Q; `name` writes a vertex (the course uses
 /// letters). Q's vertices are run together when every name is a single letter, as in the
 /// seed (`abce`), and separated by spaces otherwise.
 ///
@@ -415,7 +415,7 @@ pub fn trace_table(rows: &[TraceRow], name: impl Fn(usize) -> String) -> String 
             "∅".to_string()
         } else {
             let names: Vec<String> = row.list.iter().map(|&v| name(v)).collect();
-            // Single letters read like the seed's "abce"; numbers and longer names need a
+            // Single letters read like the course's "abce"; numbers and longer names need a
             // separator.
             let single_letter = |s: &String| {
                 let mut chars = s.chars();
@@ -436,7 +436,7 @@ pub fn trace_table(rows: &[TraceRow], name: impl Fn(usize) -> String) -> String 
 /// The connected components, found by breadth-first search from each unvisited vertex in
 /// ascending order.
 ///
-/// The seed's remark (§2.1 "Algoritmos de búsqueda"): a search that reaches every vertex has
+/// The course's remark (§2.1 "Algoritmos de búsqueda"): a search that reaches every vertex has
 /// built a spanning tree, so the graph is connected.
 ///
 /// # Complexity
@@ -498,55 +498,78 @@ pub fn is_connected(g: &Graph) -> bool {
     }
 }
 
-/// Whether `search` is a valid search result from `start`: `order` lists distinct vertices
-/// starting with `start`, each non-start vertex's parent is a graph neighbour that appears
-/// earlier in `order`, the vertices outside `order` have no parent, and `order` is closed
-/// under adjacency (a whole component).
+/// Checks that `search` is a valid search result from `start`: `order` lists distinct
+/// vertices starting with `start`, each non-start vertex's parent is a graph neighbour that
+/// appears earlier in `order`, the vertices outside `order` have no parent, and `order` is
+/// closed under adjacency (a whole component).
+///
+/// # Errors
+/// A [`Violation`] naming the first vertex at fault and why.
 ///
 /// # Complexity
 /// O(n + m) time, O(n) auxiliary space.
 ///
 /// ```
-/// use compgeo::graph::{bfs, is_search_tree, Graph};
+/// use compgeo::graph::{bfs, check_search_tree, Graph};
 ///
 /// let g = Graph::from_edges(4, &[[0, 1], [1, 2]])?;
 /// let mut s = bfs(&g, 1)?;
-/// assert!(is_search_tree(&g, 1, &s));
+/// assert!(check_search_tree(&g, 1, &s).is_ok());
 /// s.parent[2] = Some(0); // not an edge
-/// assert!(!is_search_tree(&g, 1, &s));
+/// let bad = check_search_tree(&g, 1, &s).unwrap_err();
+/// assert!(bad.to_string().starts_with("vertex 2"), "{bad}");
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn is_search_tree(g: &Graph, start: usize, search: &Search) -> bool {
+pub fn check_search_tree(
+    g: &Graph,
+    start: usize,
+    search: &Search,
+) -> std::result::Result<(), Violation> {
     let n = g.vertex_count();
-    if search.parent.len() != n || search.order.first() != Some(&start) {
-        return false;
+    let bad = |reason: String| Err(Violation::new(reason));
+    if search.parent.len() != n {
+        return bad(format!("{} parents for {n} vertices", search.parent.len()));
+    }
+    if search.order.first() != Some(&start) {
+        return bad(format!("the order does not start at {start}"));
     }
     let mut rank = vec![usize::MAX; n];
     for (i, &v) in search.order.iter().enumerate() {
-        if v >= n || rank[v] != usize::MAX {
-            return false;
+        if v >= n {
+            return bad(format!("vertex {v} (position {i}) is out of range"));
+        }
+        if rank[v] != usize::MAX {
+            return bad(format!("vertex {v} is visited twice"));
         }
         rank[v] = i;
     }
     for v in 0..n {
-        let ok = match search.parent[v] {
-            None => v == start || rank[v] == usize::MAX,
-            Some(p) => {
-                v != start
-                    && rank[v] != usize::MAX
-                    && p < n
-                    && rank[p] < rank[v]
-                    && g.has_edge(p, v)
+        let reached = rank[v] != usize::MAX;
+        match search.parent[v] {
+            None if v != start && reached => {
+                return bad(format!("vertex {v} was reached but has no parent"))
             }
-        };
-        if !ok {
-            return false;
+            None => {}
+            Some(_) if v == start => return bad(format!("the start {v} has a parent")),
+            Some(_) if !reached => {
+                return bad(format!("vertex {v} has a parent but was not reached"))
+            }
+            Some(p) if p >= n || rank[p] >= rank[v] || !g.has_edge(p, v) => {
+                return bad(format!(
+                    "vertex {v} has parent {p}, which is not an earlier neighbour"
+                ))
+            }
+            Some(_) => {}
         }
-        if rank[v] != usize::MAX && g.neighbours(v).any(|y| rank[y] == usize::MAX) {
-            return false;
+        if reached {
+            if let Some(y) = g.neighbours(v).find(|&y| rank[y] == usize::MAX) {
+                return bad(format!(
+                    "vertex {v} was reached but its neighbour {y} was not"
+                ));
+            }
         }
     }
-    true
+    Ok(())
 }
 
 /// "No parent yet" in the searches' compact parent arrays.

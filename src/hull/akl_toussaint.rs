@@ -51,8 +51,8 @@ pub fn akl_toussaint(points: &[Point2], options: HullOptions) -> Result<Vec<usiz
 /// sorted and scanned as in [`monotone_chain`](super::monotone_chain), so only they are
 /// sorted.
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.2 "Scan de Graham - Variante de Akl-Toussaint",
-/// with the diagonal extremes added to the seed's four.
+/// Follows [RD, §2.2] "Scan de Graham - Variante de Akl-Toussaint",
+/// with the diagonal extremes added to the course's four.
 ///
 /// Output convention and degenerate inputs: see the [module docs](super).
 ///
@@ -110,7 +110,7 @@ pub fn akl_toussaint_with<C: Counter>(
 /// the polygon (exactly, with [`orient2d`](crate::geometry::orient2d)) discards the points
 /// strictly inside it with four coordinate comparisons.
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.2 "Scan de Graham - Variante de Akl-Toussaint".
+/// Follows [RD, §2.2] "Scan de Graham - Variante de Akl-Toussaint".
 ///
 /// # Errors
 ///

@@ -1,4 +1,4 @@
-//! The seed's brute-force hull: a pair of points is a hull edge when no point lies to its
+//! The course's brute-force hull: a pair of points is a hull edge when no point lies to its
 //! right. The oracle every other algorithm is tested against.
 
 use super::lex::lex_sorted_items;
@@ -49,12 +49,12 @@ pub fn brute_force_hull(points: &[Point2], options: HullOptions) -> Result<Vec<u
 ///
 /// Idea (seed step 1): for every ordered pair `(a, b)` of distinct points, `a -> b` is a
 /// counter-clockwise hull edge when every other point is strictly left of it or on the
-/// segment between them; because input may be collinear (the seed assumes it is not), a
+/// segment between them; because input may be collinear (the course assumes it is not), a
 /// point on the line beyond `a` or `b` disqualifies the pair. Step 2 links the edges into a
 /// cycle from the lexicographically smallest point. With `keep_collinear` the points found
 /// on each edge's segment are inserted in order along it.
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.2 "Algoritmo de fuerza bruta".
+/// Follows [RD, §2.2] "Algoritmo de fuerza bruta".
 ///
 /// Output convention and degenerate inputs: see the [module docs](super).
 ///

@@ -65,9 +65,9 @@ pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
 /// [`cmp_dist`](crate::geometry::cmp_dist) when two vertices are on one ray from p, as on
 /// grids). A group that holds p itself answers with p's successor on its hull.
 ///
-/// Not in the seed; T. M. Chan, "Optimal output-sensitive convex hull algorithms in two and
-/// three dimensions" (1996). It combines `003_5b666ee3e15e6353.txt`, §2.2 "Marcha de
-/// Jarvis" (the wrapping, with the seed's signed-area test) and "Scan de Graham - Variante"
+/// Not in the course; T. M. Chan, "Optimal output-sensitive convex hull algorithms in two and
+/// three dimensions" (1996). It combines [RD, §2.2] "Marcha de
+/// Jarvis" (the wrapping, with the course's signed-area test) and "Scan de Graham - Variante"
 /// (the group hulls).
 ///
 /// Output convention and degenerate inputs: see the [module docs](super). `keep_collinear`

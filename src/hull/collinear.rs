@@ -1,7 +1,7 @@
 //! The `keep_collinear` option, shared by every algorithm except brute force (which finds the
 //! boundary points itself, so that it stays an independent oracle).
 
-use super::{is_strictly_convex_ccw, HullOptions};
+use super::{check_strictly_convex_ccw, HullOptions};
 use crate::count::Counter;
 use crate::geometry::{CountedPredicates, Orientation, Point2};
 use crate::util::partition_point;
@@ -91,7 +91,7 @@ pub(super) fn finish<C: Counter>(
     options: HullOptions,
     counter: &mut C,
 ) -> Vec<usize> {
-    debug_assert!(is_strictly_convex_ccw(points, &strict));
+    debug_assert!(check_strictly_convex_ccw(points, &strict).is_ok());
     if options.keep_collinear {
         with_boundary_points(points, candidates, strict, counter)
     } else {

@@ -47,15 +47,15 @@ pub fn graham_scan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>
 
 /// The convex hull of `points` by Graham's scan, recording its operations in `counter`.
 ///
-/// Idea: the pivot v₁ is the lexicographically smallest point (the seed's "abscisa mínima,
+/// Idea: the pivot v₁ is the lexicographically smallest point (the course's "abscisa mínima,
 /// then ordenada mínima"). Every other point lies in the half-plane right of the vertical
 /// through v₁, within an angle below π, so "`a` comes before `b`" is exactly
 /// `orient2d(v₁, a, b)` = counter-clockwise: the angular sort needs no angles. Of several
-/// points in one direction only the farthest is kept (the seed's note for collinear input;
+/// points in one direction only the farthest is kept (the course's note for collinear input;
 /// [`cmp_dist`](crate::geometry::cmp_dist) decides). The scan then pushes the points in
 /// order, first popping every point that does not turn strictly left.
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.2 "Scan de Graham" (steps 1–4 and the "Nota").
+/// Follows [RD, §2.2] "Scan de Graham" (steps 1–4 and the "Nota").
 ///
 /// Output convention and degenerate inputs: see the [module docs](super). `keep_collinear`
 /// inserts the boundary points afterwards.
@@ -72,7 +72,7 @@ pub fn graham_scan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>
 /// # Counts
 ///
 /// Orientation tests: those of the angular sort, O(n log n), the n − 2 that merge equal
-/// directions, and at most 2m − 4 ≤ 2n − 4 in the scan (m − 1 directions), the seed's bound:
+/// directions, and at most 2m − 4 ≤ 2n − 4 in the scan (m − 1 directions), the course's bound:
 /// every test either pops a point or ends a push. Distance evaluations: one per tie of the
 /// sort. Comparisons: 2(n − 1) to find the pivot and drop its duplicates.
 ///
@@ -130,7 +130,7 @@ fn angular_order<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
     order
 }
 
-/// The seed's step 4 over `order` (pivot first, then one point per direction in angular
+/// The course's step 4 over `order` (pivot first, then one point per direction in angular
 /// order): the strictly convex hull.
 fn scan<C: Counter>(points: &[Point2], order: &[usize], counter: &mut C) -> Vec<usize> {
     let mut stack: Vec<usize> = order.iter().copied().take(2).collect();
@@ -167,7 +167,7 @@ mod tests {
     use crate::count::Counts;
     use crate::gen::{points as generate, PointKind};
 
-    /// The seed's bound: the scan after sorting makes at most 2n − 4 orientation tests.
+    /// The course's bound: the scan after sorting makes at most 2n − 4 orientation tests.
     #[test]
     fn the_scan_makes_at_most_2n_minus_4_orientation_tests() {
         for kind in PointKind::ALL {
@@ -181,7 +181,7 @@ mod tests {
                     "{kind} n={n}: {} tests",
                     counts.orientation_tests
                 );
-                assert!(super::super::is_strictly_convex_ccw(&pts, &hull));
+                assert!(super::super::check_strictly_convex_ccw(&pts, &hull).is_ok());
             }
         }
     }
@@ -212,6 +212,6 @@ mod tests {
         let hull = scan(&fan, &order, &mut counts);
         assert!(counts.orientation_tests <= 2 * 41 - 4);
         assert!(counts.orientation_tests > 41, "pops happened");
-        assert!(super::super::is_strictly_convex_ccw(&fan, &hull));
+        assert!(super::super::check_strictly_convex_ccw(&fan, &hull).is_ok());
     }
 }

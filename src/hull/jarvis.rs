@@ -50,11 +50,11 @@ pub fn jarvis_march(points: &[Point2], options: HullOptions) -> Result<Vec<usize
 ///
 /// Idea: start at the lexicographically smallest point v₁ (a hull vertex). From vertex vᵢ,
 /// scan all points keeping a candidate; a point right of `vᵢ -> candidate` replaces it
-/// (the seed's "smallest angle" as a signed-area test), and of points in the candidate's
+/// (the course's "smallest angle" as a signed-area test), and of points in the candidate's
 /// direction the farthest wins, so collinear input yields only the extreme points. Stop when
 /// the candidate is v₁ again.
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.2 "Marcha de Jarvis" (steps 0 and i, and the
+/// Follows [RD, §2.2] "Marcha de Jarvis" (steps 0 and i, and the
 /// "Observaciones" on signed areas).
 ///
 /// Output convention and degenerate inputs: see the [module docs](super). `keep_collinear`

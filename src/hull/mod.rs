@@ -1,4 +1,4 @@
-//! Convex hulls of finite point sets: the seed's algorithms and the output-sensitive ones.
+//! Convex hulls of finite point sets: the course's algorithms and the output-sensitive ones.
 //!
 //! The course ([RD, §2.2], "Cierre Convexo de una nube de puntos") teaches brute force,
 //! Jarvis's march, Graham's scan, its lexicographic variant (Andrew's monotone chain) and the
@@ -42,7 +42,7 @@
 //! `_with` functions take a validated [`PointSet`]; the plain ones take a slice and reject
 //! NaN and infinities with [`Error::NonFinite`](crate::Error::NonFinite).
 //!
-//! [`is_strictly_convex_ccw`] and [`encloses`] check a result exactly; tests and debug
+//! [`check_strictly_convex_ccw`] and [`check_encloses`] check a result exactly; tests and debug
 //! builds use them.
 //!
 //! ```
@@ -79,7 +79,7 @@ mod quickhull;
 pub use akl_toussaint::{akl_toussaint, akl_toussaint_filter, akl_toussaint_with};
 pub use brute_force::{brute_force_hull, brute_force_hull_with};
 pub use chan::{chan, chan_with};
-pub use check::{encloses, is_strictly_convex_ccw};
+pub use check::{check_encloses, check_strictly_convex_ccw};
 pub use graham::{graham_scan, graham_scan_with};
 pub use jarvis::{jarvis_march, jarvis_march_with};
 pub use monotone_chain::{monotone_chain, monotone_chain_with};

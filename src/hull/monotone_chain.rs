@@ -1,4 +1,4 @@
-//! Andrew's monotone chain: the seed's "variante" of Graham's scan, which sorts
+//! Andrew's monotone chain: the course's "variante" of Graham's scan, which sorts
 //! lexicographically instead of by angle and scans the lower and upper chains.
 
 use super::collinear::finish;
@@ -53,7 +53,7 @@ pub fn monotone_chain(points: &[Point2], options: HullOptions) -> Result<Vec<usi
 /// Graham's scan over the sorted list: push a point after popping every point that does
 /// not make a strict left turn with it.
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.2 "Scan de Graham - Variante" (steps 1–4).
+/// Follows [RD, §2.2] "Scan de Graham - Variante" (steps 1–4).
 ///
 /// Output convention and degenerate inputs: see the [module docs](super). `keep_collinear`
 /// inserts the boundary points afterwards (a binary search per point over the hull).

@@ -57,7 +57,7 @@ pub fn quickhull(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> 
 /// the difference of the two points, exact. Runs on an explicit stack: no recursion depth
 /// to overflow when h = n.
 ///
-/// Not in the seed; the peer crate `geo` uses it for its `ConvexHull`.
+/// Not in the course; the peer crate `geo` uses it for its `ConvexHull`.
 ///
 /// Output convention and degenerate inputs: see the [module docs](super). `keep_collinear`
 /// inserts the boundary points afterwards.

@@ -67,7 +67,7 @@ pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
 /// The largest circle whose centre lies in the convex hull of `points` and which holds no
 /// point strictly inside, counting its predicates.
 ///
-/// The idea (`003_5b666ee3e15e6353.txt`, §2.4, problem 5 "Mayor círculo vacío"): the
+/// The idea ([RD, §2.4], problem 5 "Mayor círculo vacío"): the
 /// distance f(x) from x to its nearest point is maximal over the hull at a vertex of the
 /// polygons Vor(S) ∩ CH(S): a Voronoi vertex inside the hull, a point where a Voronoi edge
 /// crosses the hull's boundary, or a hull vertex (where f = 0). Voronoi vertices are the

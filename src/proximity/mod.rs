@@ -1,8 +1,8 @@
-//! The seed's proximity problems solved on the Delaunay triangulation: all nearest
+//! The course's proximity problems solved on the Delaunay triangulation: all nearest
 //! neighbours, the closest pair, nearest-neighbour queries and the Euclidean minimum
 //! spanning tree.
 //!
-//! All follow `003_5b666ee3e15e6353.txt`, §2.4 "Solución de los problemas de proximidad":
+//! All follow [RD, §2.4] "Solución de los problemas de proximidad":
 //! every nearest neighbour of a site is a Delaunay neighbour (Theorem 2.31), so the
 //! Delaunay edges (3n − 3 − h of them) hold every answer. Distances are compared with the
 //! exact [`cmp_dist`](crate::geometry::cmp_dist) only; the `distance` fields of the
@@ -12,11 +12,11 @@
 //! to it, the closest pair of a set with duplicates is a pair of equal points, and the
 //! spanning tree joins equal points by zero-length edges.
 
-//! The seed's proximity problems: all nearest neighbours, the closest pair (on the Delaunay
+//! The course's proximity problems: all nearest neighbours, the closest pair (on the Delaunay
 //! triangulation and by divide and conquer), nearest-neighbour queries, the Euclidean minimum
 //! spanning tree and the largest empty circle.
 //!
-//! All but the divide and conquer follow `003_5b666ee3e15e6353.txt`, §2.4 "Solución de los
+//! All but the divide and conquer follow [RD, §2.4] "Solución de los
 //! problemas de proximidad": every nearest neighbour of a site is a Delaunay neighbour
 //! (Theorem 2.31), so the Delaunay edges (3n − 3 − h of them) hold every answer. Distances are
 //! compared with the exact [`cmp_dist`](crate::geometry::cmp_dist) only; the `distance` fields

@@ -95,7 +95,7 @@ impl<'a> NearestSearch<'a> {
     /// The index of a point nearest to `query`, by a greedy walk on the Delaunay graph from
     /// `start` (or a hull vertex), counting its distance evaluations.
     ///
-    /// The idea (`003_5b666ee3e15e6353.txt`, §2.4, problem 4 "El vecino más cercano": find the
+    /// The idea ([RD, §2.4], problem 4 "El vecino más cercano": find the
     /// Voronoi region holding the query): from the current site move to its Delaunay
     /// neighbour nearest to the query while that one is strictly nearer. A site that is not
     /// a nearest one always has a strictly nearer Delaunay neighbour (the segment from it to

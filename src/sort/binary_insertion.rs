@@ -1,15 +1,15 @@
 //! Insertion sort by bisection, with the fewest comparisons a bisection can make.
 //!
 //! Step `k` (from 1 to n − 1) inserts `x = v[k]` into the sorted prefix `v[..k]` and finds its
-//! place by bisection (the seed, `003_5b666ee3e15e6353.txt`, §2.1 "Inserción por bisección"):
+//! place by bisection (the course, [RD, §2.1] "Inserción por bisección"):
 //! compare `x` with the middle element of the candidate run and keep the half on `x`'s side.
 //! Here the compared element leaves the run, so a run of m elements leaves at most ⌊m/2⌋
 //! candidates and a step costs at most ⌊log₂ k⌋ + 1 = ⌈log₂(k + 1)⌉ comparisons: the
 //! information-theoretic minimum for choosing one of k + 1 gaps. In total at most
-//! ⌈log₂ 2⌉ + ⌈log₂ 3⌉ + … + ⌈log₂ n⌉, the seed's bound log₂ 2 + … + log₂ n with each term
+//! ⌈log₂ 2⌉ + ⌈log₂ 3⌉ + … + ⌈log₂ n⌉, the course's bound log₂ 2 + … + log₂ n with each term
 //! rounded up.
 //!
-//! The seed's worked table keeps the compared element in the right half and therefore ends
+//! The course's worked table keeps the compared element in the right half and therefore ends
 //! with a comparison that can repeat an earlier one; that variant, which reproduces the table
 //! row for row, is [`super::course_binary_insertion_sort`].
 //!
@@ -75,8 +75,8 @@ where
 /// (`lo = mid + 1`). Then shift `v[lo..k]` one place right and put `x` at `lo`. Equal
 /// elements send `x` right, after them (stable).
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.1 "Inserción por bisección" and "Complejidad de los
-/// algoritmos de ordenación" (see the module docs for how it differs from the seed's table).
+/// Follows [RD, §2.1] "Inserción por bisección" and "Complejidad de los
+/// algoritmos de ordenación" (see the module docs for how it differs from the course's table).
 ///
 /// # Errors
 ///
@@ -93,7 +93,7 @@ where
 /// - comparisons: between ⌊log₂ k⌋ and ⌊log₂ k⌋ + 1 = ⌈log₂(k + 1)⌉ in step `k`; in total at
 ///   most Σ_{k=2}^{n} ⌈log₂ k⌉ ≤ (n − 1)⌈log₂ n⌉;
 /// - moves: one per element shifted one place right, as in [`super::insertion_sort_with`]:
-///   the number of inversions of the input, at most n(n−1)/2 (the seed: "O(n²) igual que en
+///   the number of inversions of the input, at most n(n−1)/2 (the course: "O(n²) igual que en
 ///   la inserción secuencial").
 ///
 /// ```

@@ -1,13 +1,13 @@
-//! Bubble sort, exactly as the seed states it: n − 1 passes, no early exit.
+//! Bubble sort, exactly as the course states it: n − 1 passes, no early exit.
 //!
 //! Pass `i` (from 1) compares `x_j` with `x_{j+1}` for `j = 1, …, n − i` and exchanges them
 //! when `x_j > x_{j+1}`; after it, the `i` largest elements are in their final places. The
-//! seed (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmo de ordenación de Burbuja") runs every
+//! seed ([RD, §2.1] "Algoritmo de ordenación de Burbuja") runs every
 //! pass even when the list is already sorted, and its complexity section counts
 //! (n−1) + (n−2) + … + 1 = n(n−1)/2 comparisons; so does this implementation, for every input.
 //!
 //! Invariants the tests check: exactly n(n−1)/2 comparisons; the number of swaps equals the
-//! number of inversions (pairs `i < j` with `v[i] > v[j]`); stable; the seed's pass-by-pass
+//! number of inversions (pairs `i < j` with `v[i] > v[j]`); stable; the course's pass-by-pass
 //! table for {7, 3, 5, 1}.
 
 use super::{Counted, NoObserver, Observer, Step};
@@ -30,7 +30,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     claims: &[on("random", Bound::Quadratic, Operation::Comparisons)],
 };
 
-/// Sorts `v` in increasing order with the seed's bubble sort.
+/// Sorts `v` in increasing order with the course's bubble sort.
 ///
 /// See [`bubble_sort_with`] for the algorithm, its complexity and what it counts.
 ///
@@ -43,7 +43,7 @@ pub fn bubble_sort<T: Ord>(v: &mut [T]) {
     bubble_sort_with(v, T::cmp, &mut NoCount);
 }
 
-/// Sorts `v` by the comparator `cmp` with the seed's bubble sort; stable.
+/// Sorts `v` by the comparator `cmp` with the course's bubble sort; stable.
 ///
 /// For floats pass `f64::total_cmp`. See [`bubble_sort_with`].
 ///
@@ -59,13 +59,13 @@ where
     bubble_sort_with(v, cmp, &mut NoCount);
 }
 
-/// Sorts `v` by `cmp` with the seed's bubble sort, recording its operations in `counter`.
+/// Sorts `v` by `cmp` with the course's bubble sort, recording its operations in `counter`.
 ///
 /// Idea: pass `i = 1, …, n − 1` walks `j` over `0..n − i`, exchanging neighbours `v[j]`,
 /// `v[j + 1]` that are out of order, so the largest remaining element bubbles up to position
-/// `n − i`. There is no early exit: the seed's version makes every pass.
+/// `n − i`. There is no early exit: the course's version makes every pass.
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.1 "Algoritmo de ordenación de Burbuja" and
+/// Follows [RD, §2.1] "Algoritmo de ordenación de Burbuja" and
 /// "Complejidad de los algoritmos de ordenación". Stable: only strictly out-of-order
 /// neighbours are exchanged.
 ///
@@ -80,8 +80,8 @@ where
 ///
 /// # Counts
 ///
-/// - comparisons: exactly n(n−1)/2, the seed's count;
-/// - swaps: one per exchange, equal to the number of inversions of the input; the seed's
+/// - comparisons: exactly n(n−1)/2, the course's count;
+/// - swaps: one per exchange, equal to the number of inversions of the input; the course's
 ///   worst case is n(n−1)/2 ("después de cada comparación habrá un intercambio"), reached on
 ///   strictly decreasing input.
 ///

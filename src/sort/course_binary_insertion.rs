@@ -1,26 +1,26 @@
-//! Insertion sort by bisection, exactly as the seed's table does it.
+//! Insertion sort by bisection, exactly as the course's table does it.
 //!
 //! Step `k` (from 1 to n − 1) inserts `x = v[k]` into the sorted prefix `v[..k]`, found by
-//! bisection: the seed (`003_5b666ee3e15e6353.txt`, §2.1 "Inserción por bisección") splits the
+//! bisection: the course ([RD, §2.1] "Inserción por bisección") splits the
 //! current run into a left half of ⌈m/2⌉ and a right half of ⌊m/2⌋ elements
 //! ("4 ↦ {1, 3 | 5, 7}"), compares `x` with the first element of the right half, keeps the
 //! left half if `x` is smaller and the right half (that element included) otherwise, and when
 //! one element `e` is left compares once more to put `x` before or after it. Because the
 //! compared element stays in the right half, that last comparison can repeat one already made
-//! — the seed's own table shows it: "4 > 3 ⇒ 4 ↦ {3} : 4 > 3 ⇒ {3, 4}" — and this file
+//! — the course's own table shows it: "4 > 3 ⇒ 4 ↦ {3} : 4 > 3 ⇒ {3, 4}" — and this file
 //! keeps it, so that [`super::trace`] reproduces the table row for row.
 //!
 //! A step into a prefix of length k therefore costs between ⌊log₂ k⌋ + 1 comparisons (always
 //! right: nondecreasing input) and ⌈log₂ k⌉ + 1 (always left: strictly decreasing input).
-//! The seed bounds the total by log₂ 2 + … + log₂ n ≤ (n − 1) log₂ n; with the repeated
+//! The course bounds the total by log₂ 2 + … + log₂ n ≤ (n − 1) log₂ n; with the repeated
 //! comparison the exact worst case is Σ_{k=1}^{n−1} (⌈log₂ k⌉ + 1), which exceeds the optimal
 //! Σ ⌈log₂(k + 1)⌉ of a bisection without the repeat ([`super::binary_insertion_sort`]) by at
-//! most one per step. The seed's own table is an instance: 12 comparisons for six elements,
+//! most one per step. The course's own table is an instance: 12 comparisons for six elements,
 //! above its stated bound log₂ 2 + … + log₂ 6 = log₂ 720 ≈ 9.49 (the optimal bisection makes
 //! at most 1 + 2 + 2 + 3 + 3 = 11).
 //!
 //! Invariants the tests check: those per-step counts (exact on monotone inputs, bounds
-//! otherwise); moves equal the inversions; stable; the seed's table.
+//! otherwise); moves equal the inversions; stable; the course's table.
 
 use super::{Counted, NoObserver, Observer, Step};
 use crate::complexity::{on, Bound, Declaration};
@@ -42,7 +42,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     claims: &[on("random", Bound::Quadratic, Operation::Moves)],
 };
 
-/// Sorts `v` in increasing order with the seed's insertion sort by bisection.
+/// Sorts `v` in increasing order with the course's insertion sort by bisection.
 ///
 /// See [`course_binary_insertion_sort_with`] for the algorithm, its complexity and what it counts.
 ///
@@ -55,7 +55,7 @@ pub fn course_binary_insertion_sort<T: Ord>(v: &mut [T]) {
     course_binary_insertion_sort_with(v, T::cmp, &mut NoCount);
 }
 
-/// Sorts `v` by the comparator `cmp` with the seed's insertion sort by bisection; stable.
+/// Sorts `v` by the comparator `cmp` with the course's insertion sort by bisection; stable.
 ///
 /// For floats pass `f64::total_cmp`. See [`course_binary_insertion_sort_with`].
 ///
@@ -72,7 +72,7 @@ where
     course_binary_insertion_sort_with(v, cmp, &mut NoCount);
 }
 
-/// Sorts `v` by `cmp` with the seed's insertion sort by bisection, recording its operations
+/// Sorts `v` by `cmp` with the course's insertion sort by bisection, recording its operations
 /// in `counter`.
 ///
 /// Idea: for `k = 1, …, n − 1`, search the sorted prefix `v[..k]` for the place of
@@ -81,8 +81,8 @@ where
 /// `v[mid..hi]`; at one element compare once more. Then shift the larger elements one place
 /// right and put `x` in the gap. Equal elements send `x` right, after them (stable).
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.1 "Inserción por bisección" and "Complejidad de los
-/// algoritmos de ordenación" (see the module docs for the seed's repeated comparison).
+/// Follows [RD, §2.1] "Inserción por bisección" and "Complejidad de los
+/// algoritmos de ordenación" (see the module docs for the course's repeated comparison).
 ///
 /// # Errors
 ///
@@ -100,7 +100,7 @@ where
 ///   Σ_{k=1}^{n−1} (⌈log₂ k⌉ + 1), reached exactly on strictly decreasing input, and exactly
 ///   Σ_{k=1}^{n−1} (⌊log₂ k⌋ + 1) on nondecreasing input;
 /// - moves: one per element shifted one place right, as in [`insertion_sort_with`]: the
-///   number of inversions of the input, at most n(n−1)/2 (the seed: "O(n²) igual que en la
+///   number of inversions of the input, at most n(n−1)/2 (the course: "O(n²) igual que en la
 ///   inserción secuencial").
 ///
 /// [`insertion_sort_with`]: super::course_insertion_sort_with
@@ -113,7 +113,7 @@ where
 /// let mut counts = Counts::default();
 /// course_binary_insertion_sort_with(&mut v, i32::cmp, &mut counts);
 /// assert_eq!(v, [1, 3, 4, 5, 6, 7]);
-/// assert_eq!(counts.comparisons, 1 + 2 + 3 + 3 + 3); // the seed's table
+/// assert_eq!(counts.comparisons, 1 + 2 + 3 + 3 + 3); // the course's table
 /// assert_eq!(counts.moves, 8);
 /// ```
 pub fn course_binary_insertion_sort_with<T, F, C>(v: &mut [T], cmp: F, counter: &mut C)

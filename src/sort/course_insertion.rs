@@ -1,20 +1,20 @@
-//! Sequential insertion sort, as the seed does it: the sorted prefix is scanned from the front.
+//! Sequential insertion sort, as the course does it: the sorted prefix is scanned from the front.
 //!
-//! Step `k` (from 1 to n − 1) inserts `x_{k+1}` into the sorted list `x_1, …, x_k`. The seed
-//! (`003_5b666ee3e15e6353.txt`, §2.1 "Inserción secuencial") finds the place by comparing the
+//! Step `k` (from 1 to n − 1) inserts `x_{k+1}` into the sorted list `x_1, …, x_k`. The course
+//! ([RD, §2.1] "Inserción secuencial") finds the place by comparing the
 //! new element with the sorted elements from the smallest up — its table for {7, 3, 5, 1, 4, 6}
 //! reads "1 3 4 5 7 pues 4 > 1, 4 > 3 y 4 < 5" — and stops at the first larger element. This
-//! file follows the seed, so its cost profile is the mirror image of the common textbook
+//! file follows the course, so its cost profile is the mirror image of the common textbook
 //! variant that scans from the back ([`super::insertion_sort`]): nondecreasing input is its worst case (every element is
 //! compared with the whole prefix, n(n−1)/2 comparisons, no moves) and strictly decreasing
 //! input its best (one comparison per step, n − 1 in total, but n(n−1)/2 moves).
 //!
-//! [`super::trace`] of [`super::Algorithm::CourseInsertion`] reproduces the seed's table with
+//! [`super::trace`] of [`super::Algorithm::CourseInsertion`] reproduces the course's table with
 //! its "pues" clauses; use [`super::insertion_sort`] when you want the usual cost profile.
 //!
-//! Invariants the tests check: the comparisons of each step are exactly those the seed lists
+//! Invariants the tests check: the comparisons of each step are exactly those the course lists
 //! (one per prefix element up to and including the first larger one); moves equal the
-//! inversions of the input; stable; the seed's table.
+//! inversions of the input; stable; the course's table.
 
 use super::{Counted, NoObserver, Observer, Step};
 use crate::complexity::{on, Bound, Declaration};
@@ -40,7 +40,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     ],
 };
 
-/// Sorts `v` in increasing order with the seed's sequential insertion sort.
+/// Sorts `v` in increasing order with the course's sequential insertion sort.
 ///
 /// See [`course_insertion_sort_with`] for the algorithm, its complexity and what it counts.
 ///
@@ -53,7 +53,7 @@ pub fn course_insertion_sort<T: Ord>(v: &mut [T]) {
     course_insertion_sort_with(v, T::cmp, &mut NoCount);
 }
 
-/// Sorts `v` by the comparator `cmp` with the seed's sequential insertion sort; stable.
+/// Sorts `v` by the comparator `cmp` with the course's sequential insertion sort; stable.
 ///
 /// For floats pass `f64::total_cmp`. See [`course_insertion_sort_with`].
 ///
@@ -69,7 +69,7 @@ where
     course_insertion_sort_with(v, cmp, &mut NoCount);
 }
 
-/// Sorts `v` by `cmp` with the seed's sequential insertion sort, recording its operations in
+/// Sorts `v` by `cmp` with the course's sequential insertion sort, recording its operations in
 /// `counter`.
 ///
 /// Idea: for `k = 1, …, n − 1`, the prefix `v[..k]` is sorted; compare `x = v[k]` with
@@ -77,8 +77,8 @@ where
 /// `v[p..k]` one place right and put `x` at `p`. Stopping only at a strictly larger element
 /// keeps equal elements in input order (stable).
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.1 "Inserción secuencial" (the scan from the front is
-/// the seed's, see the module docs) and "Complejidad de los algoritmos de ordenación".
+/// Follows [RD, §2.1] "Inserción secuencial" (the scan from the front is
+/// the course's, see the module docs) and "Complejidad de los algoritmos de ordenación".
 ///
 /// # Errors
 ///
@@ -93,9 +93,9 @@ where
 /// # Counts
 ///
 /// - comparisons: step `k` makes p + 1 comparisons, or k when `x` is not smaller than any
-///   prefix element; in total at most 1 + 2 + … + (n − 1) = n(n−1)/2, the seed's bound,
+///   prefix element; in total at most 1 + 2 + … + (n − 1) = n(n−1)/2, the course's bound,
 ///   reached on nondecreasing input; n − 1 on strictly decreasing input;
-/// - moves: one per element shifted one place right (the seed's "desplazar"), k − p in step
+/// - moves: one per element shifted one place right (the course's "desplazar"), k − p in step
 ///   `k`; in total the number of inversions of the input, at most n(n−1)/2. Putting `x`
 ///   into the gap is not counted.
 ///
@@ -107,7 +107,7 @@ where
 /// let mut counts = Counts::default();
 /// course_insertion_sort_with(&mut v, i32::cmp, &mut counts);
 /// assert_eq!(v, [1, 3, 4, 5, 6, 7]);
-/// assert_eq!(counts.comparisons, 1 + 2 + 1 + 3 + 5); // the seed's "pues" clauses
+/// assert_eq!(counts.comparisons, 1 + 2 + 1 + 3 + 5); // the course's "pues" clauses
 /// assert_eq!(counts.moves, 8); // the inversions of 7 3 5 1 4 6
 /// ```
 pub fn course_insertion_sort_with<T, F, C>(v: &mut [T], cmp: F, counter: &mut C)

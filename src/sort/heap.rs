@@ -3,8 +3,8 @@
 //! The slice is viewed as a complete binary tree (children of `i` at `2i + 1`, `2i + 2`).
 //! Bottom-up heap construction makes every parent at least as large as its children; then the
 //! maximum at the root is exchanged with the last element of the heap, the heap shrinks by
-//! one and the new root sifts down. Not in the seed, whose sorting section stops at the
-//! quadratic sorts (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de ordenación"); it is the
+//! one and the new root sifts down. Not in the course, whose sorting section stops at the
+//! quadratic sorts ([RD, §2.1] "Algoritmos de ordenación"); it is the
 //! in-place O(n log n) reference and [`super::quick_sort`]'s guard against bad pivots.
 //!
 //! Invariants the tests check: comparisons at most 2(n − s(n)) + 2 Σ_{m=1}^{n−1} ⌊log₂ m⌋
@@ -66,8 +66,8 @@ where
 /// `v[..end]`. A sift-down step compares the two children with each other (when there are
 /// two) and the larger child with the parent, and exchanges them if the parent is smaller.
 ///
-/// Not in the seed (`003_5b666ee3e15e6353.txt`, §2.1 stops at the quadratic sorts); the
-/// counting follows the seed's conventions.
+/// Not in the course ([RD, §2.1] stops at the quadratic sorts); the
+/// counting follows the course's conventions.
 ///
 /// # Errors
 ///

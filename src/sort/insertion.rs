@@ -1,16 +1,16 @@
 //! Sequential insertion sort, scanning the sorted prefix from the back.
 //!
-//! Step `k` (from 1 to n − 1) inserts `x = v[k]` into the sorted prefix `v[..k]` (the seed,
-//! `003_5b666ee3e15e6353.txt`, §2.1 "Inserción secuencial": "se inserta x_{k+1} en la lista
+//! Step `k` (from 1 to n − 1) inserts `x = v[k]` into the sorted prefix `v[..k]` (the course,
+//! [RD, §2.1] "Inserción secuencial": "se inserta x_{k+1} en la lista
 //! parcialmente ordenada {x_1, …, x_k}"). This is the usual textbook variant: `x` is compared
 //! with the prefix from its largest element down and every larger element is shifted one
 //! place right as soon as it has been compared, so comparisons and moves go together. Its cost
-//! profile is the one the seed's complexity paragraph describes: strictly decreasing input is
+//! profile is the one the course's complexity paragraph describes: strictly decreasing input is
 //! the worst case (step `k` compares with all k prefix elements and shifts them all:
 //! n(n−1)/2 comparisons and moves), nondecreasing input the best (n − 1 comparisons, no
 //! moves).
 //!
-//! The seed's worked table scans from the front instead ("4 > 1, 4 > 3 y 4 < 5"), which
+//! The course's worked table scans from the front instead ("4 > 1, 4 > 3 y 4 < 5"), which
 //! mirrors the profile; that variant is [`super::course_insertion_sort`], and its trace
 //! reproduces the table with its reasons.
 //!
@@ -78,7 +78,7 @@ where
 /// than `x` (or the front), then shift the larger elements one place right and put `x` in the
 /// gap. Stopping at an equal element keeps equal elements in input order (stable).
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.1 "Inserción secuencial" and "Complejidad de los
+/// Follows [RD, §2.1] "Inserción secuencial" and "Complejidad de los
 /// algoritmos de ordenación" (see the module docs for the direction of the scan).
 ///
 /// # Errors
@@ -95,8 +95,8 @@ where
 ///
 /// - comparisons: step `k` makes `k − p + 1` comparisons when `x` lands at position `p > 0`
 ///   and `k` when it lands at the front; in total between n − 1 (nondecreasing input) and
-///   1 + 2 + … + (n − 1) = n(n−1)/2 (strictly decreasing input), the seed's bound;
-/// - moves: one per element shifted one place right (the seed's "desplazar"), `k − p` in step
+///   1 + 2 + … + (n − 1) = n(n−1)/2 (strictly decreasing input), the course's bound;
+/// - moves: one per element shifted one place right (the course's "desplazar"), `k − p` in step
 ///   `k`; in total the number of inversions of the input. Putting `x` into the gap is not
 ///   counted.
 ///

@@ -1,8 +1,8 @@
 //! Top-down merge sort: the O(n log n) worst-case reference, stable.
 //!
 //! Split the input into a left half of ⌊m/2⌋ and a right half of ⌈m/2⌉ elements, sort both
-//! recursively, merge. Not in the seed, whose sorting section stops at the quadratic sorts
-//! (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de ordenación"); it is here so that growth
+//! recursively, merge. Not in the course, whose sorting section stops at the quadratic sorts
+//! ([RD, §2.1] "Algoritmos de ordenación"); it is here so that growth
 //! plots contrast their n² with n log n.
 //!
 //! The elements are generic and may be neither `Copy` nor `Clone`, and compgeo forbids
@@ -72,8 +72,8 @@ where
 /// tie (stable). The merges act on a permutation of positions (see the module docs), which is
 /// applied to `v` at the end by exchanges along its cycles.
 ///
-/// Not in the seed (`003_5b666ee3e15e6353.txt`, §2.1 stops at the quadratic sorts); the
-/// counting follows the seed's conventions.
+/// Not in the course ([RD, §2.1] stops at the quadratic sorts); the
+/// counting follows the course's conventions.
 ///
 /// # Errors
 ///

@@ -1,15 +1,15 @@
 //! Sorting: the course's quadratic sorts, the O(n log n) references, and a radix sort for `f64`.
 //!
-//! The seed (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmos de ordenación" and "Complejidad de
+//! The course ([RD, §2.1] "Algoritmos de ordenación" and "Complejidad de
 //! los algoritmos de ordenación") teaches bubble sort, selection sort and insertion sort
 //! (sequential and by bisection) and measures them by counting comparisons and exchanges.
 //! Merge sort, heap sort and quicksort are here so that growth plots can contrast O(n²) with
 //! O(n log n); [`radix_sort_f64`] sorts `f64` keys in linear time by their bits.
 //!
-//! Insertion comes twice. The seed's worked tables scan the sorted prefix from the front and
+//! Insertion comes twice. The course's worked tables scan the sorted prefix from the front and
 //! bisect with a repeated last comparison; those are the `course_` variants, whose traces
 //! reproduce the tables line by line. [`insertion_sort`] and [`binary_insertion_sort`] are the
-//! usual forms, with the cost profile of the seed's complexity paragraph: sequential insertion
+//! usual forms, with the cost profile of the course's complexity paragraph: sequential insertion
 //! is worst on decreasing input, and bisection makes at most ⌈log₂ k⌉ comparisons per step.
 //!
 //! | algorithm | comparisons (worst) | stable | file |
@@ -39,7 +39,7 @@
 //! [`Counter::comparison`], nothing else is. Exchanges of two elements are
 //! [`Counter::swap`]; single-element moves (insertion sort's shifts, merge sort's placements,
 //! radix sort's distributions) are [`Counter::element_move`]. Each algorithm's docs say which of these it records and which
-//! numbers the seed states for it.
+//! numbers the course states for it.
 //!
 //! # Sorting floats
 //!
@@ -60,7 +60,7 @@
 //! assert!(x[1].is_sign_negative() && x[2].is_sign_positive() && x[4].is_nan());
 //! ```
 //!
-//! [`trace`] prints the seed's step tables from the real algorithms.
+//! [`trace`] prints the course's step tables from the real algorithms.
 
 use crate::complexity::{algorithm_family, Declaration};
 use crate::count::{Counter, NoCount};

@@ -8,7 +8,7 @@
 //! degrading to n²; sorted, reversed and organ-pipe inputs get near-exact medians. Inputs
 //! built against any fixed pivot rule still exist (McIlroy's adversary builds them), so after
 //! 2⌊log₂ n⌋ levels of partitioning a range is handed to [`super::heap_sort`] (Musser's
-//! introsort). Not in the seed (`003_5b666ee3e15e6353.txt`, §2.1 stops at the quadratic
+//! introsort). Not in the course ([RD, §2.1] stops at the quadratic
 //! sorts).
 //!
 //! Invariants the tests check: at most 6n log₂ n + n comparisons on every input, McIlroy's
@@ -84,8 +84,8 @@ where
 /// three elements are sorted directly by compare-exchange; a range met after 2⌊log₂ n⌋
 /// levels of partitioning is heap-sorted.
 ///
-/// Not in the seed (`003_5b666ee3e15e6353.txt`, §2.1 stops at the quadratic sorts); the
-/// counting follows the seed's conventions.
+/// Not in the course ([RD, §2.1] stops at the quadratic sorts); the
+/// counting follows the course's conventions.
 ///
 /// # Errors
 ///

@@ -13,7 +13,7 @@
 //! another with probability below 1/256, so one insertion pass finishes the part. If the
 //! insertion pass meets too many inversions (keys that agree on their top bits and differ
 //! below, as an adversary can arrange), the part is sorted on all its varying bits by counting
-//! passes instead, so the sort stays linear. Not in the seed; it is compgeo's fast path for
+//! passes instead, so the sort stays linear. Not in the course; it is compgeo's fast path for
 //! sorting coordinates, measured against `sort_unstable_by(f64::total_cmp)` in
 //! `benches/sort.rs` (groups `radix-f64-mixed` and `radix-f64-unit`).
 //!
@@ -93,7 +93,7 @@ pub fn radix_sort_f64(v: &mut [f64]) {
 /// that tie on those bits. If that pass has to shift more than m keys, the part is sorted by
 /// counting passes on all its varying bits instead. Keys become floats again part by part.
 ///
-/// Not in the seed; it sorts what [`super::merge_sort_by`] or [`super::quick_sort_by`] with
+/// Not in the course; it sorts what [`super::merge_sort_by`] or [`super::quick_sort_by`] with
 /// `f64::total_cmp` sort, in linear time.
 ///
 /// # Errors

@@ -1,12 +1,12 @@
-//! Selection sort, as the seed states it: select the minimum of the rest, exchange it forward.
+//! Selection sort, as the course states it: select the minimum of the rest, exchange it forward.
 //!
 //! Step `i` (from 1 to n − 1) finds the smallest of `x_i, …, x_n` with a linear scan and
 //! exchanges it with `x_i`; when the minimum already is `x_i` nothing is exchanged ("no se
 //! hace ninguna operación"). After step `i` the first `i` elements are the `i` smallest, in
-//! order. Seed: `003_5b666ee3e15e6353.txt`, §2.1 "Algoritmo de ordenación por Selección".
+//! order. Seed: [RD, §2.1] "Algoritmo de ordenación por Selección".
 //!
 //! Invariants the tests check: exactly n(n−1)/2 comparisons; at most n − 1 swaps and at least
-//! n − c (c = cycles of the permutation, distinct keys); the seed's table for
+//! n − c (c = cycles of the permutation, distinct keys); the course's table for
 //! {1, 3, 2, 9, 5, 4}.
 
 use super::{Counted, NoObserver, Observer, Step};
@@ -29,7 +29,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     claims: &[on("random", Bound::Quadratic, Operation::Comparisons)],
 };
 
-/// Sorts `v` in increasing order with the seed's selection sort.
+/// Sorts `v` in increasing order with the course's selection sort.
 ///
 /// See [`selection_sort_with`] for the algorithm, its complexity and what it counts.
 ///
@@ -42,7 +42,7 @@ pub fn selection_sort<T: Ord>(v: &mut [T]) {
     selection_sort_with(v, T::cmp, &mut NoCount);
 }
 
-/// Sorts `v` by the comparator `cmp` with the seed's selection sort; not stable.
+/// Sorts `v` by the comparator `cmp` with the course's selection sort; not stable.
 ///
 /// For floats pass `f64::total_cmp`. See [`selection_sort_with`].
 ///
@@ -58,13 +58,13 @@ where
     selection_sort_with(v, cmp, &mut NoCount);
 }
 
-/// Sorts `v` by `cmp` with the seed's selection sort, recording its operations in `counter`.
+/// Sorts `v` by `cmp` with the course's selection sort, recording its operations in `counter`.
 ///
 /// Idea: for `i = 0, …, n − 2`, scan `v[i + 1..]` for the first position `m` of the minimum of
 /// `v[i..]` (a linear scan, n − 1 − i comparisons) and exchange `v[i]` with `v[m]` when
 /// `m ≠ i`. Not stable: the exchange can carry `v[i]` past an equal element.
 ///
-/// Follows `003_5b666ee3e15e6353.txt`, §2.1 "Algoritmo de ordenación por Selección" and
+/// Follows [RD, §2.1] "Algoritmo de ordenación por Selección" and
 /// "Complejidad de los algoritmos de ordenación".
 ///
 /// # Errors
@@ -78,7 +78,7 @@ where
 ///
 /// # Counts
 ///
-/// - comparisons: exactly n(n−1)/2 (the seed: n − 1 linear minimum searches, "cuadrático");
+/// - comparisons: exactly n(n−1)/2 (the course: n − 1 linear minimum searches, "cuadrático");
 /// - swaps: one per step whose minimum is not already in place, so at most n − 1.
 ///
 /// ```
@@ -90,7 +90,7 @@ where
 /// selection_sort_with(&mut v, i32::cmp, &mut counts);
 /// assert_eq!(v, [1, 2, 3, 4, 5, 9]);
 /// assert_eq!(counts.comparisons, 15); // 6 * 5 / 2
-/// assert_eq!(counts.swaps, 2); // the seed's steps 2 and 4
+/// assert_eq!(counts.swaps, 2); // the course's steps 2 and 4
 /// ```
 pub fn selection_sort_with<T, F, C>(v: &mut [T], cmp: F, counter: &mut C)
 where

@@ -1,4 +1,4 @@
-//! Step tables of the sorting algorithms, laid out like the seed's tables.
+//! Step tables of the sorting algorithms, laid out like the course's tables.
 //!
 //! The rows come from the real algorithms: [`trace`] runs the same code as `X_sort_with`,
 //! with an observer that the algorithm calls at each step and a comparator that records the
@@ -28,7 +28,7 @@ pub const TRACE_MAX_LEN: usize = 1000;
 ///
 /// The first line names the algorithm and the input; the last one gives the totals,
 /// `Comparisons: c, swaps: s, moves: m`, counted as `X_sort_with` counts them. The rows in
-/// between reproduce the layout of the seed's tables (`003_5b666ee3e15e6353.txt`, §2.1
+/// between reproduce the layout of the course's tables ([RD, §2.1]
 /// "Algoritmos de ordenación"), in English:
 ///
 /// - bubble: `Initial order`, then `After comparison k` with the compared pair as it stands
@@ -36,17 +36,17 @@ pub const TRACE_MAX_LEN: usize = 1000;
 /// - selection: `L = {…}`, then per step the position and value of the minimum, the exchange
 ///   made (or `no exchange`) and the rest of the list `L := {…}`, and `Output: {…}`;
 /// - insertion (both kinds): the sorted list after each insertion and, after `since`, the
-///   comparisons that placed the new element (for `CourseInsertion`, the seed's "pues"
+///   comparisons that placed the new element (for `CourseInsertion`, the course's "pues"
 ///   clauses);
 /// - binary insertion (both kinds): per step the sorted list `{…}` and the bisection, one
-///   indented line per comparison, written like the seed: `x ↦ {left | right} :` and
-///   `x < e ⇒ …` (`CourseBinaryInsertion` reproduces the seed's table).
+///   indented line per comparison, written like the course: `x ↦ {left | right} :` and
+///   `x < e ⇒ …` (`CourseBinaryInsertion` reproduces the course's table).
 ///
 /// The O(n log n) references get one row per top-level step: merge sort a row per merge
 /// (`Merge {…} + {…} → {…}`), heap sort the heap after construction and after each
 /// extraction (`heap | sorted suffix`), quicksort a row per partition
 /// (`left | pivot | right`), per short range sorted directly and per range handed to heap
-/// sort. Positions `x1, x2, …` count from 1, as in the seed.
+/// sort. Positions `x1, x2, …` count from 1, as in the course.
 ///
 /// # Errors
 ///
@@ -158,7 +158,7 @@ pub fn trace(algorithm: Algorithm, input: &[i64]) -> Result<String> {
     Ok(out)
 }
 
-/// Values separated by spaces, as in the seed's bubble and insertion tables.
+/// Values separated by spaces, as in the course's bubble and insertion tables.
 fn list(v: &[i64]) -> String {
     if v.is_empty() {
         return "(empty)".to_string();
@@ -166,7 +166,7 @@ fn list(v: &[i64]) -> String {
     v.iter().map(i64::to_string).collect::<Vec<_>>().join(" ")
 }
 
-/// Values in braces, as in the seed's selection and bisection tables.
+/// Values in braces, as in the course's selection and bisection tables.
 fn set(v: &[i64]) -> String {
     let inner: Vec<String> = v.iter().map(i64::to_string).collect();
     format!("{{{}}}", inner.join(", "))

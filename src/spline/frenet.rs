@@ -19,7 +19,7 @@
 //! and the sign of the last curvature are decided exactly. The unit vectors and the
 //! curvatures need square roots and are returned as `f64`:
 //! `f_i = e_i / E_i` and `κ_i = E_{i+1} / (E_1 E_i)` (for d = 3, `κ_1 = ‖x'×x''‖/‖x'‖³` and
-//! `κ_2 = det(x', x'', x''')/‖x'×x''‖²`, the seed's formulas).
+//! `κ_2 = det(x', x'', x''')/‖x'×x''‖²`, the course's formulas).
 //!
 //! The curvature vector `κ n = (‖x'‖² x'' − (x'·x'') x') / ‖x'‖⁴` needs no square root, so
 //! [`curvature_vector`] is exact with rationals and the G² check built on it too.

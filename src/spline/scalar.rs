@@ -7,7 +7,7 @@
 //! - `f64`, the fast path: hardware arithmetic, rounded;
 //! - `num_rational::BigRational` (feature `exact`), arbitrary-precision rationals: every
 //!   operation is exact, so identities such as "the two halves of a split curve evaluate to the
-//!   original" hold with `==`, and the seeds' worked examples can be reproduced digit for digit.
+//!   original" hold with `==`, and the course texts' worked examples can be reproduced digit for digit.
 //!
 //! ## Why `[S; D]`
 //!

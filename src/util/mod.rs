@@ -5,6 +5,57 @@
 mod csr;
 mod heap;
 
+/// Declares an enum of named kinds (generator kinds, report profiles): the variants with
+/// their kebab-case names, `ALL`, `name`, `Display` and `FromStr` (an unknown name gives the
+/// crate's "unknown {what} `x`; valid names: ..." error, with `what` as the parameter's
+/// name). The algorithm families have their own macro, which takes the names from the
+/// algorithms' declarations.
+macro_rules! named_enum {
+    (
+        $(#[$meta:meta])*
+        pub enum $kind:ident ($what:literal) {
+            $( $(#[$vmeta:meta])* $variant:ident = $name:literal ),+ $(,)?
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum $kind {
+            $( $(#[$vmeta])* $variant, )+
+        }
+
+        impl $kind {
+            /// Every kind, in declaration order.
+            pub const ALL: [$kind; [$($name),+].len()] = [ $( $kind::$variant ),+ ];
+
+            /// The kebab-case name, as accepted by `FromStr`.
+            pub fn name(self) -> &'static str {
+                match self {
+                    $( $kind::$variant => $name, )+
+                }
+            }
+        }
+
+        impl ::std::fmt::Display for $kind {
+            fn fmt(&self, f: &mut ::std::fmt::Formatter<'_>) -> ::std::fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+
+        impl ::std::str::FromStr for $kind {
+            type Err = $crate::Error;
+
+            /// Parses a kebab-case name; an unknown name gives
+            /// [`Error::InvalidParameter`]($crate::Error::InvalidParameter) listing the
+            /// valid ones.
+            fn from_str(s: &str) -> $crate::Result<Self> {
+                $crate::error::named(s, $what, $what, &$kind::ALL, $kind::name)
+            }
+        }
+    };
+}
+
+pub(crate) use named_enum;
+
 pub(crate) use csr::Csr;
 pub(crate) use heap::Heap;
 

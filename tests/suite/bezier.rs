@@ -302,7 +302,7 @@ proptest! {
     }
 
     /// The flattened polyline is within the tolerance of the curve (Euclidean distance ≤ √2
-    /// times the sup-norm bound of the seed).
+    /// times the sup-norm bound of the course).
     #[test]
     fn flattening_is_within_tolerance(b in f64_curve(5), tol in 0.05f64..20.0) {
         let poly = b.flatten(&tol).unwrap();

@@ -10,18 +10,10 @@ use compgeo::Error;
 use proptest::prelude::*;
 use std::cmp::Ordering;
 
-fn small_points() -> impl Strategy<Value = Vec<Point2>> {
-    prop::collection::vec((-6i32..=6, -6i32..=6), 0..30).prop_map(|v| {
-        v.into_iter()
-            .map(|(x, y)| Point2::new(f64::from(x), f64::from(y)))
-            .collect()
-    })
-}
-
 /// Points and their reflections through the origin: a centrally symmetric hull, whose
 /// edges come in parallel pairs.
 fn symmetric_points() -> impl Strategy<Value = Vec<Point2>> {
-    small_points().prop_map(|v| {
+    crate::strategies::lattice(-6..=6, 0..30).prop_map(|v| {
         v.iter()
             .flat_map(|p| [*p, Point2::new(-p.x, -p.y)])
             .collect()
@@ -83,7 +75,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
 
     #[test]
-    fn calipers_equal_brute_force(pts in small_points()) {
+    fn calipers_equal_brute_force(pts in crate::strategies::lattice(-6..=6, 0..30)) {
         check(&pts)?;
     }
 
@@ -94,7 +86,7 @@ proptest! {
 
     #[test]
     fn calipers_equal_brute_force_at_any_magnitude(
-        pts in small_points(),
+        pts in crate::strategies::lattice(-6..=6, 0..30),
         scale in prop::sample::select(vec![5e-324, 1e-200, 1e15, 1e300]),
     ) {
         let pts: Vec<Point2> = pts.iter().map(|p| Point2::new(p.x * scale, p.y * scale)).collect();

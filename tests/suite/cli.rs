@@ -470,7 +470,7 @@ fn sort_trace_prints_the_seed_bubble_table() {
         None,
     );
     assert_eq!(code, 0, "{err}");
-    // The rows of seed 003 §2.1 (bubble sort of {7, 3, 5, 1}): after each comparison the
+    // The rows of [RD, §2.1] (bubble sort of {7, 3, 5, 1}): after each comparison the
     // compared pair, after each pass the whole list.
     let seed_rows = [
         "7 3 5 1", "3 7", "5 7", "1 7", "3 5 1 7", "3 5", "1 5", "3 1 5 7", "1 3", "1 3 5 7",
@@ -543,4 +543,67 @@ fn sort_rejects_bad_numbers_and_names_them() {
         err.contains("shell") && err.contains("binary-insertion"),
         "{err}"
     );
+}
+
+/// The README's tour of the command line, run line by line as a newcomer would (in a scratch
+/// directory, files written by `>` kept for the next lines): every command exits with 0 and,
+/// but for the step tables and the help, prints one line of JSON. The report line is left
+/// out here (a debug build takes minutes over the sorts); `complexity.rs` runs the report.
+#[test]
+fn the_readme_tour_runs() {
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let tour = readme
+        .split("```sh\n")
+        .nth(2)
+        .and_then(|block| block.split("```").next())
+        .expect("the README has the tour block");
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("readme-tour");
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut ran = 0;
+    for line in tour.lines() {
+        let command = line.split(" #").next().unwrap().trim();
+        let command = command
+            .strip_prefix("cargo run --release -- ")
+            .unwrap_or_else(|| panic!("a tour line runs the binary: {line}"));
+        if command.starts_with("report") {
+            continue;
+        }
+        let (command, target) = match command.split_once(" > ") {
+            Some((c, file)) => (c, Some(file.trim())),
+            None => (command, None),
+        };
+        // Words, with '...' quoting as the shell reads it.
+        let mut words = Vec::new();
+        let mut rest = command;
+        while let Some(start) = rest.find(|c: char| !c.is_whitespace()) {
+            rest = &rest[start..];
+            let (word, tail) = match rest.strip_prefix('\'') {
+                Some(quoted) => quoted.split_once('\'').unwrap(),
+                None => rest.split_once(' ').unwrap_or((rest, "")),
+            };
+            words.push(word.to_string());
+            rest = tail;
+        }
+        let out = assert_cmd::cargo::cargo_bin_cmd!("compgeo")
+            .args(&words)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8(out.stdout).unwrap();
+        assert!(
+            out.status.success(),
+            "{line}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        if let Some(file) = target {
+            std::fs::write(dir.join(file), &stdout).unwrap();
+        }
+        if !words.iter().any(|w| w == "--trace" || w == "--help") {
+            assert_eq!(stdout.lines().count(), 1, "{line}: one line of JSON");
+            serde_json::from_str::<Value>(&stdout).unwrap_or_else(|e| panic!("{line}: {e}"));
+        }
+        ran += 1;
+    }
+    assert!(ran >= 15, "{ran} tour lines ran");
 }

@@ -1,7 +1,5 @@
 //! Helpers shared by the integration tests: running the `compgeo` binary (with the `cli`
 //! feature) and spade's triangles as a peer oracle.
-// Each test crate compiles its own copy and uses only some of the helpers.
-#![allow(dead_code)]
 
 #[cfg(feature = "cli")]
 use assert_cmd::cargo::cargo_bin_cmd;

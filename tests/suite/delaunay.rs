@@ -307,30 +307,17 @@ fn cli_prints_the_triangulation_and_rejects_bad_input() {
     assert_rejected(&["delaunay", "-"], Some("[[0, 0], [1, "));
 }
 
-fn small_coords() -> impl Strategy<Value = Vec<Point2>> {
-    prop::collection::vec((-6i32..=6, -6i32..=6), 0..60).prop_map(|v| {
-        v.into_iter()
-            .map(|(x, y)| Point2::new(f64::from(x), f64::from(y)))
-            .collect()
-    })
-}
-
-fn random_coords() -> impl Strategy<Value = Vec<Point2>> {
-    prop::collection::vec((-1e3f64..1e3, -1e3f64..1e3), 0..80)
-        .prop_map(|v| v.into_iter().map(Point2::from).collect())
-}
-
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
 
     #[test]
-    fn integer_grids_with_many_cocircular_quadruples(pts in small_coords()) {
+    fn integer_grids_with_many_cocircular_quadruples(pts in crate::strategies::lattice(-6..=6, 0..60)) {
         let t = incremental(&pts).unwrap();
         prop_assert_eq!(check_delaunay(&pts, &t), Ok(()));
     }
 
     #[test]
-    fn random_points_and_their_copies(pts in random_coords(), copies in 0usize..4) {
+    fn random_points_and_their_copies(pts in crate::strategies::uniform(1e3, 0..80), copies in 0usize..4) {
         let mut all = pts.clone();
         for c in 0..copies {
             all.extend(pts.iter().step_by(c + 1).copied());

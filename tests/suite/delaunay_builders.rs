@@ -366,32 +366,11 @@ fn cli_runs_each_builder_and_rejects_bad_input() {
     }
 }
 
-/// Small integer coordinates: many duplicates, collinear triples and cocircular quadruples.
-fn lattice_points() -> impl Strategy<Value = Vec<Point2>> {
-    prop::collection::vec((-4i32..=4, -4i32..=4), 0..40).prop_map(|v| {
-        v.into_iter()
-            .map(|(x, y)| Point2::new(x as f64, y as f64))
-            .collect()
-    })
-}
-
-/// Points whose coordinates mix magnitudes from subnormal to huge.
-fn mixed_magnitude_points() -> impl Strategy<Value = Vec<Point2>> {
-    let coord = (
-        -1i32..=1,
-        1u32..4,
-        prop::sample::select(vec![-1074, -600, -3, 0, 5, 300, 1000]),
-    )
-        .prop_map(|(sign, m, e)| sign as f64 * m as f64 * 2f64.powi(e));
-    prop::collection::vec((coord.clone(), coord), 0..16)
-        .prop_map(|v| v.into_iter().map(Point2::from).collect())
-}
-
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
 
     #[test]
-    fn lattice_sets_are_valid(pts in lattice_points()) {
+    fn lattice_sets_are_valid(pts in crate::strategies::lattice(-4..=4, 0..40)) {
         build_all_checked(&pts, &format!("{pts:?}"));
     }
 
@@ -414,7 +393,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(40))]
 
     #[test]
-    fn mixed_magnitudes_are_valid(pts in mixed_magnitude_points()) {
+    fn mixed_magnitudes_are_valid(pts in crate::strategies::mixed_magnitudes(0..16)) {
         build_all_checked(&pts, &format!("{pts:?}"));
     }
 }

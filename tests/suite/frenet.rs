@@ -1,4 +1,4 @@
-//! Frenet frames, curvature and torsion against analytic curves and the seeds' formulas, the
+//! Frenet frames, curvature and torsion against analytic curves and the course texts' formulas, the
 //! exact curvature vector and G² checks, and extreme magnitudes (every finite `f64` is valid
 //! input: scaling a curve by a power of two scales its curvatures exactly).
 #![cfg(feature = "exact")]

@@ -437,7 +437,7 @@ fn every_graph_kind_is_deterministic_simple_and_sorted() {
         if matches!(kind, GraphKind::Gnm | GraphKind::Tree) {
             assert_ne!(a, b, "{kind}: seed has no effect");
         } else {
-            assert_eq!(a, b, "{kind}: a fixed graph must not depend on the seed");
+            assert_eq!(a, b, "{kind}: a fixed graph must not depend on the course");
         }
     }
 }
@@ -668,7 +668,7 @@ fn random_weights_are_seeded_and_in_the_unit_interval() {
         b.weights, a.weights,
         "weights are replaced by the new seed's"
     );
-    // Weights use their own stream: they are not the first unit draws of the seed's main
+    // Weights use their own stream: they are not the first unit draws of the course's main
     // stream, which is exactly what `uniform-square` coordinates are.
     let square: Vec<f64> = points(PointKind::UniformSquare, 150, 5)
         .unwrap()

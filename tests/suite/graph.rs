@@ -62,7 +62,7 @@ fn recursive_dfs(a: &[Vec<bool>], x: usize, seen: &mut [bool], order: &mut Vec<u
     }
 }
 
-/// The toy graph of the seed's search example (003 §2.1 "Algoritmos de búsqueda"), vertices
+/// The toy graph of the course's search example ([RD, §2.1] "Algoritmos de búsqueda"), vertices
 /// a..g as 0..6. The figure is lost from the text; these are the edges both printed tables
 /// imply: ab, ad, bc, bd, be, bf, bg, ce, ef.
 fn seed_toys() -> Graph {
@@ -81,7 +81,7 @@ fn letter(v: usize) -> String {
     char::from(b'a' + v as u8).to_string()
 }
 
-/// The seed's table as (add, remove, Q) strings, `-` for empty, `∅` for an empty Q.
+/// The course's table as (add, remove, Q) strings, `-` for empty, `∅` for an empty Q.
 fn seed_rows(rows: &[(&str, &str, &str)]) -> String {
     let mut s = String::from("Add\tRemove\tQ\n");
     for (a, r, q) in rows {
@@ -186,7 +186,7 @@ proptest! {
         let g = Graph::from_edges(n, &edges).unwrap();
         let mut c = Counts::default();
         let r = bfs_with(&g, s, &mut c).unwrap();
-        prop_assert!(is_search_tree(&g, s, &r));
+        prop_assert_eq!(check_search_tree(&g, s, &r), Ok(()));
         let d = distances(&matrix(n, &edges), s);
         // The component, each vertex once, in nondecreasing distance.
         let reached: Vec<usize> = (0..n).filter(|&v| d[v].is_some()).collect();
@@ -209,7 +209,7 @@ proptest! {
         let g = Graph::from_edges(n, &edges).unwrap();
         let mut c = Counts::default();
         let r = dfs_with(&g, s, &mut c).unwrap();
-        prop_assert!(is_search_tree(&g, s, &r));
+        prop_assert_eq!(check_search_tree(&g, s, &r), Ok(()));
         let mut seen = vec![false; n];
         let mut order = Vec::new();
         recursive_dfs(&matrix(n, &edges), s, &mut seen, &mut order);
@@ -247,7 +247,7 @@ fn generated(kind: GraphKind, n: usize, m: usize, seed: u64) -> Graph {
 
 fn colours_with(g: &Graph, s: ColouringAlgorithm) -> usize {
     let c = colour(g, s);
-    assert!(is_proper_colouring(g, &c.colour), "{s} is not proper");
+    assert_eq!(check_colouring(g, &c.colour), Ok(()), "{s} is not proper");
     assert_eq!(c.count, c.colour.iter().max().map_or(0, |k| k + 1));
     c.count
 }
@@ -510,7 +510,7 @@ fn tabu_recolour_from_one_colour_per_vertex_stays_cheap() {
     assert_eq!(tabu_recolour(&g, &identity, 0).unwrap(), identity);
     let mut c = Counts::default();
     let fewer = tabu_recolour_with(&g, &identity, 10 * (3 * n as u64), &mut c).unwrap();
-    assert!(is_proper_colouring(&g, &fewer.colour));
+    assert_eq!(check_colouring(&g, &fewer.colour), Ok(()));
     assert_eq!(fewer.count, 2);
     assert!(c.edge_visits <= 10 * (3 * n as u64), "{}", c.edge_visits);
     // K_200 beside many isolated vertices: DSatur's 200 colours are optimal, and the core
@@ -534,11 +534,11 @@ proptest! {
     ) {
         let g = Graph::from_edges(n, &edges).unwrap();
         let improved = dsatur_tabu(&g);
-        prop_assert!(is_proper_colouring(&g, &improved.colour));
+        prop_assert_eq!(check_colouring(&g, &improved.colour), Ok(()));
         prop_assert_eq!(improved.count, chromatic_number(&g));
         let natural = colour(&g, ColouringAlgorithm::Greedy);
         let cut_short = tabu_recolour(&g, &natural, budget).unwrap();
-        prop_assert!(is_proper_colouring(&g, &cut_short.colour));
+        prop_assert_eq!(check_colouring(&g, &cut_short.colour), Ok(()));
         prop_assert!(cut_short.count <= natural.count);
         prop_assert_eq!(cut_short.count, cut_short.colour.iter().max().map_or(0, |k| k + 1));
     }
@@ -553,7 +553,7 @@ proptest! {
         for s in ColouringAlgorithm::ALL {
             let mut c = Counts::default();
             let col = colour_with(&g, s, &mut c);
-            prop_assert!(is_proper_colouring(&g, &col.colour));
+            prop_assert_eq!(check_colouring(&g, &col.colour), Ok(()));
             prop_assert!(col.count <= (0..n).map(|v| g.degree(v)).max().unwrap_or(0) + 1);
         }
         // A random order: the course algorithm and the O(n + m) greedy agree.
@@ -639,7 +639,7 @@ fn brute_force_forest_weight(g: &WeightedGraph) -> f64 {
             continue;
         }
         let chosen: Vec<usize> = (0..m).filter(|&e| mask >> e & 1 == 1).collect();
-        if is_spanning_forest(g, &chosen) {
+        if check_spanning_forest(g, &chosen).is_ok() {
             best = best.min(chosen.iter().map(|&e| g.weight(e)).sum());
         }
     }
@@ -687,7 +687,7 @@ fn spanning_trees_agree_with_petgraph() {
         theirs.sort_unstable();
         for a in MstAlgorithm::ALL {
             let f = spanning_forest_with(&g, a, &mut Counts::default());
-            assert!(is_spanning_forest(&g, &f.edges));
+            assert_eq!(check_spanning_forest(&g, &f.edges), Ok(()));
             let mut ours: Vec<[usize; 2]> = f.edges.iter().map(|&e| g.endpoints(e)).collect();
             ours.sort_unstable();
             assert_eq!(ours, theirs, "{a} on G({n}, {m})");
@@ -706,7 +706,7 @@ proptest! {
         let forests: Vec<SpanningForest> =
             MstAlgorithm::ALL.iter().map(|&a| spanning_forest_with(&g, a, &mut Counts::default())).collect();
         for f in &forests {
-            prop_assert!(is_spanning_forest(&g, &f.edges));
+            prop_assert_eq!(check_spanning_forest(&g, &f.edges), Ok(()));
             prop_assert_eq!(f.weight, best);
             prop_assert_eq!(f.components, n - f.edges.len());
         }
@@ -790,7 +790,7 @@ mod cli {
             assert_eq!(code, 0);
             let v: Value = serde_json::from_str(&out).unwrap();
             let colours = usizes(&v["colours"]);
-            assert!(is_proper_colouring(&g, &colours));
+            assert_eq!(check_colouring(&g, &colours), Ok(()));
             assert_eq!(v["count"], colour(&g, a).count);
         }
     }

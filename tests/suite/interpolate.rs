@@ -1,4 +1,4 @@
-//! Interpolation and composite curves against exact oracles: the seed's worked Hermite example
+//! Interpolation and composite curves against exact oracles: the course's worked Hermite example
 //! digit for digit, interpolants that reproduce their data and derivatives with rationals,
 //! the end conditions of the cubic spline, agreement of the Lagrange, Aitken, Newton and
 //! Vandermonde forms, Cʳ joins, C¹ quadratic splines, least-squares fits (exact recovery,

@@ -7,6 +7,7 @@
 
 mod common;
 mod spline_common;
+mod strategies;
 
 mod bezier;
 mod bezier_eval;

@@ -416,14 +416,6 @@ fn cli_proximity_commands() {
     assert_rejected(&["empty-circle", "-"], Some("[[0,0],[1]]"));
 }
 
-fn small_coords() -> impl Strategy<Value = Vec<Point2>> {
-    prop::collection::vec((-6i32..6, -6i32..6), 1..40).prop_map(|v| {
-        v.into_iter()
-            .map(|(x, y)| Point2::new(x as f64, y as f64))
-            .collect()
-    })
-}
-
 fn scaled_coords() -> impl Strategy<Value = Vec<Point2>> {
     let scale = prop::sample::select(vec![1.0, 1e300, 1e-300, 5e-324, 0.1]);
     (
@@ -441,7 +433,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
     #[test]
-    fn integer_points_with_ties_and_duplicates(pts in small_coords()) {
+    fn integer_points_with_ties_and_duplicates(pts in crate::strategies::lattice(-6..=5, 1..40)) {
         check_all(&pts);
     }
 

@@ -259,6 +259,7 @@ fn every_family_enum_is_its_declarations() {
 }
 
 /// The declarations of one family, as the command line lists them.
+#[cfg(feature = "cli")]
 fn family(
     declarations: impl IntoIterator<Item = &'static Declaration>,
 ) -> Vec<&'static Declaration> {

@@ -1,6 +1,6 @@
-//! Integration tests of `compgeo::sort`: the seed's operation counts, agreement with the
+//! Integration tests of `compgeo::sort`: the course's operation counts, agreement with the
 //! standard library's sorts (stability included, floats in the total order, radix bit for
-//! bit), and the seed's step tables reproduced by `trace`.
+//! bit), and the course's step tables reproduced by `trace`.
 
 use compgeo::count::{Counts, NoCount};
 use compgeo::sort::{
@@ -148,7 +148,7 @@ fn bits(v: &[f64]) -> Vec<u64> {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The seed's counts
+// The course's counts
 // ---------------------------------------------------------------------------------------------
 
 #[test]
@@ -179,7 +179,7 @@ fn small_sizes_have_the_seed_counts() {
             "insertion n={n}"
         );
 
-        // The seed's table scans from the front: the mirror image.
+        // The course's table scans from the front: the mirror image.
         let (_, c) = counts_of(Algorithm::CourseInsertion, &increasing);
         assert_eq!(
             (c.comparisons, c.moves),
@@ -543,7 +543,7 @@ fn plain_entry_point_uses_ord() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The seed's tables (003_5b666ee3e15e6353.txt, §2.1 "Algoritmos de ordenación")
+// The course's tables ([RD, §2.1] "Algoritmos de ordenación")
 // ---------------------------------------------------------------------------------------------
 
 /// The rows of a two-column table: the text after the first `:` of each line.
@@ -585,7 +585,7 @@ fn selection_trace_matches_the_seed_table() {
     let lines: Vec<&str> = table.lines().collect();
     assert_eq!(lines[0], "Selection sort of 1 3 2 9 5 4");
     assert_eq!(lines[1], "L = {1, 3, 2, 9, 5, 4}");
-    // The seed: minimum x1 = 1, L := {3, 2, 9, 5, 4}; minimum x3, x2 = 2 and x3 = 3,
+    // The course: minimum x1 = 1, L := {3, 2, 9, 5, 4}; minimum x3, x2 = 2 and x3 = 3,
     // L := {3, 9, 5, 4}; minimum x3, no operation, L := {9, 5, 4}; minimum x6, x6 = 9 and
     // x4 = 4, L := {5, 9}; minimum x5, no operation, finished; output {1, 2, 3, 4, 5, 9}.
     let seed: [(&str, &[&str], &str); 5] = [
@@ -616,7 +616,7 @@ fn sequential_insertion_trace_matches_the_seed_table() {
     let table = trace(Algorithm::CourseInsertion, &[7, 3, 5, 1, 4, 6]).unwrap();
     let lines: Vec<&str> = table.lines().collect();
     assert_eq!(lines[0], "Insertion sort (sequential) of 7 3 5 1 4 6");
-    // The seed: "3 7 pues 3 < 7", "3 5 7 pues 5 > 3 y 5 < 7", ...
+    // The course: "3 7 pues 3 < 7", "3 5 7 pues 5 > 3 y 5 < 7", ...
     let seed = [
         ("7", ""),
         ("3 7", "3 < 7"),
@@ -632,14 +632,14 @@ fn sequential_insertion_trace_matches_the_seed_table() {
         };
         assert_eq!((got_list, got_since), (list, since), "{line}");
     }
-    // 1 + 2 + 1 + 3 + 5 comparisons, the seed's clauses; 8 shifts (inversions).
+    // 1 + 2 + 1 + 3 + 5 comparisons, the course's clauses; 8 shifts (inversions).
     assert_eq!(lines[7], "Comparisons: 12, swaps: 0, moves: 8");
     assert_eq!(lines.len(), 8);
 }
 
 #[test]
 fn bisection_trace_reproduces_the_seed_block() {
-    // The seed's block, verbatim but for its "a , b" spacing inside braces.
+    // The course's block, verbatim but for its "a , b" spacing inside braces.
     let seed = "\
 {7}
 3 ↦ {7} :
@@ -678,7 +678,7 @@ fn bisection_trace_reproduces_the_seed_block() {
     assert_eq!(body, Some(seed.as_str()), "{table}");
 }
 
-/// The usual variants on the seed's list: same rows, their own comparisons.
+/// The usual variants on the course's list: same rows, their own comparisons.
 #[test]
 fn back_scan_and_optimal_bisection_traces_show_their_own_comparisons() {
     let table = trace(Algorithm::Insertion, &[7, 3, 5, 1, 4, 6]).unwrap();
@@ -704,7 +704,7 @@ fn back_scan_and_optimal_bisection_traces_show_their_own_comparisons() {
     }
     assert_eq!(lines[7], "Comparisons: 11, swaps: 0, moves: 8");
 
-    // The compared element leaves the run: 10 comparisons where the seed's table makes 12.
+    // The compared element leaves the run: 10 comparisons where the course's table makes 12.
     let expected = "\
 {7}
 3 ↦ {7} :

@@ -165,19 +165,11 @@ fn check_values(pts: &[Point2], w: Width, r: Rectangle) {
     }
 }
 
-fn small_points() -> impl Strategy<Value = Vec<Point2>> {
-    prop::collection::vec((-6i32..=6, -6i32..=6), 0..30).prop_map(|v| {
-        v.into_iter()
-            .map(|(x, y)| Point2::new(f64::from(x), f64::from(y)))
-            .collect()
-    })
-}
-
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
 
     #[test]
-    fn width_and_rectangle_equal_brute_force(pts in small_points()) {
+    fn width_and_rectangle_equal_brute_force(pts in crate::strategies::lattice(-6..=6, 0..30)) {
         check(&pts)?;
         if let Some((w, r)) = calipers(&pts) {
             check_values(&pts, w, r);
@@ -186,7 +178,7 @@ proptest! {
 
     #[test]
     fn width_and_rectangle_equal_brute_force_at_any_magnitude(
-        pts in small_points(),
+        pts in crate::strategies::lattice(-6..=6, 0..30),
         scale in prop::sample::select(vec![5e-324, 1e-300, 1e-140, 1e15, 1e200, 1e300]),
         shift in prop::sample::select(vec![0.0, 3e16]),
     ) {
@@ -218,7 +210,7 @@ proptest! {
     /// Scaling by a power of two scales the width exactly in the exact choice and up to
     /// rounding in the value, even near the ends of the double range.
     #[test]
-    fn the_values_scale(pts in small_points(), e in prop::sample::select(vec![-1070, -1000, -500, 500, 1000])) {
+    fn the_values_scale(pts in crate::strategies::lattice(-6..=6, 0..30), e in prop::sample::select(vec![-1070, -1000, -500, 500, 1000])) {
         let s = 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
         let scaled: Vec<Point2> = pts.iter().map(|p| Point2::new(p.x * s, p.y * s)).collect();
         if let (Some(w), Some(ws)) = (width(&pts), width(&scaled)) {

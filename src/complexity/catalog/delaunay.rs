@@ -1,6 +1,6 @@
 //! Catalog entries of [`crate::delaunay`]: the incremental builder on uniform, clustered,
 //! grid (cocircular quadruples everywhere) and parabola input (points in convex position in
-//! x order, the order that makes naive incremental insertion quadratic); the seed's divide
+//! x order, the order that makes naive incremental insertion quadratic); the course's divide
 //! and conquer on uniform and parabola input; Lawson's flips on the parabola, where they are
 //! quadratic, at small sizes; Fortune's sweep on uniform and parabola input.
 //!

@@ -2,7 +2,7 @@
 //! G(n, m) graphs with m = 4n (average degree 8), weights uniform in [0, 1) for the trees.
 //!
 //! Searches and the linear greedy colourings count edge visits (exactly 2m on a connected
-//! graph, n + m in the bound); the seed's colouring counts adjacency tests (exactly
+//! graph, n + m in the bound); the course's colouring counts adjacency tests (exactly
 //! n(n − 1)/2); DSatur and Prim count heap comparisons, Kruskal sort comparisons, Borůvka edge
 //! visits. DSatur's bound O((n + m) log n) is registered as O(m log n), the same growth at a
 //! fixed ratio m/n ≥ 1; DSatur with the tabu search adds its evaluated moves, at most

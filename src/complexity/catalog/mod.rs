@@ -41,14 +41,14 @@
 //! assert_eq!(entry.quick.sizes(), [64, 128, 256, 512, 1024]);
 //! ```
 
+use crate::util::named_enum;
 use std::fmt;
 use std::hint::black_box;
-use std::str::FromStr;
 use std::time::{Duration, Instant};
 
 use crate::complexity::{Bound, Declaration};
 use crate::count::{Counter, Counts, NoCount, Operation};
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 /// How to run one algorithm on generated input: the part of an [`Entry`] that is code.
 ///
@@ -111,13 +111,14 @@ pub struct SizeRange {
     pub max: usize,
 }
 
-/// Which size ranges a run uses.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Profile {
-    /// Small sizes: the whole catalog in a few minutes on two cores.
-    Quick,
-    /// Larger sizes and more repetitions, for reports worth publishing.
-    Full,
+named_enum! {
+    /// Which size ranges a run uses: `"quick"` or `"full"`, as written in `results.json`.
+    pub enum Profile ("profile") {
+        /// Small sizes: the whole catalog in a few minutes on two cores.
+        Quick = "quick",
+        /// Larger sizes and more repetitions, for reports worth publishing.
+        Full = "full",
+    }
 }
 
 /// One registered algorithm on one input distribution.
@@ -223,42 +224,6 @@ impl SizeRange {
             }
         }
         out
-    }
-}
-
-impl Profile {
-    /// `"quick"` or `"full"`, as written in `results.json`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Profile::Quick => "quick",
-            Profile::Full => "full",
-        }
-    }
-}
-
-impl fmt::Display for Profile {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for Profile {
-    type Err = Error;
-
-    /// Parses `"quick"` or `"full"`.
-    ///
-    /// # Errors
-    ///
-    /// [`Error::InvalidParameter`] naming `profile` for any other text.
-    fn from_str(text: &str) -> Result<Profile> {
-        match text {
-            "quick" => Ok(Profile::Quick),
-            "full" => Ok(Profile::Full),
-            _ => Err(Error::InvalidParameter {
-                name: "profile",
-                reason: format!("{text:?} is neither \"quick\" nor \"full\""),
-            }),
-        }
     }
 }
 
@@ -425,7 +390,7 @@ mod tests {
             assert_eq!(p.name().parse::<Profile>(), Ok(p));
         }
         let err = "fast".parse::<Profile>().unwrap_err();
-        assert!(err.to_string().contains("\"fast\""), "{err}");
+        assert!(err.to_string().contains("`fast`"), "{err}");
     }
 
     #[test]

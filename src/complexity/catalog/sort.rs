@@ -6,7 +6,7 @@
 //! both insertions by bisection make O(n log n) comparisons but one move per inversion. The
 //! two sequential insertion sorts mirror each other. [`crate::sort::insertion_sort`] scans
 //! from the back: reversed keys cost n(n − 1)/2 comparisons, sorted keys n − 1 (its linear best
-//! case, claimed O(n)). The seed's [`crate::sort::course_insertion_sort`] scans from the front:
+//! case, claimed O(n)). The course's [`crate::sort::course_insertion_sort`] scans from the front:
 //! n − 1 comparisons on reversed keys but n(n − 1)/2 moves, and n(n − 1)/2 comparisons on
 //! sorted keys, so it has no linear best case and both its entries claim O(n²), each on the
 //! operation that carries the cost.

@@ -1,6 +1,6 @@
 //! The course's greedy colouring exactly as printed: every earlier vertex is asked about.
 
-use super::{check_order, is_proper_colouring, Colouring};
+use super::{check_colouring, check_order, Colouring};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
@@ -21,7 +21,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     claims: &[on("gnm-4n", Bound::Quadratic, Operation::AdjacencyTests)],
 };
 
-/// The seed's greedy colouring of `g` in the given vertex order; see
+/// The course's greedy colouring of `g` in the given vertex order; see
 /// [`course_greedy_colouring_with`].
 ///
 /// # Errors
@@ -41,9 +41,9 @@ pub fn course_greedy_colouring(g: &Graph, order: &[usize]) -> Result<Colouring> 
     course_greedy_colouring_with(g, order, &mut NoCount)
 }
 
-/// The seed's greedy colouring exactly as printed, counting its adjacency tests.
+/// The course's greedy colouring exactly as printed, counting its adjacency tests.
 ///
-/// The idea (`003_5b666ee3e15e6353.txt`, §2.1 "Coloración de vértices", "Algoritmo voraz
+/// The idea ([RD, §2.1] "Coloración de vértices", "Algoritmo voraz
 /// aplicado a la coloración de un grafo"): c(v₁) := first colour; for i = 2..n, S := the
 /// colours of those v_j, j < i, adjacent to v_i (asking the adjacency question for every
 /// j < i), and c(v_i) := the first colour not in S. Each adjacency question is O(1): the
@@ -54,7 +54,7 @@ pub fn course_greedy_colouring(g: &Graph, order: &[usize]) -> Result<Colouring> 
 /// naming the position and vertex at fault.
 ///
 /// # Complexity
-/// O(n² + m) time for n vertices and m edges (the seed's analysis: n(n−1)/2 adjacency
+/// O(n² + m) time for n vertices and m edges (the course's analysis: n(n−1)/2 adjacency
 /// questions, as many set-membership tests and additions, n² + 2n − 2 assignments); O(n)
 /// auxiliary space.
 ///
@@ -100,6 +100,6 @@ pub fn course_greedy_colouring_with<C: Counter>(
         colour[vi] = k;
         count = count.max(k + 1);
     }
-    debug_assert!(is_proper_colouring(g, &colour));
+    debug_assert_eq!(check_colouring(g, &colour), Ok(()));
     Ok(Colouring { colour, count })
 }

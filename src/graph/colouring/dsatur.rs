@@ -1,6 +1,6 @@
 //! DSatur (Brélaz): colour next the vertex whose neighbours already show the most colours.
 
-use super::{is_proper_colouring, Colouring, UNCOLOURED};
+use super::{check_colouring, Colouring, UNCOLOURED};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::graph::Graph;
@@ -41,7 +41,7 @@ pub fn dsatur(g: &Graph) -> Colouring {
 /// DSatur (Brélaz): colour next the vertex with the most distinct colours among its
 /// neighbours, counting its work.
 ///
-/// The idea: the greedy scheme of the seed (§2.1 "Algoritmo voraz", "Coloración de
+/// The idea: the greedy scheme of the course (§2.1 "Algoritmo voraz", "Coloración de
 /// vértices") with the candidate chosen as it goes: the uncoloured vertex of largest
 /// saturation (distinct neighbour colours), ties to the larger degree, then the smaller id,
 /// gets the first colour its neighbours lack. A binary heap holds (saturation, degree, id)
@@ -60,12 +60,12 @@ pub fn dsatur(g: &Graph) -> Colouring {
 ///
 /// ```
 /// use compgeo::count::Counts;
-/// use compgeo::graph::{dsatur_with, is_proper_colouring, Graph};
+/// use compgeo::graph::{dsatur_with, check_colouring, Graph};
 ///
 /// let g = Graph::from_edges(4, &[[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]])?;
 /// let mut c = Counts::default();
 /// let colouring = dsatur_with(&g, &mut c);
-/// assert!(is_proper_colouring(&g, &colouring.colour));
+/// assert_eq!(check_colouring(&g, &colouring.colour), Ok(()));
 /// assert_eq!((colouring.count, c.edge_visits), (3, 10));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
@@ -112,7 +112,7 @@ pub fn dsatur_with<C: Counter>(g: &Graph, c: &mut C) -> Colouring {
         }
     }
     let colour: Vec<usize> = colour.into_iter().map(|k| k as usize).collect();
-    debug_assert!(is_proper_colouring(g, &colour));
+    debug_assert_eq!(check_colouring(g, &colour), Ok(()));
     Colouring { colour, count }
 }
 
@@ -147,6 +147,6 @@ mod tests {
         let g = Graph::from_edges(n, &edges).unwrap();
         let c = dsatur(&g);
         assert_eq!(c.count, n);
-        assert!(is_proper_colouring(&g, &c.colour));
+        assert_eq!(check_colouring(&g, &c.colour), Ok(()));
     }
 }

@@ -1,7 +1,7 @@
 //! Greedy colouring in a given vertex order in O(n + m): only a vertex's own neighbours are
 //! looked at.
 
-use super::{check_order, is_proper_colouring, Colouring, UNCOLOURED};
+use super::{check_colouring, check_order, Colouring, UNCOLOURED};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
@@ -42,9 +42,9 @@ pub fn greedy_colouring(g: &Graph, order: &[usize]) -> Result<Colouring> {
     greedy_colouring_with(g, order, &mut NoCount)
 }
 
-/// The same colouring as the seed's greedy, computed in O(n + m).
+/// The same colouring as the course's greedy, computed in O(n + m).
 ///
-/// The idea: the seed's algorithm (§2.1 "Coloración de vértices") asks about every earlier
+/// The idea: the course's algorithm (§2.1 "Coloración de vértices") asks about every earlier
 /// vertex; it is enough to look at v_i's own neighbours. Their colours are stamped with i in
 /// an array, and the first colour without the stamp is at most deg(v_i), so the search for
 /// it costs O(deg v_i) too. The result equals [`course_greedy_colouring`](super::course_greedy_colouring)'s for the same order.
@@ -98,6 +98,6 @@ pub fn greedy_colouring_with<C: Counter>(
         count = count.max(k + 1);
     }
     let colour: Vec<usize> = colour.into_iter().map(|k| k as usize).collect();
-    debug_assert!(is_proper_colouring(g, &colour));
+    debug_assert_eq!(check_colouring(g, &colour), Ok(()));
     Ok(Colouring { colour, count })
 }

@@ -23,7 +23,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// The largest-first (Welsh–Powell) order: vertices by decreasing degree; among vertices of
 /// equal degree, the one with the most neighbours already in the order comes first.
 ///
-/// Not in the seed, which colours in a given order and shows (§2.1 "Coloración de vértices",
+/// Not in the course, which colours in a given order and shows (§2.1 "Coloración de vértices",
 /// the congress example) that a better order can save colours; this is the classic heuristic
 /// order for [`greedy_colouring`](super::greedy_colouring).
 ///

@@ -1,20 +1,20 @@
-//! Greedy vertex colouring: the seed's O(n²) algorithm as printed, the O(n + m) greedy, the
+//! Greedy vertex colouring: the course's O(n²) algorithm as printed, the O(n + m) greedy, the
 //! vertex orders largest-first (Welsh–Powell) and smallest-last, and DSatur.
 //!
 //! A colouring gives each vertex a colour so that adjacent vertices differ (seed
-//! `003_5b666ee3e15e6353.txt`, §2.1 "Coloración de vértices", Definitions 2.4–2.6). The greedy
+//! [RD, §2.1] "Coloración de vértices", Definitions 2.4–2.6). The greedy
 //! scheme ("Algoritmo voraz aplicado a la coloración") takes the vertices in some order and
 //! gives each the first colour none of its already coloured neighbours has; the order decides
-//! how many colours it needs. Colours are numbered from 0 here (the seed's colour k is our
+//! how many colours it needs. Colours are numbered from 0 here (the course's colour k is our
 //! k − 1).
 //!
-//! The tests check every colouring with [`is_proper_colouring`], the seed's chromatic-number
-//! facts (K_n, even and odd cycles, trees), the seed's count of n(n−1)/2 adjacency tests, and
+//! The tests check every colouring with [`check_colouring`], the course's chromatic-number
+//! facts (K_n, even and odd cycles, trees), the course's count of n(n−1)/2 adjacency tests, and
 //! DSatur against petgraph.
 
 use crate::complexity::algorithm_family;
 use crate::count::{Counter, NoCount};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Violation};
 use crate::graph::Graph;
 
 mod course;
@@ -73,12 +73,12 @@ algorithm_family! {
 /// That of the strategy ([`ColouringAlgorithm::declaration`]).
 ///
 /// ```
-/// use compgeo::graph::{colour, is_proper_colouring, Graph, ColouringAlgorithm};
+/// use compgeo::graph::{colour, check_colouring, Graph, ColouringAlgorithm};
 ///
 /// let g = Graph::from_edges(3, &[[0, 1], [1, 2], [2, 0]])?;
 /// let c = colour(&g, ColouringAlgorithm::Dsatur);
 /// assert_eq!(c.count, 3);
-/// assert!(is_proper_colouring(&g, &c.colour));
+/// assert_eq!(check_colouring(&g, &c.colour), Ok(()));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn colour(g: &Graph, strategy: ColouringAlgorithm) -> Colouring {
@@ -126,22 +126,38 @@ fn greedy_smallest_last_with<C: Counter>(g: &Graph, c: &mut C) -> Colouring {
     greedy_colouring_with(g, &smallest_last_order(g), c).expect("the order is a permutation")
 }
 
-/// Whether `colour` is a proper colouring of `g`: one colour per vertex and no edge whose
+/// Checks that `colour` is a proper colouring of `g`: one colour per vertex and no edge whose
 /// ends share a colour.
+///
+/// # Errors
+/// A [`Violation`] naming a wrong number of colours or the first edge whose ends share one.
 ///
 /// # Complexity
 /// O(n + m) time, no auxiliary space.
 ///
 /// ```
-/// use compgeo::graph::{is_proper_colouring, Graph};
+/// use compgeo::graph::{check_colouring, Graph};
 ///
 /// let g = Graph::from_edges(3, &[[0, 1], [1, 2]])?;
-/// assert!(is_proper_colouring(&g, &[0, 1, 0]));
-/// assert!(!is_proper_colouring(&g, &[0, 0, 1]));
+/// assert!(check_colouring(&g, &[0, 1, 0]).is_ok());
+/// assert!(check_colouring(&g, &[0, 0, 1]).is_err());
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn is_proper_colouring(g: &Graph, colour: &[usize]) -> bool {
-    colour.len() == g.vertex_count() && g.edges().all(|[u, v]| colour[u] != colour[v])
+pub fn check_colouring(g: &Graph, colour: &[usize]) -> std::result::Result<(), Violation> {
+    if colour.len() != g.vertex_count() {
+        return Err(Violation::new(format!(
+            "{} colours for {} vertices",
+            colour.len(),
+            g.vertex_count()
+        )));
+    }
+    match g.edges().find(|&[u, v]| colour[u] == colour[v]) {
+        Some([u, v]) => Err(Violation::new(format!(
+            "edge [{u}, {v}] joins two vertices of colour {}",
+            colour[u]
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// The colour of a vertex not yet coloured.

@@ -22,7 +22,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// The smallest-last (degeneracy) order: repeatedly remove a vertex of least remaining
 /// degree; colour in the reverse order of removal.
 ///
-/// Not in the seed; like [`largest_first_order`](super::largest_first_order) it feeds the seed's greedy scheme (§2.1
+/// Not in the course; like [`largest_first_order`](super::largest_first_order) it feeds the course's greedy scheme (§2.1
 /// "Coloración de vértices") a better order.
 ///
 /// Each vertex then has at most d earlier neighbours, d the graph's degeneracy (the

@@ -1,6 +1,6 @@
 //! Tabu search for a colouring with fewer colours (TabuCol), and DSatur followed by it.
 //!
-//! The greedy colourings of the seed (`003_5b666ee3e15e6353.txt`, §2.1 "Algoritmo voraz
+//! The greedy colourings of the course ([RD, §2.1] "Algoritmo voraz
 //! aplicado a la coloración") stop at the first proper colouring their order gives. Local
 //! search goes on from there: to try k − 1 colours, give the vertices of the last colour the
 //! colour their neighbours use least, then move one conflicting vertex at a time to another
@@ -21,7 +21,7 @@
 //! random choices (where each scan for the best move starts, tenures) come from a fixed
 //! seed, so a graph always gets the same colouring.
 
-use super::{dsatur_with, is_proper_colouring, Colouring};
+use super::{check_colouring, dsatur_with, Colouring};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::{Error, Result};
@@ -64,11 +64,11 @@ const TABU_SEED: u64 = 0x07AB_0C01;
 ///
 /// ```
 /// use compgeo::gen::{graph, GraphKind};
-/// use compgeo::graph::{dsatur, dsatur_tabu, is_proper_colouring, Graph};
+/// use compgeo::graph::{dsatur, dsatur_tabu, check_colouring, Graph};
 ///
 /// let g = Graph::from_edge_list(&graph(GraphKind::Gnm, 300, 1500, 7)?)?;
 /// let (plain, improved) = (dsatur(&g), dsatur_tabu(&g));
-/// assert!(is_proper_colouring(&g, &improved.colour));
+/// assert_eq!(check_colouring(&g, &improved.colour), Ok(()));
 /// assert!(improved.count < plain.count);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
@@ -192,7 +192,7 @@ pub fn tabu_recolour_with<C: Counter>(
             ),
         });
     }
-    if !is_proper_colouring(g, &start.colour) {
+    if check_colouring(g, &start.colour).is_err() {
         return Err(Error::InvalidParameter {
             name: "colouring",
             reason: format!(
@@ -234,7 +234,7 @@ fn search<C: Counter>(g: &Graph, mut best: Colouring, budget: u64, c: &mut C) ->
             None => break,
         }
     }
-    debug_assert!(is_proper_colouring(g, &best.colour));
+    debug_assert_eq!(check_colouring(g, &best.colour), Ok(()));
     best
 }
 
@@ -575,7 +575,7 @@ mod tests {
         let even = Graph::from_edges(4, &[[0, 1], [1, 2], [2, 3], [3, 0]]).unwrap();
         let sides = two_colouring(&even, &mut NoCount).unwrap();
         let sides: Vec<usize> = sides.into_iter().map(|s| s as usize).collect();
-        assert!(is_proper_colouring(&even, &sides));
+        assert_eq!(check_colouring(&even, &sides), Ok(()));
         let odd = Graph::from_edges(3, &[[0, 1], [1, 2], [2, 0]]).unwrap();
         assert!(two_colouring(&odd, &mut NoCount).is_none());
     }
@@ -641,7 +641,7 @@ mod tests {
             colour: vec![0, 1, 2, 3, 2, 1],
             count: 4,
         };
-        assert!(is_proper_colouring(&g, &four.colour));
+        assert_eq!(check_colouring(&g, &four.colour), Ok(()));
         assert_eq!(tabu_recolour(&g, &four, 0).unwrap(), four);
         assert_eq!(tabu_recolour(&g, &four, steps(&g)).unwrap(), four);
         assert_eq!(tabu_recolour(&g, &four, 10_000).unwrap().count, 3);

@@ -39,7 +39,7 @@ pub fn boruvka(g: &WeightedGraph) -> SpanningForest {
 
 /// Borůvka's algorithm, counting its work.
 ///
-/// The idea (not in the seed; its greedy scheme, §2.1 "Algoritmo voraz", run for every tree
+/// The idea (not in the course; its greedy scheme, §2.1 "Algoritmo voraz", run for every tree
 /// of the forest at once): every tree of the forest picks its lightest outgoing edge at once (ranked by
 /// weight, then index, so no cycle can form), all picked edges are added, and the rounds
 /// repeat until no tree has an outgoing edge. Each round at least halves the number of

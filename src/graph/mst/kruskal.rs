@@ -38,7 +38,7 @@ pub fn kruskal(g: &WeightedGraph) -> SpanningForest {
 
 /// Kruskal's algorithm, counting its work.
 ///
-/// The idea: the greedy scheme of the seed (§2.1 "Algoritmo voraz") with the candidates
+/// The idea: the greedy scheme of the course (§2.1 "Algoritmo voraz") with the candidates
 /// taken in order of weight over the whole graph rather than around one tree: sort the
 /// edges by (weight, index), then add each edge whose ends lie in different trees of the
 /// forest built so far, tested with union–find (union by rank, path compression). Stops as

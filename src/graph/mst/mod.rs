@@ -1,8 +1,8 @@
-//! Minimum spanning trees (forests): the seed's greedy tree-growing (Prim), Kruskal and
+//! Minimum spanning trees (forests): the course's greedy tree-growing (Prim), Kruskal and
 //! Borůvka.
 //!
 //! A spanning tree of a connected weighted graph joins every vertex with n − 1 of its edges;
-//! a minimum one has the least total weight (seed `003_5b666ee3e15e6353.txt`, §2.1 "Árbol
+//! a minimum one has the least total weight ([RD, §2.1] "Árbol
 //! Spanning Minimal", Theorem 2.7: the greedy tree is minimal). On a disconnected graph every
 //! function here returns a minimum spanning *forest*: a minimum spanning tree of each
 //! component, n − c edges for c components.
@@ -16,6 +16,7 @@
 
 use crate::complexity::algorithm_family;
 use crate::count::{Counter, NoCount};
+use crate::error::Violation;
 use crate::graph::{UnionFind, WeightedGraph};
 
 mod boruvka;
@@ -99,23 +100,28 @@ pub fn spanning_forest_with<C: Counter>(
     algorithm.run_with(g, c)
 }
 
-/// Whether `edges` (indices into `g`'s edge list) form a spanning forest of `g`: distinct
+/// Checks that `edges` (indices into `g`'s edge list) form a spanning forest of `g`: distinct
 /// valid indices, no cycle (self-loops included), and one tree per connected component
 /// (n − c edges for c components). It does not check minimality; compare weights for that.
+///
+/// # Errors
+/// A [`Violation`] naming an edge index out of range or repeated, the first edge that closes
+/// a cycle, or the number of trees when the forest does not span every component.
 ///
 /// # Complexity
 /// O(n + m α(n)) time, O(n + m) auxiliary space.
 ///
 /// ```
-/// use compgeo::graph::{is_spanning_forest, WeightedGraph};
+/// use compgeo::graph::{check_spanning_forest, WeightedGraph};
 ///
 /// let g = WeightedGraph::from_edges(4, &[[0, 1], [1, 2], [2, 0], [3, 3]], &[1.0; 4])?;
-/// assert!(is_spanning_forest(&g, &[0, 2]));
-/// assert!(!is_spanning_forest(&g, &[0])); // 2 is not reached
-/// assert!(!is_spanning_forest(&g, &[0, 1, 2])); // a cycle
+/// assert!(check_spanning_forest(&g, &[0, 2]).is_ok());
+/// assert!(check_spanning_forest(&g, &[0]).is_err()); // 2 is not reached
+/// let cycle = check_spanning_forest(&g, &[0, 1, 2]).unwrap_err();
+/// assert_eq!(cycle.to_string(), "edge 2 closes a cycle");
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn is_spanning_forest(g: &WeightedGraph, edges: &[usize]) -> bool {
+pub fn check_spanning_forest(g: &WeightedGraph, edges: &[usize]) -> Result<(), Violation> {
     let n = g.vertex_count();
     let mut whole = UnionFind::new(n);
     for &[u, v] in g.raw_edges() {
@@ -124,16 +130,30 @@ pub fn is_spanning_forest(g: &WeightedGraph, edges: &[usize]) -> bool {
     let mut used = vec![false; g.edge_count()];
     let mut forest = UnionFind::new(n);
     for &e in edges {
-        if e >= g.edge_count() || used[e] {
-            return false;
+        if e >= g.edge_count() {
+            return Err(Violation::new(format!(
+                "edge {e} is out of range for {} edges",
+                g.edge_count()
+            )));
+        }
+        if used[e] {
+            return Err(Violation::new(format!("edge {e} is listed twice")));
         }
         used[e] = true;
         let [u, v] = g.endpoints(e);
         if !forest.union(u, v) {
-            return false;
+            return Err(Violation::new(format!("edge {e} closes a cycle")));
         }
     }
-    forest.set_count() == whole.set_count()
+    if forest.set_count() == whole.set_count() {
+        Ok(())
+    } else {
+        Err(Violation::new(format!(
+            "{} trees for {} connected components",
+            forest.set_count(),
+            whole.set_count()
+        )))
+    }
 }
 
 /// Each weight as a `u64` with the order of `f64::total_cmp`, so edges compare as integers.
@@ -151,7 +171,7 @@ pub(super) fn finish(
     components: usize,
 ) -> SpanningForest {
     chosen.sort_unstable();
-    debug_assert!(is_spanning_forest(g, &chosen));
+    debug_assert_eq!(check_spanning_forest(g, &chosen), Ok(()));
     let weight = chosen.iter().map(|&e| g.weight(e)).sum();
     SpanningForest {
         edges: chosen,

@@ -39,13 +39,13 @@ pub fn prim(g: &WeightedGraph) -> SpanningForest {
     prim_with(g, &mut NoCount)
 }
 
-/// The seed's greedy spanning tree (Prim's algorithm), counting its work.
+/// The course's greedy spanning tree (Prim's algorithm), counting its work.
 ///
-/// The idea (`003_5b666ee3e15e6353.txt`, §2.1 "Árbol Spanning Minimal", "Algoritmo voraz
+/// The idea ([RD, §2.1] "Árbol Spanning Minimal", "Algoritmo voraz
 /// aplicado a un Árbol Spanning Minimal"): take the lightest edge; then repeatedly add the
 /// lightest edge that brings a new vertex into the tree, until no edge does. The tree grows
 /// from an endpoint of the lightest edge (whose lightest edge is that one, so the first step
-/// is the seed's). A binary heap holds the edges leaving the tree, keyed by (weight, edge
+/// is the course's). A binary heap holds the edges leaving the tree, keyed by (weight, edge
 /// index); edges whose far end joined the tree meanwhile are skipped when popped. When the
 /// heap runs dry with vertices left, a new tree starts at the smallest vertex not yet
 /// reached, which makes a minimum spanning forest.

@@ -85,7 +85,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     }
 }
 
-/// `n(n − 1)/8 · max ‖Δ²bᵢ‖∞`, the seed's bound on the distance from the curve to its chord.
+/// `n(n − 1)/8 · max ‖Δ²bᵢ‖∞`, the course's bound on the distance from the curve to its chord.
 pub(crate) fn flatness_bound<S: Scalar, const D: usize>(b: &[Point<S, D>]) -> S {
     let n = b.len() - 1;
     let mut max = S::zero();

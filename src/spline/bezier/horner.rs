@@ -260,10 +260,10 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         self.horner_with(t, &mut NoCount)
     }
 
-    /// The point b(t) by the Horner-type scheme of the seed, counting its point operations.
+    /// The point b(t) by the Horner-type scheme of the course, counting its point operations.
     ///
     /// Idea: `b(t) = (1 − t)ⁿ Σᵢ C(n, i) bᵢ sⁱ` with s = t/(1 − t) is a polynomial in s, and
-    /// Horner's rule evaluates it with n multiply-adds. The seed notes that this fails near
+    /// Horner's rule evaluates it with n multiply-adds. The course notes that this fails near
     /// t = 1 and switches to the mirrored form there; here the factor (1 − t)ⁿ is instead
     /// distributed over the nesting, one factor (1 − t) per step:
     /// `(⋯((b₀(1 − t) + C(n,1) t b₁)(1 − t) + C(n,2) t² b₂)(1 − t) + ⋯) + tⁿ bₙ`.

@@ -39,7 +39,7 @@ pub const MAX_INTERSECTION_PAIRS: usize = 1 << 20;
 
 /// The intersections of the segments b[0, 1] and c[0, 1] of two planar Bézier curves.
 ///
-/// Idea: recursive subdivision as in the seed's INTERSECTAR. A pair of pieces with
+/// Idea: recursive subdivision as in the course's INTERSECTAR. A pair of pieces with
 /// disjoint bounding boxes is dropped; a piece that is not flat within `tolerance` is split
 /// at 1/2; two flat pieces are replaced by their chords, which are tested for a crossing
 /// with exact orientation tests. Crossings found twice (at a shared end of two pieces) and

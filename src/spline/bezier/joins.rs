@@ -4,7 +4,7 @@
 //! The problem: decide, and build, the smoothness of a join. The idea: two pieces meet with
 //! Cʳ continuity at `u_i` when their derivatives of orders `0..=r` agree there, and the
 //! derivatives at a piece's end are scaled forward differences of its control points:
-//! the seed's C¹ condition `Q_1 − Q_0 = λ (P_n − P_{n−1})` with `λ = (u_2 − u_1)/(u_1 − u_0)`,
+//! the course's C¹ condition `Q_1 − Q_0 = λ (P_n − P_{n−1})` with `λ = (u_2 − u_1)/(u_1 − u_0)`,
 //! the C² condition on `Q_2`, the general `Δʳ P_{n−r} / (u_1 − u_0)ʳ = Δʳ Q_0 / (u_2 − u_1)ʳ`;
 //! G¹ asks only for nonzero, positively parallel end tangents. Building a Cʳ join, the first
 //! `r + 1` points of the next piece are the Bézier points of the previous polynomial over the
@@ -46,7 +46,7 @@ pub struct Join {
 impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     /// How piece `i − 1` and piece `i` meet at the knot `u_i`, for `i` in `1..m`.
     ///
-    /// The Cʳ test is the seed's condition `Δᵏ P_{n−k} n!/(n−k)! / h_leftᵏ =
+    /// The Cʳ test is the course's condition `Δᵏ P_{n−k} n!/(n−k)! / h_leftᵏ =
     /// Δᵏ Q_0 n!/(n−k)! / h_rightᵏ` for `k = 0..=r` (derivatives of the two pieces in the
     /// global parameter); the G¹ test asks the end tangents to be nonzero and positively
     /// parallel. `tolerance` is relative (see the module doc); pass zero with exact scalars.
@@ -119,7 +119,7 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     /// piece's polynomial over the new interval (Stärk's construction, [PPB, §3.10]), the
     /// other `n − r` are `free`.
     ///
-    /// For `r = 1` this is the seed's `Q_1 = Q_0 + λ (P_n − P_{n−1})`, for `r = 2` its formula
+    /// For `r = 1` this is the course's `Q_1 = Q_0 + λ (P_n − P_{n−1})`, for `r = 2` its formula
     /// for `Q_2` ([RD, §3.2]); `r = n` continues the same polynomial (C^n means C^∞).
     ///
     /// # Errors

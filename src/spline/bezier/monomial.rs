@@ -23,7 +23,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// `aᵢ = C(n, i) Δⁱb₀`.
     ///
     /// Idea: the Taylor expansion at t = 0, whose derivatives are differences of the control
-    /// points (the seed writes the power basis scaled by C(n, i); here the plain monomials tⁱ).
+    /// points (the course writes the power basis scaled by C(n, i); here the plain monomials tⁱ).
     ///
     /// Follows [PPB, §2.9].
     ///

@@ -26,7 +26,7 @@ use crate::{Error, Result};
 /// The idea ([RD, §3.2], [PPB, §4.5]): the cubic over `[u_i, u_{i+1}]` with
 /// `h_i = u_{i+1} − u_i` has Bézier points `p_i`, `p_i + h_i d_i / 3`,
 /// `p_{i+1} − h_i d_{i+1} / 3`, `p_{i+1}`, since a cubic's end derivatives are
-/// `3 (b_1 − b_0)/h` and `3 (b_3 − b_2)/h`. Exact with rationals: the seed's worked example
+/// `3 (b_1 − b_0)/h` and `3 (b_3 − b_2)/h`. Exact with rationals: the course's worked example
 /// comes out digit for digit.
 ///
 /// # Errors

@@ -5,7 +5,7 @@
 //! The problem: the polynomial of degree at most n through n + 1 points at distinct nodes,
 //! with the data themselves as coefficients. The idea: the Lagrange basis
 //! `L_iⁿ(u) = ∏_{j≠i} (u − u_j)/(u_i − u_j)` is 1 at its own node and 0 at the others, so
-//! the interpolant is `Σ p_i L_iⁿ(u)`; the basis is built by the recurrence (1) of the seed,
+//! the interpolant is `Σ p_i L_iⁿ(u)`; the basis is built by the recurrence (1) of the course,
 //! and Aitken's scheme `p_iᵏ⁺¹ = α_{i,n−k} p_iᵏ + (1 − α_{i,n−k}) p_{n−k}ᵏ` with
 //! `α_{ik} = (u − u_k)/(u_i − u_k)` reaches the same value by affine combinations.
 //!

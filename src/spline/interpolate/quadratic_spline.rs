@@ -5,11 +5,11 @@
 //! (`c_{2i} = a_i`), and C¹ continuity at `u_i` is relation (2),
 //! `c_{2i} = (Δu_i c_{2i−1} + Δu_{i−1} c_{2i+1}) / (Δu_{i−1} + Δu_i)`. An open curve through
 //! `N + 1` points has one degree of freedom left (system (4) has `N − 1` equations for `N`
-//! unknowns): the seed fixes it with a tangent at one end. A closed curve closes the system
+//! unknowns): the course fixes it with a tangent at one end. A closed curve closes the system
 //! cyclically (5); its matrix is regular for an odd number of pieces and singular for an even
-//! number, whatever the knots (the seed: "regular for N even", counting N + 1 pieces).
+//! number, whatever the knots (the course: "regular for N even", counting N + 1 pieces).
 //!
-//! The open spline is only as well conditioned as the seed warns: each inner point reflects
+//! The open spline is only as well conditioned as the course warns: each inner point reflects
 //! the previous one through a data point with the ratio `Δu_i/Δu_{i−1}`, so a perturbation of
 //! the start tangent travels along the whole curve.
 //!

@@ -1,8 +1,6 @@
 //! Exact-rational helpers shared by the spline tests: short constructors, a reader for the
 //! integer pairs printed in the seeds, and the properties every curve type must have
 //! (`curve_properties`).
-// Each test crate compiles its own copy and uses only some of the helpers.
-#![allow(dead_code)]
 
 pub mod curve_properties;
 
@@ -27,7 +25,7 @@ pub fn qi(n: i64) -> Q {
 pub fn p2(x: Q, y: Q) -> Point<Q, 2> {
     Point::new([x, y])
 }
-/// Reads "(a, b)" or "[a, b]" pairs of integers out of a line of the seed.
+/// Reads "(a, b)" or "[a, b]" pairs of integers out of a line of the course.
 pub fn pairs(line: &str) -> Vec<Point<Q, 2>> {
     let mut out = Vec::new();
     let mut rest = line;
