@@ -82,6 +82,7 @@
 //! | `delaunay/lawson`: [`delaunay::lawson`] | O(n²) in the worst case | O(n) | incircle tests: one per edge check, Θ(n²) on a parabola | [RD, §2.4] | `src/delaunay/lawson.rs` |
 //! | `delaunay/fortune`: [`delaunay::fortune`] | O(n log n) expected | O(n) | comparisons: the sort, the event queue and the breakpoint tests; no in-circle test | [RD, §2.4] | `src/delaunay/fortune.rs` |
 //! | `voronoi/delaunay-dual`: [`delaunay::voronoi`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation; the dual makes no geometric decision | [RD, §2.4] | `src/delaunay/voronoi.rs` |
+//! | `check/delaunay`: [`delaunay::check_delaunay`] | O(n log n + t) | O(n + t) | not counted | [RD, §2.4] | `src/delaunay/check.rs` |
 //! | `closest-pair/delaunay`: [`proximity::closest_pair_delaunay`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation, then one distance evaluation per Delaunay edge | [RD, §2.4] | `src/proximity/closest_pair_delaunay.rs` |
 //! | `closest-pair/divide-and-conquer`: [`proximity::closest_pair_divide_and_conquer`] | O(n log n) in the worst case | O(n) | distance evaluations: strip membership, height cut-offs and candidate pairs, all exact | [RD, §2.4] | `src/proximity/closest_pair_divide_and_conquer.rs` |
 //! | `all-nearest-neighbours/delaunay`: [`proximity::all_nearest_neighbours`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation, then two distance evaluations per Delaunay edge | [RD, §2.4] | `src/proximity/all_nearest.rs` |
@@ -90,24 +91,26 @@
 //! | `empty-circle/voronoi`: [`proximity::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case | O(n) | orientation tests: the hull tests of the Voronoi vertices, O(log h) each | [RD, §2.4] | `src/proximity/empty_circle.rs` |
 //! | `bezier/de-casteljau`: [`spline::Bezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations per point | [PPB, §2.3] | `src/spline/bezier/de_casteljau.rs` |
 //! | `bezier/horner`: [`spline::Bezier::horner`] | Θ(nD) | O(D) | arithmetic operations: n + 1 point operations per point | [PPB, §2.3] | `src/spline/bezier/horner.rs` |
+//! | `bezier/split`: [`spline::Bezier::split`] | Θ(n²D) | O(nD) | not counted | [PPB, §3.3] | `src/spline/bezier/de_casteljau.rs` |
+//! | `bezier/blossom`: [`spline::Bezier::blossom`] | Θ(n²D) | O(nD) | not counted | [PPB, §3.2] | `src/spline/bezier/de_casteljau.rs` |
+//! | `bezier/elevate-to`: [`spline::Bezier::elevate_to`] | Θ(m·n·D) | Θ(mD) | not counted | [PPB, §3.12] | `src/spline/bezier/elevation.rs` |
+//! | `bezier/flatten`: [`spline::Bezier::flatten`] | Θ(s·n²D) | O(kn·D) | not counted | [PPB, §3.5] | `src/spline/bezier/flatten.rs` |
+//! | `bezier/intersections`: [`spline::intersections`] | O(k·d·(m² + n²)) | O(d(m + n)) | not counted | [PPB, §3.7] | `src/spline/bezier/intersect.rs` |
+//! | `interpolate/vandermonde`: [`spline::vandermonde`] | Θ(n³ + n²·D) | Θ(n² + n·D) | not counted | [RD, §3.1] | `src/spline/interpolate/polynomial.rs` |
+//! | `interpolate/vandermonde-hermite`: [`spline::vandermonde_hermite`] | Θ(N³ + N²·D) | Θ(N² + N·D) | not counted | [PPB, §4.4] | `src/spline/interpolate/polynomial.rs` |
+//! | `interpolate/lagrange`: [`spline::lagrange`] | Θ(n log n + nD) | Θ(nD) | not counted | [PPB, §4.2] | `src/spline/interpolate/lagrange.rs` |
+//! | `interpolate/aitken`: [`spline::LagrangeForm::aitken`] | Θ(n²D) | Θ(nD) | not counted | [PPB, §4.2] | `src/spline/interpolate/lagrange.rs` |
+//! | `interpolate/newton`: [`spline::newton`] | Θ(n²·D) | Θ(n·D) | not counted | [PPB, §4.3] | `src/spline/interpolate/newton.rs` |
+//! | `interpolate/newton-hermite`: [`spline::newton_hermite`] | Θ(N²·D) | Θ(N·D) | not counted | [PPB, §4.4] | `src/spline/interpolate/newton.rs` |
+//! | `interpolate/hermite`: [`spline::hermite`] | Θ(m·D) | Θ(m·D) | not counted | [RD, §3.2] | `src/spline/interpolate/hermite.rs` |
+//! | `interpolate/quadratic-spline`: [`spline::quadratic_spline`] | Θ(N·D) | Θ(N·D) | not counted | [SPL, §2] | `src/spline/interpolate/quadratic_spline.rs` |
+//! | `interpolate/closed-quadratic-spline`: [`spline::closed_quadratic_spline`] | Θ(N·D) | Θ(N·D) | not counted | [SPL, §2] | `src/spline/interpolate/quadratic_spline.rs` |
+//! | `interpolate/cubic-spline`: [`spline::cubic_spline`] | Θ(n·D) | Θ(n·D) | not counted | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
 //! | `spline/cubic-natural`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: exactly 7n + 4 point operations | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
 //! | `spline/cubic-periodic`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: Θ(n) point operations | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
+//! | `fit/least-squares`: [`spline::fit_bezier`] | Θ(m·n² + n³ + m·n·D) | Θ(n² + m·n + n·D) | not counted | [PPB, §4.7] | `src/spline/interpolate/least_squares.rs` |
+//! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
-//!
-//! The curve kernels (each generic over the scalar and the dimension):
-//!
-//! | algorithm | bound |
-//! |---|---|
-//! | [`spline::vandermonde`], [`spline::vandermonde_hermite`] | Θ(n³) for n conditions (dense elimination) |
-//! | [`spline::lagrange`] (evaluation by the basis, or [`spline::LagrangeForm::aitken`]) | Θ(n²) per evaluation, n nodes |
-//! | [`spline::newton`], [`spline::newton_hermite`] | Θ(n²) divided differences, Θ(n) per evaluation |
-//! | [`spline::hermite`], [`spline::quadratic_spline`], [`spline::closed_quadratic_spline`] | Θ(n) |
-//! | [`spline::fit_bezier`] | Θ(m n² + n³) for m points, degree n |
-//! | [`spline::frenet_frame`] | Θ(d³) in R^d |
-//! | [`spline::Bezier::split`], [`spline::Bezier::blossom`], [`spline::CurveDerivative::derivative_at`] of a Bézier curve | Θ(n²) |
-//! | [`spline::Bezier::elevate_to`] (degree n to m) | Θ(mn) |
-//! | [`spline::Bezier::flatten`] | Θ(s·n²) for s segments, s = O(√(bound/tolerance)) |
-//! | [`spline::intersections`] | O(k·d·(m² + n²)) for k crossings found at depth d |
 //!
 //! ## A first example
 //!

@@ -15,7 +15,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "two calipers rotated once around a convex polygon",
     time: "Θ(h)",
     space: "O(h)",
-    operation: Operation::OrientationTests,
+    operation: Some(Operation::OrientationTests),
     counts: "at most h, one exact direction test per step; at most 3h/2 pairs",
     source: "[RD, §2.3]",
     claims: &[on(

@@ -17,7 +17,7 @@ const CALIPERS: Declaration = Declaration {
     summary: "the farthest antipodal pair of the convex hull",
     time: "Θ(h) after the hull",
     space: "O(n)",
-    operation: Operation::DistanceEvaluations,
+    operation: Some(Operation::DistanceEvaluations),
     counts: "at most 3h/2 after the hull, one per antipodal pair",
     source: "[RD, §2.3]",
     claims: &[],
@@ -32,7 +32,7 @@ const BRUTE_FORCE: Declaration = Declaration {
     summary: "every pair compared with the farthest so far",
     time: "Θ(n²)",
     space: "O(1)",
-    operation: Operation::DistanceEvaluations,
+    operation: Some(Operation::DistanceEvaluations),
     counts: "exactly n(n − 1)/2 − 1 for n ≥ 2",
     source: "[RD, §2.3]",
     claims: &[on(

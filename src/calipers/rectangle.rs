@@ -18,7 +18,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "four calipers rotated once around the hull, each edge's rectangle scored exactly",
     time: "Θ(h) after the hull",
     space: "O(1)",
-    operation: Operation::OrientationTests,
+    operation: Some(Operation::OrientationTests),
     counts: "at most 9h for the calipers, and h − 1 exact area comparisons",
     source: "[RD, §2.3]",
     claims: &[],

@@ -19,7 +19,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "three calipers rotated once around the hull, each edge scored exactly",
     time: "Θ(h) after the hull",
     space: "O(1)",
-    operation: Operation::OrientationTests,
+    operation: Some(Operation::OrientationTests),
     counts: "at most 9h for the calipers, and h − 1 exact distance comparisons",
     source: "[RD, §2.3]",
     claims: &[],

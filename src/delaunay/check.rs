@@ -2,10 +2,26 @@
 //! from elsewhere).
 
 use super::triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
+use crate::complexity::Declaration;
 use crate::error::Violation;
 use crate::geometry::{cmp_lex, incircle, orient2d, InCircle, Orientation, Point2, PointSet};
 use crate::hull::{monotone_chain, HullOptions};
 use std::cmp::Ordering;
+
+/// The exact checker's [`Declaration`]: its name, bounds and source.
+pub(super) const DECLARATION: Declaration = Declaration {
+    problem: "check",
+    name: "delaunay",
+    function: "delaunay::check_delaunay",
+    file: "src/delaunay/check.rs",
+    summary: "every property of a Delaunay triangulation, checked exactly",
+    time: "O(n log n + t)",
+    space: "O(n + t)",
+    operation: None,
+    counts: "",
+    source: "[RD, §2.4]",
+    claims: &[],
+};
 
 /// Checks exactly that `t` is a Delaunay triangulation of `points` in compgeo's conventions;
 /// the error names the first violation found.

@@ -17,7 +17,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the course's divide and conquer with Guibas and Stolfi's merge",
     time: "O(n log n) in the worst case",
     space: "O(n)",
-    operation: Operation::IncircleTests,
+    operation: Some(Operation::IncircleTests),
     counts: "about 29 in-circle tests per point at 10⁵ uniform points",
     source: "[RD, §2.4]",
     claims: &[

@@ -23,7 +23,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "Fortune's sweep with a beach line, the Voronoi diagram first",
     time: "O(n log n) expected",
     space: "O(n)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "the sort, the event queue and the breakpoint tests; no in-circle test",
     source: "[RD, §2.4]",
     claims: &[

@@ -17,7 +17,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "BRIO + Hilbert order, walking location, Lawson flips",
     time: "O(n log n) expected on every input",
     space: "O(n)",
-    operation: Operation::IncircleTests,
+    operation: Some(Operation::IncircleTests),
     counts: "about 9 in-circle and 7 orientation tests per point on uniform input",
     source: "[RD, §2.4]",
     claims: &[

@@ -17,7 +17,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "a sweep triangulation, then Lawson's flips (for teaching)",
     time: "O(n²) in the worst case",
     space: "O(n)",
-    operation: Operation::IncircleTests,
+    operation: Some(Operation::IncircleTests),
     counts: "one per edge check, Θ(n²) on a parabola",
     source: "[RD, §2.4]",
     claims: &[on("parabola", Bound::Quadratic, Operation::IncircleTests)],

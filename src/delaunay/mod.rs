@@ -81,8 +81,8 @@ use crate::error::Result;
 use crate::geometry::{Point2, PointSet};
 
 /// The algorithms on a triangulation that are not a choice among builders: the Voronoi
-/// diagram as the dual.
-pub(crate) const DECLARATIONS: [&Declaration; 1] = [VORONOI];
+/// diagram as the dual, and the exact checker.
+pub(crate) const DECLARATIONS: [&Declaration; 2] = [VORONOI, &check::DECLARATION];
 
 /// The Voronoi diagram's declaration.
 pub(crate) const VORONOI: &Declaration = &voronoi::DECLARATION;

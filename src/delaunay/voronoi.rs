@@ -18,7 +18,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the dual of the incremental Delaunay triangulation, cells in Hilbert order",
     time: "O(n log n) expected",
     space: "O(n)",
-    operation: Operation::IncircleTests,
+    operation: Some(Operation::IncircleTests),
     counts: "those of the triangulation; the dual makes no geometric decision",
     source: "[RD, §2.4]",
     claims: &[on("uniform-square", Bound::NLogN, Operation::IncircleTests)],

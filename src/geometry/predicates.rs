@@ -41,7 +41,7 @@ const fn predicate(
         summary,
         time: "O(1)",
         space: "O(1)",
-        operation,
+        operation: Some(operation),
         counts: "one per call",
         source: "[Shewchuk, §4]",
         claims: &[],

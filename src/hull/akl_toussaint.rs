@@ -19,7 +19,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the eight-extreme-point filter, then the monotone chain",
     time: "O(n log n) worst case, O(n) expected on uniform input",
     space: "O(n)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "up to four per point for the filter box",
     source: "[RD, §2.2]",
     claims: &[on("uniform-square", Bound::Linear, Operation::Comparisons)],

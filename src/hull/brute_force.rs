@@ -17,7 +17,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "every pair of points tested against all the others",
     time: "Θ(n³)",
     space: "O(n)",
-    operation: Operation::OrientationTests,
+    operation: Some(Operation::OrientationTests),
     counts: "m − 2 per ordered pair of the m distinct points that is an edge, fewer for the others",
     source: "[RD, §2.2]",
     claims: &[on(

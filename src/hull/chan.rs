@@ -22,7 +22,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "hulls of groups, then wrapping with tangent searches",
     time: "O(n log h)",
     space: "O(n)",
-    operation: Operation::OrientationTests,
+    operation: Some(Operation::OrientationTests),
     counts: "",
     source: "[RD, §2.2]",
     claims: &[

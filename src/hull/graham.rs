@@ -18,7 +18,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "angular sort about the lexicographically smallest point, then the scan",
     time: "O(n log n)",
     space: "O(n)",
-    operation: Operation::OrientationTests,
+    operation: Some(Operation::OrientationTests),
     counts: "at most 2n − 4 in the scan after the sort",
     source: "[RD, §2.2]",
     claims: &[

@@ -19,7 +19,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "gift wrapping from the lexicographically smallest point",
     time: "Θ(nh)",
     space: "O(h)",
-    operation: Operation::OrientationTests,
+    operation: Some(Operation::OrientationTests),
     counts: "at most n − 1 per hull vertex",
     source: "[RD, §2.2]",
     claims: &[

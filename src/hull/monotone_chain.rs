@@ -19,7 +19,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "lexicographic sort, then the lower and upper chains",
     time: "O(n log n)",
     space: "O(n)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "those of the sort, plus n − 1 to merge duplicates",
     source: "[RD, §2.2]",
     claims: &[on("uniform-disk", Bound::NLogN, Operation::Comparisons)],

@@ -18,7 +18,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "divide by the farthest point from each edge",
     time: "O(nh) worst case, O(n log n) expected",
     space: "O(n)",
-    operation: Operation::OrientationTests,
+    operation: Some(Operation::OrientationTests),
     counts: "",
     source: "[RD, §2.2]",
     claims: &[on(

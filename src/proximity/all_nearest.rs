@@ -17,7 +17,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the nearer end of every Delaunay edge, for both ends",
     time: "O(n log n) expected",
     space: "O(n)",
-    operation: Operation::IncircleTests,
+    operation: Some(Operation::IncircleTests),
     counts: "those of the triangulation, then two distance evaluations per Delaunay edge",
     source: "[RD, §2.4]",
     claims: &[on("uniform-square", Bound::NLogN, Operation::IncircleTests)],

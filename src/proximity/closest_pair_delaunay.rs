@@ -17,7 +17,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the shortest edge of the Delaunay triangulation",
     time: "O(n log n) expected",
     space: "O(n)",
-    operation: Operation::IncircleTests,
+    operation: Some(Operation::IncircleTests),
     counts: "those of the triangulation, then one distance evaluation per Delaunay edge",
     source: "[RD, §2.4]",
     claims: &[on("uniform-square", Bound::NLogN, Operation::IncircleTests)],

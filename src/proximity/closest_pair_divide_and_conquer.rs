@@ -16,7 +16,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "split at the median x, solve both halves, check the strip (Shamos)",
     time: "O(n log n) in the worst case",
     space: "O(n)",
-    operation: Operation::DistanceEvaluations,
+    operation: Some(Operation::DistanceEvaluations),
     counts: "strip membership, height cut-offs and candidate pairs, all exact",
     source: "[RD, §2.4]",
     claims: &[

@@ -18,7 +18,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the best Voronoi vertex inside the hull or crossing of a Voronoi edge with it",
     time: "O(n log n) expected on uniform-like input, O(nh) worst case",
     space: "O(n)",
-    operation: Operation::OrientationTests,
+    operation: Some(Operation::OrientationTests),
     counts: "the hull tests of the Voronoi vertices, O(log h) each",
     source: "[RD, §2.4]",
     claims: &[on(

@@ -19,7 +19,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the Delaunay edges ranked by exact length, then Kruskal",
     time: "O(n log n) expected",
     space: "O(n)",
-    operation: Operation::DistanceEvaluations,
+    operation: Some(Operation::DistanceEvaluations),
     counts: "those of the exact length sort, after the triangulation's tests",
     source: "[RD, §2.4]",
     claims: &[on(

@@ -17,7 +17,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "a greedy walk on the Delaunay graph towards the query",
     time: "O(n log n) to build; O(√n) expected steps per query on uniform points",
     space: "O(n)",
-    operation: Operation::DistanceEvaluations,
+    operation: Some(Operation::DistanceEvaluations),
     counts: "one per neighbour looked at during a walk",
     source: "[RD, §2.4]",
     claims: &[],

@@ -30,7 +30,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "insertion by bisection",
     time: "O(n²) worst case",
     space: "O(1)",
-    operation: Operation::Moves,
+    operation: Some(Operation::Moves),
     counts: "at most ⌈log₂ k⌉ comparisons per step, one move per inversion",
     source: "[RD, §2.1]",
     claims: &[on("random", Bound::Quadratic, Operation::Moves)],

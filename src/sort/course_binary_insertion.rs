@@ -36,7 +36,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "insertion by bisection as the course's table does it",
     time: "O(n²) worst case",
     space: "O(1)",
-    operation: Operation::Moves,
+    operation: Some(Operation::Moves),
     counts: "⌈log₂ k⌉ + 1 comparisons per step, one move per inversion",
     source: "[RD, §2.1]",
     claims: &[on("random", Bound::Quadratic, Operation::Moves)],

@@ -30,7 +30,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "sequential insertion as the course's table does it, from the front",
     time: "Θ(n²)",
     space: "O(1)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "n(n − 1)/2 comparisons on sorted input, as many moves on reversed input",
     source: "[RD, §2.1]",
     claims: &[

@@ -24,7 +24,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "heap sort on a binary max-heap",
     time: "O(n log n) worst case",
     space: "O(1)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "at most 2n log₂ n comparisons",
     source: "[RD, §2.1]",
     claims: &[on("random", Bound::NLogN, Operation::Comparisons)],

@@ -32,7 +32,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "sequential insertion scanning the sorted prefix from the back",
     time: "Θ(n²) in the worst case and Θ(n) on sorted input",
     space: "O(1)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "at most n(n − 1)/2 comparisons, n − 1 on sorted input",
     source: "[RD, §2.1]",
     claims: &[

@@ -29,7 +29,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "top-down merge sort",
     time: "Θ(n log n)",
     space: "O(n)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "at most n⌈log₂ n⌉ comparisons",
     source: "[RD, §2.1]",
     claims: &[on("random", Bound::NLogN, Operation::Comparisons)],

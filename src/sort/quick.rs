@@ -32,7 +32,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "median-of-three quicksort with a heap-sort guard (introsort)",
     time: "O(n log n) worst case",
     space: "O(log n)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "at most 6n log₂ n + n comparisons",
     source: "[RD, §2.1]",
     claims: &[

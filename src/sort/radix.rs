@@ -41,7 +41,7 @@ pub(crate) const DECLARATION: Declaration = Declaration {
     summary: "most-significant-digit radix sort of the keys' order bits",
     time: "O(n)",
     space: "O(n)",
-    operation: Operation::Moves,
+    operation: Some(Operation::Moves),
     counts: "at most 24n moves and 7.5n key comparisons",
     source: "[RD, §2.1]",
     claims: &[on("random-f64", Bound::Linear, Operation::Moves)],

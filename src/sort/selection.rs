@@ -23,7 +23,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the course's selection sort",
     time: "Θ(n²)",
     space: "O(1)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "exactly n(n − 1)/2 comparisons",
     source: "[RD, §2.1]",
     claims: &[on("random", Bound::Quadratic, Operation::Comparisons)],

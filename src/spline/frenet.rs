@@ -35,7 +35,24 @@ use super::curve::CurveDerivative;
 use super::interpolate::{eliminate_below, pivot};
 use super::scalar::{pow2_scale, validate_points, Point, Scalar};
 use super::{Bezier, CompositeBezier};
+use crate::complexity::Declaration;
 use crate::{Error, Result};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const FRENET: Declaration = Declaration {
+    problem: "frenet",
+    name: "frame",
+    function: "spline::frenet_frame",
+    file: "src/spline/frenet.rs",
+    summary: "the Frenet frame and curvatures by Gram–Schmidt on the derivatives",
+    time: "Θ(r²·D)",
+    space: "Θ(r·D)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §7.6]",
+    claims: &[],
+};
 
 /// The Frenet frame of a curve in R^D at one parameter: orthonormal vectors `f_1, ..., f_k`
 /// and curvatures `κ_1, ..., κ_{k−1}`, where k is the number of linearly independent

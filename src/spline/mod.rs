@@ -41,8 +41,14 @@ pub mod interpolate;
 mod parse;
 mod scalar;
 
-/// The curve algorithms that are not a choice among evaluation schemes, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 2] = interpolate::DECLARATIONS;
+/// The curve algorithms that are not a choice among evaluation schemes, declared: the Bézier
+/// operations, interpolation and fitting, the Frenet frame.
+pub(crate) fn declarations() -> impl Iterator<Item = &'static crate::complexity::Declaration> {
+    bezier::DECLARATIONS
+        .into_iter()
+        .chain(interpolate::DECLARATIONS)
+        .chain([&frenet::FRENET])
+}
 
 pub use bezier::{
     bernstein, bernstein_all, bernstein_derivative, c1_partition, intersections, Bezier,

@@ -83,6 +83,11 @@ fn names_are_kebab_case_and_ids_unique() {
             "{}: cite the source as [KEY, §n]",
             d.id()
         );
+        assert!(
+            d.claims.is_empty() || d.operation.is_some(),
+            "{}: a measured algorithm declares its counted operation",
+            d.id()
+        );
         let mut inputs = HashSet::new();
         for c in d.claims {
             assert!(

@@ -33,7 +33,11 @@ pub(super) fn entries() -> Vec<Entry> {
             .full(8, 512)
         })
         .collect();
-    for (declaration, periodic) in crate::spline::DECLARATIONS.into_iter().zip([false, true]) {
+    let cubic = [
+        (crate::spline::interpolate::CUBIC_NATURAL, false),
+        (crate::spline::interpolate::CUBIC_PERIODIC, true),
+    ];
+    for (declaration, periodic) in cubic {
         entries.push(
             Entry::declared(
                 declaration,

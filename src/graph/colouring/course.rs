@@ -15,7 +15,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the course's greedy colouring as printed, in vertex order",
     time: "O(n² + m)",
     space: "O(n)",
-    operation: Operation::AdjacencyTests,
+    operation: Some(Operation::AdjacencyTests),
     counts: "exactly n(n − 1)/2 adjacency tests",
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::Quadratic, Operation::AdjacencyTests)],

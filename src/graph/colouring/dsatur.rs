@@ -15,7 +15,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the vertex with the most distinct neighbour colours next (Brélaz)",
     time: "O((n + m) log n)",
     space: "O(n + m)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "heap comparisons; exactly 2m edge visits",
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::MLogN, Operation::Comparisons)],

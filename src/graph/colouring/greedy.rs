@@ -16,7 +16,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the greedy colouring in vertex order, looking only at neighbours",
     time: "O(n + m)",
     space: "O(n)",
-    operation: Operation::EdgeVisits,
+    operation: Some(Operation::EdgeVisits),
     counts: "exactly 2m edge visits",
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::NPlusM, Operation::EdgeVisits)],

@@ -14,7 +14,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "greedy in decreasing degree order (Welsh–Powell), connected within each degree",
     time: "O(n + m)",
     space: "O(n)",
-    operation: Operation::EdgeVisits,
+    operation: Some(Operation::EdgeVisits),
     counts: "the greedy colouring's 2m edge visits",
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::NPlusM, Operation::EdgeVisits)],

@@ -38,7 +38,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "DSatur, then a tabu search for fewer colours",
     time: "O((n + m) log n)",
     space: "O(n + m)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "DSatur's heap comparisons plus at most 20(n + 2m) search steps",
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::MLogN, Operation::Comparisons)],

@@ -15,7 +15,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "every tree adds its lightest outgoing edge, round after round",
     time: "O(m log n)",
     space: "O(n + m)",
-    operation: Operation::EdgeVisits,
+    operation: Some(Operation::EdgeVisits),
     counts: "at most ⌈log₂ n⌉ rounds over the remaining edges",
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::MLogN, Operation::EdgeVisits)],

@@ -14,7 +14,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the edges by weight, each joining two trees of a union–find",
     time: "O(m log m)",
     space: "O(n + m)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "those of the edge sort, then one edge visit per edge examined",
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::MLogM, Operation::Comparisons)],

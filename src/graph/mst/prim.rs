@@ -16,7 +16,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the course's greedy tree: the lightest edge to a new vertex, from a binary heap",
     time: "O(m log m)",
     space: "O(n + m)",
-    operation: Operation::Comparisons,
+    operation: Some(Operation::Comparisons),
     counts: "heap comparisons; O(m log n) on simple graphs",
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::MLogN, Operation::Comparisons)],

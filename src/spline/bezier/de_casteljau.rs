@@ -28,6 +28,38 @@ use crate::spline::curve::{check_interval, Curve, Subsegment};
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
 use crate::{Error, Result};
 
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const SPLIT: Declaration = Declaration {
+    problem: "bezier",
+    name: "split",
+    function: "spline::Bezier::split",
+    file: "src/spline/bezier/de_casteljau.rs",
+    summary: "the two halves at c, read off de Casteljau's triangle",
+    time: "Θ(n²D)",
+    space: "O(nD)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §3.3]",
+    claims: &[],
+};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const BLOSSOM: Declaration = Declaration {
+    problem: "bezier",
+    name: "blossom",
+    function: "spline::Bezier::blossom",
+    file: "src/spline/bezier/de_casteljau.rs",
+    summary: "the polar form by de Casteljau's scheme with distinct parameters",
+    time: "Θ(n²D)",
+    space: "O(nD)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §3.2]",
+    claims: &[],
+};
+
 /// De Casteljau's evaluation, declared: its name, bounds, counts, source and claims.
 pub(super) const DECLARATION: Declaration = Declaration {
     problem: "bezier",
@@ -37,7 +69,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "repeated affine combinations of the control points",
     time: "Θ(n²D)",
     space: "O(nD)",
-    operation: Operation::ArithmeticOperations,
+    operation: Some(Operation::ArithmeticOperations),
     counts: "exactly n(n + 1)/2 affine combinations per point",
     source: "[PPB, §2.3]",
     claims: &[on(

@@ -19,8 +19,25 @@
 //! itself.
 
 use super::curve::Bezier;
+use crate::complexity::Declaration;
 use crate::spline::scalar::{binomial, Point, Scalar};
 use crate::{Error, Result};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const ELEVATE_TO: Declaration = Declaration {
+    problem: "bezier",
+    name: "elevate-to",
+    function: "spline::Bezier::elevate_to",
+    file: "src/spline/bezier/elevation.rs",
+    summary: "degree elevation to m in one step (Zhou's formula)",
+    time: "Θ(m·n·D)",
+    space: "Θ(mD)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §3.12]",
+    claims: &[],
+};
 
 impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// The same curve with degree n + 1: `cᵢ = i/(n+1) bᵢ₋₁ + (1 − i/(n+1)) bᵢ`.

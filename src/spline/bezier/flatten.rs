@@ -17,8 +17,25 @@
 //! tolerance of the curve; a straight polygon gives its chord.
 
 use super::curve::Bezier;
+use crate::complexity::Declaration;
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
 use crate::{Error, Result};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const FLATTEN: Declaration = Declaration {
+    problem: "bezier",
+    name: "flatten",
+    function: "spline::Bezier::flatten",
+    file: "src/spline/bezier/flatten.rs",
+    summary: "a polyline within a tolerance by recursive subdivision",
+    time: "Θ(s·n²D)",
+    space: "O(kn·D)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §3.5]",
+    claims: &[],
+};
 
 /// The largest number of segments [`Bezier::flatten`] produces before it reports that the
 /// tolerance is too small for the curve.

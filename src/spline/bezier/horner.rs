@@ -36,7 +36,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "the Bernstein form rewritten for a Horner scheme",
     time: "Θ(nD)",
     space: "O(D)",
-    operation: Operation::ArithmeticOperations,
+    operation: Some(Operation::ArithmeticOperations),
     counts: "n + 1 point operations per point",
     source: "[PPB, §2.3]",
     claims: &[on(

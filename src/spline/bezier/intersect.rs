@@ -17,10 +17,27 @@
 
 use super::curve::{bounding_box_of, Bezier};
 use super::flatten::flatness_bound;
+use crate::complexity::Declaration;
 use crate::geometry::{orient2d, Orientation, Point2};
 use crate::spline::curve::Curve;
 use crate::spline::scalar::{validate_parameter, Point};
 use crate::{Error, Result};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const INTERSECTIONS: Declaration = Declaration {
+    problem: "bezier",
+    name: "intersections",
+    function: "spline::intersections",
+    file: "src/spline/bezier/intersect.rs",
+    summary: "the crossings of two curves by subdivision with box pruning",
+    time: "O(k·d·(m² + n²))",
+    space: "O(d(m + n))",
+    operation: None,
+    counts: "",
+    source: "[PPB, §3.7]",
+    claims: &[],
+};
 
 /// One intersection of two curves: the parameters on each and the point.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -41,6 +41,15 @@ mod joins;
 mod monomial;
 mod reparametrised;
 
+/// The Bézier operations that are not an evaluation scheme, declared.
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
+    &de_casteljau::SPLIT,
+    &de_casteljau::BLOSSOM,
+    &elevation::ELEVATE_TO,
+    &flatten::FLATTEN,
+    &intersect::INTERSECTIONS,
+];
+
 pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
 pub use composite::CompositeBezier;
 pub use curve::Bezier;

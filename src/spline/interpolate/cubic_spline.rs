@@ -32,6 +32,22 @@ use crate::spline::scalar::{Point, Scalar};
 use crate::spline::CompositeBezier;
 use crate::{Error, Result};
 
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const CUBIC: Declaration = Declaration {
+    problem: "interpolate",
+    name: "cubic-spline",
+    function: "spline::cubic_spline",
+    file: "src/spline/interpolate/cubic_spline.rs",
+    summary: "the C² cubic spline as composite Bézier curves",
+    time: "Θ(n·D)",
+    space: "Θ(n·D)",
+    operation: None,
+    counts: "",
+    source: "[RD, §3.1]",
+    claims: &[],
+};
+
 /// The C² cubic spline's tangents with natural ends, declared.
 pub(crate) const NATURAL: Declaration = Declaration {
     problem: "spline",
@@ -41,7 +57,7 @@ pub(crate) const NATURAL: Declaration = Declaration {
     summary: "the tangents of the natural C² cubic spline by a tridiagonal solve",
     time: "Θ(n·D)",
     space: "Θ(n·D)",
-    operation: Operation::ArithmeticOperations,
+    operation: Some(Operation::ArithmeticOperations),
     counts: "exactly 7n + 4 point operations",
     source: "[RD, §3.1]",
     claims: &[on(
@@ -60,7 +76,7 @@ pub(crate) const PERIODIC: Declaration = Declaration {
     summary: "the tangents of the periodic C² cubic spline by a cyclic tridiagonal solve",
     time: "Θ(n·D)",
     space: "Θ(n·D)",
-    operation: Operation::ArithmeticOperations,
+    operation: Some(Operation::ArithmeticOperations),
     counts: "Θ(n) point operations",
     source: "[RD, §3.1]",
     claims: &[on(

@@ -16,9 +16,26 @@
 //! Θ(mD) time and space for m + 1 points in R^D.
 
 use super::validate::{check_knots_and_points, overflow};
+use crate::complexity::Declaration;
 use crate::spline::scalar::{validate_points, Point, Scalar};
 use crate::spline::CompositeBezier;
 use crate::{Error, Result};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const HERMITE: Declaration = Declaration {
+    problem: "interpolate",
+    name: "hermite",
+    function: "spline::hermite",
+    file: "src/spline/interpolate/hermite.rs",
+    summary: "piecewise cubic Hermite interpolation as composite Bézier curves",
+    time: "Θ(m·D)",
+    space: "Θ(m·D)",
+    operation: None,
+    counts: "",
+    source: "[RD, §3.2]",
+    claims: &[],
+};
 
 /// The piecewise cubic C¹ curve through `points` at the knots `partition` with the
 /// derivatives `tangents` there, as a composite cubic Bézier curve.

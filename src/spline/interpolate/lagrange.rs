@@ -20,10 +20,43 @@
 use super::newton::{newton_unchecked, NewtonForm};
 use super::polynomial::{nested_to_bezier, Polynomial};
 use super::validate::{check_distinct, check_finite_nodes, check_nodes_and_points};
+use crate::complexity::Declaration;
 use crate::spline::bezier::Reparametrised;
 use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
 use crate::{Error, Result};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const LAGRANGE: Declaration = Declaration {
+    problem: "interpolate",
+    name: "lagrange",
+    function: "spline::lagrange",
+    file: "src/spline/interpolate/lagrange.rs",
+    summary: "the interpolating polynomial in the Lagrange basis",
+    time: "Θ(n log n + nD)",
+    space: "Θ(nD)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §4.2]",
+    claims: &[],
+};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const AITKEN: Declaration = Declaration {
+    problem: "interpolate",
+    name: "aitken",
+    function: "spline::LagrangeForm::aitken",
+    file: "src/spline/interpolate/lagrange.rs",
+    summary: "the interpolating polynomial's value by Aitken's scheme",
+    time: "Θ(n²D)",
+    space: "Θ(nD)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §4.2]",
+    claims: &[],
+};
 
 /// The interpolating polynomial in Lagrange form: distinct nodes `u_0, …, u_n` and the points
 /// `p_i` they carry, `p(u) = Σ p_i L_iⁿ(u)`. Built by [`lagrange`]; defined for every real u

@@ -18,9 +18,26 @@
 
 use super::linear::solve_dense;
 use super::validate::{check_finite_nodes, check_nodes_and_points, singular};
+use crate::complexity::Declaration;
 use crate::spline::scalar::{Point, Scalar};
 use crate::spline::{bernstein_all, Bezier};
 use crate::{Error, Result};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const LEAST_SQUARES: Declaration = Declaration {
+    problem: "fit",
+    name: "least-squares",
+    function: "spline::fit_bezier",
+    file: "src/spline/interpolate/least_squares.rs",
+    summary: "the Bézier curve nearest to points in the least-squares sense",
+    time: "Θ(m·n² + n³ + m·n·D)",
+    space: "Θ(n² + m·n + n·D)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §4.7]",
+    claims: &[],
+};
 
 /// What a least-squares fit may add to plain Gauss normal equations.
 #[derive(Clone, Debug, PartialEq, Default)]

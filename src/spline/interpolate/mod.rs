@@ -34,9 +34,29 @@ mod polynomial;
 mod quadratic_spline;
 mod validate;
 
-/// The cubic splines the report measures, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 2] =
-    [&cubic_spline::NATURAL, &cubic_spline::PERIODIC];
+use crate::complexity::Declaration;
+
+/// The C² cubic spline's tangents with natural ends, declared (the report measures them).
+pub(crate) const CUBIC_NATURAL: &Declaration = &cubic_spline::NATURAL;
+/// The C² cubic spline's tangents with periodic ends, declared (the report measures them).
+pub(crate) const CUBIC_PERIODIC: &Declaration = &cubic_spline::PERIODIC;
+
+/// The interpolation and fitting algorithms, declared.
+pub(crate) const DECLARATIONS: [&Declaration; 13] = [
+    &polynomial::VANDERMONDE,
+    &polynomial::VANDERMONDE_HERMITE,
+    &lagrange::LAGRANGE,
+    &lagrange::AITKEN,
+    &newton::NEWTON,
+    &newton::NEWTON_HERMITE,
+    &hermite::HERMITE,
+    &quadratic_spline::QUADRATIC,
+    &quadratic_spline::CLOSED_QUADRATIC,
+    &cubic_spline::CUBIC,
+    CUBIC_NATURAL,
+    CUBIC_PERIODIC,
+    &least_squares::LEAST_SQUARES,
+];
 
 pub use cubic_spline::{
     cubic_spline, cubic_spline_tangents, cubic_spline_tangents_with, EndCondition,

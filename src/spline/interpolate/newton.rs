@@ -17,10 +17,43 @@
 
 use super::polynomial::{nested_to_bezier, HermiteNode, Polynomial};
 use super::validate::{check_distinct, check_hermite, check_nodes_and_points, finite};
+use crate::complexity::Declaration;
 use crate::spline::bezier::Reparametrised;
 use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
 use crate::spline::scalar::{falling_factorial, validate_parameter, Point, Scalar};
 use crate::Result;
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const NEWTON: Declaration = Declaration {
+    problem: "interpolate",
+    name: "newton",
+    function: "spline::newton",
+    file: "src/spline/interpolate/newton.rs",
+    summary: "the interpolating polynomial by divided differences",
+    time: "Θ(n²·D)",
+    space: "Θ(n·D)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §4.3]",
+    claims: &[],
+};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const NEWTON_HERMITE: Declaration = Declaration {
+    problem: "interpolate",
+    name: "newton-hermite",
+    function: "spline::newton_hermite",
+    file: "src/spline/interpolate/newton.rs",
+    summary: "divided differences with confluent nodes (derivative data)",
+    time: "Θ(N²·D)",
+    space: "Θ(N·D)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §4.4]",
+    claims: &[],
+};
 
 /// A polynomial in Newton form: `p(u) = Σ_i c_i (u − z_0)···(u − z_{i−1})`, with the nodes
 /// `z_i` (repeated where derivatives were given) and the divided differences

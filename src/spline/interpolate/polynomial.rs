@@ -20,11 +20,44 @@
 
 use super::linear::solve_dense;
 use super::validate::{check_distinct, check_hermite, check_nodes_and_points, finite, singular};
+use crate::complexity::Declaration;
 use crate::spline::bezier::Reparametrised;
 use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
 use crate::spline::scalar::{falling_factorial, validate_parameter, Point, Scalar};
 use crate::spline::Bezier;
 use crate::{Error, Result};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const VANDERMONDE: Declaration = Declaration {
+    problem: "interpolate",
+    name: "vandermonde",
+    function: "spline::vandermonde",
+    file: "src/spline/interpolate/polynomial.rs",
+    summary: "the power-basis polynomial through distinct nodes, by elimination",
+    time: "Θ(n³ + n²·D)",
+    space: "Θ(n² + n·D)",
+    operation: None,
+    counts: "",
+    source: "[RD, §3.1]",
+    claims: &[],
+};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const VANDERMONDE_HERMITE: Declaration = Declaration {
+    problem: "interpolate",
+    name: "vandermonde-hermite",
+    function: "spline::vandermonde_hermite",
+    file: "src/spline/interpolate/polynomial.rs",
+    summary: "the polynomial with given values and derivatives, by elimination",
+    time: "Θ(N³ + N²·D)",
+    space: "Θ(N² + N·D)",
+    operation: None,
+    counts: "",
+    source: "[PPB, §4.4]",
+    claims: &[],
+};
 
 /// A polynomial curve `p(u) = Σ_j a_j u^j` in the power (monomial) basis, with coefficients
 /// `a_j ∈ R^D`. It is defined for every real u ([`Domain::Real`]).

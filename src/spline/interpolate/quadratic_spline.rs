@@ -19,9 +19,42 @@
 //! cyclic system by telescoping, also in one pass).
 
 use super::validate::{check_knots_and_points, overflow, singular};
+use crate::complexity::Declaration;
 use crate::spline::scalar::{Point, Scalar};
 use crate::spline::CompositeBezier;
 use crate::{Error, Result};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const QUADRATIC: Declaration = Declaration {
+    problem: "interpolate",
+    name: "quadratic-spline",
+    function: "spline::quadratic_spline",
+    file: "src/spline/interpolate/quadratic_spline.rs",
+    summary: "the C¹ parabolic spline with a tangent at one end",
+    time: "Θ(N·D)",
+    space: "Θ(N·D)",
+    operation: None,
+    counts: "",
+    source: "[SPL, §2]",
+    claims: &[],
+};
+
+/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
+/// yet).
+pub(crate) const CLOSED_QUADRATIC: Declaration = Declaration {
+    problem: "interpolate",
+    name: "closed-quadratic-spline",
+    function: "spline::closed_quadratic_spline",
+    file: "src/spline/interpolate/quadratic_spline.rs",
+    summary: "the closed C¹ parabolic spline",
+    time: "Θ(N·D)",
+    space: "Θ(N·D)",
+    operation: None,
+    counts: "",
+    source: "[SPL, §2]",
+    claims: &[],
+};
 
 /// The C¹ quadratic spline through `points` at the knots `partition` whose first derivative at
 /// `u_0` is `start_tangent` ([SPL, §2]).
