@@ -6,6 +6,8 @@
 //! breakpoints move with the sweep), so insertion is "right after this arc" and search is a
 //! descent with a caller-supplied monotone test ([`BeachLine::first_arc_where`]).
 
+use crate::gen::Rng;
+
 /// No arc (a null link).
 pub(super) const NIL: u32 = u32::MAX;
 
@@ -24,12 +26,12 @@ struct Arc {
 }
 
 /// The arcs in an arena, with a free list for removed slots.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub(super) struct BeachLine {
     arcs: Vec<Arc>,
     free: Vec<u32>,
     root: u32,
-    rng: u64,
+    rng: Rng,
 }
 
 impl BeachLine {
@@ -39,8 +41,8 @@ impl BeachLine {
             arcs: Vec::with_capacity(capacity),
             free: Vec::new(),
             root: NIL,
-            // Any fixed odd seed: the priorities only need to be independent of the input.
-            rng: 0x9E37_79B9_7F4A_7C15,
+            // Any fixed seed: the priorities only need to be independent of the input.
+            rng: Rng::new(0x9E37_79B9_7F4A_7C15),
         }
     }
 
@@ -227,12 +229,9 @@ impl BeachLine {
         }
     }
 
-    /// A pseudo-random priority (xorshift64*).
+    /// A pseudo-random priority.
     fn next_priority(&mut self) -> u32 {
-        self.rng ^= self.rng >> 12;
-        self.rng ^= self.rng << 25;
-        self.rng ^= self.rng >> 27;
-        (self.rng.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 32) as u32
+        (self.rng.next_u64() >> 32) as u32
     }
 }
 

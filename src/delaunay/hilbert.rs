@@ -9,7 +9,12 @@
 //! are close and the walk from one to the next is short. The order only affects speed;
 //! correctness never depends on it.
 
+use crate::gen::Rng;
 use crate::geometry::{BoundingBox, Point2};
+
+/// The seed of the BRIO rounds (any fixed value: the rounds need only be independent of the
+/// input).
+const BRIO_SEED: u64 = 0x5EED_DE1A_0000_0001;
 
 /// Bits per axis of the Hilbert grid: 2^32 cells, far more than the points of any round.
 const BITS: u32 = 16;
@@ -17,7 +22,7 @@ const BITS: u32 = 16;
 /// The local ids `0..points.len()` in insertion order; `bounds` is the points' bounding box.
 ///
 /// O(n log n) time (sorts of 64-bit keys), O(n) auxiliary space. Deterministic: the
-/// rounds come from a fixed-seed generator.
+/// rounds come from the crate's random source with a fixed seed.
 pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<u32> {
     let n = points.len();
     let Some(bounds) = bounds else {
@@ -26,7 +31,7 @@ pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<
     let grid = Grid::over(bounds);
     // Rounds: the last one holds about n/2 points, the first one about 32.
     let rounds = (usize::BITS - n.leading_zeros()).saturating_sub(5) as usize;
-    let mut rng = SplitMix(0x5EED_DE1A_0000_0001);
+    let mut rng = Rng::new(BRIO_SEED);
     // Per point: its round and (Hilbert index << 32 | id); then a counting sort by round
     // and a sort of plain u64 keys inside each round.
     let mut round_of = Vec::with_capacity(n);
@@ -35,7 +40,7 @@ pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            let level = ((rng.next() as u32).trailing_zeros() as usize).min(rounds);
+            let level = ((rng.next_u64() as u32).trailing_zeros() as usize).min(rounds);
             let round = rounds - level;
             round_of.push(round as u8);
             sizes[round] += 1;
@@ -182,21 +187,6 @@ const fn level(state: u32, bx: u32, by: u32) -> (u32, u32) {
     ((3 * tx) ^ ty, next)
 }
 
-/// SplitMix64: a tiny, good-enough generator for the rounds (and the walk's coin flips).
-#[derive(Debug, Clone)]
-pub(super) struct SplitMix(pub(super) u64);
-
-impl SplitMix {
-    #[inline]
-    pub(super) fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -219,10 +209,10 @@ mod tests {
 
     #[test]
     fn curve_order_sorts_by_curve_index_then_id() {
-        let mut rng = SplitMix(7);
+        let mut rng = Rng::new(7);
         let mut pts: Vec<Point2> = (0..500)
             .map(|_| {
-                let mut u = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+                let mut u = || rng.unit();
                 Point2::new(u() * 10.0 - 5.0, u() * 1e-3)
             })
             .collect();

@@ -1,11 +1,12 @@
 //! The fast builder: incremental insertion in a spatial order, with a walk to locate each
 //! point and Lawson flips to restore the Delaunay property.
 
-use super::hilbert::{brio_order, SplitMix};
+use super::hilbert::brio_order;
 use super::triangulation::{find_duplicates, rotate_to_lex_min, Triangulation, EMPTY};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::{Error, Result};
+use crate::gen::Rng;
 use crate::geometry::{CountedPredicates, InCircle, Orientation, Point2, PointSet};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -207,6 +208,9 @@ impl LocalTriangulation {
 /// More points than this would overflow the 32-bit half-edge ids (about 6n half-edges).
 const MAX_POINTS: usize = 1 << 29;
 
+/// The seed of the walk's coin flips (any fixed value).
+const WALK_SEED: u64 = 0x0DE1_A0A7;
+
 /// The vertex at infinity of the ghost triangles.
 const GHOST: u32 = u32::MAX;
 
@@ -236,7 +240,7 @@ struct Mesh<'c, C> {
     /// A triangle that had the last inserted point as a vertex: the walk starts there.
     last: u32,
     /// Coin flips of the walk.
-    rng: SplitMix,
+    rng: Rng,
     /// `[dropped vertex id, kept vertex id]`.
     duplicates: Vec<[u32; 2]>,
     counter: &'c mut C,
@@ -258,7 +262,7 @@ impl<'c, C: Counter> Mesh<'c, C> {
             halfedges,
             stack: Vec::with_capacity(64),
             last: 0,
-            rng: SplitMix(0x0DE1_A0A7),
+            rng: Rng::new(WALK_SEED),
             duplicates: Vec::new(),
             counter,
         }
@@ -301,7 +305,7 @@ impl<'c, C: Counter> Mesh<'c, C> {
         let mut entered = u32::MAX;
         'walk: loop {
             let base = 3 * t;
-            let start = (((self.rng.next() >> 32) * 3) >> 32) as u32;
+            let start = (((self.rng.next_u64() >> 32) * 3) >> 32) as u32;
             let mut collinear = 0u32;
             for k in 0..3 {
                 let e = base + (start + k) % 3;

@@ -11,7 +11,10 @@ use rand_chacha::ChaCha8Rng;
 /// 2^-53: the spacing of the unit-interval samples.
 const TWO_POW_MINUS_53: f64 = 1.0 / 9_007_199_254_740_992.0;
 
-/// A seeded, portable random source.
+/// A seeded, portable random source: the one random source of the crate (the generators, the
+/// incremental builder's insertion order and walks, the sweep's treap priorities, the tabu
+/// search).
+#[derive(Debug, Clone)]
 pub(crate) struct Rng(ChaCha8Rng);
 
 impl Rng {
