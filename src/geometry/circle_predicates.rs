@@ -50,6 +50,7 @@
 //! absolute.
 
 use super::bigint::BigInt;
+use super::expansion::two_diff;
 use super::extended::{decompose, exponent, scale_by_pow2};
 use super::predicates::{pow2, UNDERFLOW_SLACK};
 use super::{cross_sign, Orientation, Point2};
@@ -226,6 +227,7 @@ impl Circumcentre {
         SquaredRadius {
             circle: Circle::Circumcircle(self.tri),
             approx: self.approx_squared_radius(),
+            grid: OnceCell::new(),
             exact: OnceCell::new(),
         }
     }
@@ -348,12 +350,13 @@ fn cmp_bisector_crossings_exact(p: Point2, q: Point2, s: Point2, w: Point2, v: P
 /// The squared radius of a candidate circle of the largest empty circle, compared exactly
 /// by [`SquaredRadius::cmp`].
 ///
-/// Kept as its defining points (for the exact stage, computed once on demand) and, when
-/// the filter can bound it, an approximation with a relative error bound.
+/// Kept as its defining points (for the exact stages, each computed once on demand) and,
+/// when the filter can bound it, an approximation with a relative error bound.
 #[derive(Debug, Clone)]
 pub(crate) struct SquaredRadius {
     circle: Circle,
     approx: Option<Approx>,
+    grid: OnceCell<Option<GridFactors>>,
     exact: OnceCell<Exact>,
 }
 
@@ -392,6 +395,7 @@ impl SquaredRadius {
         SquaredRadius {
             circle: Circle::Point,
             approx: None,
+            grid: OnceCell::new(),
             exact: OnceCell::new(),
         }
     }
@@ -424,6 +428,7 @@ impl SquaredRadius {
         SquaredRadius {
             circle: Circle::Crossing([p, q, s, w]),
             approx,
+            grid: OnceCell::new(),
             exact: OnceCell::new(),
         }
     }
@@ -443,7 +448,22 @@ impl SquaredRadius {
                 return order;
             }
         }
+        // Lattices tie everywhere (every triangle of a grid has the same circumradius):
+        // their factors are exact doubles, compared without big integers.
+        if let (Some(f1), Some(f2)) = (self.grid(), other.grid()) {
+            return f1.cmp(f2);
+        }
         self.exact().cmp(other.exact())
+    }
+
+    /// The exact factors of a lattice circumcircle, computed once on demand.
+    fn grid(&self) -> Option<&GridFactors> {
+        self.grid
+            .get_or_init(|| match self.circle {
+                Circle::Circumcircle(t) => GridFactors::new(t),
+                _ => None,
+            })
+            .as_ref()
     }
 
     fn exact(&self) -> &Exact {
@@ -540,6 +560,169 @@ impl Exact {
         }
         lhs.sub(&rhs).signum().cmp(&0)
     }
+}
+
+/// A circumcircle's squared radius `r² = la lb lc / (4 hd²) · 2^(−2k)` from factors that are
+/// exact doubles: in the triangle's frame (differences from `a` times `2^k`, the largest in
+/// `[1, 2)`, so `|c − b| < 4`) every difference is exact and a multiple of 2^-24, so it has
+/// at most 26 significant bits, its squares and products at most 52, and the sums of two
+/// of those (multiples of 2^-48 below 2^5) at most 53: nothing rounds. Integer grids and
+/// lattices at any scale and position qualify, triangle by triangle.
+#[derive(Debug, Clone, Copy)]
+struct GridFactors {
+    /// `|b − c|², |b − a|², |c − a|²` in increasing order and `|(b − a) × (c − a)|`, in
+    /// the frame.
+    l: [f64; 3],
+    hd: f64,
+    k: i32,
+}
+
+impl GridFactors {
+    fn new([a, b, c]: [Point2; 3]) -> Option<GridFactors> {
+        let pairs = [
+            (b.x, a.x),
+            (b.y, a.y),
+            (c.x, a.x),
+            (c.y, a.y),
+            (c.x, b.x),
+            (c.y, b.y),
+        ];
+        // Every difference exact (a finite difference with no rounding error), folded
+        // without branches: this runs on every tie of a lattice.
+        let mut exact = true;
+        let d = pairs.map(|(x, y)| {
+            let (v, err) = two_diff(x, y);
+            exact &= (err == 0.0) & v.is_finite();
+            v
+        });
+        let m = d[..4].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        if !exact || m == 0.0 {
+            return None;
+        }
+        let k = -exponent(m);
+        let mut grid = true;
+        let f = d.map(|v| {
+            let scaled = times_pow2(v, k);
+            // A multiple of 2^-24 (t < 2^26 since |scaled| < 4; adding 2^52 rounds t to an
+            // integer), and no nonzero difference lost to underflow.
+            let t = scaled.abs() * pow2(24);
+            grid &= ((t + pow2(52)) - pow2(52) == t) & ((scaled == 0.0) == (v == 0.0));
+            scaled
+        });
+        let [bx, by, cx, cy, ax, ay] = f;
+        let hd = (bx * cy - by * cx).abs();
+        if !grid || hd == 0.0 {
+            return None;
+        }
+        let mut l = [ax * ax + ay * ay, bx * bx + by * by, cx * cx + cy * cy];
+        // Sorted, so that congruent triangles have equal fields.
+        if l[0] > l[1] {
+            l.swap(0, 1);
+        }
+        if l[1] > l[2] {
+            l.swap(1, 2);
+        }
+        if l[0] > l[1] {
+            l.swap(0, 1);
+        }
+        Some(GridFactors { l, hd, k })
+    }
+
+    /// `l₁ l₂ l₃ hd'² 2^(−2k)` against `l'₁ l'₂ l'₃ hd² 2^(−2k')`: the squared radii with
+    /// the denominators cleared. Congruent triangles in frames of one scale (every triangle
+    /// of a grid) have equal fields and need no products.
+    fn cmp(&self, o: &GridFactors) -> Ordering {
+        if self.l == o.l && self.hd == o.hd && self.k == o.k {
+            return Ordering::Equal;
+        }
+        let [l1, l2, l3] = self.l;
+        let [m1, m2, m3] = o.l;
+        let lhs = [l1, l2, l3, o.hd, o.hd];
+        let rhs = [m1, m2, m3, self.hd, self.hd];
+        cmp_products(lhs, -2 * self.k, rhs, -2 * o.k)
+    }
+}
+
+/// Compares `Π lhs · 2^e₁` with `Π rhs · 2^e₂` for positive finite doubles, exactly: the
+/// products of the five odd mantissas in one `u128` when they fit (lattices: small odd
+/// parts), else of the five integer mantissas (at most 5 · 53 bits) in 64-bit limbs.
+fn cmp_products(lhs: [f64; 5], e1: i32, rhs: [f64; 5], e2: i32) -> Ordering {
+    /// The product of the odd parts and its exponent, if its bits (at most the sum of the
+    /// factors' lengths) fit.
+    fn odd_product(v: [f64; 5], e0: i32) -> Option<(u128, i32)> {
+        let (mut p, mut e, mut bits) = (1u128, e0, 0);
+        for x in v {
+            let (_, m, ex) = decompose(x);
+            let zeros = m.trailing_zeros();
+            let m = m >> zeros;
+            bits += 64 - m.leading_zeros();
+            if bits > 127 {
+                return None;
+            }
+            p *= m as u128;
+            e += ex + zeros as i32;
+        }
+        Some((p, e))
+    }
+    if let (Some((x, ex)), Some((y, ey))) = (odd_product(lhs, e1), odd_product(rhs, e2)) {
+        let top = |v: u128, e: i32| 128 - v.leading_zeros() as i32 + e;
+        return match top(x, ex).cmp(&top(y, ey)) {
+            // Equal tops: the shift is the length difference, so the result fits.
+            Ordering::Equal if ex >= ey => (x << (ex - ey)).cmp(&y),
+            Ordering::Equal => x.cmp(&(y << (ey - ex))),
+            order => order,
+        };
+    }
+    /// Little-endian limbs of the product and its exponent.
+    fn product(v: [f64; 5], e0: i32) -> ([u64; 5], i32) {
+        let mut limbs = [1u64, 0, 0, 0, 0];
+        let mut e = e0;
+        for x in v {
+            let (_, m, ex) = decompose(x);
+            let mut carry = 0u128;
+            for limb in limbs.iter_mut() {
+                let t = *limb as u128 * m as u128 + carry;
+                *limb = t as u64;
+                carry = t >> 64;
+            }
+            e += ex;
+        }
+        (limbs, e)
+    }
+    fn bits(l: &[u64; 5]) -> i32 {
+        (0..5)
+            .rev()
+            .find(|&i| l[i] != 0)
+            .map_or(0, |i| 64 * i as i32 + 64 - l[i].leading_zeros() as i32)
+    }
+    /// `l · 2^s`, known to fit.
+    fn shifted(l: &[u64; 5], s: i32) -> [u64; 5] {
+        let (words, bit) = ((s / 64) as usize, (s % 64) as u32);
+        let mut out = [0u64; 5];
+        for i in (words..5).rev() {
+            let lo = l[i - words] << bit;
+            let hi = if bit > 0 && i > words {
+                l[i - words - 1] >> (64 - bit)
+            } else {
+                0
+            };
+            out[i] = lo | hi;
+        }
+        out
+    }
+    let ((x, ex), (y, ey)) = (product(lhs, e1), product(rhs, e2));
+    // The leading bits' positions first; equal, the exponents differ by at most the
+    // products' length difference, and the shifted one still fits in five limbs.
+    match (bits(&x) + ex).cmp(&(bits(&y) + ey)) {
+        Ordering::Equal => {}
+        order => return order,
+    }
+    let (x, y) = if ex >= ey {
+        (shifted(&x, ex - ey), y)
+    } else {
+        (x, shifted(&y, ey - ex))
+    };
+    x.iter().rev().cmp(y.iter().rev())
 }
 
 /// A value and a bound on its distance to an exact real (midpoint–radius arithmetic): every
@@ -1128,6 +1311,197 @@ mod tests {
             flat.orient(o, diagonal),
             orient_oracle([a, b, c], o, diagonal)
         );
+    }
+
+    proptest! {
+        #![proptest_config(cases(300))]
+
+        #[test]
+        fn products_of_exact_doubles_compare_exactly(
+            // Full 53-bit mantissas (the limbs) or small odd parts (one u128).
+            v in proptest::array::uniform10(prop_oneof![1u64..1 << 53, 1u64..40]),
+            e in proptest::array::uniform10(-1074i32..971),
+            same in any::<bool>(),
+        ) {
+            // Positive doubles m · 2^e, the right side a permutation of the left (equal
+            // products) or arbitrary; the exponents of both sides are offset freely.
+            let x = |i: usize| scale_by_pow2(v[i] as f64, e[i].max(-1074 - 52 + 53) - 52);
+            let lhs = [x(0), x(1), x(2), x(3), x(4)];
+            let rhs = if same { [x(3), x(0), x(4), x(2), x(1)] } else { [x(5), x(6), x(7), x(8), x(9)] };
+            prop_assume!(lhs.iter().chain(&rhs).all(|&d| d > 0.0 && d.is_finite()));
+            let (e1, e2) = (e[5] % 300, e[6] % 300);
+            let exact = |f: [f64; 5], k: i32| {
+                f.iter().fold(q(1.0), |acc, &d| acc * q(d)) * q(2.0).pow(k)
+            };
+            prop_assert_eq!(cmp_products(lhs, e1, rhs, e2), exact(lhs, e1).cmp(&exact(rhs, e2)));
+        }
+
+        #[test]
+        fn grid_triangles_compare_exactly_without_big_integers(
+            t in proptest::array::uniform6(-(1i64 << 24)..(1 << 24)),
+            u in proptest::array::uniform6(-(1i64 << 24)..(1 << 24)),
+            small in any::<bool>(),
+            e in exponent_choice(),
+            shift in proptest::array::uniform2(-(1i64 << 30)..(1 << 30)),
+        ) {
+            // Integer triangles, spread up to 2^25 (the frame's spacing then reaches the
+            // 2^-24 limit) or within a few units, scaled by 2^e and translated by a
+            // multiple of it (exact).
+            let tri = |v: [i64; 6]| {
+                let r = |k: i64| if small { k % 7 } else { k };
+                let p = |x: i64, y: i64| Point2::new(
+                    scale_by_pow2((r(x) + shift[0]) as f64, e),
+                    scale_by_pow2((r(y) + shift[1]) as f64, e),
+                );
+                [p(v[0], v[1]), p(v[2], v[3]), p(v[4], v[5])]
+            };
+            let (t1, t2) = (tri(t), tri(u));
+            for t in [t1, t2] {
+                prop_assume!(super::super::orient2d(t[0], t[1], t[2]) != Orientation::Collinear);
+            }
+            let expected = radius_q(&Circle::Circumcircle(t1)).cmp(&radius_q(&Circle::Circumcircle(t2)));
+            if let (Some(f1), Some(f2)) = (GridFactors::new(t1), GridFactors::new(t2)) {
+                prop_assert_eq!(f1.cmp(&f2), expected);
+            } else {
+                // Only spreads beyond the 2^-24 spacing leave the grid path.
+                prop_assert!(!small);
+            }
+            let (a, b) = (squared_radius(&Circle::Circumcircle(t1)), squared_radius(&Circle::Circumcircle(t2)));
+            prop_assert_eq!(a.cmp(&b), expected);
+        }
+    }
+
+    /// Lattice points of x² + y² = R² for R the product of the primes `a² + b²` given by
+    /// their Gaussian factors `a + b i`: `Π (a + ε b i)²` for every choice of signs ε.
+    fn lattice_circle_of(primes: &[(i64, i64)]) -> (Vec<Point2>, i64) {
+        let r = primes.iter().map(|&(a, b)| a * a + b * b).product::<i64>();
+        let pts = (0..1u32 << primes.len())
+            .map(|signs| {
+                let (mut x, mut y) = (1i64, 0i64);
+                for (i, &(a, b)) in primes.iter().enumerate() {
+                    let b = if signs >> i & 1 == 1 { -b } else { b };
+                    // (a + b i)² = (a² − b²) + 2ab i
+                    let (u, v) = (a * a - b * b, 2 * a * b);
+                    (x, y) = (x * u - y * v, x * v + y * u);
+                }
+                assert_eq!(
+                    x as i128 * x as i128 + y as i128 * y as i128,
+                    (r as i128).pow(2)
+                );
+                (x as f64, y as f64)
+            })
+            // Every such point has x odd and y even or the other way round, the same for
+            // all; their mirror images in y = x have the other parity, so differences
+            // between the two kinds are odd: the finest spacing.
+            .flat_map(|(x, y)| [Point2::new(x, y), Point2::new(y, x)])
+            .collect();
+        (pts, r)
+    }
+
+    /// Triangles of points of one lattice circle, every one with the circle's radius.
+    fn circle_triangles(pts: &[Point2]) -> Vec<[Point2; 3]> {
+        let n = pts.len();
+        let triangles: Vec<[Point2; 3]> = (0..n / 3)
+            .map(|i| [pts[i], pts[i + n / 3 + 1], pts[i + 2 * n / 3]])
+            .filter(|t| super::super::orient2d(t[0], t[1], t[2]) != Orientation::Collinear)
+            .collect();
+        assert!(triangles.len() >= 5);
+        triangles
+    }
+
+    #[test]
+    fn circles_through_lattice_circles_tie() {
+        // R = 5 · 13 · 17 · 29 · 37 (about 2^20): differences within the grid path's
+        // spacing, which must find every tie by itself.
+        let (pts, r) = lattice_circle_of(&[(2, 1), (3, 2), (4, 1), (5, 2), (6, 1)]);
+        let triangles = circle_triangles(&pts);
+        let f0 = GridFactors::new(triangles[0]).expect("on the grid path");
+        for t in &triangles {
+            assert_eq!(radius_q(&Circle::Circumcircle(*t)), q((r * r) as f64));
+            let f = GridFactors::new(*t).expect("on the grid path");
+            assert_eq!(f.cmp(&f0), Ordering::Equal, "{t:?}");
+        }
+        // R = 5 · 13 · 17 · 29 · 37 · 41 (about 2^25.5): differences up to 2^26.5, beyond
+        // the spacing (where squared lengths would round), so the exact stage answers.
+        let (pts, r) = lattice_circle_of(&[(2, 1), (3, 2), (4, 1), (5, 2), (6, 1), (5, 4)]);
+        let triangles = circle_triangles(&pts);
+        let first = squared_radius(&Circle::Circumcircle(triangles[0]));
+        for t in &triangles {
+            let c = Circle::Circumcircle(*t);
+            assert_eq!(radius_q(&c), q(r as f64) * q(r as f64));
+            assert_eq!(squared_radius(&c).cmp(&first), Ordering::Equal, "{t:?}");
+        }
+    }
+
+    proptest! {
+        #![proptest_config(cases(1000))]
+
+        #[test]
+        fn grid_factors_agree_from_every_vertex(
+            a in proptest::array::uniform2(-(1i64 << 30)..(1 << 30)),
+            b in proptest::array::uniform2(-(1i64 << 26)..(1 << 26)),
+            c in proptest::array::uniform2(-(1i64 << 26)..(1 << 26)),
+            flat in any::<bool>(),
+        ) {
+            // One triangle listed from each vertex: three frames, one radius. Differences
+            // up to 2^26 reach beyond the spacing limit; `flat` makes the angle at `a`
+            // nearly straight, where |b − c|² is largest in the frame.
+            let c = if flat { [-b[0] + c[0] % 64, -b[1] + c[1] % 64] } else { c };
+            let p = |d: [i64; 2]| Point2::new((a[0] + d[0]) as f64, (a[1] + d[1]) as f64);
+            let t = [p([0, 0]), p(b), p(c)];
+            prop_assume!(super::super::orient2d(t[0], t[1], t[2]) != Orientation::Collinear);
+            let rotations = [t, [t[1], t[2], t[0]], [t[2], t[0], t[1]], [t[0], t[2], t[1]]];
+            let mut found = Vec::new();
+            for [a, b, c] in rotations {
+                let Some(f) = GridFactors::new([a, b, c]) else { continue };
+                // Every factor is the exact value in the frame.
+                let frame = q(2.0).pow(2 * f.k);
+                let [a, b, c] = [a, b, c].map(qp);
+                let mut l = [dist2(&b, &c), dist2(&a, &b), dist2(&a, &c)].map(|v| v * &frame);
+                l.sort();
+                prop_assert_eq!(f.l.map(q), l);
+                prop_assert_eq!(q(f.hd), cross(&a, &b, &c).abs() * &frame);
+                found.push(f);
+            }
+            for f in &found {
+                prop_assert_eq!(f.cmp(&found[0]), Ordering::Equal);
+            }
+        }
+    }
+
+    #[test]
+    fn products_with_equal_leading_bits_compare_by_their_tails() {
+        // a · 2^0 against b · 2^s for small odd a, b (the u128 path) and for mantissas
+        // of 53 bits (the limbs): the leading bits often coincide while the exponents
+        // differ, so the alignment decides.
+        for wide in [false, true] {
+            for a in (1u64..64).step_by(2) {
+                for b in (1u64..64).step_by(2) {
+                    for s in -3i32..=3 {
+                        // Three 53-bit factors exceed the u128.
+                        let m = |v: u64| if wide { (v << 47) + 1 } else { v } as f64;
+                        let lhs = [m(a), m(5), 1.0, m(3), 1.0];
+                        let rhs = [m(b), m(3), 1.0, m(5), 1.0];
+                        let expected = (q(m(a))).cmp(&(q(m(b)) * q(2.0).pow(s)));
+                        assert_eq!(cmp_products(lhs, 0, rhs, s), expected, "{a} {b} {s} {wide}");
+                        assert_eq!(cmp_products(rhs, s, lhs, 0), expected.reverse());
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn grid_factors_take_lattices_and_refuse_rounded_differences() {
+        let p = |x: f64, y: f64| Point2::new(x, y);
+        // A unit right triangle far from the origin: r² = 1/2 exactly.
+        let t = [p(1e15, 7.0), p(1e15 + 1.0, 7.0), p(1e15, 8.0)];
+        let f = GridFactors::new(t).expect("lattice");
+        assert_eq!((f.l, f.hd), ([1.0, 1.0, 2.0], 1.0));
+        // 1 − 2^-60 is not representable: the difference rounds, so no grid factors.
+        assert!(GridFactors::new([p(1.0, 0.0), p(2f64.powi(-60), 0.0), p(0.0, 1.0)]).is_none());
+        // A difference below 2^-24 of the largest cannot be a multiple of the spacing.
+        assert!(GridFactors::new([p(0.0, 0.0), p(1.0, 0.0), p(0.5, 2f64.powi(-30))]).is_none());
     }
 
     #[test]
