@@ -1,4 +1,14 @@
-//! The largest empty circle centred in the convex hull.
+//! The largest empty circle centred in the convex hull [RD, §2.4, problem 5]: the
+//! candidates are the Voronoi vertices inside the hull, the points where Voronoi edges
+//! cross the hull's boundary (found by walking along each hull edge from cell to cell) and
+//! the hull vertices; the largest is chosen by exact comparison of squared radii.
+//!
+//! Every decision is exact: the predicates on the constructed points (circumcentres against
+//! hull lines, the order of bisector crossings along a hull edge, squared radii) are in
+//! `geometry/circle_predicates.rs`. Only the returned centre and radius are rounded. The
+//! tests (`tests/empty_circle.rs`) check the answer against an exact brute force over all
+//! triples and all supporting segments: the circle is in the hull, empty, and of the
+//! largest squared radius.
 
 use super::construct::{circumcentre, distance, midpoint, scale_of};
 use super::incremental::incremental_with;
@@ -71,7 +81,7 @@ pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
 /// triangle order, then the crossings along the hull edges in hull order.
 ///
 /// The centre and the radius are rounded constructions (decisions never depend on them):
-/// the circumcentre as in [`voronoi`](super::voronoi), the crossing point as
+/// the circumcentre as in [`voronoi`](fn@super::voronoi), the crossing point as
 /// `p + t (q − p)`, and the radius from coordinate differences scaled by a power of two
 /// (`R = |bc| / (2 sin A)`, or the length of the vector from the site to the crossing), so
 /// it keeps its relative accuracy at any magnitude and any position; it loses accuracy

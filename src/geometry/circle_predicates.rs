@@ -38,11 +38,18 @@
 //!    neither 1e300 nor 1e-300 defeats them. Squared radii are kept as a mantissa, a
 //!    separate exponent and a relative error, and compared without ever forming `r²` in
 //!    range-limited floating point.
-//! 2. **Exact stage.** Every double is written `m · 2^e` with integer `m`, all are brought to
+//! 2. **Lattice ties.** Every triangle of a grid has the same circumradius, so on lattices
+//!    nearly every radius comparison is an exact tie. When a triangle's differences, in
+//!    its own frame, are exact multiples of 2^-24, every factor of its squared radius is an
+//!    exact double ([`GridFactors`]), and two such radii are compared from the factors
+//!    (equal factors, or the products of their mantissas in integers) without big
+//!    integers.
+//! 3. **Exact stage.** Every double is written `m · 2^e` with integer `m`, all are brought to
 //!    the smallest exponent, and the polynomial is evaluated in the crate's big integers
-//!    (`bigint.rs`). It is needed only for near ties, exact ties (grids, cocircular
-//!    lattices, Voronoi vertices exactly on the hull) and operands whose exponents span too
-//!    much for the filter.
+//!    (`bigint.rs`), once per candidate for the squared radii (cached). It is needed only
+//!    for near ties, the other exact ties (cocircular lattices of large coordinates,
+//!    Voronoi vertices exactly on the hull) and operands whose exponents span too much for
+//!    the filter.
 //!
 //! Overflow in a filter gives `inf` or NaN, which never clears a bound (every test is
 //! written `value > bound`), and underflow is covered by an absolute slack (`2^-1000`, a
