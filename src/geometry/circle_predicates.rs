@@ -858,9 +858,14 @@ fn times_pow2(v: f64, k: i32) -> f64 {
 }
 
 /// Every coordinate as an exact big integer, all scaled by `2^-base` for the least exponent
-/// `base` of their last bits (0 if all are zero).
+/// `base` of their last nonzero bits (0 if all are zero): integer coordinates stay
+/// themselves, so the products stay short.
 fn exact_coords<const N: usize>(coords: [f64; N]) -> ([BigInt; N], i32) {
-    let parts = coords.map(decompose);
+    let parts = coords.map(|v| {
+        let (negative, m, e) = decompose(v);
+        let zeros = if m == 0 { 0 } else { m.trailing_zeros() };
+        (negative, m >> zeros, e + zeros as i32)
+    });
     let base = parts
         .iter()
         .filter(|&&(_, m, _)| m != 0)
