@@ -5,7 +5,7 @@
 //!
 //! Every decision is exact: the predicates on the constructed points (circumcentres against
 //! hull lines, the order of bisector crossings along a hull edge, squared radii) are in
-//! `geometry/circle_predicates.rs`. Only the returned centre and radius are rounded. The
+//! `geometry/circle_predicates/`. Only the returned centre and radius are rounded. The
 //! tests (`tests/empty_circle.rs`) check the answer against an exact brute force over all
 //! triples and all supporting segments: the circle is in the hull, empty, and of the
 //! largest squared radius.
@@ -71,7 +71,7 @@ pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
 /// bisector of s and a Delaunay neighbour it approaches, moves into that neighbour's cell,
 /// and records the crossing, until q's cell.
 ///
-/// Every decision is exact for every finite input (`geometry/circle_predicates.rs`): the
+/// Every decision is exact for every finite input (`geometry/circle_predicates/`): the
 /// triangulation and the hull; whether the exact (rational) circumcentre lies in the
 /// closed hull; which neighbour's bisector a walk crosses first, and so which cell it
 /// enters; and which candidate has the largest radius, by exact comparison of squared
