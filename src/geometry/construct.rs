@@ -67,18 +67,21 @@ fn circumcentre_scaled(a: Point2, b: Point2, c: Point2) -> Point2 {
         (a, b, c)
     };
     let (bx, by, cx, cy, half) = differences(a, b, c);
-    let s = scale_of(bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs()));
-    let (bx, by, cx, cy) = (bx / s, by / s, cx / s, cy / s);
+    // Each edge scaled by its own power of two: in a common scale a short edge next to a
+    // long one (1e-300 beside 1e300) would underflow to nothing. The offset is
+    // (cy |b|² − by |c|², bx |c|² − cx |b|²) / (2 b × c), and each of its terms is
+    // linear in one edge's scale once the determinant's two scales cancel.
+    let sb = scale_of(bx.abs().max(by.abs()));
+    let sc = scale_of(cx.abs().max(cy.abs()));
+    let (bx, by, cx, cy) = (bx / sb, by / sb, cx / sc, cy / sc);
     let b2 = bx * bx + by * by;
     let c2 = cx * cx + cy * cy;
     // The triangle is counter-clockwise, so the exact determinant is positive; a rounded
     // one that is not only means the triangle is very flat and the centre very far.
     let d = (2.0 * (bx * cy - by * cx)).max(f64::MIN_POSITIVE);
-    let ux = (cy * b2 - by * c2) / d;
-    let uy = (bx * c2 - cx * b2) / d;
     Point2::new(
-        clamp(offset(a.x, ux, s, half)),
-        clamp(offset(a.y, uy, s, half)),
+        clamp(offset(a.x, cy * b2 / d, sb, by * c2 / d, sc, half)),
+        clamp(offset(a.y, -(cx * b2 / d), sb, -(bx * c2 / d), sc, half)),
     )
 }
 
@@ -150,18 +153,19 @@ pub(crate) fn scale_of(m: f64) -> f64 {
     f64::from_bits(((e.clamp(-1022, 1023) + 1023) as u64) << 52)
 }
 
-/// `base + u * s` (times 2 if `half`) without an intermediate overflow where the result is
-/// representable.
-fn offset(base: f64, u: f64, s: f64, half: bool) -> f64 {
+/// `base + (p sp − q sq)` (times 2 if `half`: then the differences were halved) without
+/// an intermediate overflow where the result is representable.
+fn offset(base: f64, p: f64, sp: f64, q: f64, sq: f64, half: bool) -> f64 {
+    let u = p * sp - q * sq;
     if half {
-        return 2.0 * (base / 2.0 + u * s);
+        return 2.0 * (base / 2.0 + u);
     }
-    let r = base + u * s;
-    if r.is_finite() || !u.is_finite() {
+    let r = base + u;
+    if r.is_finite() {
         return r;
     }
-    // `u * s` overflowed but the sum may not: add the halves.
-    2.0 * (base / 2.0 + u * (s / 2.0))
+    // The offset or the sum overflowed, but the result may not: add the halves.
+    2.0 * (base / 2.0 + (p * (sp / 2.0) - q * (sq / 2.0)))
 }
 
 fn clamp(v: f64) -> f64 {
@@ -208,6 +212,15 @@ mod tests {
         assert_eq!(unit_direction(p(-m, 0.0), p(m, 0.0)), p(1.0, 0.0));
         assert_eq!(distance(p(-m, 0.0), p(m, 0.0)), f64::INFINITY);
         assert_eq!(distance(p(-m / 2.0, 0.0), p(m / 2.0, 0.0)), m);
+    }
+
+    #[test]
+    fn a_short_edge_beside_a_long_one_keeps_its_centre() {
+        // Isosceles about y = x with apex (1e300, 1e300): the centre is near
+        // (5e299, 5e299), found from the vertex where the 1e-300 edge meets a long one.
+        let c = circumcentre(p(1e-300, 0.0), p(1e300, 1e300), p(0.0, 1e-300));
+        assert!((c.x / 5e299 - 1.0).abs() < 1e-15, "{c:?}");
+        assert!((c.y / 5e299 - 1.0).abs() < 1e-15, "{c:?}");
     }
 
     #[test]

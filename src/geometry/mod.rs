@@ -16,11 +16,16 @@
 //! | [`cmp_rect_area`] | which of two rectangles on given lines is smaller? | 6 |
 //! | [`cmp_lex`] | lexicographic (x, then y) order | 1 |
 //!
+//! Crate-internal modules hold the predicates on constructed points of single algorithms:
+//! `sweep_predicates` (Fortune's sweep) and `circle_predicates` (the largest empty circle:
+//! circumcentres against hull lines, bisector crossings along a hull edge, squared radii).
+//!
 //! How exactness is achieved for inputs of any magnitude is described in `docs/design.md`.
 //! [`CountedPredicates`] gives every predicate a counted form for use with a
 //! [`Counter`](crate::count::Counter).
 
 mod bigint;
+pub(crate) mod circle_predicates;
 pub(crate) mod construct;
 mod counted;
 mod expansion;

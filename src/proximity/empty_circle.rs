@@ -1,11 +1,25 @@
-//! The largest empty circle centred in the convex hull.
+//! The largest empty circle centred in the convex hull [RD, §2.4, problem 5]: the
+//! candidates are the Voronoi vertices inside the hull, the points where Voronoi edges
+//! cross the hull's boundary (found by walking along each hull edge from cell to cell) and
+//! the hull vertices; the largest is chosen by exact comparison of squared radii.
+//!
+//! Every decision is exact: the predicates on the constructed points (circumcentres against
+//! hull lines, the order of bisector crossings along a hull edge, squared radii) are in
+//! `geometry/circle_predicates/`. Only the returned centre and radius are rounded. The
+//! tests (`tests/suite/empty_circle.rs`) check the answer against an exact brute force over all
+//! triples and all supporting segments: the circle is in the hull, empty, and of the
+//! largest squared radius.
 
 use super::{adjacency, delaunay_edges};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::delaunay::{incremental_with, Triangulation};
 use crate::error::Result;
+use crate::geometry::circle_predicates::{
+    cmp_bisector_crossings, dot_sign, Circumcentre, CountedCirclePredicates, SquaredRadius,
+};
 use crate::geometry::construct::{circumcentre, distance, midpoint, scale_of};
+use crate::geometry::sweep_predicates::normalize_scale;
 use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
 use std::cmp::Ordering;
 
@@ -67,22 +81,31 @@ pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
 /// The largest circle whose centre lies in the convex hull of `points` and which holds no
 /// point strictly inside, counting its predicates.
 ///
-/// The idea ([RD, §2.4], problem 5 "Mayor círculo vacío"): the
-/// distance f(x) from x to its nearest point is maximal over the hull at a vertex of the
-/// polygons Vor(S) ∩ CH(S): a Voronoi vertex inside the hull, a point where a Voronoi edge
-/// crosses the hull's boundary, or a hull vertex (where f = 0). Voronoi vertices are the
-/// triangles' circumcentres, tested against the hull. The crossings are found by walking
-/// along every hull edge p → q from p's cell: within the cell of site s the walk leaves at
-/// the first bisector of s and a Delaunay neighbour it reaches, moves into that
-/// neighbour's cell, and records the crossing, until q's cell.
+/// The idea ([RD, §2.4], problem 5 "Mayor círculo vacío"): the distance f(x) from x to its
+/// nearest point is maximal over the hull at a vertex of the polygons Vor(S) ∩ CH(S): a
+/// Voronoi vertex inside the hull, a point where a Voronoi edge crosses the hull's
+/// boundary, or a hull vertex (where f = 0). Voronoi vertices are the triangles'
+/// circumcentres, tested against the hull. The crossings are found by walking along every
+/// hull edge p → q from p's cell: within the cell of site s the walk leaves at the first
+/// bisector of s and a Delaunay neighbour it approaches, moves into that neighbour's cell,
+/// and records the crossing, until q's cell.
 ///
-/// Exact and rounded parts: the triangulation and the hull are exact; the circumcentres
-/// and crossing points are rounded constructions (on coordinates scaled by a power of two,
-/// so nothing overflows); whether a rounded circumcentre lies in the hull is decided
-/// exactly (orientation tests against the hull), which cell a walk enters next and which
-/// candidate has the largest radius are decided on rounded values. The radius is
-/// therefore within a few rounding errors (relative to the configuration's size) of the
-/// true maximum, and ties between equal circles go to any of them.
+/// Every decision is exact for every finite input (`geometry/circle_predicates/`): the
+/// triangulation and the hull; whether the exact (rational) circumcentre lies in the
+/// closed hull; which neighbour's bisector a walk crosses first, and so which cell it
+/// enters; and which candidate has the largest radius, by exact comparison of squared
+/// radii across all three kinds. So the circle returned is a true maximum, and it is empty.
+/// Among several equally large circles the first found wins: hull vertex `hull[0]` (only
+/// if every candidate has radius 0), then the Voronoi vertices in the triangulation's
+/// triangle order, then the crossings along the hull edges in hull order.
+///
+/// The centre and the radius are rounded constructions (decisions never depend on them):
+/// the circumcentre as in [`voronoi`](fn@super::voronoi), the crossing point as
+/// `p + t (q − p)`, and the radius from coordinate differences scaled by a power of two
+/// (`R = |bc| / (2 sin A)`, or the length of the vector from the site to the crossing), so
+/// it keeps its relative accuracy at any magnitude and any position; it loses accuracy
+/// only with the conditioning of the configuration (a nearly flat triangle, a crossing
+/// almost along its bisector).
 ///
 /// Degenerate input: for collinear points the hull is a segment and the answer is the
 /// midpoint of the widest gap between consecutive points (exact comparison of gaps); a
@@ -98,8 +121,9 @@ pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
 /// O(nh) in the worst case. O(n) space.
 ///
 /// # Counts
-/// The triangulation's orientation and in-circle tests, the orientation tests of the hull
-/// tests and the distance evaluations of the collinear case.
+/// The triangulation's orientation and in-circle tests, one orientation test per step of
+/// the hull tests, and the distance evaluations of the collinear case. The walks' and the
+/// radius comparisons' predicates are not counted.
 pub fn largest_empty_circle_with<C: Counter>(
     points: &PointSet<'_>,
     counter: &mut C,
@@ -109,32 +133,79 @@ pub fn largest_empty_circle_with<C: Counter>(
     if t.is_empty() {
         return Ok(widest_gap(points, &t.hull, counter));
     }
-    // A hull vertex (f = 0) is the fallback candidate.
-    let mut best = EmptyCircle {
-        centre: points[t.hull[0]],
-        radius: 0.0,
-        sites: vec![t.hull[0]],
-    };
-    let mut offer = |c: EmptyCircle| {
-        if c.radius > best.radius {
-            best = c;
+    // Decide on a copy scaled by one exact power of two (when one exists) that puts the
+    // largest magnitude near 1: every predicate is invariant under it, and the filters then
+    // work far from overflow and underflow. Build the answer from the input itself.
+    let mut scaled = points.to_vec();
+    normalize_scale(&mut scaled);
+    Ok(largest_candidate(&scaled, &t, counter).circle(points))
+}
+
+/// A candidate centre: where f is locally maximal over the hull.
+#[derive(Debug, Clone, Copy)]
+enum Candidate {
+    /// A hull vertex (radius 0).
+    HullVertex(usize),
+    /// The circumcentre of a triangle (counter-clockwise vertex indices).
+    VoronoiVertex([usize; 3]),
+    /// Where the hull edge `edge[0] → edge[1]` crosses the bisector of `sites[0]` (the
+    /// cell the walk leaves) and `sites[1]` (the cell it enters).
+    Crossing { edge: [usize; 2], sites: [usize; 2] },
+}
+
+/// The candidate with the largest exact squared radius (the first of equal ones).
+fn largest_candidate<C: Counter>(p: &[Point2], t: &Triangulation, counter: &mut C) -> Candidate {
+    let mut best = (Candidate::HullVertex(t.hull[0]), SquaredRadius::zero());
+    let mut offer = |candidate: Candidate, r2: SquaredRadius| {
+        if r2.cmp(&best.1) == Ordering::Greater {
+            best = (candidate, r2);
         }
     };
     for tri in t.triangles.chunks_exact(3) {
-        let (a, b, c) = (points[tri[0]], points[tri[1]], points[tri[2]]);
-        let centre = circumcentre(a, b, c);
-        if in_hull(points, &t.hull, centre, counter) {
-            offer(EmptyCircle {
-                centre,
-                radius: distance(centre, a),
-                sites: tri.to_vec(),
-            });
+        let x = Circumcentre::new(p[tri[0]], p[tri[1]], p[tri[2]]);
+        if in_hull(p, &t.hull, &x, counter) {
+            offer(
+                Candidate::VoronoiVertex([tri[0], tri[1], tri[2]]),
+                x.squared_radius(),
+            );
         }
     }
-    for c in boundary_crossings(points, &t) {
-        offer(c);
+    for (edge, sites) in boundary_crossings(p, t) {
+        let r2 = SquaredRadius::crossing(p[edge[0]], p[edge[1]], p[sites[0]], p[sites[1]]);
+        offer(Candidate::Crossing { edge, sites }, r2);
     }
-    Ok(best)
+    best.0
+}
+
+impl Candidate {
+    /// The candidate's circle on the input points: rounded centre and radius.
+    fn circle(self, points: &[Point2]) -> EmptyCircle {
+        match self {
+            Candidate::HullVertex(i) => EmptyCircle {
+                centre: points[i],
+                radius: 0.0,
+                sites: vec![i],
+            },
+            Candidate::VoronoiVertex(tri) => {
+                let [a, b, c] = tri.map(|i| points[i]);
+                EmptyCircle {
+                    centre: circumcentre(a, b, c),
+                    radius: circumradius(a, b, c),
+                    sites: tri.to_vec(),
+                }
+            }
+            Candidate::Crossing { edge, sites } => {
+                let [p, q] = edge.map(|i| points[i]);
+                let [s, w] = sites.map(|i| points[i]);
+                let (centre, radius) = crossing_circle(p, q, s, w);
+                EmptyCircle {
+                    centre,
+                    radius,
+                    sites: vec![sites[0].min(sites[1]), sites[0].max(sites[1])],
+                }
+            }
+        }
+    }
 }
 
 /// Collinear points (or one): the midpoint of the widest gap along the line.
@@ -162,13 +233,14 @@ fn widest_gap<C: Counter>(points: &[Point2], line: &[usize], c: &mut C) -> Empty
     }
 }
 
-/// Whether `x` is in the closed convex polygon `hull` (counter-clockwise, at least three
-/// points, not all collinear): a binary search in the fan from `hull[0]`.
-fn in_hull<C: Counter>(p: &[Point2], hull: &[usize], x: Point2, c: &mut C) -> bool {
+/// Whether the exact circumcentre `x` is in the closed convex polygon `hull`
+/// (counter-clockwise, at least three points, not all collinear): a binary search in the
+/// fan from `hull[0]`, one counted orientation test per step.
+fn in_hull<C: Counter>(p: &[Point2], hull: &[usize], x: &Circumcentre, c: &mut C) -> bool {
     let h0 = p[hull[0]];
     let last = hull.len() - 1;
-    if c.orient2d(h0, p[hull[1]], x) == Orientation::Clockwise
-        || c.orient2d(h0, p[hull[last]], x) == Orientation::CounterClockwise
+    if c.orient_circumcentre(h0, p[hull[1]], x) == Orientation::Clockwise
+        || c.orient_circumcentre(h0, p[hull[last]], x) == Orientation::CounterClockwise
     {
         return false;
     }
@@ -177,67 +249,133 @@ fn in_hull<C: Counter>(p: &[Point2], hull: &[usize], x: Point2, c: &mut C) -> bo
     let (mut lo, mut hi) = (1, last);
     while hi - lo > 1 {
         let mid = (lo + hi) / 2;
-        if c.orient2d(h0, p[hull[mid]], x) == Orientation::Clockwise {
+        if c.orient_circumcentre(h0, p[hull[mid]], x) == Orientation::Clockwise {
             hi = mid;
         } else {
             lo = mid;
         }
     }
-    c.orient2d(p[hull[lo]], p[hull[hi]], x) != Orientation::Clockwise
+    c.orient_circumcentre(p[hull[lo]], p[hull[hi]], x) != Orientation::Clockwise
 }
 
-/// The points where the hull's boundary crosses Voronoi edges, with their circles.
-fn boundary_crossings(points: &[Point2], t: &Triangulation) -> Vec<EmptyCircle> {
+/// The points where the hull's boundary crosses Voronoi edges, in hull order, each as the
+/// hull edge and the two sites (the cell left, the cell entered).
+///
+/// On hull edge p → q the walk is in the cell of site s at a point x(t) = p + t (q − p)
+/// of that cell (first s = p, t = 0). Moving on, it stays in the cell until it reaches
+/// the bisector of s and a Delaunay neighbour w it approaches ((q − p) · (w − s) > 0),
+/// at the least such parameter, decided exactly; that point is in w's cell too, so the
+/// walk records it and continues in w's cell. Each step increases (q − p) · s strictly,
+/// so the walk ends, and only in q's cell: q itself is in no other cell. At a Voronoi
+/// vertex on the edge several bisectors cross at one parameter; the walk then passes the
+/// cells around that vertex one by one, each step a crossing of radius equal to the
+/// vertex's.
+fn boundary_crossings(points: &[Point2], t: &Triangulation) -> Vec<([usize; 2], [usize; 2])> {
     let (offsets, neighbours) = adjacency(points.len(), &delaunay_edges(t));
-    // Work in coordinates scaled to at most 1 by a power of two: squares stay finite.
-    let s = scale_of(
-        t.hull
-            .iter()
-            .map(|&i| points[i].x.abs().max(points[i].y.abs()))
-            .fold(0.0, f64::max),
-    ) * 2.0;
-    let sc = |i: usize| Point2::new(points[i].x / s, points[i].y / s);
     let mut out = Vec::new();
     let h = t.hull.len();
     for k in 0..h {
         let (pi, qi) = (t.hull[k], t.hull[(k + 1) % h]);
-        let (p, q) = (sc(pi), sc(qi));
-        let (dx, dy) = (q.x - p.x, q.y - p.y);
+        let (p, q) = (points[pi], points[qi]);
         let mut site = pi;
-        let mut at = 0.0f64;
-        // Each step moves to a cell further along the edge; the bound stops a walk that
-        // rounding would otherwise keep at one parameter.
-        for _ in 0..points.len() {
-            let sp = sc(site);
-            let mut next: Option<(f64, usize)> = None;
+        while site != qi {
+            let s = points[site];
+            let mut next: Option<usize> = None;
             for &w in &neighbours[offsets[site]..offsets[site + 1]] {
-                let wp = sc(w);
-                let (ux, uy) = (wp.x - sp.x, wp.y - sp.y);
-                let towards = dx * ux + dy * uy;
-                if towards <= 0.0 {
-                    continue;
-                }
-                let (mx, my) = ((wp.x + sp.x) / 2.0 - p.x, (wp.y + sp.y) / 2.0 - p.y);
-                let cross_at = (ux * mx + uy * my) / towards;
-                if cross_at >= at && next.is_none_or(|(best, _)| cross_at < best) {
-                    next = Some((cross_at, w));
+                let wp = points[w];
+                if dot_sign(p, q, s, wp) == Ordering::Greater
+                    && next.is_none_or(|v| {
+                        cmp_bisector_crossings(p, q, s, wp, points[v]) == Ordering::Less
+                    })
+                {
+                    next = Some(w);
                 }
             }
-            let Some((cross_at, w)) = next.filter(|&(c, _)| c < 1.0) else {
-                break;
-            };
-            let x = Point2::new(p.x + cross_at * dx, p.y + cross_at * dy);
-            let centre = Point2::new(x.x * s, x.y * s);
-            out.push(EmptyCircle {
-                centre,
-                radius: distance(centre, points[site]),
-                sites: vec![site.min(w), site.max(w)],
-            });
+            let w = next.expect("a cell other than q's is left before q");
+            out.push(([pi, qi], [site, w]));
             site = w;
-            at = cross_at;
         }
     }
     out
+}
+
+/// The radius of the circumcircle of `a, b, c` (not collinear): `|bc| / (2 sin A)` at the
+/// vertex opposite the longest edge (the largest angle, whose sine is the largest), with
+/// the sine from the two edges at that vertex, each scaled by its own power of two, so no
+/// magnitude overflows or underflows. Clamped to `f64::MAX`.
+fn circumradius(a: Point2, b: Point2, c: Point2) -> f64 {
+    let len2 = |u: Point2, v: Point2| (v.x - u.x).powi(2) + (v.y - u.y).powi(2);
+    // A numerical choice on rounded lengths (a near tie means either is as accurate).
+    let (o, u, v) = {
+        let (ab, bc, ca) = (len2(a, b), len2(b, c), len2(c, a));
+        if ab >= bc && ab >= ca {
+            (c, a, b)
+        } else if bc >= ca {
+            (a, b, c)
+        } else {
+            (b, c, a)
+        }
+    };
+    let unit = |p: Point2| {
+        let (mut dx, mut dy) = (p.x - o.x, p.y - o.y);
+        if !(dx.is_finite() && dy.is_finite()) {
+            (dx, dy) = (p.x / 2.0 - o.x / 2.0, p.y / 2.0 - o.y / 2.0);
+        }
+        let s = scale_of(dx.abs().max(dy.abs()));
+        (dx / s, dy / s)
+    };
+    let ((ux, uy), (vx, vy)) = (unit(u), unit(v));
+    let cross = (ux * vy - uy * vx).abs();
+    // The scale-free ratio first: a subnormal distance must not meet a product of
+    // scaled lengths before the division.
+    let r = distance(u, v) * (ux.hypot(uy) * vx.hypot(vy) / (2.0 * cross));
+    if r.is_nan() {
+        f64::MAX
+    } else {
+        r.min(f64::MAX)
+    }
+}
+
+/// The centre and radius of the crossing circle of hull edge `p → q` and the bisector of
+/// `s` and `w`: t = ((m − p) · u) / ((q − p) · u) with u = w − s and m = (s + w) / 2, on
+/// differences scaled by one power of two (t is scale-free), the centre p + t (q − p) and
+/// the radius |p − s + t (q − p)| in the scaled frame, scaled back.
+fn crossing_circle(p: Point2, q: Point2, s: Point2, w: Point2) -> (Point2, f64) {
+    let coords = [p, q, s, w];
+    // Halve every coordinate if a difference overflows (a rounding only for subnormals).
+    let half = coords
+        .iter()
+        .flat_map(|a| coords.iter().map(move |b| (a, b)))
+        .any(|(a, b)| !((a.x - b.x).is_finite() && (a.y - b.y).is_finite()));
+    let h = if half { 0.5 } else { 1.0 };
+    let [hp, hq, hs, hw] = coords.map(|a| Point2::new(a.x * h, a.y * h));
+    let d = [
+        hq.x - hp.x,
+        hq.y - hp.y,
+        hw.x - hs.x,
+        hw.y - hs.y,
+        hw.x - hp.x,
+        hw.y - hp.y,
+        hs.x - hp.x,
+        hs.y - hp.y,
+    ];
+    let sc = scale_of(d.iter().fold(0.0f64, |m, v| m.max(v.abs())));
+    let [gx, gy, ux, uy, dwx, dwy, dsx, dsy] = d.map(|v| v / sc);
+    let t = (ux * (dwx + dsx) + uy * (dwy + dsy)) / (2.0 * (gx * ux + gy * uy));
+    // The exact t is in [0, 1]; a rounded one just outside is clamped (NaN, from a
+    // rounded denominator 0, to the start).
+    let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+    let along = |a: f64, b: f64| {
+        let x = a + t * (b - a);
+        if x.is_finite() {
+            x
+        } else {
+            2.0 * (a / 2.0 + t * (b / 2.0 - a / 2.0))
+        }
+    };
+    let centre = Point2::new(along(p.x, q.x), along(p.y, q.y));
+    let radius = (t * gx - dsx).hypot(t * gy - dsy) * sc / h;
+    (centre, radius.min(f64::MAX))
 }
 
 #[cfg(test)]

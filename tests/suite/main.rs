@@ -17,6 +17,7 @@ mod complexity;
 mod degenerate;
 mod delaunay;
 mod delaunay_builders;
+mod empty_circle;
 mod fortune;
 mod frenet;
 mod gen;
