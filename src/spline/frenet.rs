@@ -152,10 +152,15 @@ pub fn frenet_frame<S: Scalar, const D: usize>(
     let mut residuals: Vec<Point<S, D>> = Vec::with_capacity(r);
     let mut squares: Vec<S> = Vec::with_capacity(r);
     for x in &derivatives[..r] {
+        // Modified Gram–Schmidt, run twice: in f64 one classical pass loses orthogonality
+        // when the derivatives are nearly dependent ("twice is enough"); with rationals the
+        // second pass subtracts exact zeros.
         let mut e = x.clone();
-        for (ej, sj) in residuals.iter().zip(&squares) {
-            let c = x.dot(ej) / sj;
-            e -= &(ej.clone() * &c);
+        for _ in 0..2 {
+            for (ej, sj) in residuals.iter().zip(&squares) {
+                let c = e.dot(ej) / sj;
+                e -= &(ej.clone() * &c);
+            }
         }
         let s = e.norm_squared();
         if s.is_zero() {

@@ -51,6 +51,35 @@ fn helix_has_the_textbook_curvature_and_torsion() {
 }
 
 #[test]
+fn nearly_dependent_derivatives_still_give_an_orthonormal_frame() {
+    // x'' ≈ −2 x' here; one classical Gram–Schmidt pass left the frame 1e-8 off orthogonal.
+    let b = Bezier::new(vec![
+        Point::new([-1.0, 15.0, 3.0]),
+        Point::new([0.0, 0.0, 0.0]),
+        Point::new([0.0, 1.0, 0.0]),
+        Point::new([-1.0, 0.0, 3.0]),
+    ])
+    .unwrap();
+    let v: Vec<[f64; 3]> = bezier_frenet(&b, &0.0)
+        .unwrap()
+        .vectors()
+        .iter()
+        .map(|p| p.0)
+        .collect();
+    assert_eq!(v.len(), 3);
+    for i in 0..3 {
+        for j in 0..3 {
+            let want = if i == j { 1.0 } else { 0.0 };
+            assert!(
+                (dot3(v[i], v[j]) - want).abs() < 1e-12,
+                "{i} {j}: {}",
+                dot3(v[i], v[j])
+            );
+        }
+    }
+}
+
+#[test]
 fn plane_curvature_is_signed_by_the_turn() {
     // A circle of radius 3 run counter-clockwise and clockwise.
     let ccw = frenet_frame(&[Point::new([0.0, 3.0]), Point::new([-3.0, 0.0])]).unwrap();
