@@ -1,8 +1,8 @@
-//! Benchmarks of `compgeo::hull` and `compgeo::calipers` against the `geo` crate's
-//! `ConvexHull` (Quickhull) and `graham_hull`, in the same groups, over log-spaced sizes:
-//! uniform points in a square (few hull vertices), points on a circle (every point a vertex)
-//! and collinear points (the degenerate case). The diameter group compares the hull alone
-//! with hull + calipers.
+//! Benchmarks of `compgeo::hull` against the `geo` crate's `ConvexHull` (Quickhull) and
+//! `graham_hull`, in the same groups, over log-spaced sizes: uniform points in a square (few
+//! hull vertices), points on a circle (every point a vertex) and collinear points (the
+//! degenerate case). The diameter group (the hull alone against hull + calipers) is in
+//! `benches/calipers.rs`, with its ids and inputs unchanged.
 //!
 //! Run one group with e.g. `cargo bench --bench hull -- hull/uniform-square`.
 //!
@@ -13,9 +13,6 @@
 //! | uniform-square, 10⁶ | akl-toussaint 4.6–5.1 ms | 33–34 ms | 6.7–7.3× |
 //! | cocircular (h = n), 10⁵ | monotone-chain 12.4–14.7 ms | 24.8–29.8 ms | 2.0× |
 //! | collinear, 10⁵ | quickhull 5.2 ms | 4.9 ms | 0.95× |
-//!
-//! Diameter of 10⁶ uniform points: hull + calipers 5.25 ms against 4.86 ms for the hull
-//! alone (1.08×).
 //!
 //! After the hull's sort moved to integer keys and the chains stopped copying (2026-11-23),
 //! same machine, other builds running (geo's own time varied 2–3× between runs, so compare
@@ -29,13 +26,10 @@
 //! | uniform-square, 10⁶ | chan 459 ms | 77 ms | 0.17× |
 //!
 //! An earlier run of the same code under heavier load: monotone-chain 23.4 ms against geo's
-//! 78.7 ms on the circle (3.4×). Diameter of 10⁶ uniform points: hull + calipers 15.9 ms
-//! against 14.8 ms for the hull alone (1.08×). Chan's algorithm is here for its bound, not
-//! its speed: it rebuilds the group hulls for every guess of h (m = 4, 16, 256, 65 536), and
-//! on 10⁵ points on a circle the round with m = 65 536 runs 65 536 wrapping steps before it
-//! gives up.
+//! 78.7 ms on the circle (3.4×). Chan's algorithm is here for its bound, not its speed: it
+//! rebuilds the group hulls for every guess of h (m = 4, 16, 256, 65 536), and on 10⁵ points
+//! on a circle the round with m = 65 536 runs 65 536 wrapping steps before it gives up.
 
-use compgeo::calipers::{diameter, DiameterAlgorithm};
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::Point2;
 use compgeo::hull::{convex_hull, Algorithm, HullOptions};
@@ -108,30 +102,5 @@ fn hulls(c: &mut Criterion) {
     }
 }
 
-fn diameters(c: &mut Criterion) {
-    let mut group = c.benchmark_group("diameter/uniform-square");
-    group
-        .sample_size(10)
-        .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(2));
-    for n in [10_000, 1_000_000] {
-        let pts = points(PointKind::UniformSquare, n, SEED).expect("generator");
-        group.throughput(Throughput::Elements(n as u64));
-        group.bench_with_input(BenchmarkId::new("hull-alone", n), &pts, |b, pts| {
-            b.iter(|| {
-                convex_hull(
-                    black_box(pts),
-                    Algorithm::AklToussaint,
-                    HullOptions::default(),
-                )
-            })
-        });
-        group.bench_with_input(BenchmarkId::new("hull+calipers", n), &pts, |b, pts| {
-            b.iter(|| diameter(black_box(pts), DiameterAlgorithm::Calipers))
-        });
-    }
-    group.finish();
-}
-
-criterion_group!(benches, hulls, diameters);
+criterion_group!(benches, hulls);
 criterion_main!(benches);
