@@ -8,6 +8,7 @@
 //! predicate (the flips' test), except for Fortune's sweep, which makes none: its entries
 //! count comparisons (the sort, the event queue and the beach-line breakpoint tests).
 
+use super::claimed_entries;
 use crate::complexity::{Entry, Workload};
 use crate::count::Counter;
 use crate::delaunay::{triangulate_with, Algorithm, Triangulation};
@@ -28,16 +29,8 @@ struct Delaunay {
 pub(super) fn entries() -> Vec<Entry> {
     let mut out = Vec::new();
     for algorithm in Algorithm::ALL {
-        for claim in algorithm.declaration().claims {
-            let kind: PointKind = claim
-                .input
-                .parse()
-                .expect("Delaunay claims name point generators");
-            let entry = Entry::declared(
-                algorithm.declaration(),
-                claim.input,
-                Delaunay { algorithm, kind },
-            );
+        let claims = claimed_entries(algorithm.declaration(), |kind| Delaunay { algorithm, kind });
+        for (_, entry) in claims {
             out.push(match algorithm {
                 Algorithm::Lawson => entry.quick(64, 4096).full(64, 1 << 14),
                 _ => entry.quick(256, 1 << 15).full(256, 1 << 20),

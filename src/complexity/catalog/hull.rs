@@ -7,6 +7,7 @@
 //! farthest-point test and the calipers' direction test are signed areas too); the monotone
 //! chain and the Akl–Toussaint filter are measured on comparisons, where their cost lies.
 
+use super::claimed_entries;
 use crate::calipers::{diameter_with, ConvexPolygon, DiameterAlgorithm, ANTIPODAL_PAIRS};
 use crate::complexity::{Entry, Workload};
 use crate::count::{Counter, NoCount};
@@ -33,16 +34,8 @@ struct Calipers;
 pub(super) fn entries() -> Vec<Entry> {
     let mut out = Vec::new();
     for algorithm in Algorithm::ALL {
-        for claim in algorithm.declaration().claims {
-            let kind: PointKind = claim
-                .input
-                .parse()
-                .expect("hull claims name point generators");
-            let entry = Entry::declared(
-                algorithm.declaration(),
-                claim.input,
-                Hull { algorithm, kind },
-            );
+        let claims = claimed_entries(algorithm.declaration(), |kind| Hull { algorithm, kind });
+        for (kind, entry) in claims {
             out.push(match algorithm {
                 Algorithm::BruteForce => entry.quick(8, 128).full(8, 512),
                 Algorithm::Jarvis if kind == PointKind::Cocircular => {

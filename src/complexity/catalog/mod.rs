@@ -152,6 +152,40 @@ pub fn catalog() -> Vec<Entry> {
     all
 }
 
+/// The entries of every claim `declaration` makes, each claim's input parsed as the
+/// generator `K` it names and measured by `workload(kind)`; the kind comes back with its
+/// entry for the sizes.
+///
+/// # Panics
+///
+/// If a claim names no generator of kind `K`: a programming error the catalog's tests catch.
+fn claimed_entries<K, W>(
+    declaration: &'static Declaration,
+    workload: impl Fn(K) -> W,
+) -> Vec<(K, Entry)>
+where
+    K: std::str::FromStr + Copy,
+    W: Workload + 'static,
+{
+    declaration
+        .claims
+        .iter()
+        .map(|claim| {
+            let kind: K = claim.input.parse().unwrap_or_else(|_| {
+                panic!(
+                    "{} claims input {:?}, which names no generator here",
+                    declaration.id(),
+                    claim.input
+                )
+            });
+            (
+                kind,
+                Entry::declared(declaration, claim.input, workload(kind)),
+            )
+        })
+        .collect()
+}
+
 mod delaunay;
 mod graph;
 mod hull;

@@ -9,6 +9,7 @@
 //! evaluations (strip tests and candidate pairs), on uniform points and on a grid where
 //! every distance ties.
 
+use super::claimed_entries;
 use crate::complexity::{Declaration, Entry, Workload};
 use crate::count::Counter;
 use crate::delaunay::voronoi_with;
@@ -50,16 +51,8 @@ pub(super) fn entries() -> Vec<Entry> {
     problems.push((Problem::EmptyCircle, crate::proximity::EMPTY_CIRCLE));
     let mut out = Vec::new();
     for (problem, declaration) in problems {
-        for claim in declaration.claims {
-            let kind: PointKind = claim
-                .input
-                .parse()
-                .expect("proximity claims name point generators");
-            out.push(
-                Entry::declared(declaration, claim.input, Proximity { problem, kind })
-                    .quick(256, 1 << 14)
-                    .full(256, 1 << 19),
-            );
+        for (_, entry) in claimed_entries(declaration, |kind| Proximity { problem, kind }) {
+            out.push(entry.quick(256, 1 << 14).full(256, 1 << 19));
         }
     }
     out

@@ -14,6 +14,7 @@
 //! The radix sort for `f64` keys compares keys only in the insertion passes that finish its
 //! parts; its entry counts moves (at most 24n), O(n).
 
+use super::claimed_entries;
 use crate::complexity::{Bound, Entry, Workload};
 use crate::count::Counter;
 use crate::error::Result;
@@ -30,17 +31,10 @@ struct SortKeys {
 pub(super) fn entries() -> Vec<Entry> {
     let mut out = Vec::new();
     for algorithm in Algorithm::ALL {
-        for claim in algorithm.declaration().claims {
-            let kind: SequenceKind = claim
-                .input
-                .parse()
-                .expect("comparison-sort claims name key sequences");
-            let entry = Entry::declared(
-                algorithm.declaration(),
-                claim.input,
-                SortKeys { algorithm, kind },
-            );
-            out.push(sizes(entry, claim.bound));
+        let claims = claimed_entries(algorithm.declaration(), |kind| SortKeys { algorithm, kind });
+        for (_, entry) in claims {
+            let bound = entry.info.bound;
+            out.push(sizes(entry, bound));
         }
     }
     out.push(

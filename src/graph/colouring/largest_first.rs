@@ -1,6 +1,7 @@
 //! The largest-first (Welsh–Powell) vertex order for the greedy colouring, with a tie rule
 //! that keeps the order connected inside each class of equal degree.
 
+use super::vertices_by_key;
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::Operation;
 use crate::graph::Graph;
@@ -59,23 +60,8 @@ pub(super) const DECLARATION: Declaration = Declaration {
 pub fn largest_first_order(g: &Graph) -> Vec<usize> {
     let n = g.vertex_count();
     let max_degree = (0..n).map(|v| g.degree(v)).max().unwrap_or(0);
-    // start[d] = first position of degree d, laid out from the largest degree down.
-    let mut start = vec![0usize; max_degree + 2];
-    for v in 0..n {
-        start[max_degree - g.degree(v) + 1] += 1;
-    }
-    for d in 1..start.len() {
-        start[d] += start[d - 1];
-    }
-    let mut by_degree = vec![0; n];
-    {
-        let mut next = start.clone();
-        for v in 0..n {
-            let slot = &mut next[max_degree - g.degree(v)];
-            by_degree[*slot] = v;
-            *slot += 1;
-        }
-    }
+    // The degree classes laid out from the largest degree down.
+    let (by_degree, start) = vertices_by_key(n, max_degree + 1, |v| max_degree - g.degree(v));
     let mut ordered_neighbours = vec![0usize; n];
     let mut ordered = vec![false; n];
     let mut order = Vec::with_capacity(n);

@@ -191,6 +191,31 @@ pub(super) fn check_order(g: &Graph, order: &[usize]) -> Result<()> {
     Ok(())
 }
 
+/// The vertices `0..n` stably sorted by a key below `keys` (a counting sort), and `start`
+/// with `start[k]` the first position of key `k` and `start[keys] = n`: the degree buckets
+/// the largest-first and smallest-last orders start from. O(n + keys).
+pub(super) fn vertices_by_key(
+    n: usize,
+    keys: usize,
+    key: impl Fn(usize) -> usize,
+) -> (Vec<usize>, Vec<usize>) {
+    let mut start = vec![0usize; keys + 1];
+    for v in 0..n {
+        start[key(v) + 1] += 1;
+    }
+    for k in 1..start.len() {
+        start[k] += start[k - 1];
+    }
+    let mut sorted = vec![0; n];
+    let mut next = start.clone();
+    for v in 0..n {
+        let slot = &mut next[key(v)];
+        sorted[*slot] = v;
+        *slot += 1;
+    }
+    (sorted, start)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

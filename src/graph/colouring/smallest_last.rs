@@ -1,5 +1,6 @@
 //! The smallest-last (degeneracy) vertex order for the greedy colouring.
 
+use super::vertices_by_key;
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::Operation;
 use crate::graph::Graph;
@@ -48,25 +49,11 @@ pub fn smallest_last_order(g: &Graph) -> Vec<usize> {
     // Vertices sorted by degree in `sorted`, `bin[d]` the first position of degree d,
     // `pos[v]` where v sits; removing the vertex at the front of the unprocessed part keeps
     // the array sorted when a neighbour's degree drops by swapping it to its bin's front.
-    let mut bin = vec![0usize; max_degree + 1];
-    for &d in &degree {
-        bin[d] += 1;
-    }
-    let mut start = 0;
-    for b in bin.iter_mut() {
-        let size = *b;
-        *b = start;
-        start += size;
-    }
-    let mut sorted = vec![0usize; n];
+    let (mut sorted, mut bin) = vertices_by_key(n, max_degree + 1, |v| degree[v]);
+    bin.pop();
     let mut pos = vec![0usize; n];
-    {
-        let mut next = bin.clone();
-        for v in 0..n {
-            pos[v] = next[degree[v]];
-            sorted[pos[v]] = v;
-            next[degree[v]] += 1;
-        }
+    for (i, &v) in sorted.iter().enumerate() {
+        pos[v] = i;
     }
     for i in 0..n {
         let v = sorted[i];
