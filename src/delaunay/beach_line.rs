@@ -275,13 +275,8 @@ mod tests {
         // A deterministic mix of operations, mirrored on a plain Vec of (arc, site).
         let mut line = BeachLine::with_capacity(0);
         let mut model: Vec<(u32, u32)> = Vec::new();
-        let mut state = 12345u64;
-        let mut rand = |m: usize| {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 33) as usize % m
-        };
+        let mut rng = Rng::new(12345);
+        let mut rand = |m: usize| rng.index(m);
         for step in 0..3000u32 {
             if model.is_empty() || rand(3) > 0 {
                 let (at, after) = if model.is_empty() {

@@ -106,18 +106,16 @@ impl UnionFind {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::gen::Rng;
 
     #[test]
     fn matches_a_naive_labelling() {
         let n = 50;
         let mut sets = UnionFind::new(n);
         let mut label: Vec<usize> = (0..n).collect();
-        let mut x = 12345u64;
+        let mut rng = Rng::new(12345);
         for _ in 0..200 {
-            x = x
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            let (a, b) = ((x >> 33) as usize % n, (x >> 13) as usize % n);
+            let (a, b) = (rng.index(n), rng.index(n));
             let merged = label[a] != label[b];
             assert_eq!(sets.union(a, b), merged);
             if merged {

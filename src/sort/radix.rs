@@ -397,6 +397,7 @@ fn moves<C: Counter>(counter: &mut C, n: usize) {
 mod tests {
     use super::*;
     use crate::count::Counts;
+    use crate::gen::Rng;
 
     fn bits(v: &[f64]) -> Vec<u64> {
         v.iter().map(|x| x.to_bits()).collect()
@@ -438,12 +439,10 @@ mod tests {
         // their low 16 bits, so the insertion pass would need about m^2/4 shifts. The
         // fallback keeps the moves within the linear bound.
         let one = 1.0f64.to_bits();
-        let mut s = 0x2545_F491_4F6C_DD1Du64;
+        let mut rng = Rng::new(0x2545_F491_4F6C_DD1D);
         let mut v: Vec<f64> = (0..4000)
             .map(|_| {
-                s ^= s << 13;
-                s ^= s >> 7;
-                s ^= s << 17;
+                let s = rng.next_u64();
                 f64::from_bits(one + (s & 0xFFFF))
             })
             .collect();
@@ -460,12 +459,10 @@ mod tests {
     fn partition_levels_sort_large_inputs_of_mixed_magnitudes() {
         // Above PART_MAX: partitions in place first. Signs, binades, duplicates, signed zeros
         // and NaNs mixed.
-        let mut s = 0x9E37_79B9_7F4A_7C15u64;
+        let mut rng = Rng::new(0x9E37_79B9_7F4A_7C15);
         let mut v: Vec<f64> = (0..3 * PART_MAX)
             .map(|i| {
-                s ^= s << 13;
-                s ^= s >> 7;
-                s ^= s << 17;
+                let s = rng.next_u64();
                 match i % 5 {
                     0 => f64::from_bits(s),
                     1 => (s >> 11) as f64 / (1u64 << 53) as f64,
@@ -495,12 +492,10 @@ mod tests {
 
     #[test]
     fn partition_places_every_key_in_its_bucket_with_or_without_sweeps() {
-        let mut s = 0x0123_4567_89AB_CDEFu64;
+        let mut rng = Rng::new(0x0123_4567_89AB_CDEF);
         let keys: Vec<f64> = (0..20_000)
             .map(|_| {
-                s ^= s << 13;
-                s ^= s >> 7;
-                s ^= s << 17;
+                let s = rng.next_u64();
                 // Skewed digits: bucket 0 gets about half the keys.
                 f64::from_bits(if s & 1 == 0 { s & 0x00FF_FFFF } else { s })
             })

@@ -529,14 +529,13 @@ pub(super) fn horner_limit<S: Scalar, const D: usize>(control: &[Point<S, D>]) -
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::gen::Rng;
 
     /// Deterministic coordinates of magnitude up to `m`, both signs, some zero.
     fn polygon(n: usize, m: f64, seed: u64) -> Vec<Point<f64, 2>> {
-        let mut s = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1;
+        let mut rng = Rng::new(seed);
         let mut next = || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
+            let s = rng.next_u64();
             let r = (s >> 11) as f64 / (1u64 << 53) as f64;
             if s % 7 == 0 {
                 0.0
