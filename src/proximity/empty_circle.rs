@@ -100,7 +100,7 @@ pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
 /// triangle order, then the crossings along the hull edges in hull order.
 ///
 /// The centre and the radius are rounded constructions (decisions never depend on them):
-/// the circumcentre as in [`voronoi`](fn@super::voronoi), the crossing point as
+/// the circumcentre as in [`voronoi`](fn@crate::delaunay::voronoi), the crossing point as
 /// `p + t (q − p)`, and the radius from coordinate differences scaled by a power of two
 /// (`R = |bc| / (2 sin A)`, or the length of the vector from the site to the crossing), so
 /// it keeps its relative accuracy at any magnitude and any position; it loses accuracy
