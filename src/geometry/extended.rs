@@ -101,6 +101,41 @@ pub(crate) fn decompose(v: f64) -> (bool, u64, i32) {
     }
 }
 
+/// `v = (-1)^negative * m * 2^e` with `m` odd (or zero): grid and lattice coordinates
+/// become small integers.
+fn odd_parts(v: f64) -> (bool, u64, i32) {
+    let (negative, m, e) = decompose(v);
+    let zeros = if m == 0 { 0 } else { m.trailing_zeros() };
+    (negative, m >> zeros, e + zeros as i32)
+}
+
+/// Each coordinate's odd parts (sign, odd mantissa, exponent) and the least exponent among
+/// the non-zero ones (0 if all are zero): the power of two that scales them all to integers.
+pub(crate) fn odd_parts_and_base(coords: &[f64]) -> (Vec<(bool, u64, i32)>, i32) {
+    let parts: Vec<(bool, u64, i32)> = coords.iter().map(|&v| odd_parts(v)).collect();
+    let base = parts
+        .iter()
+        .filter(|&&(_, m, _)| m != 0)
+        .map(|&(_, _, e)| e)
+        .min()
+        .unwrap_or(0);
+    (parts, base)
+}
+
+/// Every coordinate as an exact big integer, all scaled by `2^-base` for the least exponent
+/// `base` of their last nonzero bits (0 if all are zero): integer coordinates stay
+/// themselves, so the products stay short. Returns the integers and `base`.
+pub(crate) fn exact_integers(coords: &[f64]) -> (Vec<BigInt>, i32) {
+    let (parts, base) = odd_parts_and_base(coords);
+    let ints = parts
+        .iter()
+        .map(|&(negative, m, e)| {
+            BigInt::from_parts(negative, m, if m == 0 { 0 } else { (e - base) as u32 })
+        })
+        .collect();
+    (ints, base)
+}
+
 fn big_sign(predicate: Predicate, coords: &[f64]) -> i32 {
     let parts: Vec<(bool, u64, i32)> = coords.iter().map(|&v| decompose(v)).collect();
     let base = parts

@@ -26,7 +26,7 @@
 //! doubles' exact binary values brought to a common exponent (see `products.rs`).
 
 use super::bigint::BigInt;
-use super::extended::{decompose, exponent, scale_by_pow2};
+use super::extended::{exact_integers, exponent, odd_parts_and_base, scale_by_pow2};
 use super::predicates::pow2;
 use super::{cmp_dist, incircle, InCircle, Point2};
 use std::cmp::Ordering;
@@ -543,37 +543,10 @@ fn sign_plus_roots(x: &BigInt, p: &BigInt, q: &BigInt) -> i32 {
     }
 }
 
-/// Each coordinate's odd parts (sign, odd mantissa, exponent) and the least exponent among
-/// the non-zero ones (0 if all are zero): the power of two that scales them all to integers.
-fn odd_parts_and_base(coords: &[f64]) -> (Vec<(bool, u64, i32)>, i32) {
-    let parts: Vec<(bool, u64, i32)> = coords.iter().map(|&v| odd_parts(v)).collect();
-    let base = parts
-        .iter()
-        .filter(|&&(_, m, _)| m != 0)
-        .map(|&(_, _, e)| e)
-        .min()
-        .unwrap_or(0);
-    (parts, base)
-}
-
 /// Every coordinate as an exact big integer, all scaled by the same power of two (the
 /// largest that keeps them integers).
 fn exact_coords(coords: &[f64]) -> Vec<BigInt> {
-    let (parts, base) = odd_parts_and_base(coords);
-    parts
-        .iter()
-        .map(|&(negative, m, e)| {
-            BigInt::from_parts(negative, m, if m == 0 { 0 } else { (e - base) as u32 })
-        })
-        .collect()
-}
-
-/// `v = (-1)^negative * m * 2^e` with `m` odd (or zero): grid and lattice coordinates
-/// become small integers.
-fn odd_parts(v: f64) -> (bool, u64, i32) {
-    let (negative, m, e) = decompose(v);
-    let zeros = if m == 0 { 0 } else { m.trailing_zeros() };
-    (negative, m >> zeros, e + zeros as i32)
+    exact_integers(coords).0
 }
 
 fn ordering(sign: i32) -> Ordering {

@@ -63,7 +63,7 @@ mod ball;
 mod radius;
 
 use super::bigint::BigInt;
-use super::extended::{decompose, exponent, scale_by_pow2};
+use super::extended::{exact_integers, exponent, scale_by_pow2};
 use super::predicates::{pow2, UNDERFLOW_SLACK};
 use super::{cross_sign, Orientation, Point2};
 use crate::count::Counter;
@@ -367,24 +367,12 @@ fn times_pow2(v: f64, k: i32) -> f64 {
     }
 }
 
-/// Every coordinate as an exact big integer, all scaled by `2^-base` for the least exponent
-/// `base` of their last nonzero bits (0 if all are zero): integer coordinates stay
-/// themselves, so the products stay short.
+/// [`exact_integers`] of a fixed number of coordinates, as an array to destructure.
 fn exact_coords<const N: usize>(coords: [f64; N]) -> ([BigInt; N], i32) {
-    let parts = coords.map(|v| {
-        let (negative, m, e) = decompose(v);
-        let zeros = if m == 0 { 0 } else { m.trailing_zeros() };
-        (negative, m >> zeros, e + zeros as i32)
-    });
-    let base = parts
-        .iter()
-        .filter(|&&(_, m, _)| m != 0)
-        .map(|&(_, _, e)| e)
-        .min()
-        .unwrap_or(0);
-    let ints = parts.map(|(negative, m, e)| {
-        BigInt::from_parts(negative, m, if m == 0 { 0 } else { (e - base) as u32 })
-    });
+    let (ints, base) = exact_integers(&coords);
+    let ints: [BigInt; N] = ints
+        .try_into()
+        .unwrap_or_else(|_| unreachable!("one integer per coordinate"));
     (ints, base)
 }
 
