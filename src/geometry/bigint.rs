@@ -65,6 +65,66 @@ impl BigInt {
         )
     }
 
+    /// `(negative, top, shift)` with `|self| ≈ top · 2^shift`: `top` holds the leading 64
+    /// bits, exact when the magnitude has at most 64 bits; otherwise its lowest bit is also
+    /// set when any discarded bit is (a sticky bit), so rounding `top` to fewer bits rounds
+    /// the whole integer correctly.
+    #[allow(dead_code)] // used by WideFloat::from_big
+    pub(crate) fn top_bits(&self) -> (bool, u64, i32) {
+        let Some(&high) = self.mag.last() else {
+            return (false, 0, 0);
+        };
+        let bits = self.mag.len() as u64 * 32 - u64::from(high.leading_zeros());
+        if bits <= 64 {
+            let low = self.mag.first().copied().unwrap_or(0) as u64;
+            let top = low | (self.mag.get(1).copied().unwrap_or(0) as u64) << 32;
+            return (self.negative, top, 0);
+        }
+        let shift = bits - 64;
+        let bit = |i: u64| (self.mag[(i / 32) as usize] >> (i % 32)) & 1 == 1;
+        let mut top = 0u64;
+        for i in (shift..bits).rev() {
+            top = top << 1 | u64::from(bit(i));
+        }
+        let whole_limbs = (shift / 32) as usize;
+        let sticky = self.mag[..whole_limbs].iter().any(|&l| l != 0)
+            || (shift % 32 != 0 && self.mag[whole_limbs] & ((1u32 << (shift % 32)) - 1) != 0);
+        (self.negative, top | u64::from(sticky), shift as i32)
+    }
+
+    /// The decimal digits of the magnitude, most significant first (`[0]` for zero).
+    pub(crate) fn decimal_digits(&self) -> Vec<u8> {
+        const CHUNK: u64 = 1_000_000_000;
+        let mut mag = self.mag.clone();
+        let mut chunks = Vec::new();
+        while !mag.is_empty() {
+            // One long division by 10^9, most significant limb first.
+            let mut rem = 0u64;
+            for limb in mag.iter_mut().rev() {
+                let cur = rem << 32 | u64::from(*limb);
+                *limb = (cur / CHUNK) as u32;
+                rem = cur % CHUNK;
+            }
+            while mag.last() == Some(&0) {
+                mag.pop();
+            }
+            chunks.push(rem as u32);
+        }
+        let mut digits = Vec::new();
+        for (i, chunk) in chunks.iter().rev().enumerate() {
+            let text = if i == 0 {
+                chunk.to_string()
+            } else {
+                format!("{chunk:09}")
+            };
+            digits.extend(text.bytes().map(|b| b - b'0'));
+        }
+        if digits.is_empty() {
+            digits.push(0);
+        }
+        digits
+    }
+
     fn negated(&self) -> BigInt {
         BigInt::normalized(!self.negative, self.mag.clone())
     }
@@ -171,6 +231,22 @@ mod tests {
                 num_bigint::Sign::Plus => 1,
             };
             prop_assert_eq!(a.sub(&b).signum(), expected_sign);
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn decimal_digits_and_top_bits_agree_with_num_bigint(
+            m in any::<u64>(), shift in 0u32..700,
+        ) {
+            let (ours, expected) = big(false, m, shift);
+            let text: String = ours.decimal_digits().iter().map(|d| char::from(b'0' + d)).collect();
+            prop_assert_eq!(text, expected.to_string());
+            let (_, top, s) = ours.top_bits();
+            // top · 2^s brackets the value within one unit of top's last bit.
+            let approx = Oracle::from(top) << s;
+            let unit = Oracle::from(1u8) << s;
+            prop_assert!(approx.clone() <= expected.clone() + &unit && expected <= approx + unit);
         }
     }
 

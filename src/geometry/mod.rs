@@ -35,10 +35,12 @@ mod point_set;
 mod predicates;
 mod products;
 pub(crate) mod sweep_predicates;
+mod wide;
 
 pub use counted::CountedPredicates;
 pub use point::{Point2, PointPair};
 pub use point_set::{BoundingBox, PointSet};
+pub use wide::WideFloat;
 
 /// The exact predicates, declared: O(1) each, counted as the operation each one is.
 pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 7] = [
