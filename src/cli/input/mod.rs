@@ -24,17 +24,19 @@
 //!
 //! **Graphs** are JSON objects `{"vertices": n, "edges": [[u, v], ...]}`, or with a weight
 //! on every edge, `[[u, v, w], ...]`, read into a [`graph::EdgeList`](crate::graph::EdgeList).
-//! Vertex ids must be integers in `0..n`; weights are finite numbers.
+//! Vertex ids must be integers in `0..n`; weights are finite numbers. The edge list alone,
+//! `[[u, v], ...]` or `[[u, v, w], ...]`, is a graph too: its vertices are 0 to the largest
+//! id (none for `[]`); a graph with isolated vertices above that needs the object. A key
+//! given twice in an object is an error, not a silent overwrite.
 //!
 //! **Exact number lists** (the curve commands' `--exact`): [`parse_number_arrays`] and
 //! [`parse_number_list`] keep the text of every number of `[[x, y, ...], ...]` or
 //! `[x, ...]` so it can be read as an exact rational
 //! ([`parse_scalar`](crate::spline::parse_scalar), bounded as documented there).
 //!
-//! **Errors** of the point and number readers name the point, line, column or entry; any
-//! text of the input they echo is quoted, cut after 40 characters (with its full length)
-//! and escaped, so a hostile input still gives one short line. No reader recurses on the
-//! input's nesting.
+//! **Errors** name the point, line, column or entry; any text of the input they echo is
+//! quoted, cut after 40 characters (with its full length) and escaped, so a hostile input
+//! still gives one short line. No reader recurses on the input's nesting.
 
 mod csv_points;
 mod graph_json;
@@ -67,8 +69,9 @@ pub struct PointInput {
 /// A graph argument: the path of a JSON graph, or `-` for stdin.
 #[derive(Debug, Clone, clap::Args)]
 pub struct GraphInput {
-    /// Graph file: JSON {"vertices": n, "edges": [[u, v], ...]} or [[u, v, w], ...]; `-`
-    /// reads stdin.
+    /// Graph file: JSON {"vertices": n, "edges": [[u, v], ...]} (edges [u, v, w] with
+    /// weights), or the edge list alone, [[u, v], ...] or [[u, v, w], ...], on vertices 0 to
+    /// the largest id; `-` reads stdin.
     #[arg(value_name = "G")]
     pub input: PathBuf,
 }
