@@ -4,18 +4,24 @@
 //! Control points are JSON, `[[x, y], ...]` in any dimension from 1 to 4 (or `[x, ...]` for
 //! one coordinate), whose numbers are JSON numbers or strings such as `"47/18"`. With
 //! `--exact` every number is read as the exact rational it writes (`0.1` is 1/10) and printed
-//! as a string (`"47/18"`, `"-3"`); without it numbers are `f64` in and out.
+//! as a string (`"47/18"`, `"-3"`); without it numbers are `f64` in and out. Reading is
+//! bounded as [`parse_scalar`] documents (exact decimals of at most 1000 significant digits
+//! and magnitude at least 1e-400; `f64` rounds any decimal as IEEE 754 does, so `1e-400`
+//! is 0 without `--exact` and an error with it). Errors name the control point and
+//! coordinate, or the entry of the result, that is wrong.
 
-use super::input::parse_number_arrays;
+use super::input::{parse_number_arrays, read_text};
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
 use crate::spline::bezier::{evaluate_with, Evaluation};
-use crate::spline::{parse_scalar, Bezier, CurveDerivative, ParseScalar, Point, Scalar};
+use crate::spline::{
+    parse_scalar, read_scalar, Bezier, CurveDerivative, ParseScalar, Point, Scalar,
+};
 use clap::{Args, Subcommand};
 use num_rational::BigRational;
 use serde_json::{json, Value};
-use std::io::Read;
+use std::path::Path;
 
 /// Arguments of `compgeo bezier`.
 #[derive(Debug, Args)]
@@ -88,14 +94,7 @@ pub(super) fn run(args: BezierArgs) -> Result<(), CliError> {
         | Op::Derivative { curve, .. } => curve,
     };
     let text = if curve.control == "-" {
-        let mut s = String::new();
-        std::io::stdin()
-            .read_to_string(&mut s)
-            .map_err(|source| CliError::Read {
-                path: "stdin".to_string(),
-                source,
-            })?;
-        s
+        read_text(Path::new("-"))?
     } else {
         curve.control.clone()
     };
@@ -121,25 +120,72 @@ pub(super) fn run(args: BezierArgs) -> Result<(), CliError> {
 
 /// A scalar the command line can print: `f64` as a JSON number, rationals as strings.
 pub(super) trait JsonScalar: Scalar + ParseScalar {
-    fn to_json(&self) -> Result<Value, CliError>;
+    /// The JSON value; `None` for an `f64` beyond its range (infinite or NaN).
+    fn to_json(&self) -> Option<Value>;
 }
 
 impl JsonScalar for f64 {
-    fn to_json(&self) -> Result<Value, CliError> {
-        if self.is_finite() {
-            Ok(json!(self))
-        } else {
-            Err(CliError::Usage(
-                "the result is beyond the range of f64; use --exact".to_string(),
-            ))
-        }
+    fn to_json(&self) -> Option<Value> {
+        self.is_finite().then(|| json!(self))
     }
 }
 
 impl JsonScalar for BigRational {
-    fn to_json(&self) -> Result<Value, CliError> {
-        Ok(Value::String(self.to_string()))
+    fn to_json(&self) -> Option<Value> {
+        Some(Value::String(self.to_string()))
     }
+}
+
+/// Reads one input number, naming it by `what` ("control point 2, coordinate 1") if it is
+/// not one: "invalid control point 2, coordinate 1: the number is outside the range of f64
+/// (got "1e400")".
+pub(super) fn read_number<S: JsonScalar>(
+    text: &str,
+    what: impl FnOnce() -> String,
+) -> Result<S, CliError> {
+    read_scalar(text).map_err(|reason| CliError::Shape(format!("invalid {}: {reason}", what())))
+}
+
+/// The numbers `xs` as a JSON array; an `f64` beyond its range is an error naming its place
+/// in the output, `at(i)` for entry `i` ("pieces[1][2][0]").
+fn numbers<S: JsonScalar>(xs: &[S], at: impl Fn(usize) -> String) -> Result<Value, CliError> {
+    xs.iter()
+        .enumerate()
+        .map(|(i, x)| {
+            x.to_json().ok_or_else(|| {
+                CliError::Usage(format!(
+                    "the result is beyond the range of f64 at {}; use --exact",
+                    at(i)
+                ))
+            })
+        })
+        .collect::<Result<_, _>>()
+        .map(Value::Array)
+}
+
+/// A list of numbers printed as the output field `name`.
+pub(super) fn scalars<S: JsonScalar>(xs: &[S], name: &str) -> Result<Value, CliError> {
+    numbers(xs, |i| format!("{name}[{i}]"))
+}
+
+/// A point printed as the output field `name`.
+pub(super) fn point<S: JsonScalar, const D: usize>(
+    p: &Point<S, D>,
+    name: &str,
+) -> Result<Value, CliError> {
+    scalars(p.coords(), name)
+}
+
+/// A list of points printed as the output field `name`.
+pub(super) fn points<S: JsonScalar, const D: usize>(
+    ps: &[Point<S, D>],
+    name: &str,
+) -> Result<Value, CliError> {
+    ps.iter()
+        .enumerate()
+        .map(|(i, p)| numbers(p.coords(), |j| format!("{name}[{i}][{j}]")))
+        .collect::<Result<_, _>>()
+        .map(Value::Array)
 }
 
 fn run_typed<S: JsonScalar, const D: usize>(
@@ -148,14 +194,15 @@ fn run_typed<S: JsonScalar, const D: usize>(
 ) -> Result<Value, CliError> {
     let control = rows
         .iter()
-        .map(|row| {
+        .enumerate()
+        .map(|(i, row)| {
             let mut p = Point::<S, D>::zero();
             for (j, text) in row.iter().enumerate() {
-                p[j] = parse_scalar(text, "control point coordinate")?;
+                p[j] = read_number(text, || format!("control point {i}, coordinate {j}"))?;
             }
             Ok(p)
         })
-        .collect::<Result<Vec<_>, crate::Error>>()?;
+        .collect::<Result<Vec<_>, CliError>>()?;
     let b = Bezier::new(control)?;
     let n = b.degree();
     Ok(match op {
@@ -163,45 +210,30 @@ fn run_typed<S: JsonScalar, const D: usize>(
             let t: S = parse_scalar(t, "t")?;
             let mut counts = Counts::default();
             let p = evaluate_with(&b, &t, *algorithm, &mut counts)?;
-            json!({"point": point(&p)?, "degree": n, "algorithm": algorithm.name(), "counts": counts})
+            json!({"point": point(&p, "point")?, "degree": n, "algorithm": algorithm.name(), "counts": counts})
         }
         Op::Split { t, .. } => {
             let c: S = parse_scalar(t, "t")?;
             let (left, right) = b.split(&c)?;
-            json!({"left": points(left.control())?, "right": points(right.control())?})
+            json!({"left": points(left.control(), "left")?, "right": points(right.control(), "right")?})
         }
         Op::Elevate { degree, .. } => {
             let m = degree.unwrap_or(n + 1);
             let e = b.elevate_to(m)?;
-            json!({"control": points(e.control())?, "degree": m})
+            json!({"control": points(e.control(), "control")?, "degree": m})
         }
         Op::Derivative { order, t, .. } => {
             let dcurve = b.derivative(*order)?;
             let mut out = json!({
-                "control": points(dcurve.control())?,
+                "control": points(dcurve.control(), "control")?,
                 "degree": dcurve.degree(),
                 "order": order,
             });
             if let Some(t) = t {
                 let t: S = parse_scalar(t, "t")?;
-                out["point"] = point(&b.derivative_at(&t, *order)?)?;
+                out["point"] = point(&b.derivative_at(&t, *order)?, "point")?;
             }
             out
         }
     })
-}
-
-pub(super) fn point<S: JsonScalar, const D: usize>(p: &Point<S, D>) -> Result<Value, CliError> {
-    Ok(Value::Array(
-        p.coords()
-            .iter()
-            .map(JsonScalar::to_json)
-            .collect::<Result<_, _>>()?,
-    ))
-}
-
-pub(super) fn points<S: JsonScalar, const D: usize>(ps: &[Point<S, D>]) -> Result<Value, CliError> {
-    Ok(Value::Array(
-        ps.iter().map(point).collect::<Result<_, _>>()?,
-    ))
 }

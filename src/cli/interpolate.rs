@@ -8,16 +8,18 @@
 //! are printed as `{"knots": [...], "tangents": [...], "pieces": [[b_0, b_1, b_2, b_3], ...]}`
 //! (the cubic Bézier points of each piece). `newton` prints the nodes of the Newton basis, the
 //! divided differences and the power-basis coefficients; with `--derivatives` (first
-//! derivatives at the nodes) it is Hermite interpolation, every node counted twice.
+//! derivatives at the nodes) it is Hermite interpolation, every node counted twice. Numbers
+//! are read as `bezier` reads them (bounded exact reading, IEEE rounding for `f64`), and
+//! errors name the point and coordinate, the knot, node or parameter, or the entry of the
+//! result, that is wrong.
 
-use super::bezier::{point, points, JsonScalar};
-use super::input::parse_number_arrays;
+use super::bezier::{point, points, read_number, scalars, JsonScalar};
+use super::input::{parse_number_arrays, parse_number_list};
 use super::output::print_json;
 use super::CliError;
 use crate::spline::{
     cubic_spline_tangents, estimate_tangents, hermite, lagrange, newton, newton_hermite,
-    parameterise, parse_scalar, CompositeBezier, Curve, EndCondition, HermiteNode,
-    Parameterisation, Point,
+    parameterise, CompositeBezier, Curve, EndCondition, HermiteNode, Parameterisation, Point,
 };
 use clap::{Args, Subcommand, ValueEnum};
 use num_rational::BigRational;
@@ -164,12 +166,12 @@ fn run_typed<S: JsonScalar, const D: usize>(
     method: &Method,
     rows: &[Vec<String>],
 ) -> Result<Value, CliError> {
-    let pts: Vec<Point<S, D>> = to_points(rows, "point coordinate")?;
+    let pts: Vec<Point<S, D>> = to_points(rows, |i| format!("point {i}"))?;
     Ok(match method {
         Method::Hermite { data, tangents } => {
             let knots = knots_of(data, &pts)?;
             let tangents = match tangents {
-                Some(text) => read_points::<S, D>(text, "tangent coordinate")?,
+                Some(text) => read_points::<S, D>(text, "tangent")?,
                 None => estimate_tangents(&knots, &pts)?,
             };
             let curve = hermite(&knots, &pts, &tangents)?;
@@ -209,10 +211,10 @@ fn run_typed<S: JsonScalar, const D: usize>(
             data,
             aitken: use_aitken,
         } => {
-            let nodes = read_scalars::<S>(&data.nodes, "node")?;
+            let nodes = read_scalars::<S>(&data.nodes, "node", "nodes")?;
             let form = lagrange(&nodes, &pts)?;
             let at = match &data.at {
-                Some(text) => read_scalars::<S>(text, "u")?,
+                Some(text) => read_scalars::<S>(text, "parameter", "parameters (--at)")?,
                 None => Vec::new(),
             };
             let mut values = Vec::with_capacity(at.len());
@@ -223,23 +225,24 @@ fn run_typed<S: JsonScalar, const D: usize>(
                 } else {
                     form.eval(u)?
                 };
-                values.push(point(&p)?);
-                bases.push(scalars(&form.basis(u)?)?);
+                let k = values.len();
+                values.push(point(&p, &format!("values[{k}]"))?);
+                bases.push(scalars(&form.basis(u)?, &format!("basis[{k}]"))?);
             }
             json!({
                 "algorithm": if *use_aitken { "aitken" } else { "lagrange" },
-                "nodes": scalars(&nodes)?,
-                "at": scalars(&at)?,
+                "nodes": scalars(&nodes, "nodes")?,
+                "at": scalars(&at, "at")?,
                 "values": values,
                 "basis": bases,
             })
         }
         Method::Newton { data, derivatives } => {
-            let nodes = read_scalars::<S>(&data.nodes, "node")?;
+            let nodes = read_scalars::<S>(&data.nodes, "node", "nodes")?;
             let form = match derivatives {
                 None => newton(&nodes, &pts)?,
                 Some(text) => {
-                    let slopes = read_points::<S, D>(text, "derivative coordinate")?;
+                    let slopes = read_points::<S, D>(text, "derivative")?;
                     if slopes.len() != nodes.len() || pts.len() != nodes.len() {
                         return Err(CliError::Usage(format!(
                             "{} nodes, {} points and {} derivatives: give one of each per node",
@@ -261,18 +264,19 @@ fn run_typed<S: JsonScalar, const D: usize>(
                 }
             };
             let at = match &data.at {
-                Some(text) => read_scalars::<S>(text, "u")?,
+                Some(text) => read_scalars::<S>(text, "parameter", "parameters (--at)")?,
                 None => Vec::new(),
             };
             let values = at
                 .iter()
-                .map(|u| point(&form.eval(u)?))
+                .enumerate()
+                .map(|(k, u)| point(&form.eval(u)?, &format!("values[{k}]")))
                 .collect::<Result<Vec<_>, _>>()?;
             json!({
-                "nodes": scalars(form.nodes())?,
-                "divided_differences": points(form.coefficients())?,
-                "monomial": points(form.to_polynomial().coefficients())?,
-                "at": scalars(&at)?,
+                "nodes": scalars(form.nodes(), "nodes")?,
+                "divided_differences": points(form.coefficients(), "divided_differences")?,
+                "monomial": points(form.to_polynomial().coefficients(), "monomial")?,
+                "at": scalars(&at, "at")?,
                 "values": values,
             })
         }
@@ -285,7 +289,7 @@ fn knots_of<S: JsonScalar, const D: usize>(
     pts: &[Point<S, D>],
 ) -> Result<Vec<S>, CliError> {
     match &data.knots {
-        Some(text) => read_scalars(text, "knot"),
+        Some(text) => read_scalars(text, "knot", "knots"),
         None => {
             let kind = match data.parameterisation {
                 Knots::Uniform => Parameterisation::Uniform,
@@ -304,71 +308,62 @@ fn composite_json<S: JsonScalar, const D: usize>(
     let pieces = curve
         .pieces()
         .iter()
-        .map(|b| points(b.control()))
+        .enumerate()
+        .map(|(k, b)| points(b.control(), &format!("pieces[{k}]")))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(json!({
-        "knots": scalars(curve.partition())?,
-        "tangents": points(tangents)?,
+        "knots": scalars(curve.partition(), "knots")?,
+        "tangents": points(tangents, "tangents")?,
         "pieces": pieces,
     }))
 }
 
-fn scalars<S: JsonScalar>(values: &[S]) -> Result<Value, CliError> {
-    Ok(Value::Array(
-        values
-            .iter()
-            .map(JsonScalar::to_json)
-            .collect::<Result<_, _>>()?,
-    ))
-}
-
+/// The points of `rows`, each named in errors as `label(index)` ("point 2", "tangent 0").
 fn to_points<S: JsonScalar, const D: usize>(
     rows: &[Vec<String>],
-    name: &'static str,
+    label: impl Fn(usize) -> String,
 ) -> Result<Vec<Point<S, D>>, CliError> {
     rows.iter()
         .enumerate()
         .map(|(index, row)| {
             if row.len() != D {
                 return Err(CliError::Shape(format!(
-                    "{name}s: point {index} has {} coordinates, expected {D}",
+                    "{} has {} coordinates, expected {D}",
+                    label(index),
                     row.len()
                 )));
             }
             let mut p = Point::<S, D>::zero();
             for (j, text) in row.iter().enumerate() {
-                p[j] = parse_scalar(text, name)?;
+                p[j] = read_number(text, || format!("{}, coordinate {j}", label(index)))?;
             }
             Ok(p)
         })
         .collect()
 }
 
+/// A list of points, `what` naming one of them ("tangent").
 fn read_points<S: JsonScalar, const D: usize>(
     text: &str,
-    name: &'static str,
+    what: &str,
 ) -> Result<Vec<Point<S, D>>, CliError> {
-    to_points(&parse_number_arrays(text)?, name)
+    to_points(&parse_number_arrays(text)?, |i| format!("{what} {i}"))
 }
 
-/// One point written as a flat list `[x, y]`.
+/// One point written as a flat list `[x, y]`, named by its flag.
 fn read_one<S: JsonScalar, const D: usize>(
     text: &str,
-    name: &'static str,
+    flag: &str,
 ) -> Result<Point<S, D>, CliError> {
-    let rows = parse_number_arrays(text)?;
-    let flat: Vec<String> = rows.into_iter().flatten().collect();
-    to_points(&[flat], name).map(|mut v| v.remove(0))
+    let flat = parse_number_list(text, &format!("coordinates of {flag}"))?;
+    to_points(&[flat], |_| flag.to_string()).map(|mut v| v.remove(0))
 }
 
-fn read_scalars<S: JsonScalar>(text: &str, name: &'static str) -> Result<Vec<S>, CliError> {
-    let rows = parse_number_arrays(text)?;
-    rows.iter()
-        .map(|row| match row.as_slice() {
-            [x] => Ok(parse_scalar(x, name)?),
-            _ => Err(CliError::Shape(format!(
-                "expected a flat list of numbers for the {name}s"
-            ))),
-        })
+/// A flat list of numbers, `one` naming an entry ("knot") and `all` the list ("knots").
+fn read_scalars<S: JsonScalar>(text: &str, one: &str, all: &str) -> Result<Vec<S>, CliError> {
+    parse_number_list(text, all)?
+        .iter()
+        .enumerate()
+        .map(|(i, x)| read_number(x, || format!("{one} {i}")))
         .collect()
 }

@@ -11,6 +11,8 @@ use crate::proximity::{
     closest_pair_with, euclidean_mst_with, largest_empty_circle_with, ClosestPairAlgorithm,
     NearestSearch,
 };
+use crate::spline::parse_f64_or_word;
+use crate::util::quote;
 use clap::Args;
 use serde::Serialize;
 
@@ -243,7 +245,8 @@ fn parse_numbers<const N: usize>(flag: &str, text: &str) -> Result<[f64; N], Cli
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();
     let bad = || {
         CliError::Usage(format!(
-            "{flag} expects {N} comma-separated numbers, got '{text}'"
+            "{flag} expects {N} comma-separated numbers, got {}",
+            quote(text)
         ))
     };
     if parts.len() != N {
@@ -251,7 +254,7 @@ fn parse_numbers<const N: usize>(flag: &str, text: &str) -> Result<[f64; N], Cli
     }
     let mut out = [0.0; N];
     for (slot, part) in out.iter_mut().zip(parts) {
-        *slot = part.parse().map_err(|_| bad())?;
+        *slot = parse_f64_or_word(part).ok_or_else(bad)?;
     }
     Ok(out)
 }

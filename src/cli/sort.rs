@@ -6,6 +6,8 @@ use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
 use crate::sort::{sort_with, trace, Algorithm};
+use crate::spline::parse_f64_or_word;
+use crate::util::quote;
 use clap::Args;
 use serde::Serialize;
 use std::io::{self, Write};
@@ -93,12 +95,13 @@ fn parse_keys(tokens: &[String]) -> Result<Keys, CliError> {
     }
     let mut floats = Vec::with_capacity(tokens.len());
     for (index, token) in tokens.iter().enumerate() {
-        let value: f64 = token
-            .parse()
-            .map_err(|_| CliError::Shape(format!("number {index} ({token:?}) is not a number")))?;
+        let value = parse_f64_or_word(token).ok_or_else(|| {
+            CliError::Shape(format!("number {index} ({}) is not a number", quote(token)))
+        })?;
         if !value.is_finite() {
             return Err(CliError::Shape(format!(
-                "number {index} is not finite ({token})"
+                "number {index} is not finite ({})",
+                quote(token)
             )));
         }
         floats.push(value);
@@ -131,7 +134,7 @@ mod tests {
         let e = parse_keys(&strings(&["1", "x"])).unwrap_err();
         assert_eq!(e.to_string(), "number 1 (\"x\") is not a number");
         let e = parse_keys(&strings(&["1", "2.0", "nan"])).unwrap_err();
-        assert_eq!(e.to_string(), "number 2 is not finite (nan)");
+        assert_eq!(e.to_string(), "number 2 is not finite (\"nan\")");
     }
 
     #[test]

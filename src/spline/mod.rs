@@ -21,7 +21,7 @@
 //! | module or file | what it holds |
 //! |---|---|
 //! | `scalar.rs` | [`Scalar`], [`Point`], [`Finite`], validation, [`binomial`] and the shared numeric helpers |
-//! | `parse.rs` | [`parse_scalar`]: exact reading of integers, decimals and fractions |
+//! | `parse.rs` | [`parse_scalar`]: exact reading of integers, decimals and fractions, bounded by [`MAX_EXACT_DIGITS`] and [`MAX_EXACT_EXPONENT`] |
 //! | `curve.rs` | the curve traits and [`Domain`] |
 //! | [`bezier`] | Bernstein basis, [`Bezier`] and its algorithms (one per file), [`Reparametrised`], [`CompositeBezier`] and its joins, intersection, the evaluation schemes ([`BezierEvaluation`]) |
 //! | [`interpolate`] | polynomial, Lagrange/Aitken, Newton and Hermite interpolation, cubic and quadratic splines, least squares, parameterisations |
@@ -63,5 +63,7 @@ pub use interpolate::{
     parameterise, quadratic_spline, vandermonde, vandermonde_hermite, EndCondition, FitOptions,
     HermiteNode, LagrangeForm, NewtonForm, Parameterisation, Polynomial,
 };
-pub use parse::{parse_scalar, ParseScalar};
+#[cfg(feature = "cli")]
+pub(crate) use parse::{parse_f64, parse_f64_or_word, read_scalar};
+pub use parse::{parse_scalar, ParseScalar, MAX_EXACT_DIGITS, MAX_EXACT_EXPONENT};
 pub use scalar::{binomial, validate_parameter, validate_points, Finite, Point, Scalar};

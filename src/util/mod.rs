@@ -1,9 +1,10 @@
 //! Small internals shared by several modules, each written once: the counted binary heap, the
 //! order-preserving integer key of an `f64`, the compressed adjacency lists of an edge list,
-//! and a binary search over positions.
+//! a binary search over positions, and the quoting of user text in error messages.
 
 mod csr;
 mod heap;
+mod quote;
 
 /// Declares an enum of named kinds (generator kinds, report profiles): the variants with
 /// their kebab-case names, `ALL`, `name`, `Display` and `FromStr` (an unknown name gives the
@@ -58,6 +59,7 @@ pub(crate) use named_enum;
 
 pub(crate) use csr::Csr;
 pub(crate) use heap::Heap;
+pub(crate) use quote::quote;
 
 /// The `u64` whose integer order is the order of `f64::total_cmp` on `x`: the sign bit set for
 /// non-negative values, every bit flipped for negative ones (a monotone bijection on the bit

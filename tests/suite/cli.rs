@@ -361,7 +361,7 @@ fn malformed_input_is_rejected_with_its_location() {
         (
             vec!["stats", "--format", "csv", "-"],
             "1,2\n3,four\n",
-            "'four' is not a number",
+            "\"four\" is not a number",
         ),
         (
             vec!["stats", "--format", "csv", "-"],

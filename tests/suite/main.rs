@@ -9,6 +9,7 @@ mod common;
 mod spline_common;
 mod strategies;
 
+mod attack_readers;
 mod bezier;
 mod bezier_eval;
 mod calipers;

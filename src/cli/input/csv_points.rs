@@ -2,6 +2,8 @@
 
 use crate::cli::CliError;
 use crate::geometry::Point2;
+use crate::spline::parse_f64_or_word;
+use crate::util::quote;
 
 /// Parses CSV lines `x,y` (syntax in [`crate::cli::input`]); the command validates the points
 /// when it builds its [`PointSet`](crate::geometry::PointSet).
@@ -37,9 +39,9 @@ pub fn parse_csv_points(text: &str) -> Result<Vec<Point2>, CliError> {
             });
         }
         let parse = |field: &str| {
-            field.parse::<f64>().map_err(|_| CliError::Csv {
+            parse_f64_or_word(field).ok_or_else(|| CliError::Csv {
                 line: number,
-                message: format!("'{field}' is not a number"),
+                message: format!("{} is not a number", quote(field)),
             })
         };
         points.push(Point2::new(parse(fields[0])?, parse(fields[1])?));
@@ -89,9 +91,10 @@ mod tests {
         for (text, line, needle) in [
             ("1,2\n3\n", 2, "expected 2 fields x,y, found 1"),
             ("1,2\n\n3,4,5\n", 3, "found 3"),
-            ("1,2\n3,abc\n", 2, "'abc' is not a number"),
-            ("1,2\nx,y\n", 2, "'x' is not a number"),
-            ("lon,lat\n1,2\n", 1, "'lon' is not a number"),
+            ("1,2\n3,abc\n", 2, "\"abc\" is not a number"),
+            ("1,2\nx,y\n", 2, "\"x\" is not a number"),
+            ("lon,lat\n1,2\n", 1, "\"lon\" is not a number"),
+            ("1,\u{1b}[31m\n", 1, "\"\\u{1b}[31m\" is not a number"),
             ("1;2\n", 1, "found 1"),
         ] {
             match parse_csv_points(text) {

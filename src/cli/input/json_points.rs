@@ -3,6 +3,7 @@
 
 use crate::cli::CliError;
 use crate::geometry::Point2;
+use crate::util::quote;
 
 /// Parses a JSON point array `[[x, y], ...]`; the command validates the points when it
 /// builds its [`PointSet`](crate::geometry::PointSet).
@@ -153,8 +154,8 @@ impl<'a> JsonCursor<'a> {
                     Ok(v)
                 }
                 None => Err(self.error(format!(
-                    "point {index}: expected a number, found '{}'",
-                    &self.text[start..word_start + word_len]
+                    "point {index}: expected a number, found {}",
+                    quote(&self.text[start..word_start + word_len])
                 ))),
             };
         }
@@ -187,24 +188,28 @@ impl<'a> JsonCursor<'a> {
                 self.found()
             )));
         }
-        // The grammar above is a subset of what Rust's correctly rounded parser accepts.
-        self.text[start..self.pos]
-            .parse::<f64>()
-            .map_err(|e| self.error(format!("point {index}: {e}")))
+        // The grammar above is a subset of the decimals `parse_f64` rounds correctly (at
+        // any length and exponent, which `str::parse` does not).
+        let text = &self.text[start..self.pos];
+        crate::spline::parse_f64(text).ok_or_else(|| {
+            self.error(format!(
+                "point {index}: expected a number, found {}",
+                quote(text)
+            ))
+        })
     }
 
-    /// The next token, quoted, for error messages.
+    /// The next token (up to whitespace or a delimiter, else the one character there),
+    /// quoted, for error messages.
     fn found(&self) -> String {
         let rest = &self.text[self.pos..];
-        let token: String = rest
-            .chars()
-            .take_while(|c| !c.is_whitespace() && !matches!(c, ',' | ']' | '['))
-            .take(24)
-            .collect();
+        let end = rest
+            .find(|c: char| c.is_whitespace() || matches!(c, ',' | ']' | '['))
+            .unwrap_or(rest.len());
         match rest.chars().next() {
             None => "the end of input".to_string(),
-            Some(c) if token.is_empty() => format!("'{c}'"),
-            Some(_) => format!("'{token}'"),
+            Some(c) if end == 0 => quote(c.encode_utf8(&mut [0; 4])),
+            Some(_) => quote(&rest[..end]),
         }
     }
 
@@ -304,7 +309,7 @@ mod tests {
     fn malformed_json_reports_line_and_column() {
         for (text, line, column, needle) in [
             ("", 1, 1, "the end of input"),
-            ("{}", 1, 1, "found '{}'"),
+            ("{}", 1, 1, "found \"{}\""),
             ("[[1, 2]", 1, 8, "after point 0"),
             ("[[1, 2],\n [3, 4] [5, 6]]", 2, 9, "after point 1"),
             ("[[1, 2]] x", 1, 10, "end of input after"),
@@ -314,7 +319,14 @@ mod tests {
             ("[[+1, 2]]", 1, 3, "point 0"),
             ("[[.5, 2]]", 1, 3, "point 0"),
             ("[[1e, 2]]", 1, 3, "point 0"),
-            ("[[true, 2]]", 1, 3, "found 'true'"),
+            ("[[true, 2]]", 1, 3, "found \"true\""),
+            ("[[\u{7}, 2]]", 1, 3, "found \"\\u{7}\""),
+            (
+                "[[[[[[[[1]]]]]]]]",
+                1,
+                3,
+                "point 0: expected a number, found \"[\"",
+            ),
             ("[[1, 2], 3]", 1, 10, "point 1 must be an array"),
             ("[[1 2]]", 1, 5, "in point 0"),
             ("[[1, 2],]", 1, 9, "point 1 must be an array"),

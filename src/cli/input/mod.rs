@@ -3,8 +3,9 @@
 //! **Points** come from a path or `-` (stdin), as JSON or CSV:
 //!
 //! - JSON: an array of two-element arrays, `[[x, y], ...]`. Numbers follow the JSON
-//!   grammar and are converted with correct rounding; a literal too large for `f64` (such
-//!   as `1e999`) becomes infinite and is then rejected by validation (the command's
+//!   grammar and are rounded correctly at any length and exponent (`1e-400` is 0); a
+//!   literal too large for `f64` (such as `1e999`) becomes infinite and is then rejected by
+//!   validation (the command's
 //!   [`PointSet`](crate::geometry::PointSet)) like any other non-finite coordinate, naming
 //!   the point. JSON has no NaN or infinity literals, but
 //!   other tools write them (`NaN`, `Infinity`, `-Infinity`, in any letter case, or
@@ -13,18 +14,29 @@
 //! - CSV: one point per line, `x,y`, with optional spaces around either value. Blank lines
 //!   are skipped. The first non-blank line may be the header `x,y` (any letter case); no
 //!   other header is recognised, so a typo in the first data line is an error rather than
-//!   a silently dropped point. Values use Rust's float syntax (`1e-5`, `.5`, `inf`, `nan`):
-//!   `nan` and `inf` parse and are then reported as non-finite coordinates.
+//!   a silently dropped point. Values use Rust's float syntax (`1e-5`, `.5`, `inf`, `nan`),
+//!   rounded as the JSON numbers are: `nan` and `inf` parse and are then reported as
+//!   non-finite coordinates.
 //!
 //! The format is `--format json|csv` if given, else the file extension (`.json`, `.csv`,
-//! any case); stdin defaults to JSON. A leading UTF-8 byte-order mark is ignored.
+//! any case); stdin defaults to JSON. A leading UTF-8 byte-order mark is ignored; text that
+//! is not UTF-8 is an error giving the byte offset of the first bad byte.
 //!
 //! **Graphs** are JSON objects `{"vertices": n, "edges": [[u, v], ...]}`, or with a weight
 //! on every edge, `[[u, v, w], ...]`, read into a [`graph::EdgeList`](crate::graph::EdgeList).
-//! Vertex ids must be integers in `0..n`; weights are finite numbers.
+//! Vertex ids must be integers in `0..n`; weights are finite numbers. The edge list alone,
+//! `[[u, v], ...]` or `[[u, v, w], ...]`, is a graph too: its vertices are 0 to the largest
+//! id (none for `[]`); a graph with isolated vertices above that needs the object. A key
+//! given twice in an object is an error, not a silent overwrite.
 //!
-//! **Exact number lists** (the curve commands' `--exact`): [`parse_number_arrays`] keeps the
-//! text of every number of `[[x, y, ...], ...]` so it can be read as an exact rational.
+//! **Exact number lists** (the curve commands' `--exact`): [`parse_number_arrays`] and
+//! [`parse_number_list`] keep the text of every number of `[[x, y, ...], ...]` or
+//! `[x, ...]` so it can be read as an exact rational
+//! ([`parse_scalar`](crate::spline::parse_scalar), bounded as documented there).
+//!
+//! **Errors** name the point, line, column or entry; any text of the input they echo is
+//! quoted, cut after 40 characters (with its full length) and escaped, so a hostile input
+//! still gives one short line. No reader recurses on the input's nesting.
 
 mod csv_points;
 mod graph_json;
@@ -34,7 +46,7 @@ mod number_arrays;
 pub use csv_points::parse_csv_points;
 pub use graph_json::parse_json_graph;
 pub use json_points::parse_json_points;
-pub use number_arrays::parse_number_arrays;
+pub use number_arrays::{parse_number_arrays, parse_number_list};
 
 use super::CliError;
 use crate::geometry::Point2;
@@ -57,8 +69,9 @@ pub struct PointInput {
 /// A graph argument: the path of a JSON graph, or `-` for stdin.
 #[derive(Debug, Clone, clap::Args)]
 pub struct GraphInput {
-    /// Graph file: JSON {"vertices": n, "edges": [[u, v], ...]} or [[u, v, w], ...]; `-`
-    /// reads stdin.
+    /// Graph file: JSON {"vertices": n, "edges": [[u, v], ...]} (edges [u, v, w] with
+    /// weights), or the edge list alone, [[u, v], ...] or [[u, v, w], ...], on vertices 0 to
+    /// the largest id; `-` reads stdin.
     #[arg(value_name = "G")]
     pub input: PathBuf,
 }
@@ -107,23 +120,30 @@ impl GraphInput {
 /// Reads all of `path` (or stdin for `-`) as UTF-8 text.
 ///
 /// # Errors
-/// [`CliError::Read`] naming the path (or `stdin`) and the I/O error.
+/// [`CliError::Read`] naming the path (or `stdin`) and the I/O error; for text that is not
+/// UTF-8, the byte offset of the first invalid byte ("invalid UTF-8 at byte 13").
 pub fn read_text(path: &Path) -> Result<String, CliError> {
-    let mut text = String::new();
+    let mut bytes = Vec::new();
     let result = if is_stdin(path) {
-        std::io::stdin().read_to_string(&mut text).map(|_| ())
+        std::io::stdin().read_to_end(&mut bytes).map(|_| ())
     } else {
-        std::fs::read_to_string(path).map(|t| text = t)
+        std::fs::read(path).map(|b| bytes = b)
     };
-    result.map_err(|source| CliError::Read {
+    let error = |source| CliError::Read {
         path: if is_stdin(path) {
             "stdin".to_string()
         } else {
             format!("'{}'", path.display())
         },
         source,
-    })?;
-    Ok(text)
+    };
+    result.map_err(error)?;
+    String::from_utf8(bytes).map_err(|e| {
+        error(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!("invalid UTF-8 at byte {}", e.utf8_error().valid_up_to()),
+        ))
+    })
 }
 
 /// The format implied by `path`'s extension; stdin is JSON.
@@ -190,6 +210,20 @@ mod tests {
         std::fs::write(&g, r#"{"vertices": 2, "edges": [[0, 1]]}"#).unwrap();
         let graph = GraphInput { input: g }.read().unwrap();
         assert_eq!((graph.vertices, graph.edges), (2, vec![[0, 1]]));
+        // Invalid UTF-8: the offset of the first bad byte.
+        let bad = dir.join("bad.json");
+        std::fs::write(&bad, b"[[1, 2], [3, \xff]]").unwrap();
+        let err = PointInput {
+            input: bad,
+            format: None,
+        }
+        .read()
+        .unwrap_err();
+        assert!(
+            err.to_string()
+                .ends_with("bad.json': invalid UTF-8 at byte 13"),
+            "{err}"
+        );
         let missing = GraphInput {
             input: dir.join("missing.json"),
         };

@@ -7,6 +7,7 @@
 //! is the caller's job ([`crate::spline::parse_scalar`]).
 
 use crate::cli::CliError;
+use crate::util::quote;
 
 /// The entries of a JSON list of points, as the text of each number.
 ///
@@ -18,16 +19,7 @@ use crate::cli::CliError;
 /// [`CliError::Json`] with the line and column of a syntax error; [`CliError::Shape`] if
 /// the list is empty, mixes numbers and arrays, or its points differ in length.
 pub fn parse_number_arrays(text: &str) -> Result<Vec<Vec<String>>, CliError> {
-    let mut p = Parser {
-        chars: text.trim_start_matches('\u{feff}').char_indices().collect(),
-        pos: 0,
-        text,
-    };
-    let items = p.array(0)?;
-    p.skip_ws();
-    if p.pos < p.chars.len() {
-        return Err(p.error("trailing characters after the list"));
-    }
+    let items = parse_items(text)?;
     let points: Vec<Vec<String>> = if items.iter().all(|i| matches!(i, Item::Number(_))) {
         items
             .into_iter()
@@ -62,6 +54,49 @@ pub fn parse_number_arrays(text: &str) -> Result<Vec<Vec<String>>, CliError> {
         )));
     }
     Ok(points)
+}
+
+/// The entries of a flat JSON list of numbers `[0, "1/2", 1]`, as the text of each number;
+/// `what` names the list in errors ("knots").
+///
+/// # Errors
+///
+/// [`CliError::Json`] with the line and column of a syntax error; [`CliError::Shape`] if
+/// the list is empty or an entry is a list, naming the entry.
+pub fn parse_number_list(text: &str, what: &str) -> Result<Vec<String>, CliError> {
+    let items = parse_items(text)?;
+    if items.is_empty() {
+        return Err(CliError::Shape(format!("the list of {what} is empty")));
+    }
+    items
+        .into_iter()
+        .enumerate()
+        .map(|(index, i)| match i {
+            Item::Number(s) => Ok(s),
+            Item::List(v) => Err(CliError::Shape(format!(
+                "expected a flat list of numbers for the {what}; entry {index} is a list of {} {}",
+                v.len(),
+                if v.len() == 1 { "number" } else { "numbers" }
+            ))),
+        })
+        .collect()
+}
+
+/// The items of the outer list, the whole text read.
+fn parse_items(text: &str) -> Result<Vec<Item>, CliError> {
+    // Offsets index the text after the byte-order mark, which the errors' positions count.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut p = Parser {
+        chars: text.char_indices().collect(),
+        pos: 0,
+        text,
+    };
+    let items = p.array(0)?;
+    p.skip_ws();
+    if p.pos < p.chars.len() {
+        return Err(p.error("trailing characters after the list"));
+    }
+    Ok(items)
 }
 
 enum Item {
@@ -105,7 +140,15 @@ impl Parser<'_> {
                 Some(c) if c == '-' || c == '+' || c == '.' || c.is_ascii_alphanumeric() => {
                     Item::Number(self.bare_number())
                 }
-                _ => return Err(self.error("expected a number, a string or a point")),
+                other => {
+                    let found = match other {
+                        Some(c) => quote(c.encode_utf8(&mut [0; 4])),
+                        None => "the end of input".to_string(),
+                    };
+                    return Err(self.error(&format!(
+                        "expected a number, a string or a point, found {found}"
+                    )));
+                }
             };
             items.push(item);
             self.skip_ws();
@@ -229,5 +272,49 @@ mod tests {
             parse_number_arrays("[[[1]]]"),
             Err(CliError::Json { .. })
         ));
+        // Deep nesting is refused at the third level, without recursion.
+        let deep = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
+        match parse_number_arrays(&deep) {
+            Err(CliError::Json {
+                line: 1,
+                column: 3,
+                message,
+            }) => assert_eq!(
+                message,
+                "expected a number, a string or a point, found \"[\""
+            ),
+            other => panic!("{other:?}"),
+        }
+        // Positions count from after a byte-order mark.
+        match parse_number_arrays("\u{feff}[[1, 2],\n [3 4]]") {
+            Err(CliError::Json {
+                line: 2, column, ..
+            }) => assert_eq!(column, 5),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn flat_lists_name_the_entry_that_is_not_a_number() {
+        assert_eq!(
+            parse_number_list(r#"[0, "1/2", 1e-3]"#, "knots").unwrap(),
+            ["0", "1/2", "1e-3"]
+        );
+        for (text, message) in [
+            (
+                "[0, [1], 2]",
+                "expected a flat list of numbers for the knots; entry 1 is a list of 1 number",
+            ),
+            (
+                "[[0, 1], [2, 3]]",
+                "expected a flat list of numbers for the knots; entry 0 is a list of 2 numbers",
+            ),
+            ("[]", "the list of knots is empty"),
+        ] {
+            match parse_number_list(text, "knots") {
+                Err(CliError::Shape(m)) => assert_eq!(m, message, "{text}"),
+                other => panic!("{text}: {other:?}"),
+            }
+        }
     }
 }
