@@ -43,6 +43,19 @@ pub(super) const DECLARATION: Declaration = Declaration {
 };
 
 /// A circle with no input point strictly inside.
+///
+/// ```
+/// use compgeo::geometry::Point2;
+/// use compgeo::proximity::largest_empty_circle;
+///
+/// // The corners of a square at ±f64::MAX: radius √2 · f64::MAX, beyond f64.
+/// let m = f64::MAX;
+/// let c = largest_empty_circle(&[(-m, -m), (m, -m), (m, m), (-m, m)].map(Point2::from))?;
+/// assert_eq!(c.centre, Point2::new(0.0, 0.0));
+/// assert_eq!(c.radius.to_f64(), None);
+/// assert_eq!(c.radius.to_string(), "2.5423220123072923e308");
+/// # Ok::<(), compgeo::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct EmptyCircle {
