@@ -210,7 +210,9 @@ fn spade_petgraph_emst(pts: Vec<spade::Point2<f64>>) -> usize {
 fn check_closest_pair(set: &PointSet<'_>, sp: Vec<spade::Point2<f64>>, sites: Vec<Site>) {
     let ours = closest_pair_with(set, ClosestPairAlgorithm::Delaunay, &mut NoCount)
         .expect("two points")
-        .distance;
+        .distance
+        .to_f64()
+        .expect("uniform points are close");
     let spade = spade_closest_pair(sp).0.sqrt();
     let rstar = rstar_all_nearest(sites)
         .into_iter()

@@ -7,7 +7,7 @@
 //!
 //! | module | what it holds | files |
 //! |---|---|---|
-//! | [`geometry`] | [`Point2`](geometry::Point2), the validated [`PointSet`](geometry::PointSet) and its [`BoundingBox`](geometry::BoundingBox), exact predicates, [`PointPair`](geometry::PointPair) | `src/geometry/` |
+//! | [`geometry`] | [`Point2`](geometry::Point2), the validated [`PointSet`](geometry::PointSet) and its [`BoundingBox`](geometry::BoundingBox), exact predicates, [`PointPair`](geometry::PointPair), [`WideFloat`](geometry::WideFloat) for lengths beyond `f64` | `src/geometry/` |
 //! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) | `src/count.rs` |
 //! | [`error`] | the crate's [`Error`] and [`Result`] | `src/error.rs` |
 //! | [`gen`] | seeded workload generators: point sets, graphs, number sequences | `src/gen/` |
@@ -142,6 +142,12 @@
 //! every `f64`, NaN included, by [`f64::total_cmp`]. Degenerate input (no points, one point,
 //! duplicates, collinear points) has one policy, described in `docs/design.md`: structures
 //! exist for every input, answers that need k points are [`Error::TooFew`] below k.
+//!
+//! Lengths, distances, widths, areas, radii and sums are returned as
+//! [`WideFloat`](geometry::WideFloat): within a stated relative error of the exact value
+//! even when that exceeds `f64::MAX` (the diameter of `(-f64::MAX, -f64::MAX)` and
+//! `(f64::MAX, f64::MAX)` is 2√2 · `f64::MAX`), never an infinity or a NaN; `to_f64()` gives
+//! the `f64` when it fits.
 
 pub mod calipers;
 pub mod complexity;

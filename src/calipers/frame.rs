@@ -1,6 +1,7 @@
-//! Rounded reporting of caliper results: unit directions, distances across a line and areas,
-//! on coordinates scaled by a power of two so that nothing overflows or underflows. The
-//! choices are made by exact predicates; these only report them.
+//! Rounded constructions of caliper results (the rectangle's corners): unit directions, on
+//! coordinates scaled by a power of two so that nothing overflows or underflows. The
+//! choices are made by exact predicates; these only report them. Widths and areas are
+//! evaluated exactly and rounded once (`geometry::line_distance`, `geometry::rect_area`).
 
 use crate::geometry::Point2;
 
@@ -47,27 +48,6 @@ pub(super) fn difference(p: Point2, a: Point2) -> ((f64, f64), f64) {
         ((x, y), 1.0)
     } else {
         ((p.x / 2.0 - a.x / 2.0, p.y / 2.0 - a.y / 2.0), 2.0)
-    }
-}
-
-/// The signed distance of `p` from the line through `a` along the unit vector `u`, rounded
-/// (computed from the difference itself, so it keeps its relative accuracy when tiny).
-pub(super) fn across(u: (f64, f64), p: Point2, a: Point2) -> f64 {
-    let ((x, y), k) = difference(p, a);
-    (u.0 * y - u.1 * x) * k
-}
-
-/// The area of the rectangle with a side on the line through `a` along `u`, the opposite side
-/// through `top`, and the others through `left` and `right`, rounded: height times length,
-/// each from its own differences.
-pub(super) fn area(u: (f64, f64), [a, top, left, right]: [Point2; 4]) -> f64 {
-    let height = across(u, top, a).abs();
-    let ((x, y), k) = difference(right, left);
-    let length = ((u.0 * x + u.1 * y) * k).abs();
-    if height == 0.0 || length == 0.0 {
-        0.0
-    } else {
-        height * length
     }
 }
 

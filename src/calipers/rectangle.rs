@@ -1,13 +1,13 @@
 //! The minimum-area rectangle enclosing a convex polygon: one side along an edge, four
 //! calipers rotated once around it, the areas compared exactly.
 
-use super::frame::{area, direction, Frame};
+use super::frame::{direction, Frame};
 use super::sides::{four_calipers, Sides};
 use super::ConvexPolygon;
 use crate::complexity::Declaration;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{CountedPredicates, Point2};
+use crate::geometry::{rect_area, CountedPredicates, Point2, WideFloat};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -27,7 +27,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// A minimum-area enclosing rectangle: the polygon edge one side lies on, the vertices that
 /// touch the other three sides, and the corners.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Rectangle {
     /// The hull edge `[i, j]` that one side lies on (counter-clockwise, so the rectangle is
     /// left of `i -> j`).
@@ -40,9 +40,24 @@ pub struct Rectangle {
     /// constructions (projections onto the lines), rounded to within a few ulps of the
     /// hull's largest coordinate; the edge and the support vertices are exact.
     pub corners: [Point2; 4],
-    /// The area, rounded: height times length, each from the support vertices' own
-    /// differences (`inf` if it exceeds `f64::MAX`; 0 for collinear input).
-    pub area: f64,
+    /// The area, height times length (`|(j − i) × (top − i)| · |(j − i) · (right − left)| /
+    /// |j − i|²`), with relative error below 3 · 2^-52 for every finite input: each factor
+    /// is exact, then rounded once. A [`WideFloat`], so an area beyond `f64::MAX` keeps its
+    /// value:
+    ///
+    /// ```
+    /// use compgeo::calipers::ConvexPolygon;
+    /// use compgeo::geometry::{Point2, PointSet};
+    ///
+    /// let m = f64::MAX;
+    /// let pts = [(-m, -1.0), (m, -1.0), (m, 1.0), (-m, 1.0)].map(Point2::from);
+    /// let r = ConvexPolygon::hull(&PointSet::new(&pts)?).min_area_rectangle()?;
+    /// assert_eq!(r.area.to_string(), "7.1907725394492628e308"); // 2 · f64::MAX times 2
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    ///
+    /// 0 for collinear input.
+    pub area: WideFloat,
 }
 
 impl ConvexPolygon<'_> {
@@ -62,7 +77,7 @@ impl ConvexPolygon<'_> {
     /// let pts = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)].map(Point2::from);
     /// let r = ConvexPolygon::hull(&PointSet::new(&pts)?).min_area_rectangle()?;
     /// assert_eq!(r.edge, [3, 0]);
-    /// assert!((r.area - 2.0).abs() < 1e-12);
+    /// assert_eq!(r.area, 2.0);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn min_area_rectangle(&self) -> Result<Rectangle> {
@@ -127,7 +142,7 @@ impl ConvexPolygon<'_> {
                     edge: [i, j],
                     support: [j, i, i],
                     corners: [a, b, b, a],
-                    area: 0.0,
+                    area: WideFloat::ZERO,
                 });
             }
             _ => {}
@@ -161,7 +176,7 @@ impl ConvexPolygon<'_> {
             edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
             support: [s.right, s.top, s.left].map(|k| hull[k % h]),
             corners: corners.map(|c| Point2::new(frame.unscale(c.x), frame.unscale(c.y))),
-            area: area(u, [v(s.edge), v(s.top), v(s.left), v(s.right)]),
+            area: rect_area([v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)]),
         })
     }
 }

@@ -1,13 +1,12 @@
 //! The width of a convex polygon: the closest pair of parallel supporting lines, one along an
 //! edge, found by rotating calipers and compared exactly.
 
-use super::frame::{across, direction};
 use super::sides::{four_calipers, Sides};
 use super::ConvexPolygon;
 use crate::complexity::Declaration;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::CountedPredicates;
+use crate::geometry::{line_distance, CountedPredicates, WideFloat};
 use std::cmp::Ordering;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -27,18 +26,32 @@ pub(super) const DECLARATION: Declaration = Declaration {
 
 /// A width: an edge of the polygon, the vertex farthest from its line, and the distance
 /// between the two parallel supporting lines through them.
+///
+/// ```
+/// use compgeo::calipers::ConvexPolygon;
+/// use compgeo::geometry::{Point2, PointSet};
+///
+/// // A square with corners at ±f64::MAX: its width, 2 · f64::MAX, is beyond f64.
+/// let m = f64::MAX;
+/// let pts = [(-m, -m), (m, -m), (m, m), (-m, m)].map(Point2::from);
+/// let w = ConvexPolygon::hull(&PointSet::new(&pts)?).width()?;
+/// assert_eq!(w.width.to_f64(), None);
+/// assert_eq!(w.width.to_string(), "3.5953862697246314e308");
+/// # Ok::<(), compgeo::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Width {
     /// The hull edge `[i, j]` (indices into the input, counter-clockwise) one supporting line
     /// runs along; `[i, i]` for a one-point set, the two ends for a segment.
     pub edge: [usize; 2],
     /// The vertex on the other supporting line (the edge's start when the width is zero).
     pub vertex: usize,
-    /// The distance between the lines, rounded (from the vertex's difference to the edge, so
-    /// it keeps its relative accuracy even when tiny; `inf` if it exceeds `f64::MAX`). The
-    /// edge and the vertex are exact: chosen by exact comparisons.
-    pub width: f64,
+    /// The distance between the lines, `|(j − i) × (vertex − i)| / |j − i|`, with relative
+    /// error below 2^-51 for every finite input (the cross product and the squared length
+    /// are exact, then rounded once each), tiny or beyond `f64::MAX` alike. The edge and the
+    /// vertex are exact: chosen by exact comparisons.
+    pub width: WideFloat,
 }
 
 impl ConvexPolygon<'_> {
@@ -54,7 +67,8 @@ impl ConvexPolygon<'_> {
     ///
     /// let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (0.0, 3.0), (2.0, 1.0)].map(Point2::from);
     /// let w = ConvexPolygon::hull(&PointSet::new(&pts)?).width()?;
-    /// assert_eq!((w.edge, w.vertex, w.width), ([0, 1], 2, 3.0)); // the bottom edge, height 3
+    /// assert_eq!((w.edge, w.vertex), ([0, 1], 2));
+    /// assert_eq!(w.width, 3.0); // the bottom edge, height 3
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn width(&self) -> Result<Width> {
@@ -116,7 +130,7 @@ impl ConvexPolygon<'_> {
                 return Ok(Width {
                     edge: [hull[0], hull[h - 1]],
                     vertex: hull[0],
-                    width: 0.0,
+                    width: WideFloat::ZERO,
                 })
             }
             _ => {}
@@ -139,11 +153,10 @@ impl ConvexPolygon<'_> {
             }
         });
         let s = best.expect("a polygon has edges");
-        let u = direction(v(s.edge), v(s.edge + 1));
         Ok(Width {
             edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
             vertex: hull[s.top % h],
-            width: across(u, v(s.top), v(s.edge)).abs(),
+            width: line_distance(v(s.edge), v(s.edge + 1), v(s.top)),
         })
     }
 }

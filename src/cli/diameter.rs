@@ -7,7 +7,7 @@ use super::output::print_json;
 use super::CliError;
 use crate::calipers::{diameter_with, ConvexPolygon, DiameterAlgorithm, Rectangle, Width};
 use crate::count::Counts;
-use crate::geometry::PointSet;
+use crate::geometry::{PointSet, WideFloat};
 use clap::Args;
 use serde::Serialize;
 
@@ -32,7 +32,7 @@ struct DiameterOutput {
     algorithm: &'static str,
     pair: [usize; 2],
     points: [[f64; 2]; 2],
-    distance: f64,
+    distance: WideFloat,
     antipodal_pairs: Vec<[usize; 2]>,
     counts: Counts,
     width: Width,

@@ -11,6 +11,7 @@ use super::input::GraphInput;
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
+use crate::geometry::WideFloat;
 use crate::graph::{
     colour_with, components, search_trace, search_with, spanning_forest_with, trace_table,
     ColouringAlgorithm, EdgeList, Graph, MstAlgorithm, SearchAlgorithm, WeightedGraph,
@@ -70,7 +71,7 @@ struct ColourOutput {
 struct MstOutput {
     edges: Vec<(usize, usize, f64)>,
     edge_indices: Vec<usize>,
-    weight: f64,
+    weight: WideFloat,
     components: usize,
     counts: Counts,
 }

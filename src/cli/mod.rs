@@ -11,6 +11,12 @@
 //! the command line is a front end, not a library API.
 //! Commands read their input with `input` (points and graphs), print with
 //! `output::print_json`, and report problems as `CliError`.
+//!
+//! Numbers: every `f64` prints in its shortest round-trip form. A length, distance, width,
+//! area, radius or total (a [`WideFloat`](crate::geometry::WideFloat)) prints as a JSON number
+//! when it fits in `f64` and as a JSON string with its decimal value to 17 significant digits
+//! when it exceeds `f64::MAX` (`"distance": "5.0846440246145847e308"`), never as `null`: the
+//! rule of "Values beyond f64" in `docs/design.md`.
 
 mod bezier;
 mod delaunay;

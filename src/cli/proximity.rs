@@ -6,7 +6,7 @@ use super::output::print_json;
 use super::CliError;
 use crate::count::{Counts, NoCount};
 use crate::delaunay::{voronoi_with, ClipBox, Ray};
-use crate::geometry::{Point2, PointSet};
+use crate::geometry::{Point2, PointSet, WideFloat};
 use crate::proximity::{
     closest_pair_with, euclidean_mst_with, largest_empty_circle_with, ClosestPairAlgorithm,
     NearestSearch,
@@ -90,7 +90,7 @@ struct PairOutput {
     algorithm: &'static str,
     pair: [usize; 2],
     points: [[f64; 2]; 2],
-    distance: f64,
+    distance: WideFloat,
     counts: Counts,
 }
 
@@ -99,7 +99,7 @@ struct PairOutput {
 struct NearestOutput {
     index: usize,
     point: [f64; 2],
-    distance: f64,
+    distance: WideFloat,
     counts: Counts,
 }
 
@@ -107,7 +107,7 @@ struct NearestOutput {
 #[derive(Debug, Serialize)]
 struct EmstOutput {
     edges: Vec<[usize; 2]>,
-    length: f64,
+    length: WideFloat,
     counts: Counts,
 }
 
@@ -115,7 +115,7 @@ struct EmstOutput {
 #[derive(Debug, Serialize)]
 struct CircleOutput {
     centre: [f64; 2],
-    radius: f64,
+    radius: WideFloat,
     sites: Vec<usize>,
     counts: Counts,
 }
@@ -201,7 +201,7 @@ pub(super) fn run_nearest(args: NearestArgs) -> Result<(), CliError> {
     print_json(&NearestOutput {
         index,
         point: p.into(),
-        distance: (p.x - x).hypot(p.y - y),
+        distance: WideFloat::distance(p, query),
         counts,
     })
 }

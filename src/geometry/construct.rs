@@ -1,5 +1,5 @@
 //! Rounded constructions of the Voronoi diagram and the proximity problems: circumcentres,
-//! midpoints, unit directions and distances.
+//! midpoints and unit directions (distances are `WideFloat::distance`).
 //!
 //! These build new points, so they cannot be exact in `f64`; every *decision* stays with
 //! the exact predicates. Each construction works on coordinate differences scaled by a
@@ -114,18 +114,6 @@ pub(crate) fn unit_direction(a: Point2, b: Point2) -> Point2 {
     Point2::new(dx / len, dy / len)
 }
 
-/// The Euclidean distance `|ab|`, rounded: within a few ulps for every finite pair, and `inf`
-/// when it exceeds `f64::MAX` (`hypot` scales internally, and differences that overflow are
-/// halved first, so no intermediate overflows).
-pub(crate) fn distance(a: Point2, b: Point2) -> f64 {
-    let (dx, dy) = (b.x - a.x, b.y - a.y);
-    if dx.is_finite() && dy.is_finite() {
-        dx.hypot(dy)
-    } else {
-        2.0 * (b.x / 2.0 - a.x / 2.0).hypot(b.y / 2.0 - a.y / 2.0)
-    }
-}
-
 /// `b - a` and `c - a`, halved (and `true`) if a full difference overflows.
 fn differences(a: Point2, b: Point2, c: Point2) -> (f64, f64, f64, f64, bool) {
     let d = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
@@ -210,8 +198,6 @@ mod tests {
         assert_eq!(c, p(0.0, 0.0));
         assert_eq!(midpoint(p(m, m), p(m, -m)), p(m, 0.0));
         assert_eq!(unit_direction(p(-m, 0.0), p(m, 0.0)), p(1.0, 0.0));
-        assert_eq!(distance(p(-m, 0.0), p(m, 0.0)), f64::INFINITY);
-        assert_eq!(distance(p(-m / 2.0, 0.0), p(m / 2.0, 0.0)), m);
     }
 
     #[test]

@@ -28,6 +28,7 @@ mod bigint;
 pub(crate) mod circle_predicates;
 pub(crate) mod construct;
 mod counted;
+pub(crate) mod exact_sum;
 mod expansion;
 mod extended;
 mod point;
@@ -54,3 +55,4 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 7] = [
 ];
 pub use predicates::{cmp_dist, cmp_lex, cross_sign, incircle, orient2d, InCircle, Orientation};
 pub use products::{cmp_line_dist, cmp_rect_area};
+pub(crate) use products::{line_distance, rect_area};

@@ -1,5 +1,7 @@
 //! The point type every geometric algorithm takes.
 
+use super::WideFloat;
+
 /// A point (or vector) in the plane with `f64` coordinates.
 ///
 /// The plane is oriented with y up, so counter-clockwise turns are positive. Any finite
@@ -68,15 +70,28 @@ impl From<Point2> for (f64, f64) {
 /// Two points of a set, by their indices, and their distance: the answer of the diameter and
 /// of the closest pair.
 ///
-/// The pair is exact (chosen by exact comparisons); the distance is rounded, within a few
-/// ulps of the true value, and `inf` when that exceeds `f64::MAX`.
+/// The pair is exact (chosen by exact comparisons); the distance is rounded, within 2^-51
+/// relative of the true value for every finite pair, and a [`WideFloat`] so that a distance
+/// beyond `f64::MAX` keeps its value (see [`WideFloat::distance`]).
+///
+/// ```
+/// use compgeo::calipers::{diameter, DiameterAlgorithm};
+/// use compgeo::geometry::Point2;
+///
+/// let pts = [Point2::new(-f64::MAX, -f64::MAX), Point2::new(f64::MAX, f64::MAX)];
+/// let d = diameter(&pts, DiameterAlgorithm::Calipers)?;
+/// assert_eq!(d.pair, [0, 1]);
+/// assert_eq!(d.distance.to_f64(), None); // 2√2 · f64::MAX
+/// assert_eq!(d.distance.to_string(), "5.0846440246145847e308");
+/// # Ok::<(), compgeo::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PointPair {
     /// The two indices into the input, the smaller first; equal only for a set of one point.
     pub pair: [usize; 2],
-    /// Their Euclidean distance, rounded.
-    pub distance: f64,
+    /// Their Euclidean distance, rounded (relative error below 2^-51).
+    pub distance: WideFloat,
 }
 
 impl PointPair {
@@ -84,7 +99,7 @@ impl PointPair {
     pub(crate) fn new(points: &[Point2], a: usize, b: usize) -> PointPair {
         PointPair {
             pair: [a.min(b), a.max(b)],
-            distance: super::construct::distance(points[a], points[b]),
+            distance: WideFloat::distance(points[a], points[b]),
         }
     }
 }

@@ -6,7 +6,7 @@
 //! nor fails on them; the plain functions take `&[Point2]` for convenience and build the set
 //! themselves.
 
-use super::Point2;
+use super::{Point2, WideFloat};
 use crate::error::{Error, Result};
 use std::ops::Deref;
 
@@ -135,14 +135,25 @@ impl BoundingBox {
         Some(b)
     }
 
-    /// The box's extent along x, `max.x - min.x`, rounded (`inf` if it exceeds `f64::MAX`).
-    pub fn width(&self) -> f64 {
-        self.max.x - self.min.x
+    /// The box's extent along x, `max.x - min.x`, correctly rounded; a [`WideFloat`], so
+    /// an extent beyond `f64::MAX` keeps its value.
+    ///
+    /// ```
+    /// use compgeo::geometry::{BoundingBox, Point2};
+    ///
+    /// let b = BoundingBox::of(&[Point2::new(-f64::MAX, 0.0), Point2::new(f64::MAX, 1.0)]).unwrap();
+    /// assert_eq!(b.width().to_f64(), None);
+    /// assert_eq!(b.width().to_string(), "3.5953862697246314e308"); // 2 · f64::MAX
+    /// assert_eq!(b.height(), 1.0);
+    /// ```
+    pub fn width(&self) -> WideFloat {
+        WideFloat::difference(self.max.x, self.min.x)
     }
 
-    /// The box's extent along y, `max.y - min.y`, rounded (`inf` if it exceeds `f64::MAX`).
-    pub fn height(&self) -> f64 {
-        self.max.y - self.min.y
+    /// The box's extent along y, `max.y - min.y`, correctly rounded, as
+    /// [`width`](Self::width).
+    pub fn height(&self) -> WideFloat {
+        WideFloat::difference(self.max.y, self.min.y)
     }
 
     /// Grows the box to hold `p` (a finite point); equal extremes keep the earlier value.
@@ -201,9 +212,10 @@ mod tests {
         let b = set.bounding_box().unwrap();
         assert_eq!(b.min, Point2::new(-0.0, -f64::MAX));
         assert_eq!(b.max, Point2::new(f64::MAX, 1e-310));
-        assert_eq!((b.width(), b.height()), (f64::MAX, f64::MAX));
+        assert_eq!((b.width(), b.height()), (f64::MAX.into(), f64::MAX.into()));
         let far = BoundingBox::of(&[Point2::new(0.0, -f64::MAX), Point2::new(0.0, f64::MAX)]);
-        assert_eq!(far.unwrap().height(), f64::INFINITY);
+        let two_max = WideFloat::from(f64::MAX).mul(WideFloat::from(2.0));
+        assert_eq!(far.unwrap().height(), two_max);
     }
 
     #[test]

@@ -79,9 +79,72 @@ impl WideFloat {
         Some(scale_by_pow2(self.significand, self.exponent.max(-1100)))
     }
 
+    /// `(significand, exponent)` with `self = significand · 2^exponent` exactly: the
+    /// significand is zero or in `[1, 2)` in magnitude, with the value's sign (the exponent
+    /// is 0 for zero). The exact value for callers that need it, e.g. in rational arithmetic.
+    ///
+    /// ```
+    /// use compgeo::geometry::WideFloat;
+    ///
+    /// assert_eq!(WideFloat::from(-6.0).to_parts(), (-1.5, 2));
+    /// let big = WideFloat::from(f64::MAX).mul(WideFloat::from(4.0));
+    /// assert_eq!(big.to_parts(), (2.0 - f64::EPSILON, 1025));
+    /// ```
+    pub fn to_parts(self) -> (f64, i32) {
+        (self.significand, self.exponent)
+    }
+
     /// The value as an `f64`, saturating at `±f64::MAX` instead of giving `None`.
     pub fn to_f64_saturating(self) -> f64 {
         self.to_f64().unwrap_or(f64::MAX.copysign(self.significand))
+    }
+
+    /// `a − b` for finite `a` and `b`, rounded once (correctly): a difference that
+    /// overflows `f64` is formed from the halves, which are exact there.
+    ///
+    /// ```
+    /// use compgeo::geometry::WideFloat;
+    ///
+    /// assert_eq!(WideFloat::difference(3.0, -1.5), 4.5);
+    /// let span = WideFloat::difference(f64::MAX, -f64::MAX);
+    /// assert_eq!(span.to_f64(), None);
+    /// assert_eq!(span.to_string(), "3.5953862697246314e308");
+    /// ```
+    ///
+    /// # Complexity
+    /// O(1).
+    pub fn difference(a: f64, b: f64) -> WideFloat {
+        debug_assert!(a.is_finite() && b.is_finite());
+        let d = a - b;
+        if d.is_finite() {
+            WideFloat::scaled(d, 0)
+        } else {
+            // |a − b| > f64::MAX needs both magnitudes above 2^970: halving them is exact.
+            WideFloat::scaled(a / 2.0 - b / 2.0, 1)
+        }
+    }
+
+    /// `self · 2^shift`, exactly (the exponent saturates at the `i32` range).
+    pub(crate) fn scale_pow2(self, shift: i32) -> WideFloat {
+        if self.is_zero() {
+            return self;
+        }
+        WideFloat {
+            exponent: self.exponent.saturating_add(shift),
+            ..self
+        }
+    }
+
+    /// `(negative, m, e)` with `self = ±m · 2^e` and `m < 2^53` an integer (zero for zero):
+    /// the significand's bits as an integer and the weight of its last bit.
+    pub(super) fn integer_parts(self) -> (bool, u64, i32) {
+        if self.is_zero() {
+            return (false, 0, 0);
+        }
+        // The significand has 53 bits, the first at 2^0: scaling by 2^52 makes it an
+        // integer, exactly.
+        let m = scale_by_pow2(self.significand.abs(), 52) as u64;
+        (self.is_negative(), m, self.exponent.saturating_sub(52))
     }
 
     /// Whether the value is zero.
@@ -166,9 +229,9 @@ impl WideFloat {
         ))
     }
 
-    /// The Euclidean distance `|ab|` between two finite points, within two ulps of the exact
-    /// value for every pair: the differences are formed without overflow (halved first when
-    /// they would) and scaled by a power of two before `hypot`.
+    /// The Euclidean distance `|ab|` between two finite points, with relative error below
+    /// 2^-51 (two units of 2^-52) for every pair: the differences are rounded once (halved
+    /// first when they would overflow) and scaled by a power of two before `hypot`.
     ///
     /// # Complexity
     /// O(1).
@@ -190,7 +253,6 @@ impl WideFloat {
     }
 
     /// The correctly rounded value of a big integer.
-    #[allow(dead_code)] // used by the exact constructions of the next commits
     pub(crate) fn from_big(v: &BigInt) -> WideFloat {
         let (negative, top, shift) = v.top_bits();
         if top == 0 {
@@ -313,6 +375,34 @@ impl Ord for WideFloat {
             magnitude.reverse()
         } else {
             magnitude
+        }
+    }
+}
+
+impl Default for WideFloat {
+    /// Zero.
+    fn default() -> WideFloat {
+        WideFloat::ZERO
+    }
+}
+
+/// Exact comparison with an `f64`: equal when the values are (NaN equals nothing, an
+/// infinity no `WideFloat`).
+impl PartialEq<f64> for WideFloat {
+    fn eq(&self, other: &f64) -> bool {
+        WideFloat::from_f64(*other).is_some_and(|o| *self == o)
+    }
+}
+
+/// Exact order against an `f64`: every `WideFloat` lies strictly between `-inf` and `inf`;
+/// NaN is unordered.
+impl PartialOrd<f64> for WideFloat {
+    fn partial_cmp(&self, other: &f64) -> Option<Ordering> {
+        match WideFloat::from_f64(*other) {
+            Some(o) => Some(self.cmp(&o)),
+            None if other.is_nan() => None,
+            None if *other > 0.0 => Some(Ordering::Less),
+            None => Some(Ordering::Greater),
         }
     }
 }

@@ -47,7 +47,8 @@ algorithm_family! {
 /// let pts = [(0.0, 0.0), (3.0, 4.0), (9.0, 9.0), (3.5, 5.0)].map(Point2::from);
 /// for algorithm in ClosestPairAlgorithm::ALL {
 ///     let c = closest_pair(&pts, algorithm)?;
-///     assert_eq!((c.pair, c.distance), ([1, 3], 1.25f64.sqrt()));
+///     assert_eq!(c.pair, [1, 3]);
+///     assert_eq!(c.distance, 1.25f64.sqrt());
 /// }
 /// # Ok::<(), compgeo::Error>(())
 /// ```

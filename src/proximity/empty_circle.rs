@@ -5,10 +5,10 @@
 //!
 //! Every decision is exact: the predicates on the constructed points (circumcentres against
 //! hull lines, the order of bisector crossings along a hull edge, squared radii) are in
-//! `geometry/circle_predicates/`. Only the returned centre and radius are rounded. The
-//! tests (`tests/suite/empty_circle.rs`) check the answer against an exact brute force over all
-//! triples and all supporting segments: the circle is in the hull, empty, and of the
-//! largest squared radius.
+//! `geometry/circle_predicates/`. Only the returned centre and radius are rounded (the radius
+//! once, from its exact square). The tests (`tests/suite/empty_circle.rs`) check the answer
+//! against an exact brute force over all triples and all supporting segments: the circle is
+//! in the hull, empty, and of the largest squared radius.
 
 use super::{adjacency, delaunay_edges};
 use crate::complexity::{on, Bound, Declaration};
@@ -18,9 +18,9 @@ use crate::error::Result;
 use crate::geometry::circle_predicates::{
     cmp_bisector_crossings, dot_sign, Circumcentre, CountedCirclePredicates, SquaredRadius,
 };
-use crate::geometry::construct::{circumcentre, distance, midpoint, scale_of};
+use crate::geometry::construct::{circumcentre, midpoint, scale_of};
 use crate::geometry::sweep_predicates::normalize_scale;
-use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
+use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet, WideFloat};
 use std::cmp::Ordering;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -43,13 +43,28 @@ pub(super) const DECLARATION: Declaration = Declaration {
 };
 
 /// A circle with no input point strictly inside.
+///
+/// ```
+/// use compgeo::geometry::Point2;
+/// use compgeo::proximity::largest_empty_circle;
+///
+/// // The corners of a square at ±f64::MAX: radius √2 · f64::MAX, beyond f64.
+/// let m = f64::MAX;
+/// let c = largest_empty_circle(&[(-m, -m), (m, -m), (m, m), (-m, m)].map(Point2::from))?;
+/// assert_eq!(c.centre, Point2::new(0.0, 0.0));
+/// assert_eq!(c.radius.to_f64(), None);
+/// assert_eq!(c.radius.to_string(), "2.5423220123072923e308");
+/// # Ok::<(), compgeo::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct EmptyCircle {
     /// Its centre (rounded).
     pub centre: Point2,
-    /// Its radius (rounded).
-    pub radius: f64,
+    /// Its radius: the exact circle's, from its exact squared radius rounded once, with
+    /// relative error below 2^-51 for every finite input (a nearly flat triangle's huge
+    /// circumradius included, and beyond `f64::MAX` it keeps its value).
+    pub radius: WideFloat,
     /// The input points on it that define it: three for a Voronoi vertex, two for a point
     /// where a Voronoi edge crosses the hull's boundary, one for a lone point.
     pub sites: Vec<usize>,
@@ -71,7 +86,8 @@ pub struct EmptyCircle {
 /// // The corners of a square: the centre is the square's, the radius half the diagonal.
 /// let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0)].map(Point2::from);
 /// let c = largest_empty_circle(&pts)?;
-/// assert_eq!((c.centre, c.radius), (Point2::new(1.0, 1.0), 2f64.sqrt()));
+/// assert_eq!(c.centre, Point2::new(1.0, 1.0));
+/// assert_eq!(c.radius, 2f64.sqrt());
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
@@ -99,13 +115,12 @@ pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
 /// if every candidate has radius 0), then the Voronoi vertices in the triangulation's
 /// triangle order, then the crossings along the hull edges in hull order.
 ///
-/// The centre and the radius are rounded constructions (decisions never depend on them):
-/// the circumcentre as in [`voronoi`](fn@crate::delaunay::voronoi), the crossing point as
-/// `p + t (q − p)`, and the radius from coordinate differences scaled by a power of two
-/// (`R = |bc| / (2 sin A)`, or the length of the vector from the site to the crossing), so
-/// it keeps its relative accuracy at any magnitude and any position; it loses accuracy
-/// only with the conditioning of the configuration (a nearly flat triangle, a crossing
-/// almost along its bisector).
+/// The centre is a rounded construction (decisions never depend on it): the circumcentre
+/// as in [`voronoi`](fn@crate::delaunay::voronoi), the crossing point as `p + t (q − p)`.
+/// The radius is the exact circle's: its exact squared radius (a quotient of big integers)
+/// rounded once, then a square root, so its relative error is below 2^-51 at any magnitude
+/// and in any configuration (a nearly flat triangle's huge circle included, beyond
+/// `f64::MAX` too); for collinear points it is half the widest gap.
 ///
 /// Degenerate input: for collinear points the hull is a segment and the answer is the
 /// midpoint of the widest gap between consecutive points (exact comparison of gaps); a
@@ -183,24 +198,23 @@ impl Candidate {
         match self {
             Candidate::HullVertex(i) => EmptyCircle {
                 centre: points[i],
-                radius: 0.0,
+                radius: WideFloat::ZERO,
                 sites: vec![i],
             },
             Candidate::VoronoiVertex(tri) => {
                 let [a, b, c] = tri.map(|i| points[i]);
                 EmptyCircle {
                     centre: circumcentre(a, b, c),
-                    radius: circumradius(a, b, c),
+                    radius: Circumcentre::new(a, b, c).squared_radius().radius(),
                     sites: tri.to_vec(),
                 }
             }
             Candidate::Crossing { edge, sites } => {
                 let [p, q] = edge.map(|i| points[i]);
                 let [s, w] = sites.map(|i| points[i]);
-                let (centre, radius) = crossing_circle(p, q, s, w);
                 EmptyCircle {
-                    centre,
-                    radius,
+                    centre: crossing_centre(p, q, s, w),
+                    radius: SquaredRadius::crossing(p, q, s, w).radius(),
                     sites: vec![sites[0].min(sites[1]), sites[0].max(sites[1])],
                 }
             }
@@ -213,7 +227,7 @@ fn widest_gap<C: Counter>(points: &[Point2], line: &[usize], c: &mut C) -> Empty
     if line.len() == 1 {
         return EmptyCircle {
             centre: points[line[0]],
-            radius: 0.0,
+            radius: WideFloat::ZERO,
             sites: line.to_vec(),
         };
     }
@@ -225,10 +239,10 @@ fn widest_gap<C: Counter>(points: &[Point2], line: &[usize], c: &mut C) -> Empty
         }
     }
     let [a, b] = best;
-    let centre = midpoint(points[a], points[b]);
     EmptyCircle {
-        centre,
-        radius: distance(centre, points[a]).max(distance(centre, points[b])),
+        centre: midpoint(points[a], points[b]),
+        // Half the gap: exact halving of the rounded length.
+        radius: WideFloat::distance(points[a], points[b]).scale_pow2(-1),
         sites: vec![a, b],
     }
 }
@@ -299,48 +313,10 @@ fn boundary_crossings(points: &[Point2], t: &Triangulation) -> Vec<([usize; 2], 
     out
 }
 
-/// The radius of the circumcircle of `a, b, c` (not collinear): `|bc| / (2 sin A)` at the
-/// vertex opposite the longest edge (the largest angle, whose sine is the largest), with
-/// the sine from the two edges at that vertex, each scaled by its own power of two, so no
-/// magnitude overflows or underflows. Clamped to `f64::MAX`.
-fn circumradius(a: Point2, b: Point2, c: Point2) -> f64 {
-    let len2 = |u: Point2, v: Point2| (v.x - u.x).powi(2) + (v.y - u.y).powi(2);
-    // A numerical choice on rounded lengths (a near tie means either is as accurate).
-    let (o, u, v) = {
-        let (ab, bc, ca) = (len2(a, b), len2(b, c), len2(c, a));
-        if ab >= bc && ab >= ca {
-            (c, a, b)
-        } else if bc >= ca {
-            (a, b, c)
-        } else {
-            (b, c, a)
-        }
-    };
-    let unit = |p: Point2| {
-        let (mut dx, mut dy) = (p.x - o.x, p.y - o.y);
-        if !(dx.is_finite() && dy.is_finite()) {
-            (dx, dy) = (p.x / 2.0 - o.x / 2.0, p.y / 2.0 - o.y / 2.0);
-        }
-        let s = scale_of(dx.abs().max(dy.abs()));
-        (dx / s, dy / s)
-    };
-    let ((ux, uy), (vx, vy)) = (unit(u), unit(v));
-    let cross = (ux * vy - uy * vx).abs();
-    // The scale-free ratio first: a subnormal distance must not meet a product of
-    // scaled lengths before the division.
-    let r = distance(u, v) * (ux.hypot(uy) * vx.hypot(vy) / (2.0 * cross));
-    if r.is_nan() {
-        f64::MAX
-    } else {
-        r.min(f64::MAX)
-    }
-}
-
-/// The centre and radius of the crossing circle of hull edge `p → q` and the bisector of
-/// `s` and `w`: t = ((m − p) · u) / ((q − p) · u) with u = w − s and m = (s + w) / 2, on
-/// differences scaled by one power of two (t is scale-free), the centre p + t (q − p) and
-/// the radius |p − s + t (q − p)| in the scaled frame, scaled back.
-fn crossing_circle(p: Point2, q: Point2, s: Point2, w: Point2) -> (Point2, f64) {
+/// The centre of the crossing circle of hull edge `p → q` and the bisector of `s` and `w`:
+/// t = ((m − p) · u) / ((q − p) · u) with u = w − s and m = (s + w) / 2, on differences
+/// scaled by one power of two (t is scale-free), and the centre p + t (q − p).
+fn crossing_centre(p: Point2, q: Point2, s: Point2, w: Point2) -> Point2 {
     let coords = [p, q, s, w];
     // Halve every coordinate if a difference overflows (a rounding only for subnormals).
     let half = coords
@@ -373,9 +349,7 @@ fn crossing_circle(p: Point2, q: Point2, s: Point2, w: Point2) -> (Point2, f64) 
             2.0 * (a / 2.0 + t * (b / 2.0 - a / 2.0))
         }
     };
-    let centre = Point2::new(along(p.x, q.x), along(p.y, q.y));
-    let radius = (t * gx - dsx).hypot(t * gy - dsy) * sc / h;
-    (centre, radius.min(f64::MAX))
+    Point2::new(along(p.x, q.x), along(p.y, q.y))
 }
 
 #[cfg(test)]
@@ -388,7 +362,7 @@ mod tests {
         let c = largest_empty_circle(&pts).unwrap();
         assert_eq!(
             (c.centre, c.radius, c.sites),
-            (Point2::new(3.5, 0.0), 1.5, vec![3, 1])
+            (Point2::new(3.5, 0.0), WideFloat::from(1.5), vec![3, 1])
         );
         let c = largest_empty_circle(&[Point2::new(1.0, 1.0)]).unwrap();
         assert_eq!(c.radius, 0.0);
@@ -402,7 +376,9 @@ mod tests {
         let c = largest_empty_circle(&pts).unwrap();
         assert_eq!(c.centre.y, 0.0);
         assert!(c.centre.x > 0.0 && c.centre.x < 4.0);
-        assert!((c.radius - distance(c.centre, pts[0])).abs() < 1e-12);
-        assert!((c.radius - distance(c.centre, pts[2])).abs() < 1e-12);
+        // Equidistant from (0, 0) and (2, 0.5) on the x-axis: x² = (x − 2)² + 1/4 at
+        // x = 17/16 (or 4 − 17/16 by symmetry), so the exact radius 17/16 comes out exactly.
+        assert_eq!(c.radius, 1.0625);
+        assert!([1.0625, 4.0 - 1.0625].contains(&c.centre.x), "{c:?}");
     }
 }

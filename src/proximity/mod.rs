@@ -1,17 +1,3 @@
-//! The course's proximity problems solved on the Delaunay triangulation: all nearest
-//! neighbours, the closest pair, nearest-neighbour queries and the Euclidean minimum
-//! spanning tree.
-//!
-//! All follow [RD, §2.4] "Solución de los problemas de proximidad":
-//! every nearest neighbour of a site is a Delaunay neighbour (Theorem 2.31), so the
-//! Delaunay edges (3n − 3 − h of them) hold every answer. Distances are compared with the
-//! exact [`cmp_dist`](crate::geometry::cmp_dist) only; the `distance` fields of the
-//! results are rounded `f64` values for display.
-//!
-//! Duplicates are points at distance zero: a duplicate's nearest neighbour is a point equal
-//! to it, the closest pair of a set with duplicates is a pair of equal points, and the
-//! spanning tree joins equal points by zero-length edges.
-
 //! The course's proximity problems: all nearest neighbours, the closest pair (on the Delaunay
 //! triangulation and by divide and conquer), nearest-neighbour queries, the Euclidean minimum
 //! spanning tree and the largest empty circle.
@@ -19,8 +5,9 @@
 //! All but the divide and conquer follow [RD, §2.4] "Solución de los
 //! problemas de proximidad": every nearest neighbour of a site is a Delaunay neighbour
 //! (Theorem 2.31), so the Delaunay edges (3n − 3 − h of them) hold every answer. Distances are
-//! compared with the exact [`cmp_dist`](crate::geometry::cmp_dist) only; the `distance` fields
-//! of the results are rounded `f64` values for display.
+//! compared with the exact [`cmp_dist`](crate::geometry::cmp_dist) only; the distances,
+//! lengths and radii of the results are reported as [`WideFloat`](crate::geometry::WideFloat)s,
+//! within a stated relative error of the exact values even beyond `f64::MAX`.
 //!
 //! | problem | function | file |
 //! |---|---|---|
@@ -104,7 +91,7 @@ pub(crate) fn at_least(needed: usize, got: usize) -> Result<()> {
 mod tests {
     use super::*;
     use crate::count::NoCount;
-    use crate::geometry::{Point2, PointPair, PointSet};
+    use crate::geometry::{Point2, PointPair, PointSet, WideFloat};
 
     fn pts(v: &[(f64, f64)]) -> Vec<Point2> {
         v.iter().map(|&p| Point2::from(p)).collect()
@@ -144,7 +131,7 @@ mod tests {
         let same = pts(&[(1.0, 2.0), (1.0, 2.0)]);
         let zero = PointPair {
             pair: [0, 1],
-            distance: 0.0,
+            distance: WideFloat::ZERO,
         };
         for algorithm in ClosestPairAlgorithm::ALL {
             assert_eq!(closest_pair(&same, algorithm).unwrap(), zero);

@@ -113,3 +113,17 @@ pub fn is_unique_delaunay(
 pub fn set(pts: &[compgeo::geometry::Point2]) -> compgeo::geometry::PointSet<'_> {
     compgeo::geometry::PointSet::new(pts).expect("the tests' points are finite")
 }
+
+/// The exact value of a `WideFloat`, for comparisons in rational arithmetic.
+pub fn wide_q(w: compgeo::geometry::WideFloat) -> num_rational::BigRational {
+    use num_rational::BigRational;
+    let (significand, exponent) = w.to_parts();
+    let two = BigRational::from_integer(2.into());
+    let power = num_traits::pow(two, exponent.unsigned_abs() as usize);
+    let m = BigRational::from_float(significand).expect("a finite significand");
+    if exponent >= 0 {
+        m * power
+    } else {
+        m / power
+    }
+}

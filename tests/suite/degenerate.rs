@@ -6,7 +6,7 @@
 
 use compgeo::calipers::{diameter, ConvexPolygon, DiameterAlgorithm};
 use compgeo::delaunay::{triangulate, voronoi, Algorithm as Builder};
-use compgeo::geometry::{Point2, PointSet};
+use compgeo::geometry::{Point2, PointSet, WideFloat};
 use compgeo::hull::{convex_hull, Algorithm as Hull, HullOptions};
 use compgeo::proximity::{
     all_nearest_neighbours, closest_pair, euclidean_mst, largest_empty_circle, nearest,
@@ -61,7 +61,11 @@ fn closest(p: &[Point2], ties: &[[usize; 2]], distance: f64) {
 fn diameters(p: &[Point2], pair: [usize; 2], distance: f64) {
     for a in DiameterAlgorithm::ALL {
         let d = diameter(p, a).unwrap();
-        assert_eq!((d.pair, d.distance), (pair, distance), "{a}");
+        assert_eq!(
+            (d.pair, d.distance),
+            (pair, WideFloat::from(distance)),
+            "{a}"
+        );
     }
 }
 
@@ -92,8 +96,15 @@ fn no_points() {
     assert!(too_few(all_nearest_neighbours(&p), 2));
     assert!(too_few(nearest(&p, Point2::new(0.0, 0.0)), 1));
     let t = euclidean_mst(&p).unwrap();
-    assert_eq!((t.edges.len(), t.weight, t.components), (0, 0.0, 0));
-    assert!(t.weight.is_sign_positive());
+    assert_eq!(
+        (t.edges.len(), t.weight, t.components),
+        (0, WideFloat::ZERO, 0)
+    );
+    assert_eq!(
+        t.weight.to_f64().map(f64::to_bits),
+        Some(0),
+        "an empty sum is +0.0"
+    );
     assert!(too_few(largest_empty_circle(&p), 1));
 }
 
@@ -114,9 +125,15 @@ fn one_point() {
     assert!(too_few(all_nearest_neighbours(&p), 2));
     assert_eq!(nearest(&p, Point2::new(-9.0, 1e9)).unwrap(), 0);
     let t = euclidean_mst(&p).unwrap();
-    assert_eq!((t.edges.len(), t.weight, t.components), (0, 0.0, 1));
+    assert_eq!(
+        (t.edges.len(), t.weight, t.components),
+        (0, WideFloat::ZERO, 1)
+    );
     let c = largest_empty_circle(&p).unwrap();
-    assert_eq!((c.centre, c.radius, c.sites), (p[0], 0.0, vec![0]));
+    assert_eq!(
+        (c.centre, c.radius, c.sites),
+        (p[0], WideFloat::ZERO, vec![0])
+    );
 }
 
 #[test]
@@ -133,9 +150,12 @@ fn two_points() {
     assert_eq!(all_nearest_neighbours(&p).unwrap(), [1, 0]);
     assert_eq!(nearest(&p, Point2::new(5.0, 0.0)).unwrap(), 1);
     let t = euclidean_mst(&p).unwrap();
-    assert_eq!((t.edges, t.weight, t.components), (vec![[0, 1]], 5.0, 1));
+    assert_eq!(
+        (t.edges, t.weight, t.components),
+        (vec![[0, 1]], 5.0.into(), 1)
+    );
     let c = largest_empty_circle(&p).unwrap();
-    assert_eq!((c.centre, c.radius), (Point2::new(3.5, 1.0), 2.5));
+    assert_eq!((c.centre, c.radius), (Point2::new(3.5, 1.0), 2.5.into()));
 }
 
 #[test]
@@ -154,10 +174,10 @@ fn copies_of_one_point() {
     let t = euclidean_mst(&p).unwrap();
     assert_eq!(
         (t.edges, t.weight, t.components),
-        (vec![[0, 1], [0, 2]], 0.0, 1)
+        (vec![[0, 1], [0, 2]], WideFloat::ZERO, 1)
     );
     let c = largest_empty_circle(&p).unwrap();
-    assert_eq!((c.centre, c.radius), (p[0], 0.0));
+    assert_eq!((c.centre, c.radius), (p[0], WideFloat::ZERO));
 }
 
 #[test]
@@ -180,8 +200,11 @@ fn collinear_points() {
     assert_eq!(nearest(&p, Point2::new(2.9, 3.5)).unwrap(), 3);
     let t = euclidean_mst(&p).unwrap();
     assert_eq!(t.edges.len(), 3);
-    assert!((t.weight - 3.0 * gap).abs() < 1e-15);
+    assert!((t.weight.to_f64().unwrap() - 3.0 * gap).abs() < 1e-15);
     let c = largest_empty_circle(&p).unwrap();
     assert_eq!(c.sites, [0, 2], "the first of the widest gaps");
-    assert_eq!((c.centre, c.radius), (Point2::new(0.5, 0.5), gap / 2.0));
+    assert_eq!(
+        (c.centre, c.radius),
+        (Point2::new(0.5, 0.5), (gap / 2.0).into())
+    );
 }

@@ -26,6 +26,7 @@ mod graph;
 mod hull;
 mod interpolate;
 mod interpolate_cli;
+mod overflow;
 mod predicates;
 mod proximity;
 mod registry;

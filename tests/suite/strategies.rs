@@ -36,3 +36,35 @@ pub fn mixed_magnitudes(len: Range<usize>) -> impl Strategy<Value = Vec<Point2>>
     prop::collection::vec((coord.clone(), coord), len)
         .prop_map(|v| v.into_iter().map(Point2::from).collect())
 }
+
+/// Finite coordinates at the ends of the double range and between: `±f64::MAX` and a few
+/// ulps below it, powers of two times small integers from 2^-1074 to 2^1020, subnormals, and
+/// any finite double. Differences, lengths and areas of such points overflow `f64` or
+/// underflow it.
+pub fn extreme_coordinate() -> impl Strategy<Value = f64> {
+    let pow2 = |e: i32| {
+        if e >= -1022 {
+            f64::from_bits(((e + 1023) as u64) << 52)
+        } else {
+            f64::from_bits(1 << (e + 1074))
+        }
+    };
+    let signed = |v: f64, negative: bool| if negative { -v } else { v };
+    prop_oneof![
+        (0u64..4, any::<bool>())
+            .prop_map(move |(k, n)| signed(f64::from_bits(f64::MAX.to_bits() - k), n)),
+        (
+            -8i32..=8,
+            prop::sample::select(vec![-1074, -1060, -1022, -500, -1, 0, 1, 500, 1000, 1020])
+        )
+            .prop_map(move |(m, e)| f64::from(m) * pow2(e)),
+        (1u64..1 << 20, any::<bool>()).prop_map(move |(k, n)| signed(f64::from_bits(k), n)),
+        any::<f64>().prop_filter("finite", |v| v.is_finite()),
+    ]
+}
+
+/// `len` points with [`extreme_coordinate`] coordinates.
+pub fn extreme_points(len: Range<usize>) -> impl Strategy<Value = Vec<Point2>> {
+    prop::collection::vec((extreme_coordinate(), extreme_coordinate()), len)
+        .prop_map(|v| v.into_iter().map(Point2::from).collect())
+}

@@ -12,6 +12,7 @@ use crate::complexity::{Bound, Entry, Workload};
 use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{graph, with_random_weights, GraphKind};
+use crate::geometry::WideFloat;
 use crate::graph::{
     colour_with, search_with, spanning_forest_with, ColouringAlgorithm, Graph, MstAlgorithm,
     SearchAlgorithm, WeightedGraph,
@@ -107,13 +108,13 @@ struct Tree {
 
 impl Workload for Tree {
     type Input = WeightedGraph;
-    type Output = f64;
+    type Output = WideFloat;
 
     fn prepare(&self, n: usize, seed: u64) -> Result<WeightedGraph> {
         WeightedGraph::from_edge_list(&with_random_weights(random_graph(n, seed)?, seed))
     }
 
-    fn run<C: Counter>(&self, g: &mut WeightedGraph, counter: &mut C) -> Result<f64> {
+    fn run<C: Counter>(&self, g: &mut WeightedGraph, counter: &mut C) -> Result<WideFloat> {
         Ok(spanning_forest_with(g, self.algorithm, counter).weight)
     }
 

@@ -32,7 +32,8 @@ pub(super) const DECLARATION: Declaration = Declaration {
 ///
 /// let g = WeightedGraph::from_edges(4, &[[0, 1], [1, 2], [2, 3], [3, 0]], &[4.0, 1.0, 2.0, 3.0])?;
 /// let t = prim(&g);
-/// assert_eq!((t.edges, t.weight), (vec![1, 2, 3], 6.0));
+/// assert_eq!(t.edges, [1, 2, 3]);
+/// assert_eq!(t.weight, 6.0);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn prim(g: &WeightedGraph) -> SpanningForest {
@@ -67,7 +68,8 @@ pub fn prim(g: &WeightedGraph) -> SpanningForest {
 /// let g = WeightedGraph::from_edges(5, &[[0, 1], [1, 2], [0, 2], [3, 4]], &[1.0, 1.0, 5.0, 2.0])?;
 /// let mut c = Counts::default();
 /// let f = prim_with(&g, &mut c);
-/// assert_eq!((f.edges, f.weight, f.components), (vec![0, 1, 3], 4.0, 2));
+/// assert_eq!((f.edges, f.components), (vec![0, 1, 3], 2));
+/// assert_eq!(f.weight, 4.0);
 /// assert_eq!(c.edge_visits, 8);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
