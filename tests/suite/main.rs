@@ -25,6 +25,7 @@ mod graph;
 mod hull;
 mod interpolate;
 mod interpolate_cli;
+mod limits;
 mod predicates;
 mod proximity;
 mod registry;

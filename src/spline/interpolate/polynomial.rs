@@ -19,7 +19,9 @@
 //! Θ(N³ + N²D) time and Θ(N² + ND) space for N conditions in R^D.
 
 use super::linear::solve_dense;
-use super::validate::{check_distinct, check_hermite, check_nodes_and_points, finite, singular};
+use super::validate::{
+    check_dense, check_distinct, check_hermite, check_nodes_and_points, finite, singular,
+};
 use crate::complexity::Declaration;
 use crate::spline::bezier::Reparametrised;
 use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
@@ -194,7 +196,9 @@ impl<S: Scalar, const D: usize> Subsegment<S, D> for Polynomial<S, D> {
 /// [`Error::Empty`] for no nodes; [`Error::InvalidParameter`] (`"points"`) if the lengths
 /// differ; [`Error::NonFinite`] for a NaN or infinite coordinate; [`Error::InvalidParameter`]
 /// (`"nodes"`) for a non-finite node or two equal nodes (the system is singular: a repeated
-/// node needs derivative data, see [`vandermonde_hermite`]).
+/// node needs derivative data, see [`vandermonde_hermite`]); [`Error::LimitExceeded`] for
+/// more than [`MAX_DENSE_UNKNOWNS`](crate::limits::MAX_DENSE_UNKNOWNS) nodes, before the
+/// matrix is allocated.
 ///
 /// # Complexity
 ///
@@ -215,6 +219,7 @@ pub fn vandermonde<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
 ) -> Result<Polynomial<S, D>> {
     check_nodes_and_points(nodes, points)?;
+    check_dense(nodes.len())?;
     check_distinct(nodes)?;
     let n = nodes.len();
     let matrix = nodes
@@ -245,7 +250,10 @@ pub fn vandermonde<S: Scalar, const D: usize>(
 ///
 /// [`Error::Empty`] for no nodes or a node without values; [`Error::NonFinite`] for a
 /// non-finite value (the index counts values over all nodes in order);
-/// [`Error::InvalidParameter`] (`"nodes"`) for a non-finite or repeated node.
+/// [`Error::InvalidParameter`] (`"nodes"`) for a non-finite or repeated node;
+/// [`Error::LimitExceeded`] for more than
+/// [`MAX_DENSE_UNKNOWNS`](crate::limits::MAX_DENSE_UNKNOWNS) conditions, before the matrix is
+/// allocated.
 ///
 /// # Complexity
 ///
@@ -269,6 +277,7 @@ pub fn vandermonde_hermite<S: Scalar, const D: usize>(
     data: &[HermiteNode<S, D>],
 ) -> Result<Polynomial<S, D>> {
     let total = check_hermite(data)?;
+    check_dense(total)?;
     let mut matrix = Vec::with_capacity(total);
     let mut rhs = Vec::with_capacity(total);
     for node in data {
