@@ -9,6 +9,7 @@ mod common;
 mod spline_common;
 mod strategies;
 
+mod attack_cli;
 mod bezier;
 mod bezier_eval;
 mod calipers;

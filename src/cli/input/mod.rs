@@ -57,8 +57,8 @@ pub struct PointInput {
 /// A graph argument: the path of a JSON graph, or `-` for stdin.
 #[derive(Debug, Clone, clap::Args)]
 pub struct GraphInput {
-    /// Graph file: JSON {"vertices": n, "edges": [[u, v], ...]} or [[u, v, w], ...]; `-`
-    /// reads stdin.
+    /// Graph file: JSON {"vertices": n, "edges": [[u, v], ...]}, with weights
+    /// {"vertices": n, "edges": [[u, v, w], ...]}; `-` reads stdin.
     #[arg(value_name = "G")]
     pub input: PathBuf,
 }
