@@ -222,6 +222,20 @@ fn interpolation_checks_degrees_and_dense_systems() {
         "MAX_DENSE_UNKNOWNS",
         m as u128,
     );
+    // Power-form coefficients can be any number; their Θ(n²) conversions to the Bézier
+    // form check the degree first.
+    use compgeo::spline::{Bezier, Polynomial, Subsegment};
+    let coefficients = vec![Point::new([1.0]); n];
+    assert_limit(
+        Bezier::from_monomial(&coefficients),
+        "MAX_DEGREE",
+        n as u128 - 1,
+    );
+    assert_limit(
+        Polynomial::new(coefficients).subsegment(&0.0, &1.0),
+        "MAX_DEGREE",
+        n as u128 - 1,
+    );
     // At the limits the work is done.
     assert_eq!(lagrange(&nodes[..5], &pts[..5]).unwrap().nodes().len(), 5);
     assert!(vandermonde(&nodes[..8], &pts[..8]).is_ok());

@@ -55,7 +55,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Errors
     ///
     /// [`Error::Overflow`] if rounding carries a new point beyond the range of `f64` (only
-    /// for coordinates within an ulp of ±`f64::MAX`).
+    /// for coordinates within an ulp of ±`f64::MAX`); [`Error::LimitExceeded`] for a curve
+    /// already of degree [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
     ///
     /// ```
     /// use compgeo::spline::{Bezier, Point};

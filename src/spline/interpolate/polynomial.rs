@@ -20,7 +20,8 @@
 
 use super::linear::solve_dense;
 use super::validate::{
-    check_dense, check_distinct, check_hermite, check_nodes_and_points, finite, singular,
+    check_degree, check_dense, check_distinct, check_hermite, check_nodes_and_points, finite,
+    singular,
 };
 use crate::complexity::Declaration;
 use crate::spline::bezier::Reparametrised;
@@ -310,7 +311,9 @@ pub fn vandermonde_hermite<S: Scalar, const D: usize>(
 ///
 /// # Errors
 ///
-/// [`Error::Overflow`] if, with `f64`, a control point is beyond the double range.
+/// [`Error::Overflow`] if, with `f64`, a control point is beyond the double range;
+/// [`Error::LimitExceeded`] for a degree above [`MAX_DEGREE`](crate::limits::MAX_DEGREE)
+/// (a [`Polynomial`] may have any number of coefficients), before the Θ(n²) work.
 ///
 /// # Complexity
 ///
@@ -321,6 +324,7 @@ pub(super) fn nested_to_bezier<S: Scalar, const D: usize>(
     a: &S,
     b: &S,
 ) -> Result<Reparametrised<S, D>> {
+    check_degree(coefficients.len())?;
     let n = coefficients.len() - 1;
     let mut p = vec![coefficients[n].clone()];
     for i in (0..n).rev() {
