@@ -37,7 +37,7 @@ fn bench<F>(
         b.iter_batched_ref(
             || {
                 seed += 1;
-                sequence(kind, n, seed)
+                sequence(kind, n, seed).expect("n is far below MAX_KEYS")
             },
             &mut sort,
             BatchSize::LargeInput,
@@ -104,7 +104,7 @@ impl FloatInput {
 
     fn generate(self, n: usize, seed: u64) -> Vec<f64> {
         match self {
-            FloatInput::Mixed => sequence_f64(n, seed),
+            FloatInput::Mixed => sequence_f64(n, seed).expect("n is far below MAX_KEYS"),
             FloatInput::Unit => points(PointKind::UniformSquare, n.div_ceil(2), seed)
                 .expect("n is far below MAX_POINTS")
                 .iter()

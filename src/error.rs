@@ -64,6 +64,19 @@ pub enum Error {
         /// The operation, e.g. "derivative".
         what: &'static str,
     },
+    /// A size beyond one of the documented limits of [`crate::limits`] (a degree, a vertex
+    /// or edge count, how many points to generate), found before anything is allocated.
+    #[error("{what} {value} exceeds {limit} = {max}")]
+    LimitExceeded {
+        /// What the size counts, e.g. "graph edge count".
+        what: &'static str,
+        /// The size asked for (computed exactly, so it may exceed `usize`).
+        value: u128,
+        /// The limit's constant in [`crate::limits`], e.g. `"MAX_EDGES"`.
+        limit: &'static str,
+        /// The limit's value.
+        max: usize,
+    },
     /// A parameter is outside its valid domain (a knot vector that decreases, a size of zero,
     /// a Beta-spline parameter that makes the basis degenerate, ...).
     #[error("invalid {name}: {reason}")]

@@ -10,6 +10,7 @@
 //! | [`geometry`] | [`Point2`](geometry::Point2), the validated [`PointSet`](geometry::PointSet) and its [`BoundingBox`](geometry::BoundingBox), exact predicates, [`PointPair`](geometry::PointPair), [`WideFloat`](geometry::WideFloat) for lengths beyond `f64` | `src/geometry/` |
 //! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) | `src/count.rs` |
 //! | [`error`] | the crate's [`Error`] and [`Result`] | `src/error.rs` |
+//! | [`limits`] | every size limit (degrees, vertex and edge counts, generated sizes), checked before allocating | `src/limits.rs` |
 //! | [`gen`] | seeded workload generators: point sets, graphs, number sequences | `src/gen/` |
 //! | [`complexity`] | every algorithm's [`Declaration`](complexity::Declaration), stated bounds, the catalog, measurement, fits and verdicts | `src/complexity/` |
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces | `src/sort/`, one file per sort |
@@ -158,6 +159,7 @@ pub mod gen;
 pub mod geometry;
 pub mod graph;
 pub mod hull;
+pub mod limits;
 pub mod proximity;
 pub mod sort;
 pub mod spline;

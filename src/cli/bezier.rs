@@ -56,7 +56,7 @@ enum Op {
     Elevate {
         #[command(flatten)]
         curve: CurveArgs,
-        /// The target degree [default: the curve's degree plus one]
+        /// The target degree, at most MAX_DEGREE = 65536 [default: the curve's degree plus one]
         #[arg(long)]
         degree: Option<usize>,
     },
@@ -64,7 +64,7 @@ enum Op {
     Derivative {
         #[command(flatten)]
         curve: CurveArgs,
-        /// The order r of the derivative
+        /// The order r of the derivative (above the curve's degree: the zero curve)
         #[arg(long, default_value_t = 1)]
         order: usize,
         /// Also evaluate the derivative at this parameter

@@ -5,8 +5,8 @@ use std::io;
 /// Everything that can go wrong in a `compgeo` command.
 ///
 /// Its `Display` is the one-line message printed after `error: `. Every variant except
-/// [`CliError::Output`] is a problem with the user's input or arguments and exits with
-/// code 2; a failure to write the result exits with code 1.
+/// [`CliError::Output`] is a problem with the user's input, arguments or paths and exits
+/// with code 2; a failure to write the result to stdout exits with code 1.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum CliError {
@@ -18,6 +18,14 @@ pub enum CliError {
     #[error("cannot read {path}: {source}")]
     Read {
         /// The path as given, or `stdin`.
+        path: String,
+        /// The underlying I/O error.
+        source: io::Error,
+    },
+    /// A file or directory the command writes (`report --out`) cannot be written.
+    #[error("cannot write {path}: {source}")]
+    Write {
+        /// The path as given, quoted.
         path: String,
         /// The underlying I/O error.
         source: io::Error,
@@ -58,7 +66,7 @@ pub enum CliError {
     /// Arguments that are individually valid but do not fit together.
     #[error("{0}")]
     Usage(String),
-    /// The result could not be written to stdout.
+    /// The result could not be written to stdout (a closed pipe, a full disk).
     #[error("cannot write output: {0}")]
     Output(io::Error),
 }

@@ -29,7 +29,8 @@ struct PointsArgs {
     /// Distribution or degenerate configuration
     #[arg(long)]
     kind: PointKind,
-    /// Number of points
+    /// Number of points (at most MAX_POINTS = 2^26; cocircular at most MAX_COCIRCULAR =
+    /// 393660)
     #[arg(long)]
     n: usize,
     /// Seed: the same seed gives the same points on every machine
@@ -43,7 +44,8 @@ struct GraphArgs {
     #[arg(long)]
     kind: GraphKind,
     /// Size: vertices (gnm, grid, complete, cycle, tree), 10 (petersen), order k
-    /// (mycielski), board side (queen), vertices per side (crown)
+    /// (mycielski), board side (queen), vertices per side (crown); the graph may have at
+    /// most MAX_VERTICES = 2^26 vertices and MAX_EDGES = 2^26 edges
     #[arg(long)]
     n: usize,
     /// Number of edges (gnm only, where it is required)
@@ -62,7 +64,7 @@ struct SequenceArgs {
     /// Order of the keys
     #[arg(long)]
     kind: SequenceKind,
-    /// Number of keys (at most 2^27)
+    /// Number of keys (at most MAX_KEYS = 2^26)
     #[arg(long)]
     n: usize,
     /// Seed: the same seed gives the same keys on every machine
@@ -99,17 +101,7 @@ pub(super) fn run(args: GenArgs) -> Result<(), CliError> {
             }
             print_json(&graph_json(g))
         }
-        What::Sequence(a) => {
-            // The library cannot fail, but an absurd n would abort on allocation.
-            if a.n > gen::MAX_POINTS {
-                return Err(CliError::Usage(format!(
-                    "--n {} is more than the {} keys gen sequence prints",
-                    a.n,
-                    gen::MAX_POINTS
-                )));
-            }
-            print_json(&gen::sequence(a.kind, a.n, a.seed))
-        }
+        What::Sequence(a) => print_json(&gen::sequence(a.kind, a.n, a.seed)?),
     }
 }
 

@@ -27,7 +27,8 @@ pub(super) struct SearchArgs {
     /// The start vertex
     #[arg(long, short)]
     start: usize,
-    /// Print the course's Add / Remove / Q table instead of JSON
+    /// Print the course's Add / Remove / Q table instead of JSON (graphs of at most
+    /// TRACE_MAX_VERTICES = 1000 vertices)
     #[arg(long)]
     trace: bool,
     #[command(flatten)]

@@ -59,7 +59,7 @@ enum Method {
         #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
         end_tangent: Option<String>,
     },
-    /// The interpolating polynomial in Lagrange form, evaluated at parameters
+    /// The interpolating polynomial in Lagrange form: its values and basis at parameters
     Lagrange {
         #[command(flatten)]
         data: PolyData,
@@ -104,7 +104,8 @@ struct PolyData {
     /// The distinct nodes, JSON [0, "1/2", 1] (any order)
     #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
     nodes: String,
-    /// Parameters to evaluate the polynomial at, JSON [u, ...]
+    /// Parameters to evaluate the polynomial at, JSON [u, ...] (lagrange also prints the
+    /// basis there: at most MAX_BASIS_TABLE = 2^24 values, nodes times parameters)
     #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
     at: Option<String>,
     /// Compute in exact rationals and print every number as a string such as "47/18"
@@ -217,6 +218,8 @@ fn run_typed<S: JsonScalar, const D: usize>(
                 Some(text) => read_scalars::<S>(text, "parameter", "parameters (--at)")?,
                 None => Vec::new(),
             };
+            // One basis value per node and parameter: two short lists can ask for a lot.
+            crate::limits::BASIS_TABLE.check(nodes.len() as u128 * at.len() as u128)?;
             let mut values = Vec::with_capacity(at.len());
             let mut bases = Vec::with_capacity(at.len());
             for u in &at {

@@ -1,8 +1,9 @@
 //! The `compgeo` command line: a thin layer that parses arguments, reads input, calls the
 //! library and prints one JSON value on stdout.
 //!
-//! Exit codes: 0 on success; 2 for bad input or bad arguments, with exactly one line on
-//! stderr starting `error: ` and nothing on stdout; 1 if the result cannot be written.
+//! Exit codes: 0 on success; 2 for bad input, bad arguments, a path that cannot be read or
+//! written, or a command group without its subcommand, with exactly one line on stderr
+//! starting `error: ` and nothing on stdout; 1 if the result cannot be written to stdout.
 //! `--help` and `--version` print to stdout and exit 0.
 //!
 //! Every command lives in its own file, `src/cli/<command>.rs`, exposing an `Args` struct
@@ -36,7 +37,8 @@ mod stats;
 use error::CliError;
 
 use clap::error::ErrorKind;
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
+use std::ffi::OsString;
 use std::process::ExitCode;
 
 /// Exact computational geometry that measures its own complexity.
@@ -62,13 +64,14 @@ enum Command {
     Bfs(graph::SearchArgs),
     /// Depth-first search from a vertex: visit order and parents (or --trace)
     Dfs(graph::SearchArgs),
-    /// Colour a graph's vertices greedily with a chosen algorithm
+    /// Colour a graph's vertices with a chosen algorithm: greedy orders, DSatur, tabu search
     Colour(graph::ColourArgs),
     /// Minimum spanning tree (forest) of a weighted graph with a chosen algorithm
     Mst(graph::MstArgs),
     /// Convex hull of a point set: vertex indices counter-clockwise from the lexicographically smallest
     Hull(hull::HullArgs),
-    /// Diameter of a point set: the farthest pair, by rotating calipers or brute force
+    /// Diameter of a point set (the farthest pair, by rotating calipers or brute force), its
+    /// width and minimum-area rectangle
     Diameter(diameter::DiameterArgs),
     /// Bézier curves: evaluate, split, elevate or differentiate, in f64 or exact rationals
     Bezier(bezier::BezierArgs),
@@ -90,9 +93,10 @@ enum Command {
 
 /// Runs the command line with the process arguments and returns the exit code.
 pub fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
+    let args: Vec<OsString> = std::env::args_os().collect();
+    let cli = match Cli::try_parse_from(&args) {
         Ok(cli) => cli,
-        Err(e) => return clap_exit(&e),
+        Err(e) => return clap_exit(&e, &args),
     };
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
@@ -127,15 +131,19 @@ fn run(cli: Cli) -> Result<(), CliError> {
 }
 
 /// Help and version go to stdout as clap prints them; usage errors become one `error:`
-/// line on stderr with clap's exit code (2).
-fn clap_exit(e: &clap::Error) -> ExitCode {
+/// line on stderr with clap's exit code (2). A command group without its subcommand
+/// (`compgeo gen`) is a usage error too, named with the choices, not a page of help on
+/// stderr: the help stays on `--help`.
+fn clap_exit(e: &clap::Error, args: &[OsString]) -> ExitCode {
     let code = u8::try_from(e.exit_code()).unwrap_or(2);
     match e.kind() {
-        ErrorKind::DisplayHelp
-        | ErrorKind::DisplayVersion
-        | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
             // Nothing sensible is left to do if the terminal itself cannot be written.
             let _ = e.print();
+        }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            eprintln!("error: {}", missing_subcommand(args));
+            return ExitCode::from(2);
         }
         _ => {
             let text = e.render().to_string();
@@ -144,6 +152,36 @@ fn clap_exit(e: &clap::Error) -> ExitCode {
         }
     }
     ExitCode::from(code)
+}
+
+/// The message for a command group given without its subcommand: "missing subcommand for
+/// `compgeo gen`; expected one of: points, graph, sequence". `args` are the process
+/// arguments, the program name first; the group is the deepest one they name.
+fn missing_subcommand(args: &[OsString]) -> String {
+    let mut command = Cli::command();
+    let mut path = vec![command.get_name().to_string()];
+    for arg in args.iter().skip(1) {
+        let Some(sub) = arg.to_str().and_then(|a| command.find_subcommand(a)) else {
+            break;
+        };
+        let sub = sub.clone();
+        path.push(sub.get_name().to_string());
+        command = sub;
+    }
+    let path = path.join(" ");
+    let choices: Vec<&str> = command
+        .get_subcommands()
+        .map(clap::Command::get_name)
+        .filter(|&name| name != "help")
+        .collect();
+    if choices.is_empty() {
+        format!("missing arguments for `{path}`; see `{path} --help`")
+    } else {
+        format!(
+            "missing subcommand for `{path}`; expected one of: {}",
+            choices.join(", ")
+        )
+    }
 }
 
 /// Joins a multi-line message into one line, dropping blank lines and clap's
@@ -166,11 +204,29 @@ fn one_line(text: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::CommandFactory;
 
     #[test]
     fn the_command_definition_is_consistent() {
         Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn a_missing_subcommand_names_the_group_and_its_choices() {
+        let args = |a: &[&str]| a.iter().map(OsString::from).collect::<Vec<_>>();
+        assert_eq!(
+            missing_subcommand(&args(&["compgeo", "gen"])),
+            "missing subcommand for `compgeo gen`; expected one of: points, graph, sequence"
+        );
+        let top = missing_subcommand(&args(&["compgeo"]));
+        assert!(
+            top.starts_with("missing subcommand for `compgeo`; expected one of: gen, stats,"),
+            "{top}"
+        );
+        assert!(!top.contains("help"), "{top}");
+        for group in ["bezier", "interpolate"] {
+            let text = missing_subcommand(&args(&["compgeo", group]));
+            assert!(text.contains(&format!("`compgeo {group}`")), "{text}");
+        }
     }
 
     #[test]

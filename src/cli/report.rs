@@ -12,6 +12,7 @@ use crate::complexity::{
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
+use std::io;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -90,6 +91,7 @@ fn measured(args: &ReportArgs, machine: &Machine) -> Result<Written, CliError> {
             "no catalog entry matches {pattern:?}; keys look like sort/insertion/sorted"
         )));
     }
+    prepare_out(&args.out)?;
     let settings = Settings {
         seed: args.seed,
         ..Settings::for_profile(profile)
@@ -112,7 +114,8 @@ fn measured(args: &ReportArgs, machine: &Machine) -> Result<Written, CliError> {
         results.push(m);
     }
     bar.finish_and_clear();
-    let index = write_report(&args.out, machine, profile, &results).map_err(CliError::Output)?;
+    let index = write_report(&args.out, machine, profile, &results)
+        .map_err(|e| write_error(&args.out, e))?;
     let exceeds = results
         .iter()
         .filter(|m| m.counts.verdict == Verdict::Exceeds)
@@ -141,9 +144,10 @@ fn from_criterion(dir: &Path, args: &ReportArgs, machine: &Machine) -> Result<Wr
             dir.display()
         )));
     }
+    prepare_out(&args.out)?;
     let infos: Vec<_> = catalog().into_iter().map(|e| e.info).collect();
     let index = write_criterion_report(&args.out, machine, &import, &infos, &args.bound)
-        .map_err(CliError::Output)?;
+        .map_err(|e| write_error(&args.out, e))?;
     Ok(written(
         &args.out,
         index,
@@ -167,6 +171,50 @@ fn written(
         algorithms,
         exceeds,
         seconds: 0.0,
+    }
+}
+
+/// Makes sure the report can be written into `dir` before anything is measured: `dir` is
+/// (or is created as) a directory in which a file can be created, and its `index.html` and
+/// `results.json` are not directories. A report takes minutes; a typo in `--out` should not
+/// cost them.
+fn prepare_out(dir: &Path) -> Result<(), CliError> {
+    let fail = |path: &Path, source| CliError::Write {
+        path: format!("'{}'", path.display()),
+        source,
+    };
+    if dir.exists() && !dir.is_dir() {
+        return Err(fail(
+            dir,
+            io::Error::new(
+                io::ErrorKind::AlreadyExists,
+                "it exists and is not a directory",
+            ),
+        ));
+    }
+    std::fs::create_dir_all(dir).map_err(|e| fail(dir, e))?;
+    for name in ["index.html", "results.json"] {
+        let file = dir.join(name);
+        if file.is_dir() {
+            return Err(fail(
+                &file,
+                io::Error::new(io::ErrorKind::IsADirectory, "it is a directory"),
+            ));
+        }
+    }
+    // The probe proves the directory is writable (permissions, a read-only file system).
+    let probe = dir.join(format!(".compgeo-report-probe-{}", std::process::id()));
+    std::fs::File::create(&probe).map_err(|e| fail(dir, e))?;
+    // The probe was created a moment ago; failing to remove it changes nothing above.
+    let _ = std::fs::remove_file(&probe);
+    Ok(())
+}
+
+/// A failure to write the report, naming its directory.
+fn write_error(dir: &Path, source: io::Error) -> CliError {
+    CliError::Write {
+        path: format!("the report in '{}'", dir.display()),
+        source,
     }
 }
 

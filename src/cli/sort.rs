@@ -18,7 +18,8 @@ use std::path::Path;
 pub(super) struct SortArgs {
     #[arg(long, short, help = Algorithm::names(), long_help = Algorithm::help())]
     algorithm: Algorithm,
-    /// Print the algorithm's step table (as the course prints it) instead of JSON
+    /// Print the algorithm's step table (as the course prints it) instead of JSON; integers
+    /// only, at most TRACE_MAX_LEN = 1000 of them
     #[arg(long)]
     trace: bool,
     /// The numbers to sort; without them, read a JSON array or whitespace/comma-separated

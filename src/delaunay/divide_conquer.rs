@@ -4,7 +4,7 @@ use super::quad_edge::{Edge, Mesh};
 use super::{Triangulation, EMPTY};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::geometry::{CountedPredicates, InCircle, Orientation, Point2, PointSet};
 use std::cmp::Ordering;
 
@@ -75,9 +75,10 @@ pub fn divide_and_conquer(points: &[Point2]) -> Result<Triangulation> {
 ///
 /// # Errors
 ///
-/// [`Error::NonFinite`] naming the first point with a NaN or infinite coordinate;
-/// [`Error::InvalidParameter`] if `points` has more than 2^29 points (the working structure
-/// indexes its half-edges with `u32`).
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or infinite coordinate;
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if `points` has more than
+/// [`MAX_TRIANGULATION_POINTS`](crate::limits::MAX_TRIANGULATION_POINTS) = 2^29 points (the
+/// working structure indexes its half-edges with `u32`).
 ///
 /// # Complexity
 ///
@@ -111,15 +112,7 @@ pub fn divide_and_conquer_with<C: Counter>(
     points: &PointSet<'_>,
     counter: &mut C,
 ) -> Result<Triangulation> {
-    if points.len() > MAX_POINTS {
-        return Err(Error::InvalidParameter {
-            name: "points",
-            reason: format!(
-                "divide and conquer takes at most {MAX_POINTS} points, got {}",
-                points.len()
-            ),
-        });
-    }
+    crate::limits::TRIANGULATION_POINTS.check(points.len() as u128)?;
     let (sorted, index, duplicates) = sorted_distinct(points, counter);
     let m = sorted.len();
     if m < 3 {
@@ -139,10 +132,6 @@ pub fn divide_and_conquer_with<C: Counter>(
     let mesh = builder.mesh;
     Ok(extract(&mesh, ldo, index, duplicates))
 }
-
-/// The most points [`divide_and_conquer_with`] accepts: at most 3m − 3 edges live at once,
-/// and deleted slots are reused, so 6m half-edge ids fit in `u32` below `u32::MAX`.
-const MAX_POINTS: usize = 1 << 29;
 
 /// The recursion's state: the mesh over positions in `points` (sorted, distinct).
 struct Builder<'a, C> {

@@ -6,7 +6,7 @@ use super::beach_line::{BeachLine, NIL};
 use super::Triangulation;
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::geometry::sweep_predicates::{
     breakpoint_side, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
 };
@@ -92,9 +92,10 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 ///
 /// # Errors
 ///
-/// [`Error::NonFinite`] naming the first point with a NaN or infinite coordinate;
-/// [`Error::InvalidParameter`] if `points` has more than 2^28 points (arcs and events are
-/// indexed with `u32`).
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or infinite coordinate;
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if `points` has more than
+/// [`MAX_FORTUNE_POINTS`](crate::limits::MAX_FORTUNE_POINTS) = 2^28 points (arcs and events
+/// are indexed with `u32`).
 ///
 /// # Complexity
 ///
@@ -127,15 +128,7 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn fortune_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Result<Triangulation> {
-    if points.len() > MAX_POINTS {
-        return Err(Error::InvalidParameter {
-            name: "points",
-            reason: format!(
-                "Fortune's sweep takes at most {MAX_POINTS} points, got {}",
-                points.len()
-            ),
-        });
-    }
+    crate::limits::FORTUNE_POINTS.check(points.len() as u128)?;
     let (mut sites, index, duplicates) = sorted_by_y(points, counter);
     // An exact power-of-two scaling changes no decision and keeps the filters away from
     // overflow and underflow (1e300 or 1e-300 everywhere).
@@ -156,10 +149,6 @@ pub fn fortune_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Resul
         .collect();
     Triangulation::from_triangles(points, &triangles, duplicates)
 }
-
-/// The most points [`fortune_with`] accepts: fewer than 6n events are ever queued, so event
-/// ids stay below [`NIL`].
-const MAX_POINTS: usize = 1 << 28;
 
 /// A circle event: arc `arc` (between the arcs of `sites[0]` and `sites[2]`) vanishes.
 #[derive(Debug, Clone, Copy)]

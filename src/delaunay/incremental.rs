@@ -5,7 +5,7 @@ use super::hilbert::brio_order;
 use super::triangulation::{find_duplicates, rotate_to_lex_min, Triangulation, EMPTY};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::gen::Rng;
 use crate::geometry::{CountedPredicates, InCircle, Orientation, Point2, PointSet};
 
@@ -52,9 +52,10 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// cocircular points get one of their valid triangulations.
 ///
 /// # Errors
-/// [`Error::NonFinite`] naming the first point with a NaN or infinite coordinate;
-/// [`Error::InvalidParameter`] (name `"points"`) for more than 2^29 points (the builder
-/// stores 32-bit indices).
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or infinite coordinate;
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) for more than
+/// [`MAX_TRIANGULATION_POINTS`](crate::limits::MAX_TRIANGULATION_POINTS) = 2^29 points (the
+/// builder stores 32-bit indices).
 ///
 /// # Complexity
 /// For n points, O(n log n) expected on every input: O(n log n) for the order (sorts of 64-bit keys); O(n) expected flips and
@@ -145,15 +146,7 @@ pub(super) fn incremental_local<C: Counter>(
     points: &PointSet<'_>,
     counter: &mut C,
 ) -> Result<Option<LocalTriangulation>> {
-    if points.len() > MAX_POINTS {
-        return Err(Error::InvalidParameter {
-            name: "points",
-            reason: format!(
-                "{} points; the incremental builder takes at most {MAX_POINTS}",
-                points.len()
-            ),
-        });
-    }
+    crate::limits::TRIANGULATION_POINTS.check(points.len() as u128)?;
     let mut order = brio_order(points, points.bounding_box());
     let Some(first) = first_triangle(points, &mut order, counter) else {
         return Ok(None);
@@ -204,9 +197,6 @@ impl LocalTriangulation {
         }
     }
 }
-
-/// More points than this would overflow the 32-bit half-edge ids (about 6n half-edges).
-const MAX_POINTS: usize = 1 << 29;
 
 /// The seed of the walk's coin flips (any fixed value).
 const WALK_SEED: u64 = 0x0DE1_A0A7;

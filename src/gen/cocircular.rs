@@ -81,12 +81,9 @@ const RADII: [&[(usize, u32)]; 11] = [
     ],
 ];
 
-/// The largest number of points the cocircular family offers (the last radius's count).
-pub(crate) const MAX_POINTS: usize = 393_660;
-
 /// The smallest radius of the family whose circle holds at least `n` lattice points, and
 /// all of those points, as exact integers `(x, y)` with `x^2 + y^2 = r^2`. `None` if
-/// `n > MAX_POINTS`.
+/// `n > MAX_COCIRCULAR` (the last radius's count).
 pub(crate) fn lattice_circle(n: usize) -> Option<(i64, Vec<(i64, i64)>)> {
     let factors = RADII.iter().find(|f| count(f) >= n)?;
     let mut radius: i128 = 1;
@@ -159,8 +156,8 @@ mod tests {
     fn counts_grow_and_end_at_the_maximum() {
         let counts: Vec<usize> = RADII.iter().map(|f| count(f)).collect();
         assert!(counts.windows(2).all(|w| w[0] < w[1]));
-        assert_eq!(*counts.last().unwrap(), MAX_POINTS);
-        assert!(lattice_circle(MAX_POINTS + 1).is_none());
+        assert_eq!(*counts.last().unwrap(), crate::limits::MAX_COCIRCULAR);
+        assert!(lattice_circle(crate::limits::MAX_COCIRCULAR + 1).is_none());
     }
 
     #[test]

@@ -4,7 +4,8 @@
 use super::points::ceil_sqrt;
 use super::rng::Rng;
 use crate::error::{Error, Result};
-use crate::graph::{EdgeList, MAX_EDGES, MAX_VERTICES};
+use crate::graph::EdgeList;
+use crate::limits;
 use crate::util::named_enum;
 use std::collections::HashSet;
 
@@ -81,8 +82,10 @@ named_enum! {
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] if `m > n(n-1)/2` for `Gnm` (name `"m"`); if `n < 3` for
-/// `Cycle`, `n != 10` for `Petersen`, `n = 0` for `Mycielski` (name `"n"`); or if the
-/// graph would have more than [`MAX_VERTICES`] vertices or [`MAX_EDGES`] edges.
+/// `Cycle`, `n != 10` for `Petersen`, `n = 0` for `Mycielski` (name `"n"`);
+/// [`Error::LimitExceeded`] if the graph would have more than
+/// [`MAX_VERTICES`](limits::MAX_VERTICES) vertices or [`MAX_EDGES`](limits::MAX_EDGES) edges
+/// (`K_n` has n(n − 1)/2), found before anything is allocated.
 ///
 /// # Complexity
 /// O(V + E) time and space for V vertices and E edges, plus O(E log E) for the final sort
@@ -157,25 +160,14 @@ fn invalid(name: &'static str, reason: String) -> Error {
     Error::InvalidParameter { name, reason }
 }
 
+/// Rejects a graph with more than `MAX_VERTICES` vertices before allocating it.
 fn checked_vertices(v: u128) -> Result<usize> {
-    if v > MAX_VERTICES as u128 {
-        return Err(invalid(
-            "n",
-            format!("the graph would have {v} vertices, more than the limit of {MAX_VERTICES}"),
-        ));
-    }
-    Ok(v as usize)
+    limits::VERTICES.check(v)
 }
 
 /// Rejects a graph with more than `MAX_EDGES` edges before allocating it.
 fn checked_edges(e: u128) -> Result<usize> {
-    if e > MAX_EDGES as u128 {
-        return Err(invalid(
-            "n",
-            format!("the graph would have {e} edges, more than the limit of {MAX_EDGES}"),
-        ));
-    }
-    Ok(e as usize)
+    limits::EDGES.check(e)
 }
 
 /// `n(n-1)/2` without overflow.
@@ -193,7 +185,7 @@ fn gnm(rng: &mut Rng, n: usize, m: usize) -> Result<Vec<[usize; 2]>> {
         ));
     }
     checked_edges(m as u128)?;
-    // n <= 2^27 keeps the number of pairs below 2^53, well inside u64.
+    // n <= MAX_VERTICES = 2^26 keeps the number of pairs below 2^51, well inside u64.
     let total = total as u64;
     // Floyd's algorithm: a uniform m-subset of 0..total in m draws. The set is only
     // queried, never iterated, so its hashing order cannot leak into the output.
@@ -392,7 +384,7 @@ mod tests {
             }
         }
         // Near the largest index the generator can ask for.
-        let n = MAX_VERTICES as u64;
+        let n = limits::MAX_VERTICES as u64;
         let last = n * (n - 1) / 2 - 1;
         assert_eq!(pair_of_index(last), [(n - 2) as usize, (n - 1) as usize]);
     }

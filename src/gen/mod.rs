@@ -41,7 +41,4 @@ pub use sequences::{sequence, sequence_f64, SequenceKind, RANDOM_KEY_BOUND};
 
 pub(crate) use rng::Rng;
 
-/// The most points [`points`] generates in one call: 2^27. It keeps every exactly
-/// constructed kind exact (parabola `x^2 <= 2^52`, collinear and grid coordinates below
-/// 2^53) and turns absurd sizes into an error instead of an allocation failure.
-pub const MAX_POINTS: usize = 1 << 27;
+pub use crate::limits::{MAX_KEYS, MAX_POINTS};

@@ -4,9 +4,9 @@
 use super::cocircular;
 use super::gaussian::normal_pair;
 use super::rng::Rng;
-use super::MAX_POINTS;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::geometry::{cmp_dist, Point2};
+use crate::limits;
 use crate::util::named_enum;
 use std::cmp::Ordering;
 
@@ -99,8 +99,8 @@ named_enum! {
 /// `n = 0` gives an empty set for every kind.
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] (name `"n"`) if `n` exceeds [`MAX_POINTS`], or, for
-/// `Cocircular`, [`MAX_COCIRCULAR`].
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if `n` exceeds [`MAX_POINTS`](crate::limits::MAX_POINTS), or,
+/// for `Cocircular`, [`MAX_COCIRCULAR`], before anything is allocated.
 ///
 /// # Complexity
 /// O(n) time and space for every kind except `Cocircular`, which builds the whole circle:
@@ -119,9 +119,7 @@ named_enum! {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn points(kind: PointKind, n: usize, seed: u64) -> Result<Vec<Point2>> {
-    if n > MAX_POINTS {
-        return Err(too_many(n, MAX_POINTS, "point sets"));
-    }
+    limits::POINTS.check(n as u128)?;
     let mut rng = Rng::new(seed);
     let pts = match kind {
         PointKind::UniformSquare => (0..n)
@@ -146,16 +144,7 @@ pub fn points(kind: PointKind, n: usize, seed: u64) -> Result<Vec<Point2>> {
     Ok(pts)
 }
 
-/// The most points [`PointKind::Cocircular`] can produce: the lattice-point count
-/// `4 * 5 * 3^9` of its largest radius `5^2 * 13 * 17 * 29 * 37 * 41 * 53 * 61 * 73 * 89`.
-pub const MAX_COCIRCULAR: usize = cocircular::MAX_POINTS;
-
-fn too_many(n: usize, limit: usize, what: &str) -> Error {
-    Error::InvalidParameter {
-        name: "n",
-        reason: format!("{n} is more than the {limit} points {what} support"),
-    }
-}
+pub use crate::limits::MAX_COCIRCULAR;
 
 fn uniform_disk(rng: &mut Rng, n: usize) -> Vec<Point2> {
     let origin = Point2::new(0.0, 0.0);
@@ -195,8 +184,8 @@ fn cocircular(rng: &mut Rng, n: usize) -> Result<Vec<Point2>> {
     if n == 0 {
         return Ok(Vec::new());
     }
-    let (_, mut all) = cocircular::lattice_circle(n)
-        .ok_or_else(|| too_many(n, MAX_COCIRCULAR, "cocircular sets"))?;
+    limits::COCIRCULAR.check(n as u128)?;
+    let (_, mut all) = cocircular::lattice_circle(n).expect("the family has MAX_COCIRCULAR points");
     rng.partial_shuffle(&mut all, n);
     // Integers below 2^53 convert to f64 exactly.
     Ok(all[..n]
@@ -206,7 +195,7 @@ fn cocircular(rng: &mut Rng, n: usize) -> Result<Vec<Point2>> {
 }
 
 fn parabola(n: usize) -> Vec<Point2> {
-    // n <= MAX_POINTS = 2^27 keeps |x| <= 2^26, so x^2 <= 2^52 is exact.
+    // n <= MAX_POINTS = 2^26 keeps |x| <= 2^25, so x^2 <= 2^50 is exact.
     let start = -((n / 2) as i64);
     (0..n as i64)
         .map(|i| {

@@ -1,7 +1,8 @@
 //! Seeded number sequences for the sorting algorithms.
 
 use super::rng::Rng;
-
+use crate::error::Result;
+use crate::limits;
 use crate::util::named_enum;
 
 named_enum! {
@@ -45,6 +46,10 @@ pub const RANDOM_KEY_BOUND: i64 = 1 << 53;
 /// (`FewDistinct`) follow the course's sorting section ([RD, §2.1] "Algoritmos de
 /// ordenación").
 ///
+/// # Errors
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if `n` exceeds
+/// [`MAX_KEYS`](crate::limits::MAX_KEYS), before anything is allocated.
+///
 /// # Complexity
 /// O(n) time and space.
 ///
@@ -53,15 +58,17 @@ pub const RANDOM_KEY_BOUND: i64 = 1 << 53;
 /// ```
 /// use compgeo::gen::{sequence, SequenceKind};
 ///
-/// let up = sequence(SequenceKind::Sorted, 100, 3);
+/// let up = sequence(SequenceKind::Sorted, 100, 3)?;
 /// assert!(up.windows(2).all(|w| w[0] < w[1]));
-/// let mut down = sequence(SequenceKind::Reversed, 100, 3);
+/// let mut down = sequence(SequenceKind::Reversed, 100, 3)?;
 /// down.reverse();
 /// assert_eq!(down, up);
+/// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn sequence(kind: SequenceKind, n: usize, seed: u64) -> Vec<i64> {
+pub fn sequence(kind: SequenceKind, n: usize, seed: u64) -> Result<Vec<i64>> {
+    limits::KEYS.check(n as u128)?;
     let mut rng = Rng::new(seed);
-    match kind {
+    Ok(match kind {
         SequenceKind::Random => (0..n).map(|_| random_key(&mut rng)).collect(),
         SequenceKind::Sorted => ascending(&mut rng, n),
         SequenceKind::Reversed => {
@@ -79,7 +86,7 @@ pub fn sequence(kind: SequenceKind, n: usize, seed: u64) -> Vec<i64> {
             }
             (0..n).map(|_| values[rng.index(8)]).collect()
         }
-    }
+    })
 }
 
 /// `n` random finite `f64` keys of mixed signs and magnitudes, for float-sorting benches.
@@ -89,26 +96,32 @@ pub fn sequence(kind: SequenceKind, n: usize, seed: u64) -> Vec<i64> {
 /// infinite, magnitudes in `[2^-64, 2^64)` across 128 binades. Bit-identical for the same
 /// `seed` on every machine.
 ///
+/// # Errors
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if `n` exceeds
+/// [`MAX_KEYS`](crate::limits::MAX_KEYS), before anything is allocated.
+///
 /// # Complexity
 /// O(n) time and space.
 ///
 /// ```
 /// use compgeo::gen::sequence_f64;
 ///
-/// let keys = sequence_f64(1000, 5);
+/// let keys = sequence_f64(1000, 5)?;
 /// assert!(keys.iter().all(|k| k.is_normal()));
 /// assert!(keys.iter().any(|&k| k < 0.0) && keys.iter().any(|&k| k > 0.0));
+/// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn sequence_f64(n: usize, seed: u64) -> Vec<f64> {
+pub fn sequence_f64(n: usize, seed: u64) -> Result<Vec<f64>> {
+    limits::KEYS.check(n as u128)?;
     let mut rng = Rng::new(seed);
-    (0..n)
+    Ok((0..n)
         .map(|_| {
             let exponent = (rng.range_i64(-64, 63) + 1023) as u64;
             let mantissa = rng.next_u64() >> 12;
             let sign = u64::from(rng.coin()) << 63;
             f64::from_bits(sign | exponent << 52 | mantissa)
         })
-        .collect()
+        .collect())
 }
 
 fn random_key(rng: &mut Rng) -> i64 {

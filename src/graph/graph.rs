@@ -8,13 +8,10 @@
 //! with the smallest id ([RD, §2.1] "Algoritmos de búsqueda").
 
 use crate::error::{Error, Result};
+use crate::limits;
 use crate::util::Csr;
 
-/// The most vertices a graph may have (and [`crate::gen::graph`] generates): 2^27.
-pub const MAX_VERTICES: usize = 1 << 27;
-
-/// The most edges a graph may have (and [`crate::gen::graph`] generates): 2^28.
-pub const MAX_EDGES: usize = 1 << 28;
+pub use crate::limits::{MAX_EDGES, MAX_VERTICES};
 
 /// A graph as the edge list every graph algorithm builds from.
 ///
@@ -86,8 +83,8 @@ impl Graph {
     ///
     /// # Errors
     /// [`Error::VertexOutOfRange`] naming the first edge with an endpoint `>= vertices`;
-    /// [`Error::InvalidParameter`] if `vertices` exceeds [`MAX_VERTICES`] or the edges
-    /// exceed [`MAX_EDGES`].
+    /// [`Error::LimitExceeded`] if `vertices` exceeds [`MAX_VERTICES`] or the edges
+    /// exceed [`MAX_EDGES`], before anything is allocated.
     ///
     /// # Complexity
     /// O(n + m) time, O(n + m) auxiliary space, for n vertices and m edges.
@@ -216,7 +213,7 @@ impl WeightedGraph {
     /// [`Error::InvalidParameter`] (name `"weights"`) if the lengths differ;
     /// [`Error::NonFiniteWeight`] naming the first NaN or infinite weight;
     /// [`Error::VertexOutOfRange`] naming the first edge with an endpoint `>= vertices`;
-    /// [`Error::InvalidParameter`] for sizes beyond [`MAX_VERTICES`] / [`MAX_EDGES`].
+    /// [`Error::LimitExceeded`] for sizes beyond [`MAX_VERTICES`] / [`MAX_EDGES`].
     ///
     /// # Complexity
     /// O(n + m) time and auxiliary space.
@@ -318,18 +315,8 @@ impl WeightedGraph {
 
 /// Validates vertex ids and sizes before anything is allocated.
 fn check_sizes(vertices: usize, edges: &[[usize; 2]]) -> Result<()> {
-    if vertices > MAX_VERTICES {
-        return Err(Error::InvalidParameter {
-            name: "vertices",
-            reason: format!("{vertices} vertices exceed the limit of {MAX_VERTICES}"),
-        });
-    }
-    if edges.len() > MAX_EDGES {
-        return Err(Error::InvalidParameter {
-            name: "edges",
-            reason: format!("{} edges exceed the limit of {MAX_EDGES}", edges.len()),
-        });
-    }
+    limits::VERTICES.check(vertices as u128)?;
+    limits::EDGES.check(edges.len() as u128)?;
     for (edge, &[u, v]) in edges.iter().enumerate() {
         let bad = if u >= vertices {
             Some(u)

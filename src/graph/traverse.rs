@@ -14,7 +14,7 @@
 use super::graph::Graph;
 use crate::complexity::{algorithm_family, on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::error::{Error, Result, Violation};
+use crate::error::{Result, Violation};
 use std::fmt::Write;
 
 /// Breadth-first search's [`Declaration`]: its name, bounds, counts, source and claims.
@@ -68,14 +68,12 @@ algorithm_family! {
     fn run_with[C: Counter](g: &Graph, start: usize, c: &mut C) -> Result<Search>;
 }
 
-/// The longest graph [`search_trace`] accepts: each row copies the list Q, so a trace of n
-/// vertices holds up to 2n rows of up to n entries, meant for graphs a reader can follow.
-pub const TRACE_MAX_VERTICES: usize = 1000;
+pub use crate::limits::TRACE_MAX_VERTICES;
 
 /// The search of `g` from `start` by `algorithm`: the same as calling [`bfs`] or [`dfs`].
 ///
 /// # Errors
-/// [`Error::NoSuchVertex`] if `start` is not a vertex of `g`.
+/// [`Error::NoSuchVertex`](crate::Error::NoSuchVertex) if `start` is not a vertex of `g`.
 ///
 /// # Complexity
 /// O(n + m) time, O(n) auxiliary space.
@@ -95,7 +93,7 @@ pub fn search(g: &Graph, start: usize, algorithm: SearchAlgorithm) -> Result<Sea
 /// [`search`], recording the searched vertices and edges in `counter`.
 ///
 /// # Errors
-/// [`Error::NoSuchVertex`] if `start` is not a vertex of `g`.
+/// [`Error::NoSuchVertex`](crate::Error::NoSuchVertex) if `start` is not a vertex of `g`.
 ///
 /// # Complexity
 /// O(n + m) time, O(n) auxiliary space.
@@ -144,7 +142,7 @@ pub struct Components {
 /// Breadth-first search from `start`; see [`bfs_with`].
 ///
 /// # Errors
-/// [`Error::NoSuchVertex`] if `start >= n` (every start is missing from the empty graph).
+/// [`Error::NoSuchVertex`](crate::Error::NoSuchVertex) if `start >= n` (every start is missing from the empty graph).
 ///
 /// # Complexity
 /// O(n + m) time, O(n) auxiliary space.
@@ -172,7 +170,7 @@ pub fn bfs(g: &Graph, start: usize) -> Result<Search> {
 /// start.
 ///
 /// # Errors
-/// [`Error::NoSuchVertex`] if `start >= n`.
+/// [`Error::NoSuchVertex`](crate::Error::NoSuchVertex) if `start >= n`.
 ///
 /// # Complexity
 /// O(n + m) time for n vertices and m edges (each vertex enters Q once, each edge is looked
@@ -220,7 +218,7 @@ pub fn bfs_with<C: Counter>(g: &Graph, start: usize, c: &mut C) -> Result<Search
 /// Depth-first search from `start`; see [`dfs_with`].
 ///
 /// # Errors
-/// [`Error::NoSuchVertex`] if `start >= n`.
+/// [`Error::NoSuchVertex`](crate::Error::NoSuchVertex) if `start >= n`.
 ///
 /// # Complexity
 /// O(n + m) time, O(n) auxiliary space.
@@ -247,7 +245,7 @@ pub fn dfs(g: &Graph, start: usize) -> Result<Search> {
 /// tree is limited by memory, not by the call stack.
 ///
 /// # Errors
-/// [`Error::NoSuchVertex`] if `start >= n`.
+/// [`Error::NoSuchVertex`](crate::Error::NoSuchVertex) if `start >= n`.
 ///
 /// # Complexity
 /// O(n + m) time for n vertices and m edges; O(n) auxiliary space (the stack).
@@ -317,8 +315,8 @@ pub fn dfs_with<C: Counter>(g: &Graph, start: usize, c: &mut C) -> Result<Search
 /// entries, the same as [`bfs`] or [`dfs`] return. [`trace_table`] prints the rows.
 ///
 /// # Errors
-/// [`Error::NoSuchVertex`] if `start >= n`; [`Error::InvalidParameter`] (name `"graph"`) if
-/// the graph has more than [`TRACE_MAX_VERTICES`] vertices.
+/// [`Error::NoSuchVertex`](crate::Error::NoSuchVertex) if `start >= n`; [`Error::LimitExceeded`](crate::Error::LimitExceeded) if the graph has more
+/// than [`TRACE_MAX_VERTICES`] vertices (each row copies the list Q).
 ///
 /// # Complexity
 /// O(n + m + n_c²) time and O(n_c²) space for the rows.
@@ -335,15 +333,7 @@ pub fn dfs_with<C: Counter>(g: &Graph, start: usize, c: &mut C) -> Result<Search
 /// ```
 pub fn search_trace(g: &Graph, start: usize, kind: SearchAlgorithm) -> Result<Vec<TraceRow>> {
     g.check_vertex(start)?;
-    if g.vertex_count() > TRACE_MAX_VERTICES {
-        return Err(Error::InvalidParameter {
-            name: "graph",
-            reason: format!(
-                "{} vertices; a trace is limited to {TRACE_MAX_VERTICES}",
-                g.vertex_count()
-            ),
-        });
-    }
+    crate::limits::TRACE_VERTICES.check(g.vertex_count() as u128)?;
     let mut seen = vec![false; g.vertex_count()];
     let mut cursor = vec![0usize; g.vertex_count()];
     let mut list = std::collections::VecDeque::from([start]);
@@ -590,6 +580,7 @@ fn finish(order: Vec<u32>, parent: Vec<u32>, start: usize) -> Search {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Error;
 
     #[test]
     fn a_missing_start_is_an_error() {

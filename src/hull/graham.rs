@@ -1,4 +1,5 @@
-//! Graham's scan: sort by angle about the lowest-leftmost point, then keep only left turns.
+//! Graham's scan: sort by angle about the lexicographically smallest point, then keep only left
+//! turns.
 
 use super::collinear::finish;
 use super::lex::lex_min;

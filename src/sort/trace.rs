@@ -15,14 +15,12 @@ use super::quick::quick;
 use super::selection::selection;
 use super::{Algorithm, Counted, Observer, Step};
 use crate::count::Counts;
-use crate::{Error, Result};
+use crate::Result;
 use std::cell::RefCell;
 use std::cmp::Ordering;
 use std::fmt::Write;
 
-/// The longest input [`trace`] accepts: bubble sort's table has a row per comparison,
-/// n(n−1)/2 of them, so tracing is meant for lists a reader can follow.
-pub const TRACE_MAX_LEN: usize = 1000;
+pub use crate::limits::TRACE_MAX_LEN;
 
 /// Sorts a copy of `input` with `algorithm` and returns its step table as plain text.
 ///
@@ -50,8 +48,9 @@ pub const TRACE_MAX_LEN: usize = 1000;
 ///
 /// # Errors
 ///
-/// [`Error::InvalidParameter`] (name `"input"`) if `input` has more than [`TRACE_MAX_LEN`]
-/// values. Every shorter list, empty included, is traced.
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if `input` has more than [`TRACE_MAX_LEN`] values (bubble sort's
+/// table has a row per comparison, n(n−1)/2 of them). Every shorter list, empty included,
+/// is traced.
 ///
 /// # Complexity
 ///
@@ -70,15 +69,7 @@ pub const TRACE_MAX_LEN: usize = 1000;
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn trace(algorithm: Algorithm, input: &[i64]) -> Result<String> {
-    if input.len() > TRACE_MAX_LEN {
-        return Err(Error::InvalidParameter {
-            name: "input",
-            reason: format!(
-                "tracing prints a row per step and accepts at most {TRACE_MAX_LEN} values, got {}",
-                input.len()
-            ),
-        });
-    }
+    crate::limits::TRACE_LEN.check(input.len() as u128)?;
     let log = RefCell::new(Vec::new());
     let cmp = |a: &i64, b: &i64| {
         let ord = a.cmp(b);

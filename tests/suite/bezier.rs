@@ -446,6 +446,155 @@ fn linear_precision_and_the_seeds_conversion_formula() {
     }
 }
 
+/// Zhou's formula term by term, `dₖ = Σᵢ bᵢ C(n, i) C(m − n, k − i) / C(m, k)`, with exact
+/// binomial coefficients: the oracle of [`Bezier::elevate_to`], which never forms them.
+fn zhou_by_binomials(b: &Bezier<Q, 2>, m: usize) -> Vec<Point<Q, 2>> {
+    let n = b.degree();
+    let c = |n: usize, k: usize| -> Q {
+        if k > n {
+            return q(0, 1);
+        }
+        (0..k).fold(q(1, 1), |acc, j| acc * q((n - j) as i64, (j + 1) as i64))
+    };
+    (0..=m)
+        .map(|k| {
+            let mut d = Point::<Q, 2>::zero();
+            for (i, bi) in b.control().iter().enumerate().take(k.min(n) + 1) {
+                d += &(bi.clone() * (c(n, i) * c(m - n, k - i) / c(m, k)));
+            }
+            d
+        })
+        .collect()
+}
+
+#[test]
+fn elevation_equals_zhous_binomial_formula_exactly() {
+    for n in 0..6usize {
+        let b = Bezier::new(
+            (0..=n)
+                .map(|i| qp([(3 * i as i64 - 4, 7), ((i * i) as i64 + 1, 5)]))
+                .collect(),
+        )
+        .unwrap();
+        for m in n..n + 10 {
+            assert_eq!(
+                b.elevate_to(m).unwrap().control(),
+                zhou_by_binomials(&b, m),
+                "n = {n}, m = {m}"
+            );
+        }
+    }
+}
+
+#[test]
+fn elevation_to_a_high_degree_stays_finite_and_on_the_curve() {
+    // The binomial coefficients overflow f64 (a cubic to degree 1024 used to fail); the
+    // weights never form them.
+    let b = Bezier::new(vec![
+        Point::new([0.0, 0.0]),
+        Point::new([1.0, 2.0]),
+        Point::new([3.0, 2.0]),
+        Point::new([4.0, 0.0]),
+    ])
+    .unwrap();
+    let e = b.elevate_to(5000).unwrap();
+    assert_eq!(e.degree(), 5000);
+    assert_eq!(
+        (e.control()[0], e.control()[5000]),
+        (b.control()[0], b.control()[3])
+    );
+    for k in 0..=20 {
+        let t = k as f64 / 20.0;
+        let (p, r) = (e.eval(&t).unwrap(), b.eval(&t).unwrap());
+        for j in 0..2 {
+            assert!(
+                (p[j] - r[j]).abs() <= 1e-12 * 4.0,
+                "t = {t}: {p:?} vs {r:?}"
+            );
+        }
+    }
+    // Every elevated point lies in the convex hull of the polygon: here in [0, 4] x [0, 2].
+    assert!(e
+        .control()
+        .iter()
+        .all(|p| (0.0..=4.0).contains(&p[0]) && (0.0..=2.0).contains(&p[1])));
+}
+
+#[test]
+fn degrees_beyond_the_limit_are_errors_before_allocating() {
+    use compgeo::limits::MAX_DEGREE;
+    let line = Bezier::new(vec![Point::new([0.0]), Point::new([1.0])]).unwrap();
+    assert_eq!(line.elevate_to(MAX_DEGREE).unwrap().degree(), MAX_DEGREE);
+    for m in [MAX_DEGREE + 1, 1 << 32, usize::MAX] {
+        match line.elevate_to(m) {
+            Err(Error::LimitExceeded {
+                limit: "MAX_DEGREE",
+                value,
+                max,
+                ..
+            }) => {
+                assert_eq!((value, max), (m as u128, MAX_DEGREE))
+            }
+            other => panic!("m = {m}: {other:?}"),
+        }
+    }
+    // Elevating a curve already at the limit, building one beyond it, the Bernstein basis,
+    // derivative orders of a composite curve and sample counts.
+    let top = line.elevate_to(MAX_DEGREE).unwrap();
+    assert!(matches!(
+        top.elevate(),
+        Err(Error::LimitExceeded {
+            limit: "MAX_DEGREE",
+            ..
+        })
+    ));
+    assert!(matches!(
+        top.integral(Point::new([0.0])),
+        Err(Error::LimitExceeded {
+            limit: "MAX_DEGREE",
+            ..
+        })
+    ));
+    let too_many = vec![Point::new([0.0]); MAX_DEGREE + 2];
+    assert!(matches!(
+        Bezier::new(too_many),
+        Err(Error::LimitExceeded {
+            limit: "MAX_DEGREE",
+            ..
+        })
+    ));
+    assert!(matches!(
+        bernstein_all(usize::MAX, &0.5),
+        Err(Error::LimitExceeded { .. })
+    ));
+    assert!(matches!(
+        bernstein(usize::MAX, 3, &0.5),
+        Err(Error::LimitExceeded { .. })
+    ));
+    assert!(matches!(
+        bernstein_derivative(MAX_DEGREE + 1, 3, 1, &0.5),
+        Err(Error::LimitExceeded { .. })
+    ));
+    assert!(matches!(
+        line.forward_differences(&0.0, &0.1, usize::MAX),
+        Err(Error::LimitExceeded {
+            limit: "MAX_SAMPLES",
+            ..
+        })
+    ));
+    let composite =
+        compgeo::spline::CompositeBezier::new(vec![0.0, 1.0], vec![line.control().to_vec()])
+            .unwrap();
+    assert!(matches!(
+        composite.end_derivatives(0, true, usize::MAX),
+        Err(Error::LimitExceeded {
+            limit: "MAX_DEGREE",
+            ..
+        })
+    ));
+    assert_eq!(composite.end_derivatives(0, true, 3).unwrap().len(), 4);
+}
+
 #[test]
 fn huge_and_subnormal_coordinates_evaluate_finitely() {
     let b = Bezier::new(vec![

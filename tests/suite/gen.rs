@@ -3,7 +3,7 @@
 
 use compgeo::gen::{
     graph, points, sequence, sequence_f64, with_random_weights, GraphKind, PointKind, SequenceKind,
-    MAX_COCIRCULAR, MAX_POINTS, RANDOM_KEY_BOUND,
+    MAX_COCIRCULAR, MAX_KEYS, MAX_POINTS, RANDOM_KEY_BOUND,
 };
 use compgeo::geometry::{cmp_dist, incircle, orient2d, InCircle, Orientation, Point2};
 use compgeo::graph::{EdgeList, MAX_EDGES, MAX_VERTICES};
@@ -58,10 +58,13 @@ fn every_point_kind_gives_n_finite_points_and_empty_for_zero() {
 fn too_many_points_is_an_error_naming_the_limit() {
     for kind in PointKind::ALL {
         match points(kind, MAX_POINTS + 1, 0) {
-            Err(Error::InvalidParameter { name: "n", reason }) => {
-                assert!(reason.contains(&MAX_POINTS.to_string()), "{reason}")
-            }
-            other => panic!("{kind}: expected InvalidParameter, got {other:?}"),
+            Err(Error::LimitExceeded {
+                limit: "MAX_POINTS",
+                max,
+                value,
+                ..
+            }) => assert_eq!((max, value), (MAX_POINTS, MAX_POINTS as u128 + 1)),
+            other => panic!("{kind}: expected LimitExceeded, got {other:?}"),
         }
     }
 }
@@ -196,10 +199,13 @@ fn cocircular_beyond_its_family_names_the_limit() {
         MAX_COCIRCULAR
     );
     match points(PointKind::Cocircular, MAX_COCIRCULAR + 1, 2) {
-        Err(Error::InvalidParameter { name: "n", reason }) => {
-            assert!(reason.contains(&MAX_COCIRCULAR.to_string()), "{reason}")
-        }
-        other => panic!("expected InvalidParameter, got {other:?}"),
+        Err(
+            e @ Error::LimitExceeded {
+                limit: "MAX_COCIRCULAR",
+                ..
+            },
+        ) => assert!(e.to_string().contains(&MAX_COCIRCULAR.to_string()), "{e}"),
+        other => panic!("expected LimitExceeded, got {other:?}"),
     }
 }
 
@@ -643,13 +649,46 @@ fn oversized_graphs_are_errors_not_allocations() {
         (GraphKind::Mycielski, 1 << 40),
     ] {
         match graph(kind, n, 0, 0) {
-            Err(Error::InvalidParameter { name: "n", reason }) => {
-                assert!(reason.contains("limit"), "{kind}: {reason}")
+            Err(e @ Error::LimitExceeded { limit, max, .. }) => {
+                assert!(
+                    ["MAX_VERTICES", "MAX_EDGES"].contains(&limit),
+                    "{kind}: {e}"
+                );
+                assert!(e.to_string().contains(&max.to_string()), "{kind}: {e}");
             }
-            other => panic!("{kind}: expected InvalidParameter, got {other:?}"),
+            other => panic!("{kind}: expected LimitExceeded, got {other:?}"),
         }
     }
-    assert!(graph(GraphKind::Gnm, 100_000, MAX_EDGES + 1, 0).is_err());
+    // The K_23170 has 268 412 865 edges; the largest complete graph is K_11585.
+    assert!(matches!(
+        graph(GraphKind::Complete, 23170, 0, 0),
+        Err(Error::LimitExceeded {
+            limit: "MAX_EDGES",
+            value: 268_412_865,
+            ..
+        })
+    ));
+    assert!(matches!(
+        graph(GraphKind::Gnm, 100_000, MAX_EDGES + 1, 0),
+        Err(Error::LimitExceeded {
+            limit: "MAX_EDGES",
+            ..
+        })
+    ));
+    assert!(matches!(
+        sequence(SequenceKind::Random, MAX_KEYS + 1, 0),
+        Err(Error::LimitExceeded {
+            limit: "MAX_KEYS",
+            ..
+        })
+    ));
+    assert!(matches!(
+        sequence_f64(usize::MAX, 0),
+        Err(Error::LimitExceeded {
+            limit: "MAX_KEYS",
+            ..
+        })
+    ));
 }
 
 #[test]
@@ -683,28 +722,29 @@ fn random_weights_are_seeded_and_in_the_unit_interval() {
 #[test]
 fn sequences_are_deterministic_and_have_their_shapes() {
     for kind in SequenceKind::ALL {
-        assert!(sequence(kind, 0, 1).is_empty());
-        let a = sequence(kind, 1000, 1);
+        assert!(sequence(kind, 0, 1).unwrap().is_empty());
+        let a = sequence(kind, 1000, 1).unwrap();
         assert_eq!(a.len(), 1000);
-        assert_eq!(a, sequence(kind, 1000, 1));
-        assert_ne!(a, sequence(kind, 1000, 2), "{kind}");
+        assert_eq!(a, sequence(kind, 1000, 1).unwrap());
+        assert_ne!(a, sequence(kind, 1000, 2).unwrap(), "{kind}");
     }
-    let random = sequence(SequenceKind::Random, 1000, 4);
+    let random = sequence(SequenceKind::Random, 1000, 4).unwrap();
     assert!(random.iter().all(|k| k.abs() <= RANDOM_KEY_BOUND));
     assert!(random.iter().any(|&k| k < -(1 << 50)) && random.iter().any(|&k| k > 1 << 50));
 
-    let sorted = sequence(SequenceKind::Sorted, 1000, 4);
+    let sorted = sequence(SequenceKind::Sorted, 1000, 4).unwrap();
     assert!(sorted.windows(2).all(|w| w[0] < w[1]));
     assert!(sorted.iter().all(|k| k.abs() <= RANDOM_KEY_BOUND));
-    let reversed = sequence(SequenceKind::Reversed, 1000, 4);
+    let reversed = sequence(SequenceKind::Reversed, 1000, 4).unwrap();
     assert!(reversed.windows(2).all(|w| w[0] > w[1]));
     assert_eq!(reversed.iter().rev().copied().collect::<Vec<_>>(), sorted);
 
-    let few = sequence(SequenceKind::FewDistinct, 1000, 4);
+    let few = sequence(SequenceKind::FewDistinct, 1000, 4).unwrap();
     let values: HashSet<i64> = few.iter().copied().collect();
     assert_eq!(values.len(), 8);
     assert!(values.iter().all(|k| k.abs() <= RANDOM_KEY_BOUND));
     let small: HashSet<i64> = sequence(SequenceKind::FewDistinct, 5, 4)
+        .unwrap()
         .into_iter()
         .collect();
     assert!(
@@ -715,10 +755,10 @@ fn sequences_are_deterministic_and_have_their_shapes() {
 
 #[test]
 fn float_keys_mix_signs_and_magnitudes() {
-    let keys = sequence_f64(5000, 12);
+    let keys = sequence_f64(5000, 12).unwrap();
     let bits_of = |v: &[f64]| v.iter().map(|k| k.to_bits()).collect::<Vec<_>>();
-    assert_eq!(bits_of(&keys), bits_of(&sequence_f64(5000, 12)));
-    assert_ne!(bits_of(&keys), bits_of(&sequence_f64(5000, 13)));
+    assert_eq!(bits_of(&keys), bits_of(&sequence_f64(5000, 12).unwrap()));
+    assert_ne!(bits_of(&keys), bits_of(&sequence_f64(5000, 13).unwrap()));
     assert!(keys
         .iter()
         .all(|k| k.is_normal() && (2f64.powi(-64)..2f64.powi(64)).contains(&k.abs())));

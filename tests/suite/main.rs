@@ -9,6 +9,7 @@ mod common;
 mod spline_common;
 mod strategies;
 
+mod attack_cli;
 mod attack_readers;
 mod bezier;
 mod bezier_eval;
@@ -27,6 +28,7 @@ mod hull;
 mod interpolate;
 mod interpolate_cli;
 mod overflow;
+mod limits;
 mod predicates;
 mod proximity;
 mod registry;

@@ -519,7 +519,7 @@ fn radix_sorts_the_benchmark_inputs() {
     // The inputs of benches/sort.rs (group radix-f64), past the in-place partition threshold:
     // mixed signs and 128 binades; uniform in [0, 1), most keys in the top few binades.
     let n = 200_000;
-    let mixed = compgeo::gen::sequence_f64(n, 3);
+    let mixed = compgeo::gen::sequence_f64(n, 3).unwrap();
     let unit: Vec<f64> = compgeo::gen::points(compgeo::gen::PointKind::UniformSquare, n / 2, 3)
         .unwrap()
         .iter()
@@ -803,7 +803,13 @@ fn trace_handles_empty_and_single_input() {
 fn trace_rejects_inputs_too_long_to_read() {
     let long = vec![0; TRACE_MAX_LEN + 1];
     let err = trace(Algorithm::Merge, &long).unwrap_err();
-    assert!(matches!(err, Error::InvalidParameter { name: "input", .. }));
+    assert!(matches!(
+        err,
+        Error::LimitExceeded {
+            limit: "TRACE_MAX_LEN",
+            ..
+        }
+    ));
     let msg = err.to_string();
     assert!(msg.contains(&(TRACE_MAX_LEN + 1).to_string()), "{msg}");
     assert!(trace(Algorithm::Merge, &long[1..]).is_ok());

@@ -60,7 +60,7 @@ impl Workload for SortKeys {
     type Output = ();
 
     fn prepare(&self, n: usize, seed: u64) -> Result<Vec<i64>> {
-        Ok(sequence(self.kind, n, seed))
+        sequence(self.kind, n, seed)
     }
 
     fn run<C: Counter>(&self, keys: &mut Vec<i64>, counter: &mut C) -> Result<()> {
@@ -77,7 +77,7 @@ impl Workload for RadixKeys {
     type Output = ();
 
     fn prepare(&self, n: usize, seed: u64) -> Result<Vec<f64>> {
-        Ok(sequence_f64(n, seed))
+        sequence_f64(n, seed)
     }
 
     fn run<C: Counter>(&self, keys: &mut Vec<f64>, counter: &mut C) -> Result<()> {

@@ -15,7 +15,7 @@
 //! an r-th derivative; O(n) space.
 
 use crate::spline::scalar::{binomial, falling_factorial, validate_parameter, Scalar};
-use crate::Result;
+use crate::{limits, Result};
 
 /// The value `Bᵢⁿ(t) = C(n, i) tⁱ (1 − t)ⁿ⁻ⁱ` (zero when `i > n`), for any t.
 ///
@@ -25,7 +25,9 @@ use crate::Result;
 ///
 /// # Errors
 ///
-/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) if `t` is NaN or infinite.
+/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) if `t` is NaN or infinite;
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if `n` exceeds
+/// [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
 ///
 /// # Complexity
 ///
@@ -41,6 +43,7 @@ use crate::Result;
 /// ```
 pub fn bernstein<S: Scalar>(n: usize, i: usize, t: &S) -> Result<S> {
     validate_parameter(t, "t")?;
+    limits::DEGREE.check(n as u128)?;
     if i > n {
         return Ok(S::zero());
     }
@@ -65,7 +68,9 @@ pub fn bernstein<S: Scalar>(n: usize, i: usize, t: &S) -> Result<S> {
 ///
 /// # Errors
 ///
-/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) if `t` is NaN or infinite.
+/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) if `t` is NaN or infinite;
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if `n` exceeds
+/// [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
 ///
 /// # Complexity
 ///
@@ -80,6 +85,7 @@ pub fn bernstein<S: Scalar>(n: usize, i: usize, t: &S) -> Result<S> {
 /// ```
 pub fn bernstein_all<S: Scalar>(n: usize, t: &S) -> Result<Vec<S>> {
     validate_parameter(t, "t")?;
+    limits::DEGREE.check(n as u128)?;
     Ok(all_values(n, t))
 }
 
@@ -93,7 +99,9 @@ pub fn bernstein_all<S: Scalar>(n: usize, t: &S) -> Result<Vec<S>> {
 ///
 /// # Errors
 ///
-/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) if `t` is NaN or infinite.
+/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) if `t` is NaN or infinite;
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if `n` exceeds
+/// [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
 ///
 /// # Complexity
 ///
@@ -111,6 +119,7 @@ pub fn bernstein_all<S: Scalar>(n: usize, t: &S) -> Result<Vec<S>> {
 /// ```
 pub fn bernstein_derivative<S: Scalar>(n: usize, i: usize, r: usize, t: &S) -> Result<S> {
     validate_parameter(t, "t")?;
+    limits::DEGREE.check(n as u128)?;
     if i > n || r > n {
         return Ok(S::zero());
     }

@@ -118,12 +118,15 @@ impl<S: Scalar, const D: usize> CompositeBezier<S, D> {
     ///
     /// # Errors
     ///
-    /// [`Error::InvalidParameter`] (`"piece"`) if `i` is not a piece index.
+    /// [`Error::InvalidParameter`] (`"piece"`) if `i` is not a piece index;
+    /// [`Error::LimitExceeded`] if `order` exceeds [`MAX_DEGREE`](crate::limits::MAX_DEGREE)
+    /// (the answer has `order + 1` entries).
     ///
     /// # Complexity
     ///
     /// Θ(order·nD) for a piece of degree n (forward differences at one end).
     pub fn end_derivatives(&self, i: usize, end: bool, order: usize) -> Result<Vec<Point<S, D>>> {
+        crate::limits::DEGREE.check(order as u128)?;
         if i >= self.pieces.len() {
             return Err(Error::InvalidParameter {
                 name: "piece",

@@ -21,7 +21,7 @@ use super::horner::{horner_limit, Polygon};
 use super::reparametrised::Reparametrised;
 use crate::spline::curve::{check_interval, Domain};
 use crate::spline::scalar::{validate_points, Point, Scalar};
-use crate::{Error, Result};
+use crate::{limits, Error, Result};
 use std::fmt::Debug;
 
 /// A Bézier curve of degree n (n + 1 control points in R^D, over the scalar `S`).
@@ -71,13 +71,15 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Errors
     ///
     /// [`Error::Empty`] for no control points; [`Error::NonFinite`] naming the first control
-    /// point with a NaN or infinite coordinate.
+    /// point with a NaN or infinite coordinate; [`Error::LimitExceeded`] for a degree above
+    /// [`MAX_DEGREE`](crate::limits::MAX_DEGREE) (more than 65 537 control points).
     ///
     /// # Complexity
     ///
     /// O(nD) to validate the points and to bound their coordinates (for the overflow check of
     /// the evaluations), plus O(D) for the scaled points of a cubic; no auxiliary space.
     pub fn new(control: Vec<Point<S, D>>) -> Result<Self> {
+        check_degree(control.len())?;
         validate_points(&control, "control polygon")?;
         Ok(Bezier::with_control(control))
     }
@@ -163,9 +165,12 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     }
 
     /// A curve computed from a valid one: non-empty by construction, finite unless the
-    /// computation overflowed `f64`.
+    /// computation overflowed `f64`, and of a degree within
+    /// [`MAX_DEGREE`](crate::limits::MAX_DEGREE) unless the computation raised it (elevation,
+    /// integration).
     pub(crate) fn derived(control: Vec<Point<S, D>>, what: &'static str) -> Result<Self> {
         debug_assert!(!control.is_empty());
+        check_degree(control.len())?;
         if control.iter().all(Point::is_finite) {
             Ok(Bezier::with_control(control))
         } else {
@@ -181,6 +186,14 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             control: Polygon::new(control),
         }
     }
+}
+
+/// Checks that `points` control points (degree `points − 1`) are within
+/// [`MAX_DEGREE`](crate::limits::MAX_DEGREE); no points is left to the caller's emptiness
+/// check.
+pub(crate) fn check_degree(points: usize) -> Result<()> {
+    limits::DEGREE.check(points.saturating_sub(1) as u128)?;
+    Ok(())
 }
 
 /// The coordinate-wise minimum and maximum of a non-empty list of points.

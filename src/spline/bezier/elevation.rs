@@ -20,8 +20,8 @@
 
 use super::curve::Bezier;
 use crate::complexity::Declaration;
-use crate::spline::scalar::{binomial, Point, Scalar};
-use crate::{Error, Result};
+use crate::spline::scalar::{Point, Scalar};
+use crate::{limits, Error, Result};
 
 /// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
 /// yet).
@@ -55,7 +55,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Errors
     ///
     /// [`Error::Overflow`] if rounding carries a new point beyond the range of `f64` (only
-    /// for coordinates within an ulp of ±`f64::MAX`).
+    /// for coordinates within an ulp of ±`f64::MAX`); [`Error::LimitExceeded`] for a curve
+    /// already of degree [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
     ///
     /// ```
     /// use compgeo::spline::{Bezier, Point};
@@ -83,13 +84,22 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// The same curve with degree m ≥ n, in one step by Zhou's formula
     /// `dₖ = Σᵢ bᵢ C(n, i) C(m − n, k − i) / C(m, k)`.
     ///
+    /// The weights of each `dₖ` are a hypergeometric distribution in i: they sum to one, and
+    /// consecutive ones have the ratio `(n − i)(k − i) / ((i + 1)(m − n − k + i + 1))`. So
+    /// they are built from that ratio outwards from the largest one (the distribution's
+    /// mode) and the sum is divided out: no binomial coefficient is formed, nothing
+    /// overflows `f64` however large m is, and with rationals every number stays as small as
+    /// the weights themselves.
+    ///
     /// Follows [PPB, §3.12] (Zhou's formula, the polyhypergeometric
     /// distribution).
     ///
     /// # Errors
     ///
     /// [`Error::InvalidParameter`] if `m < n` (that would be degree reduction, an
-    /// approximation); [`Error::Overflow`] as for [`Bezier::elevate`].
+    /// approximation); [`Error::LimitExceeded`] if `m` exceeds
+    /// [`MAX_DEGREE`](crate::limits::MAX_DEGREE), before anything is allocated;
+    /// [`Error::Overflow`] as for [`Bezier::elevate`].
     ///
     /// # Complexity
     ///
@@ -103,6 +113,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// let e = b.elevate_to(3)?;
     /// assert_eq!(e.control(), (0..4).map(|i| Point::new([i as f64])).collect::<Vec<_>>());
     /// assert!(b.elevate_to(0).is_err());
+    /// assert!(b.elevate_to(1 << 32).is_err()); // beyond MAX_DEGREE
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn elevate_to(&self, m: usize) -> Result<Self> {
@@ -113,19 +124,33 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
                 reason: format!("cannot elevate a curve of degree {n} to degree {m}"),
             });
         }
+        limits::DEGREE.check(m as u128)?;
         let b = self.control();
         let mut control = Vec::with_capacity(m + 1);
+        let mut weight = vec![S::zero(); n + 1];
+        // m <= MAX_DEGREE = 2^16, so every product below fits in an i64.
+        // The terms run over lo <= i <= hi with lo >= k − (m − n), so m − n + i + 1 − k >= 1.
+        let ratio = |i: usize, k: usize| ((n - i) * (k - i), (i + 1) * (m - n + i + 1 - k));
         for k in 0..=m {
-            let mut d = Point::zero();
-            let den: S = binomial(m, k);
-            for (i, bi) in b.iter().enumerate().take(k.min(n) + 1) {
-                if k - i > m - n {
-                    continue;
-                }
-                let w = binomial::<S>(n, i) * binomial::<S>(m - n, k - i) / &den;
-                d += &(bi.clone() * w);
+            // The terms with C(m − n, k − i) ≠ 0.
+            let (lo, hi) = (k.saturating_sub(m - n), k.min(n));
+            let mode = ((k + 1) * (n + 1) / (m + 2)).clamp(lo, hi);
+            weight[mode] = S::one();
+            for i in mode..hi {
+                let (num, den) = ratio(i, k);
+                weight[i + 1] = weight[i].clone() * S::from_ratio(num as i64, den as i64);
             }
-            control.push(d);
+            for i in (lo..mode).rev() {
+                let (num, den) = ratio(i, k);
+                weight[i] = weight[i + 1].clone() * S::from_ratio(den as i64, num as i64);
+            }
+            let mut d = Point::zero();
+            let mut total = S::zero();
+            for (bi, w) in b[lo..=hi].iter().zip(&weight[lo..=hi]) {
+                d += &(bi.clone() * w.clone());
+                total += w.clone();
+            }
+            control.push(d / &total);
         }
         Bezier::derived(control, "degree elevation")
     }

@@ -37,9 +37,7 @@ pub(crate) const FLATTEN: Declaration = Declaration {
     claims: &[],
 };
 
-/// The largest number of segments [`Bezier::flatten`] produces before it reports that the
-/// tolerance is too small for the curve.
-pub const MAX_FLATTEN_SEGMENTS: usize = 1 << 20;
+pub use crate::limits::MAX_FLATTEN_SEGMENTS;
 
 /// The deepest recursion of [`Bezier::flatten`].
 const MAX_FLATTEN_DEPTH: usize = 40;
@@ -140,7 +138,7 @@ fn too_many_segments() -> Error {
     Error::InvalidParameter {
         name: "tolerance",
         reason: format!(
-            "too small for this curve: the polyline would need more than {MAX_FLATTEN_SEGMENTS} segments"
+            "too small for this curve: the polyline would need more than MAX_FLATTEN_SEGMENTS = {MAX_FLATTEN_SEGMENTS} segments"
         ),
     }
 }

@@ -33,7 +33,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Errors
     ///
     /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) if `start` or `step` is NaN
-    /// or infinite.
+    /// or infinite; [`Error::LimitExceeded`](crate::Error::LimitExceeded) if `count` exceeds
+    /// [`MAX_SAMPLES`](crate::limits::MAX_SAMPLES).
     ///
     /// # Complexity
     ///
@@ -56,6 +57,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ) -> Result<Vec<Point<S, D>>> {
         validate_parameter(start, "start")?;
         validate_parameter(step, "step")?;
+        crate::limits::SAMPLES.check(count as u128)?;
         let n = self.degree();
         let mut out = Vec::with_capacity(count);
         let mut t = start.clone();

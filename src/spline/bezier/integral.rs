@@ -27,7 +27,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     ///
     /// [`Error::NonFinite`](crate::Error::NonFinite) if `start` has a NaN or infinite
     /// coordinate; [`Error::Overflow`](crate::Error::Overflow) if a control point is beyond the
-    /// range of `f64`.
+    /// range of `f64`; [`Error::LimitExceeded`](crate::Error::LimitExceeded) for a curve
+    /// already of degree [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
     ///
     /// # Complexity
     ///

@@ -50,9 +50,7 @@ pub struct Intersection {
     pub point: Point<f64, 2>,
 }
 
-/// The largest number of piece pairs [`intersections`] examines before it reports that the
-/// curves overlap (or the tolerance is too small to separate their intersections).
-pub const MAX_INTERSECTION_PAIRS: usize = 1 << 20;
+pub use crate::limits::MAX_INTERSECTION_PAIRS;
 
 /// The intersections of the segments b[0, 1] and c[0, 1] of two planar Bézier curves.
 ///
@@ -156,7 +154,7 @@ impl Search {
             return Err(Error::InvalidParameter {
                 name: "tolerance",
                 reason: format!(
-                    "more than {MAX_INTERSECTION_PAIRS} pairs of pieces overlap: the curves share a piece, or the tolerance is too small"
+                    "more than MAX_INTERSECTION_PAIRS = {MAX_INTERSECTION_PAIRS} pairs of pieces overlap: the curves share a piece, or the tolerance is too small"
                 ),
             });
         }

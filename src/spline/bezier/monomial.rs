@@ -13,7 +13,7 @@
 //! Invariants the tests check (exactly on rationals): the power form evaluates to the curve,
 //! and the conversion round-trips.
 
-use super::curve::Bezier;
+use super::curve::{check_degree, Bezier};
 use super::derivative::difference;
 use crate::spline::scalar::{binomial, validate_points, Point, Scalar};
 use crate::Result;
@@ -60,7 +60,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// [`Error::Empty`](crate::Error::Empty) for no coefficients;
     /// [`Error::NonFinite`](crate::Error::NonFinite) naming the first coefficient with a NaN or
     /// infinite coordinate; [`Error::Overflow`](crate::Error::Overflow) if a control point is
-    /// beyond the range of `f64`.
+    /// beyond the range of `f64`; [`Error::LimitExceeded`](crate::Error::LimitExceeded) for
+    /// more than [`MAX_DEGREE`](crate::limits::MAX_DEGREE) + 1 coefficients.
     ///
     /// # Complexity
     ///
@@ -74,6 +75,8 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn from_monomial(coefficients: &[Point<S, D>]) -> Result<Self> {
+        // Before the Θ(n²) conversion, not after it.
+        check_degree(coefficients.len())?;
         validate_points(coefficients, "monomial coefficients")?;
         let n = coefficients.len() - 1;
         let scaled: Vec<Point<S, D>> = coefficients

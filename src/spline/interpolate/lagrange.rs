@@ -19,7 +19,7 @@
 
 use super::newton::{newton_unchecked, NewtonForm};
 use super::polynomial::{nested_to_bezier, Polynomial};
-use super::validate::{check_distinct, check_finite_nodes, check_nodes_and_points};
+use super::validate::{check_degree, check_distinct, check_finite_nodes, check_nodes_and_points};
 use crate::complexity::Declaration;
 use crate::spline::bezier::Reparametrised;
 use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
@@ -257,7 +257,8 @@ pub fn lagrange_basis<S: Scalar>(nodes: &[S], u: &S) -> Result<Vec<S>> {
 ///
 /// [`Error::Empty`] for no nodes; [`Error::InvalidParameter`] (`"points"`) if the lengths
 /// differ, (`"nodes"`) for a non-finite or repeated node; [`Error::NonFinite`] for a bad
-/// coordinate.
+/// coordinate; [`Error::LimitExceeded`] for a degree `n` above
+/// [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
 ///
 /// # Complexity
 ///
@@ -278,6 +279,7 @@ pub fn lagrange<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
 ) -> Result<LagrangeForm<S, D>> {
     check_nodes_and_points(nodes, points)?;
+    check_degree(nodes.len())?;
     check_distinct(nodes)?;
     Ok(LagrangeForm {
         nodes: nodes.to_vec(),

@@ -17,7 +17,7 @@
 //! Θ(m·n² + n³ + m·n·D) time and Θ(n² + m·n + n·D) space for m points and degree n.
 
 use super::linear::solve_dense;
-use super::validate::{check_finite_nodes, check_nodes_and_points, singular};
+use super::validate::{check_dense, check_finite_nodes, check_nodes_and_points, singular};
 use crate::complexity::Declaration;
 use crate::spline::scalar::{Point, Scalar};
 use crate::spline::{bernstein_all, Bezier};
@@ -66,7 +66,9 @@ pub struct FitOptions<S> {
 /// (`"points"`, `"weights"`), a non-finite parameter (`"params"`) or weight (`"weights"`), or
 /// data that do not determine the curve (`"params"`: fewer distinct parameters than the
 /// degree needs, so the normal equations are singular); [`Error::NonFinite`] for a bad
-/// coordinate.
+/// coordinate; [`Error::LimitExceeded`] if the system's `degree + 1` unknowns (plus two with
+/// clamped ends) exceed [`MAX_DENSE_UNKNOWNS`](crate::limits::MAX_DENSE_UNKNOWNS), before it
+/// is allocated.
 ///
 /// # Complexity
 ///
@@ -116,7 +118,8 @@ pub fn fit_bezier<S: Scalar, const D: usize>(
     };
     // Normal equations CᵀW²C x = CᵀW²p, accumulated row by row of C.
     let constraints = if options.clamp_ends { 2 } else { 0 };
-    let size = n + 1 + constraints;
+    let size = n.saturating_add(1 + constraints);
+    check_dense(size)?;
     let mut matrix = vec![vec![S::zero(); size]; size];
     let mut rhs = vec![Point::<S, D>::zero(); size];
     for ((u, p), w2) in params.iter().zip(points).zip(&weights2) {

@@ -16,7 +16,9 @@
 //! Θ(N²D) time and Θ(ND) space for N conditions in R^D; Θ(ND) per evaluation.
 
 use super::polynomial::{nested_to_bezier, HermiteNode, Polynomial};
-use super::validate::{check_distinct, check_hermite, check_nodes_and_points, finite};
+use super::validate::{
+    check_degree, check_distinct, check_hermite, check_nodes_and_points, finite,
+};
 use crate::complexity::Declaration;
 use crate::spline::bezier::Reparametrised;
 use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
@@ -164,7 +166,9 @@ impl<S: Scalar, const D: usize> Subsegment<S, D> for NewtonForm<S, D> {
 /// [`Error::Empty`](crate::Error::Empty) for no nodes;
 /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) for mismatched lengths, a
 /// non-finite or a repeated node (repeated nodes need derivative data: use
-/// [`newton_hermite`]); [`Error::NonFinite`](crate::Error::NonFinite) for a bad coordinate.
+/// [`newton_hermite`]); [`Error::NonFinite`](crate::Error::NonFinite) for a bad coordinate;
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) for a degree `n` above
+/// [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
 ///
 /// # Complexity
 ///
@@ -184,6 +188,7 @@ pub fn newton<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
 ) -> Result<NewtonForm<S, D>> {
     check_nodes_and_points(nodes, points)?;
+    check_degree(nodes.len())?;
     check_distinct(nodes)?;
     newton_unchecked(nodes, points)
 }
@@ -202,7 +207,9 @@ pub fn newton<S: Scalar, const D: usize>(
 /// [`Error::Empty`](crate::Error::Empty) for no nodes or a node without values;
 /// [`Error::NonFinite`](crate::Error::NonFinite) for a bad value (indexed over all values);
 /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) for a non-finite or repeated
-/// node (give all derivatives at a node in one [`HermiteNode`]).
+/// node (give all derivatives at a node in one [`HermiteNode`]);
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) for more than
+/// [`MAX_DEGREE`](crate::limits::MAX_DEGREE) + 1 conditions.
 ///
 /// # Complexity
 ///

@@ -19,7 +19,10 @@
 //! Θ(N³ + N²D) time and Θ(N² + ND) space for N conditions in R^D.
 
 use super::linear::solve_dense;
-use super::validate::{check_distinct, check_hermite, check_nodes_and_points, finite, singular};
+use super::validate::{
+    check_degree, check_dense, check_distinct, check_hermite, check_nodes_and_points, finite,
+    singular,
+};
 use crate::complexity::Declaration;
 use crate::spline::bezier::Reparametrised;
 use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
@@ -194,7 +197,9 @@ impl<S: Scalar, const D: usize> Subsegment<S, D> for Polynomial<S, D> {
 /// [`Error::Empty`] for no nodes; [`Error::InvalidParameter`] (`"points"`) if the lengths
 /// differ; [`Error::NonFinite`] for a NaN or infinite coordinate; [`Error::InvalidParameter`]
 /// (`"nodes"`) for a non-finite node or two equal nodes (the system is singular: a repeated
-/// node needs derivative data, see [`vandermonde_hermite`]).
+/// node needs derivative data, see [`vandermonde_hermite`]); [`Error::LimitExceeded`] for
+/// more than [`MAX_DENSE_UNKNOWNS`](crate::limits::MAX_DENSE_UNKNOWNS) nodes, before the
+/// matrix is allocated.
 ///
 /// # Complexity
 ///
@@ -215,6 +220,7 @@ pub fn vandermonde<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
 ) -> Result<Polynomial<S, D>> {
     check_nodes_and_points(nodes, points)?;
+    check_dense(nodes.len())?;
     check_distinct(nodes)?;
     let n = nodes.len();
     let matrix = nodes
@@ -245,7 +251,10 @@ pub fn vandermonde<S: Scalar, const D: usize>(
 ///
 /// [`Error::Empty`] for no nodes or a node without values; [`Error::NonFinite`] for a
 /// non-finite value (the index counts values over all nodes in order);
-/// [`Error::InvalidParameter`] (`"nodes"`) for a non-finite or repeated node.
+/// [`Error::InvalidParameter`] (`"nodes"`) for a non-finite or repeated node;
+/// [`Error::LimitExceeded`] for more than
+/// [`MAX_DENSE_UNKNOWNS`](crate::limits::MAX_DENSE_UNKNOWNS) conditions, before the matrix is
+/// allocated.
 ///
 /// # Complexity
 ///
@@ -269,6 +278,7 @@ pub fn vandermonde_hermite<S: Scalar, const D: usize>(
     data: &[HermiteNode<S, D>],
 ) -> Result<Polynomial<S, D>> {
     let total = check_hermite(data)?;
+    check_dense(total)?;
     let mut matrix = Vec::with_capacity(total);
     let mut rhs = Vec::with_capacity(total);
     for node in data {
@@ -301,7 +311,9 @@ pub fn vandermonde_hermite<S: Scalar, const D: usize>(
 ///
 /// # Errors
 ///
-/// [`Error::Overflow`] if, with `f64`, a control point is beyond the double range.
+/// [`Error::Overflow`] if, with `f64`, a control point is beyond the double range;
+/// [`Error::LimitExceeded`] for a degree above [`MAX_DEGREE`](crate::limits::MAX_DEGREE)
+/// (a [`Polynomial`] may have any number of coefficients), before the Θ(n²) work.
 ///
 /// # Complexity
 ///
@@ -312,6 +324,7 @@ pub(super) fn nested_to_bezier<S: Scalar, const D: usize>(
     a: &S,
     b: &S,
 ) -> Result<Reparametrised<S, D>> {
+    check_degree(coefficients.len())?;
     let n = coefficients.len() - 1;
     let mut p = vec![coefficients[n].clone()];
     for i in (0..n).rev() {

@@ -4,7 +4,7 @@
 
 use super::polynomial::HermiteNode;
 use crate::spline::scalar::{validate_points, Point, Scalar};
-use crate::{Error, Result};
+use crate::{limits, Error, Result};
 
 /// Checks that `nodes` and `points` are non-empty, of equal length and finite.
 pub(crate) fn check_nodes_and_points<S: Scalar, const D: usize>(
@@ -22,6 +22,20 @@ pub(crate) fn check_nodes_and_points<S: Scalar, const D: usize>(
     }
     validate_points(points, "points")?;
     check_finite_nodes(nodes, "nodes")
+}
+
+/// Checks that `count` interpolation conditions give a polynomial of degree (`count − 1`)
+/// within [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
+pub(crate) fn check_degree(count: usize) -> Result<()> {
+    limits::DEGREE.check(count.saturating_sub(1) as u128)?;
+    Ok(())
+}
+
+/// Checks that a dense system of `unknowns` unknowns is within
+/// [`MAX_DENSE_UNKNOWNS`](crate::limits::MAX_DENSE_UNKNOWNS), before its matrix is allocated.
+pub(crate) fn check_dense(unknowns: usize) -> Result<()> {
+    limits::DENSE_UNKNOWNS.check(unknowns as u128)?;
+    Ok(())
 }
 
 /// Checks every node is finite.
@@ -131,6 +145,7 @@ pub(crate) fn check_hermite<S: Scalar, const D: usize>(
             index += 1;
         }
     }
+    check_degree(index)?;
     let nodes: Vec<S> = data.iter().map(|n| n.u.clone()).collect();
     check_finite_nodes(&nodes, "nodes")?;
     check_distinct(&nodes)?;
