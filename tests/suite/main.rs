@@ -10,6 +10,7 @@ mod spline_common;
 mod strategies;
 
 mod attack_cli;
+mod attack_degenerate;
 mod attack_readers;
 mod bezier;
 mod bezier_eval;
@@ -27,8 +28,8 @@ mod graph;
 mod hull;
 mod interpolate;
 mod interpolate_cli;
-mod overflow;
 mod limits;
+mod overflow;
 mod predicates;
 mod proximity;
 mod registry;
