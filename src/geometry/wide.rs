@@ -266,20 +266,52 @@ impl WideFloat {
 
     /// The value's decimal text with 17 significant digits, from its exact binary value: used
     /// for values beyond `f64`, which an `f64`'s shortest text cannot give.
+    ///
+    /// The exact conversion costs time quadratic in the exponent, so beyond 2^16384 (values
+    /// the crate's results never reach; only chained arithmetic does) the digits come from
+    /// a fixed-point logarithm instead: 16 significant digits, the last one within a unit.
     fn exact_decimal(self) -> String {
+        let sign = if self.is_negative() { "-" } else { "" };
+        if self.exponent > EXACT_DECIMAL_MAX_EXPONENT {
+            let (digits, decimal_exponent) = self.logarithmic_digits();
+            return format!("{sign}{}.{}e{decimal_exponent}", &digits[..1], &digits[1..]);
+        }
         // significand · 2^exponent = m · 2^(exponent − 52) with a 53-bit integer m; values
         // beyond f64 have exponent > 1023, so this is an integer.
         let m = scale_by_pow2(self.significand.abs(), 52) as u64;
         let shift = self.exponent - 52;
         debug_assert!(shift > 0);
         let digits = BigInt::from_parts(false, m, shift as u32).decimal_digits();
-        let sign = if self.is_negative() { "-" } else { "" };
         let (mantissa, decimal_exponent) = round_digits(&digits, 17);
         format!(
             "{sign}{}.{}e{decimal_exponent}",
             &mantissa[..1],
             &mantissa[1..]
         )
+    }
+}
+
+/// Beyond `2^EXACT_DECIMAL_MAX_EXPONENT` the decimal text is computed from logarithms.
+const EXACT_DECIMAL_MAX_EXPONENT: i32 = 16384;
+
+impl WideFloat {
+    /// 16 significant decimal digits and the decimal exponent of a large positive exponent's
+    /// value, from `log10(2)` in 96-bit fixed point (so `exponent · log10(2)` keeps its
+    /// fraction to about 2^-64 for every `i32` exponent).
+    fn logarithmic_digits(self) -> (String, i64) {
+        const LOG10_2_FIXED: i128 = 23_850_053_418_134_191_015_272_426_710; // log10(2) · 2^96
+        let scaled = i128::from(self.exponent) * LOG10_2_FIXED;
+        let whole = scaled >> 96;
+        let fraction = (scaled & ((1i128 << 96) - 1)) as f64 / 2f64.powi(96);
+        let log = fraction + self.significand.abs().log10();
+        let (mut carry, mut frac) = (log.floor() as i64, log - log.floor());
+        let mut lead = 10f64.powf(frac);
+        if lead >= 9.999_999_999_999_999 {
+            (carry, frac) = (carry + 1, 0.0);
+            lead = 10f64.powf(frac);
+        }
+        let digits = format!("{:.15}", lead).replace('.', "");
+        (digits[..16].to_string(), whole as i64 + carry)
     }
 }
 
@@ -500,6 +532,31 @@ mod tests {
             .add(two_max)
             .sub_for_tests(two_max)
             .is_zero());
+    }
+
+    #[test]
+    fn huge_exponents_print_fast_from_logarithms() {
+        // 2^16385 and 2^(2^31 - 1): the exact conversion would take seconds to hours.
+        let at = |e: i32| WideFloat::scaled(1.0, e).to_string();
+        // 2^16385 = 2.3794629907144635…e4932.
+        assert!(at(16385).starts_with("2.37946299071446"), "{}", at(16385));
+        assert!(at(16385).ends_with("e4932"), "{}", at(16385));
+        // 2^(2^31 − 1) = 8.8080652584198167…e646456992.
+        assert!(
+            at(i32::MAX).starts_with("8.80806525841"),
+            "{}",
+            at(i32::MAX)
+        );
+        assert!(at(i32::MAX).ends_with("e646456992"), "{}", at(i32::MAX));
+        // Just below the threshold the exact path agrees in its first 15 digits.
+        let exact = WideFloat::scaled(1.5, EXACT_DECIMAL_MAX_EXPONENT).to_string();
+        let (digits, e) = WideFloat::scaled(1.5, EXACT_DECIMAL_MAX_EXPONENT).logarithmic_digits();
+        assert_eq!(
+            exact[..16].replace('.', ""),
+            digits[..15],
+            "{exact} vs {digits}"
+        );
+        assert!(exact.ends_with(&format!("e{e}")), "{exact} vs {e}");
     }
 
     #[test]
