@@ -1,43 +1,9 @@
 //! Rounded reporting of caliper results: unit directions, distances across a line and areas,
-//! on coordinates scaled by a power of two so that nothing overflows or underflows. The
-//! choices are made by exact predicates; these only report them.
+//! from differences halved where they would overflow. The choices are made by exact
+//! predicates; these only report them. (The rectangle's corners are certified constructions,
+//! `geometry::construct::rectangle_corner`.)
 
 use crate::geometry::Point2;
-
-/// Points scaled by a power of two so that the largest coordinate is about 1: rounded
-/// constructions on them neither overflow nor lose subnormal precision.
-pub(super) struct Frame<const N: usize> {
-    pub(super) points: [Point2; N],
-    exponent: i32,
-}
-
-impl<const N: usize> Frame<N> {
-    pub(super) fn new(points: [Point2; N]) -> Frame<N> {
-        let largest = points
-            .iter()
-            .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-        // Any nearby power of two will do: the scaling only steers rounding.
-        let exponent = if largest == 0.0 {
-            0
-        } else {
-            largest.log2().floor() as i32
-        };
-        Frame {
-            points: points.map(|p| Point2::new(scale(p.x, -exponent), scale(p.y, -exponent))),
-            exponent,
-        }
-    }
-
-    pub(super) fn unscale(&self, v: f64) -> f64 {
-        scale(v, self.exponent)
-    }
-}
-
-/// `v · 2^e` in two steps, so that no factor overflows for |e| up to 2100.
-pub(super) fn scale(v: f64, e: i32) -> f64 {
-    let half = e / 2;
-    v * 2f64.powi(half) * 2f64.powi(e - half)
-}
 
 /// `p - a`, rounded, as a vector and a factor (1, or 2 when the difference overflows and its
 /// half is returned).

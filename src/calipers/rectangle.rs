@@ -1,13 +1,14 @@
 //! The minimum-area rectangle enclosing a convex polygon: one side along an edge, four
 //! calipers rotated once around it, the areas compared exactly.
 
-use super::frame::{area, direction, Frame};
+use super::frame::{area, direction};
 use super::sides::{four_calipers, Sides};
 use super::ConvexPolygon;
 use crate::complexity::Declaration;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{CountedPredicates, Point2};
+use crate::geometry::construct::rectangle_corner;
+use crate::geometry::{ConstructedPoint, CountedPredicates};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -27,7 +28,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// A minimum-area enclosing rectangle: the polygon edge one side lies on, the vertices that
 /// touch the other three sides, and the corners.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Rectangle {
     /// The hull edge `[i, j]` that one side lies on (counter-clockwise, so the rectangle is
     /// left of `i -> j`).
@@ -37,9 +38,12 @@ pub struct Rectangle {
     /// extreme against its direction).
     pub support: [usize; 3],
     /// The corners, counter-clockwise, starting on the edge's line below `left`. These are
-    /// constructions (projections onto the lines), rounded to within a few ulps of the
-    /// hull's largest coordinate; the edge and the support vertices are exact.
-    pub corners: [Point2; 4],
+    /// constructions (intersections of the sides' lines), each within
+    /// [`ConstructedPoint::RELATIVE_ERROR`] of its exact value, and
+    /// [`ConstructedPoint::BeyondRange`] where that is beyond the range of `f64` (a corner
+    /// of a tilted rectangle around points near `±f64::MAX`); the edge and the support
+    /// vertices are exact.
+    pub corners: [ConstructedPoint; 4],
     /// The area, rounded: height times length, each from the support vertices' own
     /// differences (`inf` if it exceeds `f64::MAX`; 0 for collinear input).
     pub area: f64,
@@ -126,7 +130,7 @@ impl ConvexPolygon<'_> {
                 return Ok(Rectangle {
                     edge: [i, j],
                     support: [j, i, i],
-                    corners: [a, b, b, a],
+                    corners: [a, b, b, a].map(ConstructedPoint::from),
                     area: 0.0,
                 });
             }
@@ -143,25 +147,17 @@ impl ConvexPolygon<'_> {
             }
         });
         let s = best.expect("a polygon has edges");
-        let frame = Frame::new([v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)]);
-        let [a, _, top, left, right] = frame.points;
-        let u = direction(v(s.edge), v(s.edge + 1));
-        let along = |p: Point2| u.0 * (p.x - a.x) + u.1 * (p.y - a.y);
-        let height = u.0 * (top.y - a.y) - u.1 * (top.x - a.x);
-        let (lo, hi) = (along(left), along(right));
-        let on_line = |t: f64| Point2::new(a.x + t * u.0, a.y + t * u.1);
-        let lifted = |p: Point2| Point2::new(p.x - height * u.1, p.y + height * u.0);
-        let corners = [
-            on_line(lo),
-            on_line(hi),
-            lifted(on_line(hi)),
-            lifted(on_line(lo)),
-        ];
+        let (a, b) = (v(s.edge), v(s.edge + 1));
+        let (top, left, right) = (v(s.top), v(s.left), v(s.right));
+        // The sides' lines: the edge's, the parallel through `top`, the perpendiculars
+        // through `left` and `right`.
+        let corners = [(left, a), (right, a), (right, top), (left, top)]
+            .map(|(p, q)| rectangle_corner(a, b, p, q));
         Ok(Rectangle {
             edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
             support: [s.right, s.top, s.left].map(|k| hull[k % h]),
-            corners: corners.map(|c| Point2::new(frame.unscale(c.x), frame.unscale(c.y))),
-            area: area(u, [v(s.edge), v(s.top), v(s.left), v(s.right)]),
+            corners,
+            area: area(direction(a, b), [a, top, left, right]),
         })
     }
 }

@@ -69,7 +69,6 @@ impl BigInt {
     /// bits, exact when the magnitude has at most 64 bits; otherwise its lowest bit is also
     /// set when any discarded bit is (a sticky bit), so rounding `top` to fewer bits rounds
     /// the whole integer correctly.
-    #[allow(dead_code)] // used by WideFloat::from_big
     pub(crate) fn top_bits(&self) -> (bool, u64, i32) {
         let Some(&high) = self.mag.last() else {
             return (false, 0, 0);

@@ -190,7 +190,6 @@ impl WideFloat {
     }
 
     /// The correctly rounded value of a big integer.
-    #[allow(dead_code)] // used by the exact constructions of the next commits
     pub(crate) fn from_big(v: &BigInt) -> WideFloat {
         let (negative, top, shift) = v.top_bits();
         if top == 0 {

@@ -18,7 +18,7 @@ use crate::error::Result;
 use crate::geometry::circle_predicates::{
     cmp_bisector_crossings, dot_sign, Circumcentre, CountedCirclePredicates, SquaredRadius,
 };
-use crate::geometry::construct::{circumcentre, distance, midpoint, scale_of};
+use crate::geometry::construct::{bisector_crossing, circumcentre, distance, midpoint, scale_of};
 use crate::geometry::sweep_predicates::normalize_scale;
 use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
 use std::cmp::Ordering;
@@ -46,7 +46,9 @@ pub(super) const DECLARATION: Declaration = Declaration {
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct EmptyCircle {
-    /// Its centre (rounded).
+    /// Its centre, rounded: within
+    /// [`ConstructedPoint::RELATIVE_ERROR`](crate::geometry::ConstructedPoint::RELATIVE_ERROR)
+    /// of the exact one.
     pub centre: Point2,
     /// Its radius (rounded).
     pub radius: f64,
@@ -99,9 +101,13 @@ pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
 /// if every candidate has radius 0), then the Voronoi vertices in the triangulation's
 /// triangle order, then the crossings along the hull edges in hull order.
 ///
-/// The centre and the radius are rounded constructions (decisions never depend on them):
-/// the circumcentre as in [`voronoi`](fn@crate::delaunay::voronoi), the crossing point as
-/// `p + t (q − p)`, and the radius from coordinate differences scaled by a power of two
+/// The centre and the radius are rounded constructions (decisions never depend on them).
+/// The centre, the circumcentre as in [`voronoi`](fn@crate::delaunay::voronoi) or the
+/// crossing point `p + t (q − p)`, is within
+/// [`ConstructedPoint::RELATIVE_ERROR`](crate::geometry::ConstructedPoint::RELATIVE_ERROR)
+/// of its exact value for every finite input (certified floating point, else exact
+/// big-integer arithmetic); it lies in the hull, so always within the range of `f64`. The
+/// radius comes from coordinate differences scaled by a power of two
 /// (`R = |bc| / (2 sin A)`, or the length of the vector from the site to the crossing), so
 /// it keeps its relative accuracy at any magnitude and any position; it loses accuracy
 /// only with the conditioning of the configuration (a nearly flat triangle, a crossing
@@ -186,10 +192,12 @@ impl Candidate {
                 radius: 0.0,
                 sites: vec![i],
             },
+            // Both centres are in the hull, within the range of f64: `saturating` never
+            // clamps them.
             Candidate::VoronoiVertex(tri) => {
                 let [a, b, c] = tri.map(|i| points[i]);
                 EmptyCircle {
-                    centre: circumcentre(a, b, c),
+                    centre: circumcentre(a, b, c).saturating(),
                     radius: circumradius(a, b, c),
                     sites: tri.to_vec(),
                 }
@@ -197,10 +205,9 @@ impl Candidate {
             Candidate::Crossing { edge, sites } => {
                 let [p, q] = edge.map(|i| points[i]);
                 let [s, w] = sites.map(|i| points[i]);
-                let (centre, radius) = crossing_circle(p, q, s, w);
                 EmptyCircle {
-                    centre,
-                    radius,
+                    centre: bisector_crossing(p, q, s, w).saturating(),
+                    radius: crossing_radius(p, q, s, w),
                     sites: vec![sites[0].min(sites[1]), sites[0].max(sites[1])],
                 }
             }
@@ -336,11 +343,11 @@ fn circumradius(a: Point2, b: Point2, c: Point2) -> f64 {
     }
 }
 
-/// The centre and radius of the crossing circle of hull edge `p → q` and the bisector of
-/// `s` and `w`: t = ((m − p) · u) / ((q − p) · u) with u = w − s and m = (s + w) / 2, on
-/// differences scaled by one power of two (t is scale-free), the centre p + t (q − p) and
-/// the radius |p − s + t (q − p)| in the scaled frame, scaled back.
-fn crossing_circle(p: Point2, q: Point2, s: Point2, w: Point2) -> (Point2, f64) {
+/// The radius of the crossing circle of hull edge `p → q` and the bisector of `s` and `w`:
+/// t = ((m − p) · u) / ((q − p) · u) with u = w − s and m = (s + w) / 2, on differences
+/// scaled by one power of two (t is scale-free), and the radius |p − s + t (q − p)| in the
+/// scaled frame, scaled back.
+fn crossing_radius(p: Point2, q: Point2, s: Point2, w: Point2) -> f64 {
     let coords = [p, q, s, w];
     // Halve every coordinate if a difference overflows (a rounding only for subnormals).
     let half = coords
@@ -365,17 +372,8 @@ fn crossing_circle(p: Point2, q: Point2, s: Point2, w: Point2) -> (Point2, f64) 
     // The exact t is in [0, 1]; a rounded one just outside is clamped (NaN, from a
     // rounded denominator 0, to the start).
     let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
-    let along = |a: f64, b: f64| {
-        let x = a + t * (b - a);
-        if x.is_finite() {
-            x
-        } else {
-            2.0 * (a / 2.0 + t * (b / 2.0 - a / 2.0))
-        }
-    };
-    let centre = Point2::new(along(p.x, q.x), along(p.y, q.y));
     let radius = (t * gx - dsx).hypot(t * gy - dsy) * sc / h;
-    (centre, radius.min(f64::MAX))
+    radius.min(f64::MAX)
 }
 
 #[cfg(test)]
