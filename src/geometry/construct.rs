@@ -29,9 +29,9 @@ use super::{Point2, WideFloat};
 /// **Accuracy**, for the exact value `(x, y)` and the returned `(x̃, ỹ)`: both
 /// `|x̃ − x|` and `|ỹ − y|` are at most
 /// [`RELATIVE_ERROR`](Self::RELATIVE_ERROR)` · max(|x|, |y|) + 2^-1075`. The relative term is
-/// the rounding of a point of that size (16 units in the last place of the larger
-/// coordinate at most); the absolute one, half the smallest subnormal, matters only for
-/// points within the subnormal range.
+/// a few roundings of a point of that size (16 to 32 units in the last place of the larger
+/// coordinate); the absolute one, half the smallest subnormal, matters only for points
+/// within the subnormal range.
 ///
 /// **Range**: a coordinate whose exact value rounds to infinity under the IEEE rule
 /// (magnitude at least `f64::MAX + ulp(f64::MAX) / 2 = 2^1024 − 2^970`) makes the point
@@ -72,8 +72,9 @@ impl ConstructedPoint {
     ///
     /// Chosen so that the certified `f64` evaluation is accepted for nearly every point of
     /// ordinary input (its bound is a few tens of roundings times the conditioning of the
-    /// construction) while staying a real promise: 16 units in the last place of the
-    /// larger coordinate at most, 8 at least. The exact path rounds to within 1.5 units.
+    /// construction) while staying a real promise: 16 to 32 units in the last place of the
+    /// larger exact coordinate (`2^-48 M` for `M` in `[2^e, 2^(e+1))`, whose unit is
+    /// `2^(e−52)`). The exact path rounds each coordinate to within 1.5 units of its own.
     pub const RELATIVE_ERROR: f64 = pow2(-48);
 
     /// The point, if it is within the range of `f64`.

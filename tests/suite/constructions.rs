@@ -193,7 +193,7 @@ fn triangle() -> impl Strategy<Value = [Point2; 3]> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(300))]
+    #![proptest_config(ProptestConfig::with_cases(200))]
 
     /// The one vertex of three sites' diagram is their circumcentre, within the stated error
     /// and beyond the range exactly when it is.

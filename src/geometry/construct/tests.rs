@@ -195,7 +195,7 @@ fn proper(t: &[Point2; 3]) -> bool {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(400))]
+    #![proptest_config(ProptestConfig::with_cases(300))]
 
     #[test]
     fn circumcentres_are_within_the_stated_error(t in triangle()) {
