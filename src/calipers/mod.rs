@@ -48,7 +48,6 @@
 
 mod antipodal;
 mod diameter;
-mod frame;
 mod rectangle;
 mod sides;
 mod width;

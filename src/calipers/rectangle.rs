@@ -1,13 +1,13 @@
 //! The minimum-area rectangle enclosing a convex polygon: one side along an edge, four
 //! calipers rotated once around it, the areas compared exactly.
 
-use super::frame::{direction, Frame};
 use super::sides::{four_calipers, Sides};
 use super::ConvexPolygon;
 use crate::complexity::Declaration;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{rect_area, CountedPredicates, Point2, WideFloat};
+use crate::geometry::construct::rectangle_corner;
+use crate::geometry::{rect_area, ConstructedPoint, CountedPredicates, WideFloat};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -37,9 +37,12 @@ pub struct Rectangle {
     /// extreme against its direction).
     pub support: [usize; 3],
     /// The corners, counter-clockwise, starting on the edge's line below `left`. These are
-    /// constructions (projections onto the lines), rounded to within a few ulps of the
-    /// hull's largest coordinate; the edge and the support vertices are exact.
-    pub corners: [Point2; 4],
+    /// constructions (intersections of the sides' lines), each within
+    /// [`ConstructedPoint::RELATIVE_ERROR`] of its exact value, and
+    /// [`ConstructedPoint::BeyondRange`] where that is beyond the range of `f64` (a corner
+    /// of a tilted rectangle around points near `±f64::MAX`); the edge and the support
+    /// vertices are exact.
+    pub corners: [ConstructedPoint; 4],
     /// The area, height times length (`|(j − i) × (top − i)| · |(j − i) · (right − left)| /
     /// |j − i|²`), with relative error below 3 · 2^-52 for every finite input: each factor
     /// is exact, then rounded once. A [`WideFloat`], so an area beyond `f64::MAX` keeps its
@@ -141,7 +144,7 @@ impl ConvexPolygon<'_> {
                 return Ok(Rectangle {
                     edge: [i, j],
                     support: [j, i, i],
-                    corners: [a, b, b, a],
+                    corners: [a, b, b, a].map(ConstructedPoint::from),
                     area: WideFloat::ZERO,
                 });
             }
@@ -158,24 +161,16 @@ impl ConvexPolygon<'_> {
             }
         });
         let s = best.expect("a polygon has edges");
-        let frame = Frame::new([v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)]);
-        let [a, _, top, left, right] = frame.points;
-        let u = direction(v(s.edge), v(s.edge + 1));
-        let along = |p: Point2| u.0 * (p.x - a.x) + u.1 * (p.y - a.y);
-        let height = u.0 * (top.y - a.y) - u.1 * (top.x - a.x);
-        let (lo, hi) = (along(left), along(right));
-        let on_line = |t: f64| Point2::new(a.x + t * u.0, a.y + t * u.1);
-        let lifted = |p: Point2| Point2::new(p.x - height * u.1, p.y + height * u.0);
-        let corners = [
-            on_line(lo),
-            on_line(hi),
-            lifted(on_line(hi)),
-            lifted(on_line(lo)),
-        ];
+        let (a, b) = (v(s.edge), v(s.edge + 1));
+        let (top, left, right) = (v(s.top), v(s.left), v(s.right));
+        // The sides' lines: the edge's, the parallel through `top`, the perpendiculars
+        // through `left` and `right`.
+        let corners = [(left, a), (right, a), (right, top), (left, top)]
+            .map(|(p, q)| rectangle_corner(a, b, p, q));
         Ok(Rectangle {
             edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
             support: [s.right, s.top, s.left].map(|k| hull[k % h]),
-            corners: corners.map(|c| Point2::new(frame.unscale(c.x), frame.unscale(c.y))),
+            corners,
             area: rect_area([v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)]),
         })
     }

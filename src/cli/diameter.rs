@@ -24,7 +24,8 @@ pub(super) struct DiameterArgs {
 /// `{"algorithm": "...", "pair": [a, b], "points": [[x, y], [x, y]], "distance": d,
 /// "antipodal_pairs": [[i, j], ...], "counts": {...}, "width": {"edge": [i, j], "vertex": k,
 /// "width": w}, "rectangle": {"edge": [i, j], "support": [right, top, left], "corners":
-/// [{"x": .., "y": ..}, ...], "area": a}}`. The counts are the diameter's (with the calipers,
+/// [{"x": .., "y": ..}, ...], "area": a}}`, a corner's coordinate beyond the range of `f64` as
+/// a JSON string holding its decimal value. The counts are the diameter's (with the calipers,
 /// the hull's and theirs); the antipodal pairs, width and rectangle come from the same hull
 /// (ARCHITECTURE's contract: `pair`, `distance`, `antipodal_pairs`).
 #[derive(Debug, Serialize)]

@@ -5,7 +5,7 @@ use super::input::PointInput;
 use super::output::print_json;
 use super::CliError;
 use crate::count::{Counts, NoCount};
-use crate::delaunay::{voronoi_with, ClipBox, Ray};
+use crate::delaunay::{voronoi_with, Cell, ClipBox, Voronoi};
 use crate::geometry::{Point2, PointSet, WideFloat};
 use crate::proximity::{
     closest_pair_with, euclidean_mst_with, largest_empty_circle_with, ClosestPairAlgorithm,
@@ -54,10 +54,10 @@ pub(super) struct PointsArgs {
     input: PointInput,
 }
 
-/// A ray as printed.
+/// A ray as printed (its origin by the overflow rule, like the vertices).
 #[derive(Debug, Serialize)]
 struct RayOutput {
-    origin: [f64; 2],
+    origin: [WideFloat; 2],
     direction: [f64; 2],
     sites: [usize; 2],
 }
@@ -73,10 +73,12 @@ struct CellOutput {
 }
 
 /// `{"vertices": [[x, y], ...], "cells": [...], "cell_of": [k, ...]}`, plus `"clip"` when
-/// clipped.
+/// clipped. Without `--clip`, a vertex coordinate (or ray origin) whose exact value is beyond
+/// the range of `f64` is printed by the overflow rule, as a JSON string holding its decimal
+/// value (`"-4.9999999999999995e899"`); every other coordinate is a JSON number.
 #[derive(Debug, Serialize)]
-struct VoronoiOutput {
-    vertices: Vec<[f64; 2]>,
+struct VoronoiOutput<V> {
+    vertices: Vec<V>,
     cells: Vec<CellOutput>,
     cell_of: Vec<usize>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -134,21 +136,23 @@ pub(super) fn run_voronoi(args: VoronoiArgs) -> Result<(), CliError> {
     };
     let v = voronoi_with(&set, &mut NoCount)?;
     let cell_of = (0..points.len()).map(|i| v.cell_of(i)).collect();
-    let out = match bounds {
-        None => VoronoiOutput {
-            vertices: v.vertices.iter().map(|&p| p.into()).collect(),
+    // The two shapes differ in their vertices: constructed points by the overflow rule, or
+    // the clipped polygons' corners.
+    match bounds {
+        None => print_json(&VoronoiOutput {
+            vertices: (0..v.vertices.len()).map(|i| v.vertex(i).wide()).collect(),
             cells: v
                 .cells()
                 .map(|c| CellOutput {
                     site: c.site,
                     vertices: c.vertices.to_vec(),
                     bounded: c.bounded,
-                    rays: Some(c.rays.iter().map(ray_output).collect()),
+                    rays: Some(ray_outputs(&v, c)),
                 })
                 .collect(),
             cell_of,
             clip: None,
-        },
+        }),
         Some(b) => {
             let mut vertices = Vec::new();
             let mut cells = Vec::with_capacity(v.cell_count());
@@ -163,15 +167,14 @@ pub(super) fn run_voronoi(args: VoronoiArgs) -> Result<(), CliError> {
                     rays: None,
                 });
             }
-            VoronoiOutput {
+            print_json(&VoronoiOutput {
                 vertices,
                 cells,
                 cell_of,
                 clip: Some([b.min.x, b.min.y, b.max.x, b.max.y]),
-            }
+            })
         }
-    };
-    print_json(&out)
+    }
 }
 
 /// Runs `compgeo closest-pair`.
@@ -231,12 +234,23 @@ pub(super) fn run_empty_circle(args: PointsArgs) -> Result<(), CliError> {
     })
 }
 
-fn ray_output(r: &Ray) -> RayOutput {
-    RayOutput {
-        origin: r.origin.into(),
-        direction: r.direction.into(),
-        sites: r.sites,
-    }
+/// The rays of a cell as printed. A ray of a triangulated point set starts at a Voronoi
+/// vertex, the cell's first for the arriving ray and its last for the leaving one (see
+/// `Cell`), whose unclamped value is printed; collinear sites' rays start at midpoints.
+fn ray_outputs(v: &Voronoi, cell: Cell<'_>) -> Vec<RayOutput> {
+    let ends = [cell.vertices.first(), cell.vertices.last()];
+    cell.rays
+        .iter()
+        .enumerate()
+        .map(|(k, r)| RayOutput {
+            origin: match ends[k % 2] {
+                Some(&i) if cell.rays.len() == 2 => v.vertex(i).wide(),
+                _ => [r.origin.x, r.origin.y].map(WideFloat::from),
+            },
+            direction: r.direction.into(),
+            sites: r.sites,
+        })
+        .collect()
 }
 
 /// `N` comma-separated numbers; NaN and infinities parse here and are rejected by the

@@ -7,7 +7,7 @@ use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::construct::{circumcentre, midpoint, unit_direction};
-use crate::geometry::{Point2, PointSet};
+use crate::geometry::{ConstructedPoint, Point2, PointSet, WideFloat};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -36,14 +36,20 @@ pub(super) const DECLARATION: Declaration = Declaration {
 ///
 /// `vertices[t]` is the circumcentre of triangle `t` of the triangulation the diagram was
 /// built from (for [`voronoi`], its own), so cocircular sites give several equal vertices
-/// (one per triangle).
+/// (one per triangle). Each is within
+/// [`ConstructedPoint::RELATIVE_ERROR`] of the exact circumcentre; one whose exact value is
+/// beyond the range of `f64` (a nearly flat triangle at a large scale) is clamped to
+/// `±f64::MAX` in `vertices`, and [`vertex`](Voronoi::vertex) gives its true value.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Voronoi {
     /// The Voronoi vertices: the circumcentre of every Delaunay triangle, in triangle order
-    /// (rounded constructions, see [`voronoi`]).
+    /// (rounded constructions, see [`voronoi`]; a coordinate beyond the range of `f64`
+    /// clamped to `±f64::MAX`, see [`Voronoi::vertex`]).
     pub vertices: Vec<Point2>,
     /// The site of each cell.
     pub sites: Vec<usize>,
+    /// The vertices beyond the range of `f64`, by increasing index, with their values.
+    beyond: Vec<(usize, [WideFloat; 2])>,
     /// `vertex_ids[vertex_start[k]..vertex_start[k + 1]]` are cell k's vertices.
     vertex_start: Vec<usize>,
     vertex_ids: Vec<usize>,
@@ -80,7 +86,10 @@ pub struct Cell<'a> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Ray {
-    /// Where it starts: a Voronoi vertex, or for collinear sites the midpoint of the two.
+    /// Where it starts: a Voronoi vertex (the cell's first vertex for the arriving ray, its
+    /// last for the leaving one; as in [`Voronoi::vertices`], so clamped to `±f64::MAX` where
+    /// the vertex is beyond the range of `f64`, see [`Voronoi::vertex`]), or for collinear
+    /// sites the midpoint of the two.
     pub origin: Point2,
     /// A unit vector pointing to infinity (rounded), perpendicular to `sites[1] - sites[0]`.
     pub direction: Point2,
@@ -125,6 +134,31 @@ impl Voronoi {
     pub fn cell_of(&self, i: usize) -> usize {
         self.cell_of[i]
     }
+
+    /// Vertex `i`, the circumcentre of triangle `i`, as constructed: within
+    /// [`ConstructedPoint::RELATIVE_ERROR`] of the exact circumcentre, and
+    /// [`ConstructedPoint::BeyondRange`] exactly when a coordinate's exact value is beyond
+    /// the range of `f64` (where [`vertices`](Voronoi::vertices) holds it clamped). Panics if
+    /// `i` is out of range.
+    ///
+    /// # Complexity
+    /// O(log b) for b vertices beyond the range (O(1) when there are none).
+    pub fn vertex(&self, i: usize) -> ConstructedPoint {
+        let p = self.vertices[i];
+        if self.beyond.is_empty() {
+            return ConstructedPoint::Finite(p);
+        }
+        match self.beyond.binary_search_by_key(&i, |&(j, _)| j) {
+            Ok(k) => ConstructedPoint::BeyondRange(self.beyond[k].1),
+            Err(_) => ConstructedPoint::Finite(p),
+        }
+    }
+
+    /// Whether vertex `i` has a coordinate beyond the range of `f64` (see
+    /// [`vertex`](Voronoi::vertex)).
+    pub fn is_beyond_range(&self, i: usize) -> bool {
+        self.vertex(i).is_beyond_range()
+    }
 }
 
 /// The Voronoi diagram of `points`, computed as the dual of their Delaunay triangulation
@@ -141,9 +175,12 @@ impl Voronoi {
 /// triangulation: which cells are bounded (the site is not on the hull), the cyclic order
 /// of a cell's vertices (the triangles around the site), which hull edge a ray is
 /// perpendicular to. The *coordinates* of the vertices, ray origins and ray directions are
-/// constructions, rounded to `f64` (computed on differences scaled by a power of two, so
-/// they neither overflow nor vanish for any finite input; a circumcentre beyond `f64`'s
-/// range, from a nearly flat triangle at a huge scale, is clamped to `±f64::MAX`).
+/// constructions, rounded to `f64`: each vertex within
+/// [`ConstructedPoint::RELATIVE_ERROR`] of the exact circumcentre for every finite input (a
+/// certified floating-point evaluation, or exact big-integer arithmetic when its bound does
+/// not certify it), the midpoints of collinear sites within an ulp, the directions within a
+/// few. A circumcentre beyond `f64`'s range (a nearly flat triangle at a huge scale) is
+/// reported by [`Voronoi::vertex`] and clamped to `±f64::MAX` in [`Voronoi::vertices`].
 ///
 /// The cells come in a spatial order, that of their sites along a Hilbert curve, so the
 /// walks around consecutive sites touch nearby memory (cache misses are most of their cost
@@ -257,6 +294,7 @@ pub fn dual(points: &[Point2], t: &Triangulation) -> Voronoi {
     let mut v = Voronoi {
         vertices: Vec::new(),
         sites,
+        beyond: Vec::new(),
         vertex_start: vec![0],
         vertex_ids: Vec::new(),
         ray_start: vec![0],
@@ -335,16 +373,22 @@ fn triangulated_cells<I: HalfEdgeId>(
     v: &mut Voronoi,
 ) {
     let at = |e: usize| tri[e].index();
+    let mut beyond = Vec::new();
     v.vertices = tri
         .chunks_exact(3)
-        .map(|c| {
-            circumcentre(
-                points[c[0].index()],
-                points[c[1].index()],
-                points[c[2].index()],
-            )
+        .enumerate()
+        .map(|(t, c)| {
+            let [a, b, c] = [c[0], c[1], c[2]].map(|i| points[i.index()]);
+            match circumcentre(a, b, c) {
+                ConstructedPoint::Finite(p) => p,
+                far => {
+                    beyond.push((t, far.wide()));
+                    far.saturating()
+                }
+            }
         })
         .collect();
+    v.beyond = beyond;
     let mut ids = Vec::with_capacity(tri.len());
     let mut start = Vec::with_capacity(starts.len() + 1);
     let mut ray_start = Vec::with_capacity(starts.len() + 1);

@@ -1,95 +1,374 @@
-//! Rounded constructions of the Voronoi diagram and the proximity problems: circumcentres,
-//! midpoints and unit directions (distances are `WideFloat::distance`).
+//! Constructions: the new points that the Voronoi diagram, the proximity problems and the
+//! calipers report (circumcentres, intersections of lines, midpoints), unit directions and
+//! distances.
 //!
-//! These build new points, so they cannot be exact in `f64`; every *decision* stays with
-//! the exact predicates. Each construction works on coordinate differences scaled by a
-//! power of two (exact), so it neither overflows for coordinates near `f64::MAX` nor loses
-//! everything to underflow for subnormal differences: the result carries a few rounding
-//! errors relative to the size of the configuration.
+//! These build new points, so they cannot be exact in `f64`; every *decision* stays with the
+//! exact predicates. The points whose exact value is a rational function of the input
+//! (circumcentres, the corners of a rectangle, where a segment crosses a bisector) are
+//! *certified*: a rounded evaluation runs in midpoint–radius arithmetic ([`Ball`]: every
+//! operation carries a rigorous bound on its distance to the exact value, underflow and
+//! overflow included), on coordinate differences scaled by one power of two; it is accepted
+//! when its bound is within half of [`ConstructedPoint::RELATIVE_ERROR`] of the point's size.
+//! Otherwise (a nearly flat triangle, a point near the origin built from far-away input,
+//! magnitudes that leave the filter's range) the point is formed exactly as `(X / W, Y / W)`
+//! in big integers and rounded once per coordinate ([`rational_point`], shared by every
+//! construction). So every finite input gets its point within the stated error, and a point
+//! whose exact value is beyond the range of `f64` says so
+//! ([`ConstructedPoint::BeyondRange`]).
 
-use crate::geometry::{cmp_dist, Point2};
+use super::ball::{scaled_differences, Ball};
+use super::bigint::BigInt;
+use super::circle_predicates::Circumcentre;
+use super::extended::exact_coords;
+use super::predicates::pow2;
+use super::{Point2, WideFloat};
 
-/// The circumcentre of the counter-clockwise (strictly) triangle `a, b, c`.
+/// A constructed point (a Voronoi vertex, a corner of a rectangle, the centre of an empty
+/// circle), rounded from its exact value, a rational function of the input coordinates.
 ///
-/// The formula runs on the two edges at the vertex opposite the longest edge: their cross
-/// product, the denominator, then loses at most a few units in the last place relative to
-/// its size however short one edge is, so a triangle with two nearly coincident vertices
-/// still gets an accurate centre. (Which vertex is a numerical choice, not a geometric
-/// decision: it is made on rounded squared lengths; a near tie means either choice is as
-/// accurate.) A centre beyond the range of `f64` (a nearly flat triangle at a large scale)
-/// is clamped to `±f64::MAX` coordinate by coordinate.
-#[inline]
-pub(crate) fn circumcentre(a: Point2, b: Point2, c: Point2) -> Point2 {
-    let (ab, bc, ca) = (
-        (b.x - a.x, b.y - a.y),
-        (c.x - b.x, c.y - b.y),
-        (a.x - c.x, a.y - c.y),
-    );
-    let len = |(x, y): (f64, f64)| x * x + y * y;
-    let (lab, lbc, lca) = (len(ab), len(bc), len(ca));
-    let m = [ab.0, ab.1, bc.0, bc.1, ca.0, ca.1]
-        .iter()
-        .fold(0.0f64, |m, v| m.max(v.abs()));
-    // Cubic terms stay normal and finite for differences in [2^-300, 2^300]; elsewhere
-    // (and for NaN from overflowing differences) the scaled path below.
-    if (POW2_M300..=POW2_300).contains(&m) {
-        // Origin o opposite the longest edge, u and w its two edges, counter-clockwise.
-        let neg = |(x, y): (f64, f64)| (-x, -y);
-        let (o, u, w, lu, lw) = if lab >= lbc && lab >= lca {
-            (c, ca, neg(bc), lca, lbc)
-        } else if lca >= lbc {
-            (b, bc, neg(ab), lbc, lab)
-        } else {
-            (a, ab, neg(ca), lab, lca)
-        };
-        let d = 2.0 * (u.0 * w.1 - u.1 * w.0);
-        if d > 0.0 {
-            let x = o.x + (w.1 * lu - u.1 * lw) / d;
-            let y = o.y + (u.0 * lw - w.0 * lu) / d;
-            if x.is_finite() && y.is_finite() {
-                return Point2::new(x, y);
+/// **Accuracy**, for the exact value `(x, y)` and the returned `(x̃, ỹ)`: both
+/// `|x̃ − x|` and `|ỹ − y|` are at most
+/// [`RELATIVE_ERROR`](Self::RELATIVE_ERROR)` · max(|x|, |y|) + 2^-1075`. The relative term is
+/// a few roundings of a point of that size (16 to 32 units in the last place of the larger
+/// coordinate); the absolute one, half the smallest subnormal, matters only for points
+/// within the subnormal range.
+///
+/// **Range**: a coordinate whose exact value rounds to infinity under the IEEE rule
+/// (magnitude at least `f64::MAX + ulp(f64::MAX) / 2 = 2^1024 − 2^970`) makes the point
+/// [`BeyondRange`](Self::BeyondRange), holding both coordinates as [`WideFloat`] with the
+/// same accuracy (and the beyond-range ones at least `2^1024` in magnitude, so their
+/// [`WideFloat::to_f64`] is `None`). Every other point is [`Finite`](Self::Finite).
+///
+/// With the `serde` feature it serialises like [`Point2`], `{"x": .., "y": ..}`, each
+/// coordinate beyond the range as its decimal string (the [`WideFloat`] rule).
+///
+/// ```
+/// use compgeo::delaunay::voronoi;
+/// use compgeo::geometry::{ConstructedPoint, Point2};
+///
+/// // A flat triangle 2e300 wide and 1e-300 high: its circumcentre is 1e900 below it.
+/// let pts = [(-1e300, 0.0), (1e300, 0.0), (0.0, 1e-300)].map(Point2::from);
+/// let v = voronoi(&pts)?;
+/// let centre = v.vertex(0);
+/// assert!(centre.is_beyond_range());
+/// let [x, y] = centre.wide();
+/// assert_eq!(x.to_f64(), Some(0.0));
+/// assert_eq!(y.to_f64(), None);
+/// assert!(y.to_string().ends_with("e899"), "{y}"); // −(1e300)² / (2 · 1e-300), about −5e899
+/// assert_eq!(centre.saturating(), Point2::new(0.0, -f64::MAX));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ConstructedPoint {
+    /// Both coordinates are within the range of `f64`: the rounded point.
+    Finite(Point2),
+    /// At least one coordinate is beyond the range of `f64`: both, rounded as
+    /// [`WideFloat`]s.
+    BeyondRange([WideFloat; 2]),
+}
+
+impl ConstructedPoint {
+    /// The stated relative error of every constructed point, `2^-48` (about `3.6e-15`).
+    ///
+    /// Chosen so that the certified `f64` evaluation is accepted for nearly every point of
+    /// ordinary input (its bound is a few tens of roundings times the conditioning of the
+    /// construction) while staying a real promise: 16 to 32 units in the last place of the
+    /// larger exact coordinate (`2^-48 M` for `M` in `[2^e, 2^(e+1))`, whose unit is
+    /// `2^(e−52)`). The exact path rounds each coordinate to within 1.5 units of its own.
+    pub const RELATIVE_ERROR: f64 = pow2(-48);
+
+    /// The point, if it is within the range of `f64`.
+    pub fn finite(self) -> Option<Point2> {
+        match self {
+            ConstructedPoint::Finite(p) => Some(p),
+            ConstructedPoint::BeyondRange(_) => None,
+        }
+    }
+
+    /// Whether a coordinate is beyond the range of `f64`.
+    pub fn is_beyond_range(self) -> bool {
+        matches!(self, ConstructedPoint::BeyondRange(_))
+    }
+
+    /// The coordinates as [`WideFloat`]s (exactly the rounded doubles of a finite point).
+    pub fn wide(self) -> [WideFloat; 2] {
+        match self {
+            ConstructedPoint::Finite(p) => [WideFloat::from(p.x), WideFloat::from(p.y)],
+            ConstructedPoint::BeyondRange(w) => w,
+        }
+    }
+
+    /// The point with every coordinate beyond the range of `f64` clamped to `±f64::MAX`
+    /// (for drawing, or for code that only needs a direction from far away).
+    pub fn saturating(self) -> Point2 {
+        match self {
+            ConstructedPoint::Finite(p) => p,
+            ConstructedPoint::BeyondRange([x, y]) => {
+                Point2::new(x.to_f64_saturating(), y.to_f64_saturating())
             }
         }
     }
-    circumcentre_scaled(a, b, c)
 }
 
-/// [`circumcentre`] on differences scaled by a power of two, halved first if they
-/// overflow: for every finite input.
-#[cold]
-fn circumcentre_scaled(a: Point2, b: Point2, c: Point2) -> Point2 {
-    use std::cmp::Ordering::Greater;
-    let (a, b, c) = if cmp_dist(a, b, b, c) == Greater && cmp_dist(a, b, c, a) == Greater {
-        (c, a, b)
-    } else if cmp_dist(c, a, b, c) == Greater {
-        (b, c, a)
-    } else {
-        (a, b, c)
-    };
-    let (bx, by, cx, cy, half) = differences(a, b, c);
-    // Each edge scaled by its own power of two: in a common scale a short edge next to a
-    // long one (1e-300 beside 1e300) would underflow to nothing. The offset is
-    // (cy |b|² − by |c|², bx |c|² − cx |b|²) / (2 b × c), and each of its terms is
-    // linear in one edge's scale once the determinant's two scales cancel.
-    let sb = scale_of(bx.abs().max(by.abs()));
-    let sc = scale_of(cx.abs().max(cy.abs()));
-    let (bx, by, cx, cy) = (bx / sb, by / sb, cx / sc, cy / sc);
-    let b2 = bx * bx + by * by;
-    let c2 = cx * cx + cy * cy;
-    // The triangle is counter-clockwise, so the exact determinant is positive; a rounded
-    // one that is not only means the triangle is very flat and the centre very far.
-    let d = (2.0 * (bx * cy - by * cx)).max(f64::MIN_POSITIVE);
-    Point2::new(
-        clamp(offset(a.x, cy * b2 / d, sb, by * c2 / d, sc, half)),
-        clamp(offset(a.y, -(cx * b2 / d), sb, -(bx * c2 / d), sc, half)),
+impl From<Point2> for ConstructedPoint {
+    /// An input point, which is its own exact value.
+    fn from(p: Point2) -> ConstructedPoint {
+        ConstructedPoint::Finite(p)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for ConstructedPoint {
+    /// `{"x": .., "y": ..}` like [`Point2`]; a coordinate beyond `f64` as a decimal string.
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut s = serializer.serialize_struct("ConstructedPoint", 2)?;
+        match self {
+            ConstructedPoint::Finite(p) => {
+                s.serialize_field("x", &p.x)?;
+                s.serialize_field("y", &p.y)?;
+            }
+            ConstructedPoint::BeyondRange([x, y]) => {
+                s.serialize_field("x", x)?;
+                s.serialize_field("y", y)?;
+            }
+        }
+        s.end()
+    }
+}
+
+/// The circumcentre of the triangle `a, b, c` (not collinear; either orientation), within
+/// [`ConstructedPoint::RELATIVE_ERROR`].
+///
+/// The certified evaluation works at the vertex opposite the longest edge (the largest
+/// angle): the determinant of its two edges then loses at most a few roundings relative to
+/// its size however short one edge is, so a triangle with two nearly coincident vertices
+/// keeps the fast path.
+///
+/// Panics if the points are collinear (a broken invariant of the caller: every Delaunay
+/// triangle is proper).
+#[inline]
+pub(crate) fn circumcentre(a: Point2, b: Point2, c: Point2) -> ConstructedPoint {
+    match circumcentre_rounded(a, b, c) {
+        Some(p) => ConstructedPoint::Finite(p),
+        None => circumcentre_exact(a, b, c),
+    }
+}
+
+/// The certified `f64` circumcentre, or `None` when its bound does not certify it: the
+/// rounded centre and error bounds of the empty circle's predicates
+/// ([`Circumcentre`], `circle_predicates/mod.rs`, which derives them), accepted or not.
+#[inline]
+pub(crate) fn circumcentre_rounded(a: Point2, b: Point2, c: Point2) -> Option<Point2> {
+    let (centre, err_x, err_y) = Circumcentre::new(a, b, c).rounded();
+    certified(
+        Ball {
+            mid: centre.x,
+            rad: err_x,
+        },
+        Ball {
+            mid: centre.y,
+            rad: err_y,
+        },
     )
 }
 
-/// 2^300 and 2^-300.
-const POW2_300: f64 = 2.037035976334486e90;
-const POW2_M300: f64 = 4.909093465297727e-91;
+/// The circumcentre in big integers: with `b' = b − a`, `c' = c − a`,
+/// `a + (c'y |b'|² − b'y |c'|², b'x |c'|² − c'x |b'|²) / (2 b' × c')`.
+#[cold]
+#[inline(never)]
+fn circumcentre_exact(a: Point2, b: Point2, c: Point2) -> ConstructedPoint {
+    let ([ax, ay, bx, by, cx, cy], base) = exact_coords([a.x, a.y, b.x, b.y, c.x, c.y]);
+    let (ubx, uby) = (bx.sub(&ax), by.sub(&ay));
+    let (ucx, ucy) = (cx.sub(&ax), cy.sub(&ay));
+    let lb = ubx.mul(&ubx).add(&uby.mul(&uby));
+    let lc = ucx.mul(&ucx).add(&ucy.mul(&ucy));
+    let half_d = ubx.mul(&ucy).sub(&uby.mul(&ucx));
+    let d = half_d.add(&half_d);
+    let nx = ucy.mul(&lb).sub(&uby.mul(&lc));
+    let ny = ubx.mul(&lc).sub(&ucx.mul(&lb));
+    rational_point(
+        &ax.mul(&d).add(&nx),
+        &ay.mul(&d).add(&ny),
+        &d,
+        base,
+        "a triangle that is not flat",
+    )
+}
 
-/// The midpoint of `a` and `b`.
+/// Where the line through `p` perpendicular to the line `a → b` meets the line through `q`
+/// parallel to it (`a ≠ b`): a corner of a rectangle with a side on `a → b`, within
+/// [`ConstructedPoint::RELATIVE_ERROR`].
+///
+/// With `g = b − a`, the point is `a + (((p − a) · g) g + (g × (q − a)) g⊥) / |g|²` for
+/// `g⊥ = (−g_y, g_x)`; `q = a` gives the foot of the perpendicular from `p`.
+pub(crate) fn rectangle_corner(a: Point2, b: Point2, p: Point2, q: Point2) -> ConstructedPoint {
+    let rounded = || {
+        let ([gx, gy, px, py, qx, qy], k) = scaled_differences([
+            (b.x, a.x),
+            (b.y, a.y),
+            (p.x, a.x),
+            (p.y, a.y),
+            (q.x, a.x),
+            (q.y, a.y),
+        ])?;
+        let along = px.mul(gx).add(py.mul(gy));
+        let across = gx.mul(qy).sub(gy.mul(qx));
+        let n = gx.mul(gx).add(gy.mul(gy));
+        let ox = along.mul(gx).sub(across.mul(gy)).div(n)?.scaled(-k);
+        let oy = along.mul(gy).add(across.mul(gx)).div(n)?.scaled(-k);
+        certified(exact(a.x).add(ox), exact(a.y).add(oy))
+    };
+    match rounded() {
+        Some(c) => ConstructedPoint::Finite(c),
+        None => rectangle_corner_exact(a, b, p, q),
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn rectangle_corner_exact(a: Point2, b: Point2, p: Point2, q: Point2) -> ConstructedPoint {
+    let ([ax, ay, bx, by, px, py, qx, qy], base) =
+        exact_coords([a.x, a.y, b.x, b.y, p.x, p.y, q.x, q.y]);
+    let (gx, gy) = (bx.sub(&ax), by.sub(&ay));
+    let along = px.sub(&ax).mul(&gx).add(&py.sub(&ay).mul(&gy));
+    let across = gx.mul(&qy.sub(&ay)).sub(&gy.mul(&qx.sub(&ax)));
+    let n = gx.mul(&gx).add(&gy.mul(&gy));
+    let x = ax.mul(&n).add(&along.mul(&gx)).sub(&across.mul(&gy));
+    let y = ay.mul(&n).add(&along.mul(&gy)).add(&across.mul(&gx));
+    rational_point(&x, &y, &n, base, "an edge of two distinct points")
+}
+
+/// Where the line `p → q` crosses the bisector of `s` and `w`, within
+/// [`ConstructedPoint::RELATIVE_ERROR`]: `p + t (q − p)` with `t = N / (2 D)`,
+/// `N = (w − s) · ((w − p) + (s − p))` and `D = (q − p) · (w − s)`, which must not be zero
+/// (the line is not parallel to the bisector).
+pub(crate) fn bisector_crossing(p: Point2, q: Point2, s: Point2, w: Point2) -> ConstructedPoint {
+    let rounded = || {
+        let ([gx, gy, ux, uy, dwx, dwy, dsx, dsy], k) = scaled_differences([
+            (q.x, p.x),
+            (q.y, p.y),
+            (w.x, s.x),
+            (w.y, s.y),
+            (w.x, p.x),
+            (w.y, p.y),
+            (s.x, p.x),
+            (s.y, p.y),
+        ])?;
+        let n = ux.mul(dwx.add(dsx)).add(uy.mul(dwy.add(dsy)));
+        let t = n.div(gx.mul(ux).add(gy.mul(uy)).twice())?;
+        certified(
+            exact(p.x).add(t.mul(gx).scaled(-k)),
+            exact(p.y).add(t.mul(gy).scaled(-k)),
+        )
+    };
+    match rounded() {
+        Some(c) => ConstructedPoint::Finite(c),
+        None => bisector_crossing_exact(p, q, s, w),
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn bisector_crossing_exact(p: Point2, q: Point2, s: Point2, w: Point2) -> ConstructedPoint {
+    let ([px, py, qx, qy, sx, sy, wx, wy], base) =
+        exact_coords([p.x, p.y, q.x, q.y, s.x, s.y, w.x, w.y]);
+    let (gx, gy) = (qx.sub(&px), qy.sub(&py));
+    let (ux, uy) = (wx.sub(&sx), wy.sub(&sy));
+    let n = ux
+        .mul(&wx.sub(&px).add(&sx.sub(&px)))
+        .add(&uy.mul(&wy.sub(&py).add(&sy.sub(&py))));
+    let half = gx.mul(&ux).add(&gy.mul(&uy));
+    let d = half.add(&half);
+    let x = px.mul(&d).add(&n.mul(&gx));
+    let y = py.mul(&d).add(&n.mul(&gy));
+    rational_point(&x, &y, &d, base, "a line not parallel to the bisector")
+}
+
+/// The rounded point of a certified evaluation, if its bounds certify
+/// [`ConstructedPoint::RELATIVE_ERROR`] and the range: each bound at most half the stated
+/// error times the larger rounded coordinate (so at most the stated error times the exact
+/// one's: `e ≤ (τ/2) (M + e)` gives `e ≤ τ M`), and both coordinates below `2^1023` (so the
+/// exact ones are far below the overflow threshold).
+#[inline]
+fn certified(x: Ball, y: Ball) -> Option<Point2> {
+    let limit = ACCEPT * x.mid.abs().max(y.mid.abs());
+    // Every comparison is false for NaN.
+    let accepted = x.mid.abs() < RANGE && y.mid.abs() < RANGE && x.rad <= limit && y.rad <= limit;
+    accepted.then(|| Point2::new(x.mid, y.mid))
+}
+
+/// The acceptance threshold of [`certified`]: half the stated error.
+const ACCEPT: f64 = ConstructedPoint::RELATIVE_ERROR / 2.0;
+
+/// 2^1023: certified coordinates stay below it.
+const RANGE: f64 = pow2(1023);
+
+/// A double as an exact ball.
+#[inline]
+fn exact(v: f64) -> Ball {
+    Ball { mid: v, rad: 0.0 }
+}
+
+/// The point `(x / w, y / w) · 2^base` of big integers (`w ≠ 0`, else a panic naming the
+/// caller's `invariant`), each coordinate rounded to within 1.5 units in its last place
+/// (the numerator and the denominator rounded correctly, then their quotient) and, in the
+/// subnormal range, once more to the nearest double (2^-1075 at most). Whether a coordinate
+/// is beyond the range of `f64` is decided exactly.
+///
+/// The one rounding of exact rational points, shared by every construction.
+fn rational_point(
+    x: &BigInt,
+    y: &BigInt,
+    w: &BigInt,
+    base: i32,
+    invariant: &str,
+) -> ConstructedPoint {
+    let den = WideFloat::from_big(w);
+    let unit = WideFloat::scaled(1.0, base);
+    let coordinate = |n: &BigInt| {
+        let v = WideFloat::from_big(n)
+            .checked_div(den)
+            .unwrap_or_else(|| panic!("a zero denominator: expected {invariant}"))
+            .mul(unit);
+        // Below 2^1023 the rounded value is at most 1.5 ulps from the exact one, so the
+        // exact one is far below the overflow threshold; above, decide exactly.
+        if v.abs() < WideFloat::scaled(1.0, 1023) || !overflows(n, w, base) {
+            let f =
+                v.to_f64()
+                    .unwrap_or(f64::MAX.copysign(if v.is_negative() { -1.0 } else { 1.0 }));
+            return Ok(f);
+        }
+        // Beyond: at least 2^1024, so it never prints as a finite double (the exact value
+        // is at least 2^1024 − 2^970, within 2^-54 relative of that).
+        let least = WideFloat::scaled(if v.is_negative() { -1.0 } else { 1.0 }, 1024);
+        Err(if v.abs() < least.abs() { least } else { v })
+    };
+    match (coordinate(x), coordinate(y)) {
+        (Ok(x), Ok(y)) => ConstructedPoint::Finite(Point2::new(x, y)),
+        (x, y) => {
+            let wide = |c: Result<f64, WideFloat>| c.map_or_else(|w| w, WideFloat::from);
+            ConstructedPoint::BeyondRange([wide(x), wide(y)])
+        }
+    }
+}
+
+/// Whether `|n / w| · 2^base` rounds to infinity: at least `2^1024 − 2^970`, the midpoint
+/// between `f64::MAX` and `2^1024` (a tie rounds to the even `2^1024`).
+fn overflows(n: &BigInt, w: &BigInt, base: i32) -> bool {
+    let threshold = BigInt::from_parts(false, (1 << 54) - 1, 970);
+    let shift = BigInt::from_parts(false, 1, base.unsigned_abs());
+    let (lhs, rhs) = if base >= 0 {
+        (n.abs().mul(&shift), w.abs().mul(&threshold))
+    } else {
+        (n.abs(), w.abs().mul(&threshold).mul(&shift))
+    };
+    lhs.sub(&rhs).signum() >= 0
+}
+
+/// The midpoint of `a` and `b`: each coordinate within one unit in the last place (the
+/// rounded sum halved, or the sum of the halves when the sum overflows), plus 2^-1075 in
+/// the subnormal range. It is always within the range of `f64`.
 pub(crate) fn midpoint(a: Point2, b: Point2) -> Point2 {
     let mid = |p: f64, q: f64| {
         let m = (p + q) / 2.0;
@@ -102,7 +381,7 @@ pub(crate) fn midpoint(a: Point2, b: Point2) -> Point2 {
     Point2::new(mid(a.x, b.x), mid(a.y, b.y))
 }
 
-/// The unit vector from `a` towards `b` (`a != b`).
+/// The unit vector from `a` towards `b` (`a != b`), within a few units in the last place.
 pub(crate) fn unit_direction(a: Point2, b: Point2) -> Point2 {
     let (mut dx, mut dy) = (b.x - a.x, b.y - a.y);
     if !(dx.is_finite() && dy.is_finite()) {
@@ -112,22 +391,6 @@ pub(crate) fn unit_direction(a: Point2, b: Point2) -> Point2 {
     let (dx, dy) = (dx / s, dy / s);
     let len = dx.hypot(dy);
     Point2::new(dx / len, dy / len)
-}
-
-/// `b - a` and `c - a`, halved (and `true`) if a full difference overflows.
-fn differences(a: Point2, b: Point2, c: Point2) -> (f64, f64, f64, f64, bool) {
-    let d = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
-    if d.0.is_finite() && d.1.is_finite() && d.2.is_finite() && d.3.is_finite() {
-        (d.0, d.1, d.2, d.3, false)
-    } else {
-        (
-            b.x / 2.0 - a.x / 2.0,
-            b.y / 2.0 - a.y / 2.0,
-            c.x / 2.0 - a.x / 2.0,
-            c.y / 2.0 - a.y / 2.0,
-            true,
-        )
-    }
 }
 
 /// A power of two within a factor 2 of `m` (1 for zero), so dividing by it is exact
@@ -141,98 +404,5 @@ pub(crate) fn scale_of(m: f64) -> f64 {
     f64::from_bits(((e.clamp(-1022, 1023) + 1023) as u64) << 52)
 }
 
-/// `base + (p sp − q sq)` (times 2 if `half`: then the differences were halved) without
-/// an intermediate overflow where the result is representable.
-fn offset(base: f64, p: f64, sp: f64, q: f64, sq: f64, half: bool) -> f64 {
-    let u = p * sp - q * sq;
-    if half {
-        return 2.0 * (base / 2.0 + u);
-    }
-    let r = base + u;
-    if r.is_finite() {
-        return r;
-    }
-    // The offset or the sum overflowed, but the result may not: add the halves.
-    2.0 * (base / 2.0 + (p * (sp / 2.0) - q * (sq / 2.0)))
-}
-
-fn clamp(v: f64) -> f64 {
-    if v.is_nan() {
-        0.0
-    } else {
-        v.clamp(-f64::MAX, f64::MAX)
-    }
-}
-
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn p(x: f64, y: f64) -> Point2 {
-        Point2::new(x, y)
-    }
-
-    #[test]
-    fn circumcentre_of_a_right_triangle_is_the_hypotenuse_midpoint() {
-        assert_eq!(
-            circumcentre(p(0.0, 0.0), p(4.0, 0.0), p(0.0, 2.0)),
-            p(2.0, 1.0)
-        );
-        // The same triangle at 1e300 and at 1e-300: scaling by powers of two is exact.
-        let s = 2f64.powi(996);
-        assert_eq!(
-            circumcentre(p(0.0, 0.0), p(4.0 * s, 0.0), p(0.0, 2.0 * s)),
-            p(2.0 * s, s)
-        );
-        let s = 2f64.powi(-1060);
-        assert_eq!(
-            circumcentre(p(0.0, 0.0), p(4.0 * s, 0.0), p(0.0, 2.0 * s)),
-            p(2.0 * s, s)
-        );
-    }
-
-    #[test]
-    fn overflowing_differences_are_halved() {
-        let m = f64::MAX;
-        let c = circumcentre(p(-m, -m), p(m, -m), p(-m, m));
-        assert_eq!(c, p(0.0, 0.0));
-        assert_eq!(midpoint(p(m, m), p(m, -m)), p(m, 0.0));
-        assert_eq!(unit_direction(p(-m, 0.0), p(m, 0.0)), p(1.0, 0.0));
-    }
-
-    #[test]
-    fn a_short_edge_beside_a_long_one_keeps_its_centre() {
-        // Isosceles about y = x with apex (1e300, 1e300): the centre is near
-        // (5e299, 5e299), found from the vertex where the 1e-300 edge meets a long one.
-        let c = circumcentre(p(1e-300, 0.0), p(1e300, 1e300), p(0.0, 1e-300));
-        assert!((c.x / 5e299 - 1.0).abs() < 1e-15, "{c:?}");
-        assert!((c.y / 5e299 - 1.0).abs() < 1e-15, "{c:?}");
-    }
-
-    #[test]
-    fn a_flat_triangle_has_a_far_but_finite_centre() {
-        let c = circumcentre(p(0.0, 0.0), p(2.0, 0.0), p(1.0, 1e-300));
-        assert!(c.is_finite());
-        assert!(c.y < -1e290);
-        assert_eq!(c.x, 1.0);
-    }
-
-    #[test]
-    fn the_fast_path_and_the_scaled_path_agree() {
-        let tri = [p(0.1, 0.2), p(3.7, -1.1), p(2.0, 5.5)];
-        let fast = circumcentre(tri[0], tri[1], tri[2]);
-        let scaled = circumcentre_scaled(tri[0], tri[1], tri[2]);
-        assert!((fast.x - scaled.x).abs() < 1e-14 && (fast.y - scaled.y).abs() < 1e-14);
-        assert_eq!(POW2_300, 2f64.powi(300));
-        assert_eq!(POW2_M300, 2f64.powi(-300));
-    }
-
-    #[test]
-    fn scale_is_a_power_of_two_near_the_value() {
-        for m in [1.0, 3.0, 1e300, 1e-300, 5e-324, f64::MAX] {
-            let s = scale_of(m);
-            assert_eq!(s.to_bits() & ((1u64 << 52) - 1), 0);
-            assert!(m / s < 2.0 && (m / s >= 1.0 || m < f64::MIN_POSITIVE));
-        }
-    }
-}
+mod tests;

@@ -136,6 +136,15 @@ pub(crate) fn exact_integers(coords: &[f64]) -> (Vec<BigInt>, i32) {
     (ints, base)
 }
 
+/// [`exact_integers`] of a fixed number of coordinates, as an array to destructure.
+pub(crate) fn exact_coords<const N: usize>(coords: [f64; N]) -> ([BigInt; N], i32) {
+    let (ints, base) = exact_integers(&coords);
+    let ints: [BigInt; N] = ints
+        .try_into()
+        .unwrap_or_else(|_| unreachable!("one integer per coordinate"));
+    (ints, base)
+}
+
 fn big_sign(predicate: Predicate, coords: &[f64]) -> i32 {
     let parts: Vec<(bool, u64, i32)> = coords.iter().map(|&v| decompose(v)).collect();
     let base = parts

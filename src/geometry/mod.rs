@@ -20,10 +20,15 @@
 //! `sweep_predicates` (Fortune's sweep) and `circle_predicates` (the largest empty circle:
 //! circumcentres against hull lines, bisector crossings along a hull edge, squared radii).
 //!
+//! Constructed points (Voronoi vertices, rectangle corners, empty-circle centres) are rounded,
+//! not exact: each is a [`ConstructedPoint`], within a stated relative error of its exact
+//! value and explicit about a value beyond the range of `f64`.
+//!
 //! How exactness is achieved for inputs of any magnitude is described in `docs/design.md`.
 //! [`CountedPredicates`] gives every predicate a counted form for use with a
 //! [`Counter`](crate::count::Counter).
 
+mod ball;
 mod bigint;
 pub(crate) mod circle_predicates;
 pub(crate) mod construct;
@@ -38,6 +43,7 @@ mod products;
 pub(crate) mod sweep_predicates;
 mod wide;
 
+pub use construct::ConstructedPoint;
 pub use counted::CountedPredicates;
 pub use point::{Point2, PointPair};
 pub use point_set::{BoundingBox, PointSet};

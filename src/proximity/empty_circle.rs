@@ -18,7 +18,7 @@ use crate::error::Result;
 use crate::geometry::circle_predicates::{
     cmp_bisector_crossings, dot_sign, Circumcentre, CountedCirclePredicates, SquaredRadius,
 };
-use crate::geometry::construct::{circumcentre, midpoint, scale_of};
+use crate::geometry::construct::{bisector_crossing, circumcentre, midpoint};
 use crate::geometry::sweep_predicates::normalize_scale;
 use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet, WideFloat};
 use std::cmp::Ordering;
@@ -59,7 +59,9 @@ pub(super) const DECLARATION: Declaration = Declaration {
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct EmptyCircle {
-    /// Its centre (rounded).
+    /// Its centre, rounded: within
+    /// [`ConstructedPoint::RELATIVE_ERROR`](crate::geometry::ConstructedPoint::RELATIVE_ERROR)
+    /// of the exact one.
     pub centre: Point2,
     /// Its radius: the exact circle's, from its exact squared radius rounded once, with
     /// relative error below 2^-51 for every finite input (a nearly flat triangle's huge
@@ -116,7 +118,10 @@ pub fn largest_empty_circle(points: &[Point2]) -> Result<EmptyCircle> {
 /// triangle order, then the crossings along the hull edges in hull order.
 ///
 /// The centre is a rounded construction (decisions never depend on it): the circumcentre
-/// as in [`voronoi`](fn@crate::delaunay::voronoi), the crossing point as `p + t (q − p)`.
+/// as in [`voronoi`](fn@crate::delaunay::voronoi) or the crossing point `p + t (q − p)`,
+/// within [`ConstructedPoint::RELATIVE_ERROR`](crate::geometry::ConstructedPoint::RELATIVE_ERROR)
+/// of its exact value for every finite input (certified floating point, else exact
+/// big-integer arithmetic); it lies in the hull, so always within the range of `f64`.
 /// The radius is the exact circle's: its exact squared radius (a quotient of big integers)
 /// rounded once, then a square root, so its relative error is below 2^-51 at any magnitude
 /// and in any configuration (a nearly flat triangle's huge circle included, beyond
@@ -201,10 +206,12 @@ impl Candidate {
                 radius: WideFloat::ZERO,
                 sites: vec![i],
             },
+            // Both centres are in the hull, within the range of f64: `saturating` never
+            // clamps them.
             Candidate::VoronoiVertex(tri) => {
                 let [a, b, c] = tri.map(|i| points[i]);
                 EmptyCircle {
-                    centre: circumcentre(a, b, c),
+                    centre: circumcentre(a, b, c).saturating(),
                     radius: Circumcentre::new(a, b, c).squared_radius().radius(),
                     sites: tri.to_vec(),
                 }
@@ -213,7 +220,7 @@ impl Candidate {
                 let [p, q] = edge.map(|i| points[i]);
                 let [s, w] = sites.map(|i| points[i]);
                 EmptyCircle {
-                    centre: crossing_centre(p, q, s, w),
+                    centre: bisector_crossing(p, q, s, w).saturating(),
                     radius: SquaredRadius::crossing(p, q, s, w).radius(),
                     sites: vec![sites[0].min(sites[1]), sites[0].max(sites[1])],
                 }
@@ -311,45 +318,6 @@ fn boundary_crossings(points: &[Point2], t: &Triangulation) -> Vec<([usize; 2], 
         }
     }
     out
-}
-
-/// The centre of the crossing circle of hull edge `p → q` and the bisector of `s` and `w`:
-/// t = ((m − p) · u) / ((q − p) · u) with u = w − s and m = (s + w) / 2, on differences
-/// scaled by one power of two (t is scale-free), and the centre p + t (q − p).
-fn crossing_centre(p: Point2, q: Point2, s: Point2, w: Point2) -> Point2 {
-    let coords = [p, q, s, w];
-    // Halve every coordinate if a difference overflows (a rounding only for subnormals).
-    let half = coords
-        .iter()
-        .flat_map(|a| coords.iter().map(move |b| (a, b)))
-        .any(|(a, b)| !((a.x - b.x).is_finite() && (a.y - b.y).is_finite()));
-    let h = if half { 0.5 } else { 1.0 };
-    let [hp, hq, hs, hw] = coords.map(|a| Point2::new(a.x * h, a.y * h));
-    let d = [
-        hq.x - hp.x,
-        hq.y - hp.y,
-        hw.x - hs.x,
-        hw.y - hs.y,
-        hw.x - hp.x,
-        hw.y - hp.y,
-        hs.x - hp.x,
-        hs.y - hp.y,
-    ];
-    let sc = scale_of(d.iter().fold(0.0f64, |m, v| m.max(v.abs())));
-    let [gx, gy, ux, uy, dwx, dwy, dsx, dsy] = d.map(|v| v / sc);
-    let t = (ux * (dwx + dsx) + uy * (dwy + dsy)) / (2.0 * (gx * ux + gy * uy));
-    // The exact t is in [0, 1]; a rounded one just outside is clamped (NaN, from a
-    // rounded denominator 0, to the start).
-    let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
-    let along = |a: f64, b: f64| {
-        let x = a + t * (b - a);
-        if x.is_finite() {
-            x
-        } else {
-            2.0 * (a / 2.0 + t * (b / 2.0 - a / 2.0))
-        }
-    };
-    Point2::new(along(p.x, q.x), along(p.y, q.y))
 }
 
 #[cfg(test)]

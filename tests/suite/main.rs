@@ -17,6 +17,7 @@ mod bezier_eval;
 mod calipers;
 mod cli;
 mod complexity;
+mod constructions;
 mod degenerate;
 mod delaunay;
 mod delaunay_builders;

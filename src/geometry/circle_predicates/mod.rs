@@ -57,30 +57,20 @@
 //! absolute.
 //!
 //! Files: this one holds the side test and the order of crossings, `radius.rs` the squared
-//! radii (filter, lattice ties, exact stage), `ball.rs` the midpoint–radius arithmetic.
+//! radii (filter, lattice ties, exact stage); the midpoint–radius arithmetic is
+//! `geometry/ball.rs`, shared with the certified constructions.
 
-mod ball;
 mod radius;
 
+use super::ball::{scaled_differences, times_pow2, Ball, GROW, SLACK, U};
 use super::bigint::BigInt;
-use super::extended::{exact_integers, exponent, scale_by_pow2};
-use super::predicates::{pow2, UNDERFLOW_SLACK};
+use super::extended::{exact_coords, exponent};
+use super::predicates::pow2;
 use super::{cross_sign, Orientation, Point2};
 use crate::count::Counter;
-use ball::{scaled_differences, Ball};
 use radius::Approx;
 pub(crate) use radius::SquaredRadius;
 use std::cmp::Ordering;
-
-/// The unit roundoff 2^-53: a rounding to nearest errs by at most `U` times the result.
-const U: f64 = f64::EPSILON / 2.0;
-
-/// Absolute slack for roundings that underflow (each errs by at most 2^-1075).
-const SLACK: f64 = UNDERFLOW_SLACK;
-
-/// Factor that covers the roundings of an error bound's own evaluation (at most six, each
-/// relative `U`, where it is used).
-const GROW: f64 = 1.0 + 8.0 * U;
 
 /// Squared lengths and determinants below this (in a frame where the largest difference is
 /// in `[1, 2)`) make the squared radius's filter give up: products of three of them stay
@@ -91,11 +81,12 @@ const TINY_FACTOR: f64 = pow2(-300);
 /// and a bound on its error for the filters.
 ///
 /// Built once per triangle; [`Circumcentre::orient`] then tells on which side of a directed
-/// line the exact centre lies, and [`Circumcentre::squared_radius`] gives the circle's
-/// squared radius for [`SquaredRadius::cmp`].
+/// line the exact centre lies, [`Circumcentre::squared_radius`] gives the circle's squared
+/// radius for [`SquaredRadius::cmp`], and [`Circumcentre::rounded`] the rounded centre and
+/// its error bounds (which the certified constructions of `construct.rs` accept or not).
 #[derive(Debug, Clone)]
 pub(crate) struct Circumcentre {
-    /// The triangle, for the exact stage.
+    /// The triangle, for the exact stage, from the vertex opposite its longest edge.
     tri: [Point2; 3],
     /// The rounded centre and bounds on the errors of its coordinates; the bounds are
     /// infinite when the filter cannot say anything (a nearly flat triangle, overflow).
@@ -115,7 +106,22 @@ pub(crate) struct Circumcentre {
 
 impl Circumcentre {
     /// The circumcentre of `a, b, c`, which must not be collinear (either orientation).
+    #[inline]
     pub(crate) fn new(a: Point2, b: Point2, c: Point2) -> Circumcentre {
+        // The frame's origin is the vertex opposite the longest edge (the largest angle):
+        // then `b' × c'` loses at most a few roundings relative to its size however short
+        // one edge is, so a triangle with two nearly coincident vertices keeps the filter.
+        // (A numerical choice on rounded squared lengths, not a geometric decision: a near
+        // tie means either is as accurate. The rotation keeps the orientation.)
+        let len2 = |p: Point2, q: Point2| (q.x - p.x).powi(2) + (q.y - p.y).powi(2);
+        let (ab, bc, ca) = (len2(a, b), len2(b, c), len2(c, a));
+        let (a, b, c) = if ab >= bc && ab >= ca {
+            (c, a, b)
+        } else if bc >= ca {
+            (a, b, c)
+        } else {
+            (b, c, a)
+        };
         let unusable = Circumcentre {
             tri: [a, b, c],
             x: 0.0,
@@ -187,6 +193,13 @@ impl Circumcentre {
             rel_d,
             k,
         }
+    }
+
+    /// The rounded centre and bounds on the errors of its coordinates (infinite when the
+    /// filter could not bound them).
+    #[inline]
+    pub(crate) fn rounded(&self) -> (Point2, f64, f64) {
+        (Point2::new(self.x, self.y), self.err_x, self.err_y)
     }
 
     /// On which side of the directed line `p → q` the exact circumcentre lies: the sign of
@@ -354,26 +367,6 @@ fn cmp_bisector_crossings_exact(p: Point2, q: Point2, s: Point2, w: Point2, v: P
     let (nw, den_w) = form(&wx, &wy);
     let (nv, den_v) = form(&vx, &vy);
     nw.mul(&den_v).sub(&nv.mul(&den_w)).signum().cmp(&0)
-}
-
-/// `v · 2^k`, exact when the result is a normal double; one multiplication in the common
-/// case.
-#[inline]
-fn times_pow2(v: f64, k: i32) -> f64 {
-    if (-1022..=1023).contains(&k) {
-        v * f64::from_bits(((k + 1023) as u64) << 52)
-    } else {
-        scale_by_pow2(v, k)
-    }
-}
-
-/// [`exact_integers`] of a fixed number of coordinates, as an array to destructure.
-fn exact_coords<const N: usize>(coords: [f64; N]) -> ([BigInt; N], i32) {
-    let (ints, base) = exact_integers(&coords);
-    let ints: [BigInt; N] = ints
-        .try_into()
-        .unwrap_or_else(|_| unreachable!("one integer per coordinate"));
-    (ints, base)
 }
 
 fn square_sum(x: &BigInt, y: &BigInt) -> BigInt {

@@ -2,10 +2,11 @@
 //! approximations with relative error bounds, exact ties of lattice circumcircles from
 //! exact double factors, and the big-integer evaluation of `num₁ den₂ − num₂ den₁`.
 
-use super::ball::scaled_differences;
-use super::{dot, exact_coords, square_sum, times_pow2, U};
+use super::{dot, square_sum};
+use crate::geometry::ball::{scaled_differences, times_pow2, U};
 use crate::geometry::bigint::BigInt;
 use crate::geometry::expansion::two_diff;
+use crate::geometry::extended::exact_coords;
 use crate::geometry::extended::{decompose, exponent, scale_by_pow2};
 use crate::geometry::predicates::pow2;
 use crate::geometry::{Point2, WideFloat};

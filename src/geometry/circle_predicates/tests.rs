@@ -5,6 +5,7 @@
 
 use super::radius::{cmp_products, Approx, Circle, GridFactors};
 use super::*;
+use crate::geometry::extended::scale_by_pow2;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
