@@ -123,6 +123,7 @@ fn propagate(c: &mut [i64; CHUNKS]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::wide::tests::finite;
     use crate::geometry::Point2;
     use num_bigint::BigInt as Oracle;
     use num_rational::BigRational;
@@ -203,17 +204,6 @@ mod tests {
                 .sum::<Oracle>()
         };
         assert_eq!(value(&c), Oracle::from(i64::MAX) - (Oracle::from(5) << 32));
-    }
-
-    fn finite() -> impl Strategy<Value = f64> {
-        prop_oneof![
-            any::<f64>().prop_filter("finite", |v| v.is_finite()),
-            -1e3f64..1e3,
-            Just(f64::MAX),
-            Just(-f64::MAX),
-            Just(5e-324),
-            Just(-5e-324),
-        ]
     }
 
     proptest! {

@@ -463,7 +463,7 @@ impl serde::Serialize for WideFloat {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use num_bigint::BigInt as Oracle;
     use num_rational::BigRational;
@@ -496,13 +496,15 @@ mod tests {
         err <= bound
     }
 
-    fn finite() -> impl Strategy<Value = f64> {
+    /// Any finite double, with the extremes and small values drawn often.
+    pub(in crate::geometry) fn finite() -> impl Strategy<Value = f64> {
         prop_oneof![
             any::<f64>().prop_filter("finite", |v| v.is_finite()),
             -1e3f64..1e3,
             Just(f64::MAX),
             Just(-f64::MAX),
             Just(5e-324),
+            Just(-5e-324),
         ]
     }
 
