@@ -19,7 +19,8 @@ mod error;
 mod gen;
 mod graph;
 mod hull;
-mod input;
+// The fuzz checks (`crate::fuzzing`) call the readers directly.
+pub(crate) mod input;
 mod interpolate;
 mod output;
 mod proximity;
