@@ -18,8 +18,8 @@ const TINY: f64 = 5e-324;
 /// A curve of degree 0 to 7 and a parameter from the fuzzer's bytes; every operation
 /// checked against the exact back end:
 ///
-/// - [`Bezier::new`] rejects NaN and infinities with [`Error::NonFinite`] naming the point;
-///   a NaN or infinite parameter is an [`Error::InvalidParameter`];
+/// - `Bezier::new` rejects NaN and infinities with `Error::NonFinite` naming the point;
+///   a NaN or infinite parameter is an `Error::InvalidParameter`;
 /// - `eval` (Horner with the de Casteljau fallback), `de_casteljau`, `horner` at t;
 /// - `split` at t (both pieces' control points);
 /// - `elevate` and `elevate_to` up to three degrees more;
@@ -28,9 +28,11 @@ const TINY: f64 = 5e-324;
 /// Each coordinate is within `4(k + 2) ε S + slack` of the exact one, k the number of
 /// rounded steps and S the bound sum (the exact value with every term in absolute value;
 /// slack covers underflow). A result that overflows (a non-finite value or
-/// [`Error::Overflow`]) is allowed only where S is within a factor of 8(k + 2) of
-/// `f64::MAX`; a NaN only where S itself overflows (infinities that cancel, far outside
-/// [0, 1]).
+/// `Error::Overflow`) is allowed only where S is within a factor of 8(k + 2) of
+/// `f64::MAX`, and so is a NaN (infinities that cancel: the stored input
+/// `bezier/horner-nan-near-max` is Horner at t = 1 on coordinates near `f64::MAX`).
+///
+/// Known, skipped: `known_horner_power_overflow`.
 pub fn bezier(data: &[u8]) {
     let mut d = Decoder::new(data);
     let Some(head) = d.byte() else {
@@ -112,9 +114,10 @@ fn check_value(what: &str, got: Option<f64>, want: &BigRational, s: f64, steps: 
                 );
             }
         }
+        // Infinities that cancel: only where the terms themselves overflow.
         Some(x) if x.is_nan() => assert!(
-            s.is_infinite(),
-            "{what}: NaN, though the bound sum {s:e} is finite"
+            near_overflow,
+            "{what}: NaN, though the bound sum is only {s:e}"
         ),
         _ => assert!(
             near_overflow,
@@ -122,6 +125,15 @@ fn check_value(what: &str, got: Option<f64>, want: &BigRational, s: f64, steps: 
             super::nearest(want)
         ),
     }
+}
+
+/// Skips a finding of this fuzzing (in `horner.rs`, described in the fuzzing report):
+/// `Bezier::horner` forms the powers tⁱ on their own, so for |t|ⁿ beyond `f64::MAX` it
+/// returns NaN or ±∞ even where b(t) is representable (small control points);
+/// `Curve::eval` falls back to de Casteljau there and is right. The stored input
+/// `pending/bezier-horner-power-overflow` reproduces it.
+fn known_horner_power_overflow(t: f64, n: usize) -> bool {
+    !t.abs().powi(n as i32).is_finite()
 }
 
 fn check_evaluations(
@@ -142,6 +154,9 @@ fn check_evaluations(
         ("horner", curve.horner(&t)),
     ] {
         let got = got.unwrap_or_else(|e| panic!("{name} at a finite t: {e}"));
+        if name == "horner" && known_horner_power_overflow(t, n) && !got.is_finite() {
+            continue;
+        }
         for j in 0..2 {
             let what = format!("{name}({t:e}) coordinate {j} of degree {n}");
             check_value(&what, Some(got[j]), &want[j], s[j], 3 * n + 1, grow);

@@ -7,8 +7,11 @@
 
 use std::path::{Path, PathBuf};
 
+/// A fuzz target's check: panics when a property fails.
+type Check = fn(&[u8]);
+
 /// The fuzz targets and their checks.
-const TARGETS: [(&str, fn(&[u8])); 10] = [
+const TARGETS: [(&str, Check); 10] = [
     ("json_points", compgeo::fuzzing::json_points),
     ("csv_points", compgeo::fuzzing::csv_points),
     ("graph_json", compgeo::fuzzing::graph_json),
