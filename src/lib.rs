@@ -168,4 +168,10 @@ mod util;
 #[cfg(feature = "cli")]
 pub mod cli;
 
+/// The fuzz targets' entry points and checks (`fuzz/`, `tests/suite/fuzz_regressions.rs`):
+/// not part of the API.
+#[cfg(feature = "cli")]
+#[doc(hidden)]
+pub mod fuzzing;
+
 pub use error::{Error, Result, Violation};

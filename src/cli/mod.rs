@@ -26,7 +26,8 @@ mod error;
 mod gen;
 mod graph;
 mod hull;
-mod input;
+// The fuzz checks (`crate::fuzzing`) call the readers directly.
+pub(crate) mod input;
 mod interpolate;
 mod output;
 mod proximity;

@@ -24,6 +24,7 @@ mod delaunay_builders;
 mod empty_circle;
 mod fortune;
 mod frenet;
+mod fuzz_regressions;
 mod gen;
 mod graph;
 mod hull;
