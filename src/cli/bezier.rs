@@ -210,7 +210,21 @@ fn run_typed<S: JsonScalar, const D: usize>(
             let t: S = parse_scalar(t, "t")?;
             let mut counts = Counts::default();
             let p = evaluate_with(&b, &t, *algorithm, &mut counts)?;
-            json!({"point": point(&p, "point")?, "degree": n, "algorithm": algorithm.name(), "counts": counts})
+            let printed = point(&p, "point").map_err(|e| {
+                // Horner's scheme forms powers of t, which can overflow where the point does
+                // not: say so rather than call the point unrepresentable.
+                let direct = evaluate_with(&b, &t, Evaluation::DeCasteljau, &mut Counts::default());
+                match direct {
+                    Ok(q) if point(&q, "point").is_ok() && *algorithm != Evaluation::DeCasteljau => {
+                        CliError::Usage(format!(
+                            "{} overflows at this t although the point is within the range of f64; use --algorithm de-casteljau",
+                            algorithm.name()
+                        ))
+                    }
+                    _ => e,
+                }
+            })?;
+            json!({"point": printed, "degree": n, "algorithm": algorithm.name(), "counts": counts})
         }
         Op::Split { t, .. } => {
             let c: S = parse_scalar(t, "t")?;

@@ -741,3 +741,58 @@ fn generators_never_print_negative_zero() {
         ));
     }
 }
+
+/// Horner's scheme forms powers of t that overflow where the point itself does not (the zero
+/// quadratic at t = 1.55e231, a fuzz finding): the error says so and names the remedy,
+/// instead of calling a representable point unrepresentable; a point that really is beyond
+/// f64 keeps the range error.
+#[test]
+fn horner_overflow_is_not_reported_as_an_unrepresentable_point() {
+    let zero = r#"[[0,0],[0,0],[0,0]]"#;
+    let err = assert_rejected(
+        &[
+            "bezier",
+            "eval",
+            "--control",
+            zero,
+            "--t",
+            "1.55e231",
+            "--algorithm",
+            "horner",
+        ],
+        None,
+    );
+    assert!(
+        err.contains("horner overflows") && err.contains("de-casteljau"),
+        "{err}"
+    );
+    let v = crate::common::run_json(
+        &[
+            "bezier",
+            "eval",
+            "--control",
+            zero,
+            "--t",
+            "1.55e231",
+            "--algorithm",
+            "de-casteljau",
+        ],
+        None,
+    );
+    assert_eq!(v["point"], serde_json::json!([0.0, 0.0]));
+    let huge = r#"[[0,0],[1e300,0],[0,0]]"#;
+    let err = assert_rejected(
+        &[
+            "bezier",
+            "eval",
+            "--control",
+            huge,
+            "--t",
+            "1e10",
+            "--algorithm",
+            "horner",
+        ],
+        None,
+    );
+    assert!(err.contains("beyond the range of f64"), "{err}");
+}
