@@ -1,9 +1,9 @@
 //! Clipping Voronoi cells to a box.
 
-use super::voronoi::{Ray, Voronoi};
+use super::voronoi::Voronoi;
 use crate::error::{Error, Result};
-use crate::geometry::construct::scale_of;
-use crate::geometry::{BoundingBox, Point2, PointSet};
+use crate::geometry::clip_predicates::{CellLines, Meet};
+use crate::geometry::{BoundingBox, ConstructedPoint, Point2, PointSet};
 
 /// An axis-parallel box to clip Voronoi cells to: `min.x < max.x`, `min.y < max.y`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -45,7 +45,8 @@ impl ClipBox {
 
     /// The default box for `points`: their bounding box grown by a quarter of its larger side
     /// on every side (by a quarter of the largest coordinate, or 1, if the points coincide),
-    /// clamped to the finite range.
+    /// clamped to the finite range. It is never flat: a side the margin cannot move (a
+    /// margin below the coordinate's precision) moves by one unit in the last place.
     ///
     /// # Errors
     /// [`Error::TooFew`] for no points (there is nothing to size the box by).
@@ -57,6 +58,12 @@ impl ClipBox {
     /// let pts = [Point2::new(0.0, 0.0), Point2::new(4.0, 2.0)];
     /// let b = ClipBox::around(&PointSet::new(&pts)?)?;
     /// assert_eq!((b.min, b.max), (Point2::new(-1.0, -1.0), Point2::new(5.0, 3.0)));
+    ///
+    /// // Two sites 1 apart at x = 1e300: the margin 0.25 is below x's precision.
+    /// let pts = [Point2::new(1e300, 0.0), Point2::new(1e300, 1.0)];
+    /// let b = ClipBox::around(&PointSet::new(&pts)?)?;
+    /// assert!(b.min.x < 1e300 && 1e300 < b.max.x);
+    /// assert_eq!((b.min.y, b.max.y), (-0.25, 1.25));
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn around(points: &PointSet<'_>) -> Result<ClipBox> {
@@ -78,100 +85,154 @@ impl ClipBox {
                 1.0
             }
         };
-        let grow = |v: f64, d: f64| (v + d).clamp(-f64::MAX, f64::MAX);
+        // Each side moves out by the margin, or by one unit in the last place where the
+        // margin is below the coordinate's precision (points 1e300 apart by 1), so the box
+        // is never flat; only at `±f64::MAX` can a side not move, and then the other does.
+        let down = |v: f64| {
+            let w = (v - margin).max(-f64::MAX);
+            if w < v {
+                w
+            } else {
+                v.next_down().max(-f64::MAX)
+            }
+        };
+        let up = |v: f64| {
+            let w = (v + margin).min(f64::MAX);
+            if w > v {
+                w
+            } else {
+                v.next_up().min(f64::MAX)
+            }
+        };
         Ok(ClipBox {
-            min: Point2::new(grow(lo.x, -margin), grow(lo.y, -margin)),
-            max: Point2::new(grow(hi.x, margin), grow(hi.y, margin)),
+            min: Point2::new(down(lo.x), down(lo.y)),
+            max: Point2::new(up(hi.x), up(hi.y)),
         })
     }
 }
 
 impl Voronoi {
-    /// Cell `k` intersected with `bounds`, as a counter-clockwise polygon (empty if they do
-    /// not overlap in an area). Panics if `k` is out of range.
+    /// Cell `k` intersected with `bounds`, as a counter-clockwise polygon: empty if they do
+    /// not overlap in an area, or if the overlap's points round to fewer than three distinct
+    /// ones (a sliver below the precision of `f64`). Panics if `k` is out of range.
     ///
-    /// The cell's rays are cut at points far enough that the cut cannot reach the box, and
-    /// the polygon is clipped to the box's four sides (Sutherland–Hodgman); the crossing
-    /// points lie exactly on the box's sides. Coordinates are rounded constructions. The
-    /// computation runs in a frame scaled by a power of two to the box's magnitude; Voronoi
-    /// vertices more than 2^600 times the box's largest coordinate away are pulled in to
-    /// that distance, which only matters for cells whose shape inside the box is then
-    /// below the precision of `f64` anyway.
+    /// Every decision is exact: the clipper works from the lines that bound the cell (the
+    /// bisectors of its site and its Delaunay neighbours) and the box's sides, never from
+    /// rounded vertices, and decides on which side of a line two others meet with exact
+    /// predicates (Sutherland–Hodgman clipping against the four sides, with the rays of an
+    /// unbounded cell closed at infinity). So the polygon has the right shape for nearly
+    /// collinear sites, far-away vertices and boxes as large as the range of `f64`.
+    ///
+    /// The coordinates are rounded constructions: a box corner is exact, a point on a side
+    /// has that side's coordinate exactly and the other within
+    /// [`ConstructedPoint::RELATIVE_ERROR`](crate::geometry::ConstructedPoint::RELATIVE_ERROR)
+    /// of its value, as has a vertex inside the box; every point lies in the box. Consecutive
+    /// points that round to the same value are merged.
     ///
     /// # Complexity
     /// O(k) time and space for a cell with k vertices.
+    ///
+    /// ```
+    /// use compgeo::delaunay::{voronoi, ClipBox};
+    /// use compgeo::geometry::Point2;
+    ///
+    /// // Nearly collinear sites: the bisectors cross the box at x + y = 1 and x + y = 4.
+    /// let pts = [(0.0, 0.0), (1.0, 1.0), (3.0, 3.0000000000000004)].map(Point2::from);
+    /// let v = voronoi(&pts)?;
+    /// let bounds = ClipBox::new(-1.0, -1.0, 4.0, 4.0)?;
+    /// let first = v.clip_cell(v.cell_of(0), &bounds);
+    /// assert!(first.iter().all(|p| p.x + p.y <= 1.0));
+    /// assert!(first.contains(&Point2::new(2.0, -1.0)) && first.contains(&Point2::new(-1.0, 2.0)));
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
     pub fn clip_cell(&self, k: usize, bounds: &ClipBox) -> Vec<Point2> {
-        let s = scale_of(
-            bounds
-                .min
-                .x
-                .abs()
-                .max(bounds.min.y.abs())
-                .max(bounds.max.x.abs())
-                .max(bounds.max.y.abs()),
-        ) * 2.0;
-        let scaled = |p: Point2| {
-            let c = |v: f64| (v / s).clamp(-FAR, FAR);
-            Point2::new(c(p.x), c(p.y))
-        };
         let cell = self.cell(k);
-        let inside = |p: Point2| {
-            p.x >= bounds.min.x && p.x <= bounds.max.x && p.y >= bounds.min.y && p.y <= bounds.max.y
-        };
-        if cell.bounded && cell.vertices.iter().all(|&i| inside(self.vertices[i])) {
+        let corners = [
+            bounds.min,
+            Point2::new(bounds.max.x, bounds.min.y),
+            bounds.max,
+            Point2::new(bounds.min.x, bounds.max.y),
+        ];
+        if self.cell_count() == 1 {
+            return corners.to_vec();
+        }
+        if cell.bounded
+            && cell
+                .vertices
+                .iter()
+                .all(|&i| surely_inside(self.vertices[i], bounds))
+        {
             // The box is convex: a cell whose vertices are all in it is its own clip.
-            let mut out: Vec<Point2> = Vec::with_capacity(cell.vertices.len());
-            for &i in cell.vertices {
-                let q = self.vertices[i];
-                if out.last() != Some(&q) {
-                    out.push(q);
-                }
-            }
-            while out.len() > 1 && out.first() == out.last() {
-                out.pop();
-            }
-            if out.len() < 3 {
-                out.clear();
-            }
-            return out;
+            return merged(cell.vertices.iter().map(|&i| self.vertices[i]));
         }
-        let mut poly: Vec<Point2> = cell
-            .vertices
-            .iter()
-            .map(|&v| scaled(self.vertices[v]))
-            .collect();
-        if !cell.bounded {
-            poly = unbounded_polygon(&poly, cell.rays, scaled);
+        let (lines, mut poly) = self.cell_polygon(k, bounds);
+        for side in 0..4 {
+            poly = clip_side(&poly, lines.side(side), &lines);
         }
-        let lo = Point2::new(bounds.min.x / s, bounds.min.y / s);
-        let hi = Point2::new(bounds.max.x / s, bounds.max.y / s);
-        for side in [
-            Side::Right(hi.x),
-            Side::Top(hi.y),
-            Side::Left(lo.x),
-            Side::Bottom(lo.y),
-        ] {
-            poly = clip_side(&poly, side);
+        // An intersection without area lies on one side's line (the cell and the box
+        // touch along it): every vertex is then on that line.
+        let flat = (0..4).any(|side| poly.iter().all(|v| lines.sign(v.at, lines.side(side)) == 0));
+        if flat {
+            return Vec::new();
         }
-        let mut out: Vec<Point2> = Vec::with_capacity(poly.len());
-        for p in poly {
-            let q = Point2::new(
-                (p.x * s).clamp(bounds.min.x, bounds.max.x),
-                (p.y * s).clamp(bounds.min.y, bounds.max.y),
-            );
-            if out.last() != Some(&q) {
-                out.push(q);
-            }
-        }
-        while out.len() > 1 && out.first() == out.last() {
-            out.pop();
-        }
-        if out.len() < 3 {
-            out.clear();
-        }
-        out
+        merged(poly.iter().map(|v| match v.at {
+            Meet::Lines(i, j) => lines.point(i, j),
+            Meet::Normal(_) => unreachable!("the box's sides cut off every point at infinity"),
+        }))
     }
 
+    /// The lines of cell `k` and the polygon of its boundary, counter-clockwise, each vertex
+    /// where two of them meet (closed through the line at infinity when unbounded).
+    fn cell_polygon(&self, k: usize, bounds: &ClipBox) -> (CellLines, Vec<Vertex>) {
+        let cell = self.cell(k);
+        let m = cell.vertices.len();
+        // Neighbour sites, one per bisector line: an unbounded cell's arriving ray first.
+        let mut neighbours: Vec<usize> = Vec::with_capacity(m + 2);
+        if m == 0 {
+            // Collinear sites: one bisector line per chain.
+            neighbours.extend(cell.rays.chunks_exact(2).map(|pair| pair[0].sites[1]));
+        } else {
+            if !cell.bounded {
+                neighbours.push(cell.rays[0].sites[1]);
+            }
+            neighbours.extend((0..m).map(|j| self.across(k, j)));
+        }
+        let lines = CellLines::new(
+            self.site_point(k),
+            neighbours.iter().map(|&i| self.point_of(i)).collect(),
+            [bounds.min.x, bounds.min.y, bounds.max.x, bounds.max.y],
+        );
+        let inf = lines.infinity();
+        let n = neighbours.len();
+        let vertex = |arrive: usize, leave: usize| Vertex {
+            at: Meet::Lines(arrive, leave),
+            out: leave,
+        };
+        let poly = if m == 0 {
+            let mut poly = Vec::with_capacity(2 * n + 1);
+            for line in 0..n {
+                poly.push(vertex(inf, line));
+                poly.push(vertex(line, inf));
+            }
+            if n == 1 {
+                // A half-plane: half a turn at infinity, split at its inner normal.
+                poly.push(Vertex {
+                    at: Meet::Normal(0),
+                    out: inf,
+                });
+            }
+            poly
+        } else if cell.bounded {
+            (0..n).map(|j| vertex((j + n - 1) % n, j)).collect()
+        } else {
+            let mut poly = Vec::with_capacity(n + 1);
+            poly.push(vertex(inf, 0));
+            poly.extend((1..n).map(|j| vertex(j - 1, j)));
+            poly.push(vertex(n - 1, inf));
+            poly
+        };
+        (lines, poly)
+    }
     /// Every cell intersected with `bounds` ([`clip_cell`](Voronoi::clip_cell)), in cell
     /// order.
     ///
@@ -200,110 +261,72 @@ impl Voronoi {
     }
 }
 
-/// `FAR` bounds scaled coordinates, keeping every product in the clipper finite.
-const FAR: f64 = 4.149515568880993e180; // 2^600
-
-/// The polygon of an unbounded cell (scaled coordinates) with its rays cut far away: past
-/// every chain's leaving ray comes the next chain's arriving ray, and far points at most a
-/// quarter turn apart close the gap, so the closing edges stay out of the box.
-fn unbounded_polygon(
-    vertices: &[Point2],
-    rays: &[Ray],
-    scaled: impl Fn(Point2) -> Point2,
-) -> Vec<Point2> {
-    if rays.is_empty() {
-        // The whole plane: a square around the box.
-        return [(-4.0, -4.0), (4.0, -4.0), (4.0, 4.0), (-4.0, 4.0)]
-            .map(Point2::from)
-            .to_vec();
-    }
-    let origins: Vec<Point2> = rays.iter().map(|r| scaled(r.origin)).collect();
-    // The box lies within radius sqrt(2) < 2 of the origin in the scaled frame; every
-    // polygon point before the far ones within `m` (1-norm).
-    let m = vertices
-        .iter()
-        .chain(&origins)
-        .map(|p| p.x.abs() + p.y.abs())
-        .fold(0.0, f64::max);
-    let reach = 4.0 * (m + 2.0);
-    let far = |o: Point2, d: Point2| Point2::new(o.x + reach * d.x, o.y + reach * d.y);
-    let mut poly = Vec::with_capacity(vertices.len() + 3 * rays.len());
-    let chains = rays.len() / 2;
-    for c in 0..chains {
-        let (arrive, leave) = (&rays[2 * c], &rays[2 * c + 1]);
-        poly.push(far(origins[2 * c], arrive.direction));
-        if chains == 1 {
-            poly.extend_from_slice(vertices);
-        }
-        let out = far(origins[2 * c + 1], leave.direction);
-        poly.push(out);
-        let next = &rays[(2 * c + 2) % rays.len()];
-        let (d0, d1) = (leave.direction, next.direction);
-        let cross = d0.x * d1.y - d0.y * d1.x;
-        let dot = d0.x * d1.x + d0.y * d1.y;
-        if dot < 0.0 {
-            // More than a quarter turn (at most a half turn, the cell being convex) to the
-            // next ray: add the far point halfway round, counter-clockwise from `d0`.
-            let mid = if cross > 0.0 {
-                let (x, y) = (d0.x + d1.x, d0.y + d1.y);
-                let len = x.hypot(y);
-                Point2::new(x / len, y / len)
-            } else {
-                Point2::new(-d0.y, d0.x)
-            };
-            poly.push(far(origins[2 * c + 1], mid));
-        }
-    }
-    poly
-}
-
-/// One side of the box, as the half-plane that is kept.
+/// A vertex of a polygon being clipped: where it is, and the line its leaving edge lies on.
 #[derive(Debug, Clone, Copy)]
-enum Side {
-    Right(f64),
-    Top(f64),
-    Left(f64),
-    Bottom(f64),
+struct Vertex {
+    at: Meet,
+    out: usize,
 }
 
-impl Side {
-    fn inside(self, p: Point2) -> bool {
-        match self {
-            Side::Right(x) => p.x <= x,
-            Side::Top(y) => p.y <= y,
-            Side::Left(x) => p.x >= x,
-            Side::Bottom(y) => p.y >= y,
+/// Sutherland–Hodgman against the half-plane of line `side`, with exact signs. A vertex on
+/// the line is kept and no crossing is made there, so every point appears once.
+fn clip_side(poly: &[Vertex], side: usize, lines: &CellLines) -> Vec<Vertex> {
+    let signs: Vec<i32> = poly.iter().map(|v| lines.sign(v.at, side)).collect();
+    let mut out = Vec::with_capacity(poly.len() + 1);
+    for (i, &u) in poly.iter().enumerate() {
+        let next = (i + 1) % poly.len();
+        let (su, sv) = (signs[i], signs[next]);
+        if su >= 0 {
+            // Leaving the half-plane at `u` itself: the boundary follows the side from here.
+            let out_line = if su == 0 && sv < 0 { side } else { u.out };
+            out.push(Vertex {
+                at: u.at,
+                out: out_line,
+            });
+        }
+        if su > 0 && sv < 0 {
+            out.push(Vertex {
+                at: Meet::Lines(u.out, side),
+                out: side,
+            });
+        } else if su < 0 && sv > 0 {
+            out.push(Vertex {
+                at: Meet::Lines(side, u.out),
+                out: u.out,
+            });
         }
     }
-
-    /// Where the segment `p q` (one end inside, one outside) crosses the side's line.
-    fn crossing(self, p: Point2, q: Point2) -> Point2 {
-        let along = |c: f64, p0: f64, q0: f64, p1: f64, q1: f64| {
-            let t = (c - p0) / (q0 - p0);
-            let v = p1 + t * (q1 - p1);
-            v.clamp(p1.min(q1), p1.max(q1))
-        };
-        match self {
-            Side::Right(x) | Side::Left(x) => Point2::new(x, along(x, p.x, q.x, p.y, q.y)),
-            Side::Top(y) | Side::Bottom(y) => Point2::new(along(y, p.y, q.y, p.x, q.x), y),
-        }
-    }
+    out
 }
 
-/// Sutherland–Hodgman against one side.
-fn clip_side(poly: &[Point2], side: Side) -> Vec<Point2> {
-    let mut out = Vec::with_capacity(poly.len() + 2);
-    for (i, &q) in poly.iter().enumerate() {
-        let p = poly[(i + poly.len() - 1) % poly.len()];
-        match (side.inside(p), side.inside(q)) {
-            (true, true) => out.push(q),
-            (true, false) => out.push(side.crossing(p, q)),
-            (false, true) => {
-                out.push(side.crossing(q, p));
-                out.push(q);
-            }
-            (false, false) => {}
+/// Whether the exact value of a constructed vertex `p` (within
+/// [`ConstructedPoint::RELATIVE_ERROR`] of it) is surely in the box: every rounded gap to
+/// a side exceeds twice the error bound. A vertex clamped to `±f64::MAX` never is.
+fn surely_inside(p: Point2, b: &ClipBox) -> bool {
+    let err = ConstructedPoint::RELATIVE_ERROR * p.x.abs().max(p.y.abs()) + f64::MIN_POSITIVE;
+    let clear = |gap: f64| gap > 2.0 * err;
+    p.x.abs() < f64::MAX
+        && p.y.abs() < f64::MAX
+        && clear(p.x - b.min.x)
+        && clear(b.max.x - p.x)
+        && clear(p.y - b.min.y)
+        && clear(b.max.y - p.y)
+}
+
+/// The points with consecutive equal ones merged (first and last too); empty if fewer than
+/// three remain.
+fn merged(points: impl Iterator<Item = Point2>) -> Vec<Point2> {
+    let mut out: Vec<Point2> = Vec::new();
+    for q in points {
+        if out.last() != Some(&q) {
+            out.push(q);
         }
+    }
+    while out.len() > 1 && out.first() == out.last() {
+        out.pop();
+    }
+    if out.len() < 3 {
+        out.clear();
     }
     out
 }

@@ -53,6 +53,11 @@ pub struct Voronoi {
     /// `vertex_ids[vertex_start[k]..vertex_start[k + 1]]` are cell k's vertices.
     vertex_start: Vec<usize>,
     vertex_ids: Vec<usize>,
+    /// `across[j]`: the site (input index) across the edge that leaves vertex
+    /// `vertex_ids[j]` counter-clockwise around its cell, whose bisector that edge lies on.
+    across: Vec<u32>,
+    /// The coordinates of each cell's site, for clipping from the bisectors.
+    site_points: Vec<Point2>,
     ray_start: Vec<usize>,
     rays: Vec<Ray>,
     cell_of: Vec<usize>,
@@ -158,6 +163,22 @@ impl Voronoi {
     /// [`vertex`](Voronoi::vertex)).
     pub fn is_beyond_range(&self, i: usize) -> bool {
         self.vertex(i).is_beyond_range()
+    }
+
+    /// The site of cell `k`'s neighbour across the edge that leaves its `j`-th vertex
+    /// counter-clockwise (for the clipper).
+    pub(super) fn across(&self, k: usize, j: usize) -> usize {
+        self.across[self.vertex_start[k] + j] as usize
+    }
+
+    /// The coordinates of the site of cell `k`.
+    pub(super) fn site_point(&self, k: usize) -> Point2 {
+        self.site_points[k]
+    }
+
+    /// The coordinates of input point `i` (a site, or merged into one).
+    pub(super) fn point_of(&self, i: usize) -> Point2 {
+        self.site_points[self.cell_of[i]]
     }
 }
 
@@ -297,6 +318,8 @@ pub fn dual(points: &[Point2], t: &Triangulation) -> Voronoi {
         beyond: Vec::new(),
         vertex_start: vec![0],
         vertex_ids: Vec::new(),
+        across: Vec::new(),
+        site_points: Vec::new(),
         ray_start: vec![0],
         rays: Vec::new(),
         cell_of,
@@ -390,15 +413,20 @@ fn triangulated_cells<I: HalfEdgeId>(
         .collect();
     v.beyond = beyond;
     let mut ids = Vec::with_capacity(tri.len());
+    let mut across = Vec::with_capacity(tri.len());
+    v.site_points = Vec::with_capacity(starts.len());
     let mut start = Vec::with_capacity(starts.len() + 1);
     let mut ray_start = Vec::with_capacity(starts.len() + 1);
     start.push(0);
     ray_start.push(0);
     for &any in starts {
         let mut first = any.index();
+        v.site_points.push(points[at(first)]);
         let mut e = first;
         loop {
             ids.push(e / 3);
+            // The next triangle counter-clockwise shares the edge to `at(prev(e))`.
+            across.push(site(at(prev(e))) as u32);
             // The previous half-edge ends at the vertex; its twin leaves it in the next
             // triangle counter-clockwise.
             let twin = halfedges[prev(e)];
@@ -407,6 +435,7 @@ fn triangulated_cells<I: HalfEdgeId>(
                     // A hull vertex reached from the middle of its fan: start again from
                     // its outgoing hull edge, the last one turning clockwise.
                     ids.truncate(*start.last().unwrap_or(&0));
+                    across.truncate(ids.len());
                     while halfedges[first] != I::NONE {
                         first = next(halfedges[first].index());
                     }
@@ -437,6 +466,7 @@ fn triangulated_cells<I: HalfEdgeId>(
         ray_start.push(v.rays.len());
     }
     v.vertex_ids = ids;
+    v.across = across;
     v.vertex_start = start;
     v.ray_start = ray_start;
 }
@@ -480,7 +510,8 @@ fn collinear_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
     }
     let mut by_site: Vec<(usize, Vec<Ray>)> = line.iter().copied().zip(rays_of).collect();
     by_site.sort_unstable_by_key(|&(s, _)| s);
-    for (_, rays) in by_site {
+    for (s, rays) in by_site {
+        v.site_points.push(points[s]);
         v.rays.extend(rays);
         v.vertex_start.push(0);
         v.ray_start.push(v.rays.len());

@@ -291,7 +291,7 @@ fn bisector_crossing_exact(p: Point2, q: Point2, s: Point2, w: Point2) -> Constr
 /// one's: `e ≤ (τ/2) (M + e)` gives `e ≤ τ M`), and both coordinates below `2^1023` (so the
 /// exact ones are far below the overflow threshold).
 #[inline]
-fn certified(x: Ball, y: Ball) -> Option<Point2> {
+pub(crate) fn certified(x: Ball, y: Ball) -> Option<Point2> {
     let limit = ACCEPT * x.mid.abs().max(y.mid.abs());
     // Every comparison is false for NaN.
     let accepted = x.mid.abs() < RANGE && y.mid.abs() < RANGE && x.rad <= limit && y.rad <= limit;
@@ -317,7 +317,7 @@ fn exact(v: f64) -> Ball {
 /// is beyond the range of `f64` is decided exactly.
 ///
 /// The one rounding of exact rational points, shared by every construction.
-fn rational_point(
+pub(crate) fn rational_point(
     x: &BigInt,
     y: &BigInt,
     w: &BigInt,

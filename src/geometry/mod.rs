@@ -17,8 +17,10 @@
 //! | [`cmp_lex`] | lexicographic (x, then y) order | 1 |
 //!
 //! Crate-internal modules hold the predicates on constructed points of single algorithms:
-//! `sweep_predicates` (Fortune's sweep) and `circle_predicates` (the largest empty circle:
-//! circumcentres against hull lines, bisector crossings along a hull edge, squared radii).
+//! `sweep_predicates` (Fortune's sweep), `circle_predicates` (the largest empty circle:
+//! circumcentres against hull lines, bisector crossings along a hull edge, squared radii) and
+//! `clip_predicates` (Voronoi cells clipped to a box: the side of a line on which two others
+//! meet).
 //!
 //! Constructed points (Voronoi vertices, rectangle corners, empty-circle centres) are rounded,
 //! not exact: each is a [`ConstructedPoint`], within a stated relative error of its exact
@@ -31,6 +33,7 @@
 mod ball;
 mod bigint;
 pub(crate) mod circle_predicates;
+pub(crate) mod clip_predicates;
 pub(crate) mod construct;
 mod counted;
 pub(crate) mod exact_sum;

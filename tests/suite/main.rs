@@ -37,4 +37,5 @@ mod proximity;
 mod registry;
 mod sort;
 mod voronoi;
+mod voronoi_clip;
 mod width;
