@@ -324,7 +324,7 @@ fn a_box() -> impl Strategy<Value = Option<[f64; 4]>> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(96))]
+    #![proptest_config(ProptestConfig::with_cases(64))]
 
     #[test]
     fn clipped_cells_match_the_exact_oracle(
