@@ -40,6 +40,10 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// [`ConstructedPoint::RELATIVE_ERROR`] of the exact circumcentre; one whose exact value is
 /// beyond the range of `f64` (a nearly flat triangle at a large scale) is clamped to
 /// `±f64::MAX` in `vertices`, and [`vertex`](Voronoi::vertex) gives its true value.
+///
+/// The diagram also keeps each cell's site coordinates and, for each vertex of a cell, the
+/// site across the edge leaving it: [`clip_cell`](Voronoi::clip_cell) decides from those
+/// lines, exactly, rather than from the rounded vertices.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Voronoi {
     /// The Voronoi vertices: the circumcentre of every Delaunay triangle, in triangle order
