@@ -185,6 +185,13 @@ fn voronoi_cells(c: &mut Criterion) {
             group.bench_with_input(BenchmarkId::new("compgeo-clipped", n), &pts, |b, pts| {
                 b.iter_with_large_drop(|| voronoi(black_box(pts)).unwrap().clip(&bounds))
             });
+            // The clipping alone, on a diagram built once.
+            let diagram = voronoi(&pts).unwrap();
+            group.bench_with_input(
+                BenchmarkId::new("compgeo-clip-only", n),
+                &diagram,
+                |b, v| b.iter_with_large_drop(|| black_box(v).clip(&bounds)),
+            );
             let sites: Vec<voronoice::Point> = pts
                 .iter()
                 .map(|p| voronoice::Point { x: p.x, y: p.y })

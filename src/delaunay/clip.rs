@@ -316,7 +316,7 @@ fn surely_inside(p: Point2, b: &ClipBox) -> bool {
 /// The points with consecutive equal ones merged (first and last too); empty if fewer than
 /// three remain.
 fn merged(points: impl Iterator<Item = Point2>) -> Vec<Point2> {
-    let mut out: Vec<Point2> = Vec::new();
+    let mut out: Vec<Point2> = Vec::with_capacity(points.size_hint().0);
     for q in points {
         if out.last() != Some(&q) {
             out.push(q);
