@@ -16,7 +16,7 @@ use super::CliError;
 use crate::count::Counts;
 use crate::spline::bezier::{evaluate_with, Evaluation};
 use crate::spline::{
-    parse_scalar, read_scalar, Bezier, CurveDerivative, ParseScalar, Point, Scalar,
+    parse_scalar, read_scalar, Bezier, Curve, CurveDerivative, ParseScalar, Point, Scalar,
 };
 use clap::{Args, Subcommand};
 use num_rational::BigRational;
@@ -188,6 +188,27 @@ pub(super) fn points<S: JsonScalar, const D: usize>(
         .map(Value::Array)
 }
 
+/// Why the `f64` point b(t) is not finite: `beyond` (the range error) if the exact value of
+/// b(t) is beyond the range of `f64` too, else an error saying that the evaluation overflowed
+/// on the way (both schemes can, far outside [0, 1], where large terms cancel: de Casteljau's
+/// affine combinations and Horner's partial sums alike).
+fn not_finite<S: JsonScalar, const D: usize>(
+    b: &Bezier<S, D>,
+    t: &S,
+    beyond: CliError,
+) -> CliError {
+    let (Ok(rounded), Some(t)) = (b.to_f64(), <BigRational as Scalar>::from_f64(t.to_f64())) else {
+        return beyond;
+    };
+    match Bezier::<BigRational, D>::from_f64(&rounded).eval(&t) {
+        Ok(q) if q.coords().iter().all(|c| Scalar::to_f64(c).is_finite()) => CliError::Usage(
+            "the point is within the range of f64, but its evaluation in f64 overflows at this t; use --exact"
+                .to_string(),
+        ),
+        _ => beyond,
+    }
+}
+
 fn run_typed<S: JsonScalar, const D: usize>(
     op: &Op,
     rows: &[Vec<String>],
@@ -210,20 +231,7 @@ fn run_typed<S: JsonScalar, const D: usize>(
             let t: S = parse_scalar(t, "t")?;
             let mut counts = Counts::default();
             let p = evaluate_with(&b, &t, *algorithm, &mut counts)?;
-            let printed = point(&p, "point").map_err(|e| {
-                // Horner's scheme forms powers of t, which can overflow where the point does
-                // not: say so rather than call the point unrepresentable.
-                let direct = evaluate_with(&b, &t, Evaluation::DeCasteljau, &mut Counts::default());
-                match direct {
-                    Ok(q) if point(&q, "point").is_ok() && *algorithm != Evaluation::DeCasteljau => {
-                        CliError::Usage(format!(
-                            "{} overflows at this t although the point is within the range of f64; use --algorithm de-casteljau",
-                            algorithm.name()
-                        ))
-                    }
-                    _ => e,
-                }
-            })?;
+            let printed = point(&p, "point").map_err(|e| not_finite(&b, &t, e))?;
             json!({"point": printed, "degree": n, "algorithm": algorithm.name(), "counts": counts})
         }
         Op::Split { t, .. } => {

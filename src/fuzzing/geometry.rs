@@ -5,7 +5,8 @@
 use super::{exact, magnitude, nearest, Decoder};
 use crate::delaunay::{check_delaunay, dual, find_duplicates, incremental, Triangulation};
 use crate::geometry::{
-    cmp_dist, cmp_lex, cross_sign, incircle, orient2d, InCircle, Orientation, Point2,
+    cmp_dist, cmp_lex, cross_sign, incircle, orient2d, ConstructedPoint, InCircle, Orientation,
+    Point2,
 };
 use crate::hull::{check_encloses, check_strictly_convex_ccw, convex_hull, HullOptions};
 use crate::Error;
@@ -176,10 +177,10 @@ pub fn delaunay(data: &[u8]) {
 /// - the cells of `dual``(t)` list the triangles around their site, counter-clockwise and
 ///   consecutive across a shared edge, every incident triangle once; `voronoi` gives
 ///   every site the same cell (vertices bit for bit, in the same cyclic order, and rays);
-/// - every vertex is within `64 ε (κ R + m) + 4·2^-1074` of the exact circumcentre of its
-///   triangle (R the circumradius, κ = 1/sin of the largest angle, m the largest coordinate
-///   magnitude); coordinates beyond the range of `f64`, and coordinates clamped to
-///   `±f64::MAX`, are not checked (known, see `check_circumcentre`);
+/// - every vertex is within `RELATIVE_ERROR · max(|x|, |y|) + 2^-1075` of the exact
+///   circumcentre `(x, y)` of its triangle, as [`ConstructedPoint`] promises, beyond the
+///   range of `f64` too: it is `BeyondRange` exactly when a coordinate of the exact centre
+///   rounds to ±∞, and `vertices` holds it saturated at `±f64::MAX`;
 /// - every ray starts at its cell's first or last vertex (or, for collinear sites, at the
 ///   midpoint of its two sites, within rounding) and its unit direction is perpendicular to
 ///   its two sites' difference and points away from the triangles.
@@ -241,7 +242,7 @@ pub fn voronoi(data: &[u8]) {
     assert_eq!(d.vertices.len(), t.triangle_count());
     for k in 0..t.triangle_count() {
         let [a, b, c] = t.triangle(k).map(|i| pts[i]);
-        check_circumcentre(a, b, c, d.vertices[k]);
+        check_circumcentre(a, b, c, d.vertex(k), d.vertices[k]);
     }
     for cell in d.cells() {
         for (i, ray) in cell.rays.iter().enumerate() {
@@ -288,8 +289,13 @@ fn check_fan(t: &Triangulation, cell: crate::delaunay::Cell<'_>) {
     }
 }
 
-/// The exact circumcentre of the counter-clockwise triangle a, b, c against `centre`.
-fn check_circumcentre(a: Point2, b: Point2, c: Point2, centre: Point2) {
+/// The exact circumcentre of the counter-clockwise triangle a, b, c against vertex `centre`
+/// of the diagram, as constructed, and `stored`, its entry in `vertices`: what
+/// [`ConstructedPoint`] promises. Each coordinate is within
+/// `RELATIVE_ERROR · max(|x|, |y|) + 2^-1075` of the exact `(x, y)` (compared in rationals,
+/// so that this holds beyond the range of `f64` too); the point is `BeyondRange` exactly
+/// when a coordinate rounds to ±∞; `stored` is the point saturated at `±f64::MAX`.
+fn check_circumcentre(a: Point2, b: Point2, c: Point2, centre: ConstructedPoint, stored: Point2) {
     let [ax, ay, bx, by, cx, cy] = [a.x, a.y, b.x, b.y, c.x, c.y].map(exact);
     let (bx, by, cx, cy) = (bx - &ax, by - &ay, cx - &ax, cy - &ay);
     let b2 = &bx * &bx + &by * &by;
@@ -299,42 +305,51 @@ fn check_circumcentre(a: Point2, b: Point2, c: Point2, centre: Point2) {
         det.is_positive(),
         "triangle {a:?} {b:?} {c:?} is not counter-clockwise"
     );
-    let ux = (&cy * &b2 - &by * &c2) / &det;
-    let uy = (&bx * &c2 - &cx * &b2) / &det;
-    // κR: κ² = 4 l₁² l₂² / det², l₁ and l₂ the two shorter edges; R² = |u|².
-    let bc2 = (&cx - &bx) * (&cx - &bx) + (&cy - &by) * (&cy - &by);
-    let mut lengths = [b2, c2, bc2];
-    lengths.sort();
-    let kappa2 = &lengths[0] * &lengths[1] * BigRational::from_integer(4.into()) / (&det * &det);
-    let kappa_r = sqrt(&(kappa2 * (&ux * &ux + &uy * &uy)));
-    let m = [a.x, a.y, b.x, b.y, c.x, c.y]
-        .iter()
-        .fold(0.0f64, |m, v| m.max(v.abs()));
-    // Plus a few subnormal units: a centre in the subnormal range is rounded there (the
-    // stored input `voronoi/subnormal-centre` is one unit off).
-    let tol = 64.0 * f64::EPSILON * (kappa_r + m) + 4.0 * 5e-324;
-    for (got, want) in [(centre.x, ax + ux), (centre.y, ay + uy)] {
-        let rounded = nearest(&want);
-        // Known (constructions' work, reported there): a centre beyond the range of f64 is
-        // documented to be clamped to ±f64::MAX, but the scaled path gives other values,
-        // 2^1023 or even 9.98e291 (stored inputs `pending/voronoi-clamped-*`), so such a
-        // coordinate is not checked until that is fixed.
-        // Known as well: a nearly flat triangle whose rounded determinant is not positive
-        // is clamped although its centre is in range (`pending/voronoi-flat-triangle-clamped`;
-        // the other coordinate is then wrong too), so a clamped vertex is not checked either.
-        let clamped = centre.x.abs() == f64::MAX || centre.y.abs() == f64::MAX;
-        // And a triangle with an edge below 2^-300 times the longest: the fast path squares
-        // it to a subnormal or to 0 and loses the centre's accuracy (relative 2e-8 for the
-        // edge 4.6e-308 beside 2.9e-5 in `pending/voronoi-tiny-edge`).
-        let tiny_edge = &lengths[0] * num_traits::pow(exact(2f64.powi(300)), 2) < lengths[2];
-        if rounded.is_finite() && tol.is_finite() && !clamped && !tiny_edge {
-            let err = magnitude(&(exact(got) - &want));
-            assert!(
-                err <= tol,
-                "circumcentre of {a:?} {b:?} {c:?}: {got:e} is {err:e} from {rounded:e} \
-                 (tolerance {tol:e})"
-            );
-        }
+    let want = [
+        ax + (&cy * &b2 - &by * &c2) / &det,
+        ay + (&bx * &c2 - &cx * &b2) / &det,
+    ];
+    let beyond = want.iter().any(|w| !nearest(w).is_finite());
+    assert_eq!(
+        centre.is_beyond_range(),
+        beyond,
+        "circumcentre of {a:?} {b:?} {c:?}: {centre:?}, exact ({:e}, {:e})",
+        nearest(&want[0]),
+        nearest(&want[1])
+    );
+    assert_eq!(
+        stored,
+        centre.saturating(),
+        "the stored vertex of {a:?} {b:?} {c:?}"
+    );
+    let largest = want[0].abs().max(want[1].abs());
+    let tol = largest * exact(ConstructedPoint::RELATIVE_ERROR) + exact(5e-324) / two();
+    for (got, want) in centre.wide().iter().zip(&want) {
+        let (significand, exponent) = got.to_parts();
+        let got = exact(significand) * pow2(exponent);
+        let err = (got - want).abs();
+        assert!(
+            err <= tol,
+            "circumcentre of {a:?} {b:?} {c:?}: {centre:?} is {:e} from {:e} (tolerance {:e})",
+            nearest(&err),
+            nearest(want),
+            nearest(&tol)
+        );
+    }
+}
+
+/// 2 as a rational.
+fn two() -> BigRational {
+    BigRational::from_integer(2.into())
+}
+
+/// 2^e, exactly.
+fn pow2(e: i32) -> BigRational {
+    let p = num_traits::pow(two(), e.unsigned_abs() as usize);
+    if e >= 0 {
+        p
+    } else {
+        p.recip()
     }
 }
 

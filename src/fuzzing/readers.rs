@@ -179,15 +179,10 @@ pub fn graph_json(data: &[u8]) {
 /// the same from the list written with every entry as a JSON string. Where `serde_json`
 /// reads the text as a list of numbers (or of lists of numbers) the reader accepts it too,
 /// with the same shape, each entry's text being that number's literal. Errors are one line.
-///
-/// Known, skipped: `known_bom_offset`.
 pub fn number_arrays(data: &[u8]) {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    if known_bom_offset(text) {
-        return;
-    }
     let ours = parse_number_arrays(text);
     let body = text.strip_prefix('\u{feff}').unwrap_or(text);
     let theirs: Option<Vec<Vec<f64>>> = serde_json::from_str::<Vec<Vec<f64>>>(body)
@@ -236,69 +231,22 @@ pub fn number_arrays(data: &[u8]) {
     assert_eq!(back, points, "round trip of {written}");
 }
 
-/// Skips a reader bug this fuzzing found (in the readers' work's file, reported there): a
-/// list that starts with a byte-order mark and then has a syntax error panics ("byte index 1
-/// is not a char boundary") instead of reporting it, because the error position is counted
-/// in the text without the mark and then used in the text with it. The stored input
-/// `pending/number-arrays-bom-syntax-error` reproduces it.
-fn known_bom_offset(text: &str) -> bool {
-    text.starts_with('\u{feff}')
-}
-
-/// Skips the exact-decimal bug of issue 22 (another change fixes it): an exponent of 19 or
-/// more digits overflows the shift arithmetic (a panic, or a power of ten of 2^63 digits:
-/// a hang).
-fn known_huge_exponent(text: &str) -> bool {
-    let b = text.as_bytes();
-    b.iter().enumerate().any(|(i, &c)| {
-        if !matches!(c, b'e' | b'E') {
-            return false;
-        }
-        let rest = &b[i + 1..];
-        let rest = rest
-            .strip_prefix(b"+")
-            .or(rest.strip_prefix(b"-"))
-            .unwrap_or(rest);
-        let digits = rest.iter().take_while(|d| d.is_ascii_digit());
-        digits.skip_while(|&&d| d == b'0').count() > 18
-    })
-}
-
-/// Skips the range bug of issue 22 (another change fixes it): a decimal whose digits and
-/// exponent differ by more than 2000 is refused as "outside the range of f64" even when its
-/// value is in range (`1` followed by 2001 zeros and `e-2001`) or merely rounds to 0.
-fn known_long_shift(text: &str) -> bool {
-    text.split('/').any(|part| {
-        let s = part.trim();
-        let s = s.strip_prefix(['+', '-']).unwrap_or(s);
-        let (mantissa, exponent) = match s.find(['e', 'E']) {
-            Some(i) => (&s[..i], &s[i + 1..]),
-            None => (s, "0"),
-        };
-        let frac = mantissa.split_once('.').map_or(0, |(_, f)| f.len()) as i128;
-        let exponent: i128 = exponent.parse().unwrap_or(0);
-        (exponent - frac).abs() > 2000
-    })
-}
-
 /// `parse_scalar` (the exact decimals and fractions of `--exact`, `--t`, knots and control
 /// points) for `BigRational` and `f64`.
 ///
-/// Both scalars accept the same texts. An accepted decimal's rational is exactly
+/// Both scalars accept the same texts, except the plain decimals beyond the exact reader's
+/// documented bound (more than `MAX_EXACT_DIGITS` significant digits, or nonzero and below
+/// 1e−`MAX_EXACT_EXPONENT` in magnitude, judged here from the text independently), which
+/// `f64` rounds and `BigRational` refuses. An accepted decimal's rational is exactly
 /// ±digits·10^(exponent − fraction digits), built here from the text independently, and a
 /// fraction's is the quotient of its two decimals; the `f64` is the rational correctly
 /// rounded, which for a decimal is what `str::parse::<f64>` gives. A decimal that
-/// `str::parse` reads as a nonzero finite double is accepted. Errors are one line and name
-/// the parameter.
-///
-/// Known, skipped: `known_huge_exponent` and `known_long_shift`.
+/// `str::parse` reads as a nonzero finite double is accepted by `f64`. Errors are one line
+/// and name the parameter.
 pub fn exact_decimal(data: &[u8]) {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    if known_huge_exponent(text) || known_long_shift(text) {
-        return;
-    }
     let r = parse_scalar::<BigRational>(text, "x");
     let f = parse_scalar::<f64>(text, "x");
     let plain = decimal_oracle(text.trim());
@@ -330,7 +278,24 @@ pub fn exact_decimal(data: &[u8]) {
                 );
             }
         }
-        _ => panic!("the scalars disagree on {text:?}: {r:?} / {f:?}"),
+        (Err(a), Ok(f)) => {
+            let a = a.to_string();
+            check_message("exact decimal", &a);
+            assert!(a.starts_with("invalid x: "), "{a}");
+            assert!(
+                breaks_exact_bound(text.trim()),
+                "BigRational refuses {text:?}, which is within its bound ({a}); f64 reads {f:e}"
+            );
+            // Only a plain decimal can break the bound for one scalar alone: both read a
+            // fraction's parts exactly.
+            match &plain {
+                Some(Ok(x)) => assert!(x == f, "str::parse rounds {text:?} to {x:e}, not {f:e}"),
+                _ => {
+                    panic!("f64 reads {text:?}, not a plain decimal, though BigRational refuses it")
+                }
+            }
+        }
+        (Ok(_), Err(b)) => panic!("BigRational reads {text:?}, f64 refuses it: {b}"),
     }
 }
 
@@ -338,6 +303,36 @@ pub fn exact_decimal(data: &[u8]) {
 /// (`[+-]digits[.digits][(e|E)[+-]digits]`, a digit somewhere in the mantissa).
 fn decimal_oracle(text: &str) -> Option<Result<f64, std::num::ParseFloatError>> {
     split_decimal(text).map(|_| text.parse::<f64>())
+}
+
+/// Whether `text` is a plain decimal beyond the bound of exact reading (`parse_scalar`,
+/// "Bounded parsing"): nonzero with more than `MAX_EXACT_DIGITS` significant digits, or
+/// with a magnitude below 1e−`MAX_EXACT_EXPONENT`.
+fn breaks_exact_bound(text: &str) -> bool {
+    let Some(((_, int, frac), exponent)) = split_decimal(text) else {
+        return false;
+    };
+    let all = format!("{int}{frac}");
+    let Some(first) = all.bytes().position(|b| b != b'0') else {
+        return false;
+    };
+    let last = all
+        .bytes()
+        .rposition(|b| b != b'0')
+        .expect("a nonzero digit");
+    let significant = last - first + 1;
+    // Saturating: an exponent of hundreds of digits is far past every bound either way.
+    let (sign, e) = match exponent.strip_prefix('-') {
+        Some(rest) => (-1, rest),
+        None => (1, exponent.strip_prefix('+').unwrap_or(exponent)),
+    };
+    let e = e.bytes().fold(0i128, |acc, b| {
+        acc.saturating_mul(10).saturating_add(i128::from(b - b'0'))
+    });
+    // 10^(magnitude − 1) ≤ |value| < 10^magnitude.
+    let magnitude = (all.len() - first) as i128 - frac.len() as i128 + sign * e;
+    significant > crate::spline::MAX_EXACT_DIGITS
+        || magnitude <= -i128::from(crate::spline::MAX_EXACT_EXPONENT)
 }
 
 /// Sign, integer digits, fraction digits and exponent digits of a plain decimal, or `None`.
@@ -370,6 +365,10 @@ fn exact_oracle(text: &str) -> Option<BigRational> {
     }
     let ((negative, int, frac), exponent) = split_decimal(text)?;
     let mantissa: BigInt = format!("0{int}{frac}").parse().ok()?;
+    // Zero whatever the exponent (which may be too long for the power below).
+    if mantissa == BigInt::from(0) {
+        return Some(BigRational::from_integer(mantissa));
+    }
     let shift = exponent.parse::<i64>().ok()? - frac.len() as i64;
     let power = BigRational::from_integer(BigInt::from(10).pow(shift.unsigned_abs() as u32));
     let value = BigRational::from_integer(mantissa);
@@ -379,4 +378,37 @@ fn exact_oracle(text: &str) -> Option<BigRational> {
         value / power
     };
     Some(if negative { -value } else { value })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_exact_bound_is_judged_from_the_text() {
+        let long_one = format!("1{}e-2001", "0".repeat(2001));
+        let many_digits = format!("0.{}", "7".repeat(1001));
+        let enough_digits = format!("0.{}", "7".repeat(1000));
+        for (text, broken) in [
+            ("1e-400", false),
+            ("1e-401", true),
+            ("0.001e-398", true),
+            ("100e-402", false),
+            ("0e-99999999999999999999", false),
+            ("-1e-2001", true),
+            (&long_one, false),
+            (&many_digits, true),
+            (&enough_digits, false),
+            ("1/2", false),
+        ] {
+            assert_eq!(breaks_exact_bound(text), broken, "{text}");
+        }
+    }
+
+    #[test]
+    fn a_tiny_decimal_is_zero_in_f64_and_refused_exactly() {
+        exact_decimal(b"1e-2001");
+        exact_decimal(b"1e-401");
+        exact_decimal(b"0e-9999999999");
+    }
 }

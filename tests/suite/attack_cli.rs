@@ -742,57 +742,57 @@ fn generators_never_print_negative_zero() {
     }
 }
 
-/// Horner's scheme forms powers of t that overflow where the point itself does not (the zero
-/// quadratic at t = 1.55e231, a fuzz finding): the error says so and names the remedy,
-/// instead of calling a representable point unrepresentable; a point that really is beyond
-/// f64 keeps the range error.
+/// `bezier eval` at parameters far outside [0, 1]: the zero quadratic at t = 1.55e231 (a
+/// fuzz finding: t² overflows) is 0 by either scheme; a constant curve at 1e300, whose
+/// value 1e300 both schemes lose to an overflow of terms that cancel, is named as such
+/// (the evaluation overflows, use --exact) and `--exact` gives it; a point that really is
+/// beyond f64 keeps the range error.
 #[test]
-fn horner_overflow_is_not_reported_as_an_unrepresentable_point() {
-    let zero = r#"[[0,0],[0,0],[0,0]]"#;
-    let err = assert_rejected(
-        &[
+fn bezier_eval_far_outside_the_unit_interval_answers_or_names_the_overflow() {
+    let eval = |control: &str, t: &str, algorithm: &str| {
+        [
             "bezier",
             "eval",
             "--control",
-            zero,
+            control,
             "--t",
-            "1.55e231",
+            t,
             "--algorithm",
-            "horner",
-        ],
-        None,
-    );
-    assert!(
-        err.contains("horner overflows") && err.contains("de-casteljau"),
-        "{err}"
-    );
-    let v = crate::common::run_json(
-        &[
-            "bezier",
-            "eval",
-            "--control",
-            zero,
-            "--t",
-            "1.55e231",
-            "--algorithm",
-            "de-casteljau",
-        ],
-        None,
-    );
-    assert_eq!(v["point"], serde_json::json!([0.0, 0.0]));
-    let huge = r#"[[0,0],[1e300,0],[0,0]]"#;
-    let err = assert_rejected(
-        &[
-            "bezier",
-            "eval",
-            "--control",
-            huge,
-            "--t",
-            "1e10",
-            "--algorithm",
-            "horner",
-        ],
-        None,
-    );
+            algorithm,
+        ]
+        .map(str::to_string)
+    };
+    let zero = "[[0,0],[0,0],[0,0]]";
+    for algorithm in ["horner", "de-casteljau"] {
+        let args = eval(zero, "1.55e231", algorithm);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let v = crate::common::run_json(&args, None);
+        assert_eq!(v["point"], serde_json::json!([0.0, 0.0]), "{algorithm}");
+    }
+    let constant = "[[1e300,1],[1e300,1],[1e300,1]]";
+    for algorithm in ["horner", "de-casteljau"] {
+        let args = eval(constant, "1e10", algorithm);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let err = assert_rejected(&args, None);
+        assert!(
+            err.contains("within the range of f64")
+                && err.contains("overflows")
+                && err.contains("--exact"),
+            "{algorithm}: {err}"
+        );
+        let mut exact = args.clone();
+        exact.push("--exact");
+        let v = crate::common::run_json(&exact, None);
+        let one_e300 = format!("1{}", "0".repeat(300));
+        assert_eq!(
+            v["point"],
+            serde_json::json!([one_e300, "1"]),
+            "{algorithm}"
+        );
+    }
+    let huge = "[[0,0],[1e300,0],[0,0]]";
+    let args = eval(huge, "1e10", "horner");
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let err = assert_rejected(&args, None);
     assert!(err.contains("beyond the range of f64"), "{err}");
 }

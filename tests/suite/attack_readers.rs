@@ -494,3 +494,42 @@ fn million_digit_numbers_round_or_are_refused_at_once() {
     );
     rejected(SORT, ones.as_bytes(), &["number 0 is not finite"]);
 }
+
+// ------------------------------------------------------------------- fuzz findings
+
+/// The readers' findings of the fuzzing (`tests/fixtures/fuzz/<reader>/`), each by the command
+/// of its report: a byte-order mark before a syntax error panicked (exit 101); a CSV field and
+/// a graph key were echoed with raw `\r` and `\r\n`; a decimal with 2001 zeros and `e-2001`
+/// (the value 1) and `1e-2001` were refused as outside the range of f64.
+#[test]
+fn the_readers_fuzz_findings_stay_fixed() {
+    rejected(
+        &strs(&bezier(false, "\u{feff} z", "0.5")),
+        b"",
+        &["invalid JSON at line 1, column 2: expected '['"],
+    );
+    rejected(
+        STATS_CSV,
+        b"1,-\r0",
+        &["line 1", "\"-\\r0\" is not a number"],
+    );
+    rejected(
+        MST,
+        br#"{"vertices": 1, "edges": [], "a\r\nb": 0}"#,
+        &["unexpected key \"a\\r\\nb\""],
+    );
+    let one = format!("[[\"1{}e-2001\", 2]]", "0".repeat(2001));
+    let v = accepted(&strs(&bezier(false, &one, "0.5")), b"");
+    assert_eq!(v["point"], serde_json::json!([1.0, 2.0]));
+    let v = accepted(&strs(&bezier(true, &one, "0.5")), b"");
+    assert_eq!(v["point"], serde_json::json!(["1", "2"]));
+    // Tiny: 0 as IEEE rounds it in f64; refused by the named bound with --exact.
+    let tiny = "[[\"1e-2001\", 2]]";
+    let v = accepted(&strs(&bezier(false, tiny, "0.5")), b"");
+    assert_eq!(v["point"], serde_json::json!([0.0, 2.0]));
+    rejected(
+        &strs(&bezier(true, tiny, "0.5")),
+        b"",
+        &["control point 0, coordinate 0", "below 1e-400"],
+    );
+}

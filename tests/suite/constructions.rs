@@ -249,6 +249,43 @@ fn a_flat_triangle_at_a_large_scale_has_its_centre_beyond_the_range() {
     check(v.vertex(0), &circumcentre_q(t), "in range");
 }
 
+/// The Voronoi findings of the fuzzing (`tests/fixtures/fuzz/voronoi/`), each one triangle:
+/// a centre beyond the range that came out as 2^1023, one that came out as the wrong finite
+/// 9.98e291, a nearly flat triangle whose centre (−1.75e35, 45) was clamped to −f64::MAX,
+/// and a centre 2.9e-5 from the origin beside an edge of 4.6e-308 that was off by a
+/// relative 2e-8. Each is within the stated error now, beyond the range exactly when its
+/// exact centre is.
+#[test]
+fn the_voronoi_fuzz_findings_are_within_the_stated_error() {
+    let cases: [([(f64, f64); 3], bool); 4] = [
+        ([(-1.0, 2.122060549e-314), (0.0, 0.0), (1.0, 0.0)], true),
+        ([(5e-324, -1.0), (0.0, -0.0), (0.0, -5e-324)], true),
+        (
+            [
+                (-3.9999999999999987, 86.0),
+                (-3.9999999999999996, 4.000000000000001),
+                (-3.999999999999999, 45.0),
+            ],
+            false,
+        ),
+        (
+            [
+                (-2.9087066650390625e-5, -2.9087066650390625e-5),
+                (4.569793315955872e-308, 0.0),
+                (0.0, 0.0),
+            ],
+            false,
+        ),
+    ];
+    for (t, beyond) in cases {
+        let t = t.map(Point2::from);
+        let v = voronoi(&t).unwrap();
+        assert_eq!(v.vertices.len(), 1, "{t:?}");
+        assert_eq!(v.is_beyond_range(0), beyond, "{t:?}");
+        check(v.vertex(0), &circumcentre_q(t), "fuzz finding");
+    }
+}
+
 #[test]
 fn a_tilted_rectangle_around_the_largest_doubles_has_corners_beyond_the_range() {
     // The square [−M, M]² with its corner (M, −M) cut off: the best rectangle lies along

@@ -1,8 +1,8 @@
 //! Replays every stored fuzz input under `tests/fixtures/fuzz/<target>/` through the same
 //! check the fuzz target runs (`compgeo::fuzzing::<target>`): the crashes and wrong answers
 //! the fuzzers found, minimised, and a few interesting inputs per target. Inputs under
-//! `tests/fixtures/fuzz/pending/` are open findings whose fix is elsewhere; they are not
-//! replayed (see "Fuzzing" in `docs/design.md`).
+//! `tests/fixtures/fuzz/pending/` are open findings awaiting a fix (none at present); they
+//! are not replayed (see "Fuzzing" in `docs/design.md`).
 #![cfg(feature = "cli")]
 
 use std::path::{Path, PathBuf};

@@ -267,8 +267,20 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// t = 1 and switches to the mirrored form there; here the factor (1 − t)ⁿ is instead
     /// distributed over the nesting, one factor (1 − t) per step:
     /// `(⋯((b₀(1 − t) + C(n,1) t b₁)(1 − t) + C(n,2) t² b₂)(1 − t) + ⋯) + tⁿ bₙ`.
-    /// No division remains, so no parameter fails and no branch is taken: every real t,
-    /// also outside [0, 1], costs the same n + 1 steps.
+    /// No division remains, so no parameter fails: every real t, also outside [0, 1], costs
+    /// the same n + 1 steps.
+    ///
+    /// A power of t formed on its own can leave the range of `f64` where its term does not
+    /// (t² is 0 for |t| below 1.5e-162, ∞ above 1.3e154), so the scheme avoids the ones
+    /// that can underflow: a quadratic multiplies
+    /// b₂ by t twice, a cubic nests its lower half in 1 − t and its upper half in t, and from
+    /// degree 4 on the nesting is the mirrored one, in t with the powers of 1 − t, wherever
+    /// |t| ≤ |1 − t|, so that the powers formed are those of the larger of the two, at least
+    /// 1/2 in magnitude. Where the result is still not finite (partial sums that overflow
+    /// although they cancel, far outside [0, 1], or a cubic's stored 3bᵢ beyond `f64::MAX`),
+    /// the point is recomputed by de Casteljau's algorithm, which only forms affine
+    /// combinations, as [`Curve::eval`] does; within the bound on |t| that [`Bezier::new`]
+    /// fixes (see [`Curve::eval`]) that never happens.
     ///
     /// Follows [PPB, §2.3, Obs. 4].
     ///
@@ -281,12 +293,14 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// Θ(nD) time: n multiply-adds of points and one scaling, plus O(n) scalar operations
     /// (binomials from a table for n < 64, by their ratio recurrence above; a cubic keeps its
     /// scaled points 3b₁ and 3b₂ from construction); O(D) auxiliary space. On `f64` the
-    /// binomials overflow for n above about 1020.
+    /// binomials overflow for n above about 1020. Where de Casteljau's algorithm takes over,
+    /// Θ(n²D) time and O(nD) space.
     ///
     /// # Counts
     ///
     /// One [`arithmetic_operation`](Counter::arithmetic_operation) per multiply-add and one
-    /// for the final scaling: n + 1.
+    /// for the final scaling: n + 1. Where de Casteljau's algorithm takes over, its n(n + 1)/2
+    /// affine combinations as well.
     ///
     /// ```
     /// use compgeo::count::Counts;
@@ -297,12 +311,22 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// let p = b.horner_with(&0.25, &mut c)?;
     /// assert_eq!(p, b.de_casteljau(&0.25)?);
     /// assert_eq!(c.arithmetic_operations, 5);
+    ///
+    /// // The zero quadratic far outside [0, 1]: t² overflows, (0·t)·t does not.
+    /// let zero = Bezier::new(vec![Point::new([0.0]); 3])?;
+    /// assert_eq!(zero.horner(&1.55e231)?, Point::new([0.0]));
+    /// // A cubic whose stored 3b₁ overflows: Horner's scheme gives ∞ · 0 at t = 1, so de
+    /// // Casteljau's algorithm gives the point b₃ (and its 3·4/2 combinations are counted).
+    /// let big = Bezier::new([0.0, 1e308, 0.0, 5.0].map(|x| Point::new([x])).to_vec())?;
+    /// let mut c = Counts::default();
+    /// assert_eq!(big.horner_with(&1.0, &mut c)?, Point::new([5.0]));
+    /// assert_eq!(c.arithmetic_operations, 4 + 6);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     #[inline]
     pub fn horner_with<C: Counter>(&self, t: &S, counter: &mut C) -> Result<Point<S, D>> {
         validate_parameter(t, "t")?;
-        Ok(self.horner_unchecked(t, counter))
+        Ok(self.horner_or_de_casteljau(t, counter))
     }
 }
 
@@ -347,16 +371,24 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         Ok(self.eval_general(t))
     }
 
-    /// The point b(t) for a finite t, any degree: Horner's scheme if its result is finite
-    /// (always within the Horner bound), else de Casteljau's algorithm (which only forms
-    /// affine combinations). Out of line: the evaluations inline only the closed forms.
+    /// The point b(t) for a finite t, any degree: [`Bezier::horner_or_de_casteljau`]. Out of
+    /// line: the evaluations inline only the closed forms.
     #[inline(never)]
     pub(crate) fn eval_general(&self, t: &S) -> Point<S, D> {
-        let p = self.horner_unchecked(t, &mut NoCount);
+        self.horner_or_de_casteljau(t, &mut NoCount)
+    }
+
+    /// The point b(t) for a finite t, counting: Horner's scheme if its result is finite
+    /// (always within the Horner bound), else de Casteljau's algorithm (which only forms
+    /// affine combinations). An overflow never comes back to a finite value (∞ stays ∞ or
+    /// becomes NaN), so a finite result has not overflowed on the way.
+    #[inline(always)]
+    fn horner_or_de_casteljau<C: Counter>(&self, t: &S, counter: &mut C) -> Point<S, D> {
+        let p = self.horner_unchecked(t, counter);
         if p.is_finite() {
             return p;
         }
-        self.de_casteljau_unchecked(t, &mut NoCount)
+        self.de_casteljau_unchecked(t, counter)
     }
 
     /// Horner's scheme of Obs. 4 without validation (t finite), counting.
@@ -379,27 +411,20 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     }
 
     /// Horner's nesting for degree n ≥ 4 (one counted step is already recorded).
+    ///
+    /// The nesting multiplies the sum by one of t and u = 1 − t step by step and forms the
+    /// powers of the other on their own; those are the powers of the larger in magnitude,
+    /// at least 1/2 (as |t| + |u| ≥ 1), so they cannot underflow below degree 1023. With the
+    /// powers of the smaller, tⁱ alone would be 0 for a tiny t where C(n, i) tⁱ bᵢ is not.
+    /// The mirrored nesting is the same scheme on the reversed polygon with t and u swapped:
+    /// `(⋯((bₙt + C(n,1) u bₙ₋₁)t + C(n,2) u² bₙ₋₂)t + ⋯) + uⁿ b₀`.
     fn horner_loop<C: Counter>(&self, t: &S, u: S, counter: &mut C) -> Point<S, D> {
         let b = self.control();
-        let n = b.len() - 1;
-        // acc = Σ_{j<i} C(n, j) tʲ uⁱ⁻ʲ bⱼ after step i; tᵢ = tⁱ.
-        let mut ti = S::one();
-        let mut acc = b[0].clone() * &u;
-        // Past the table, C(n, i) = C(n, i − 1)·(n − i + 1)/i keeps each step O(1).
-        let mut c = S::one();
-        for (i, bi) in b.iter().enumerate().take(n).skip(1) {
-            ti = ti * t;
-            let coefficient = if n < BINOMIAL_ROWS {
-                binomial::<S>(n, i)
-            } else {
-                c = c * S::from_i64((n - i + 1) as i64) / S::from_i64(i as i64);
-                c.clone()
-            };
-            acc = (acc + &(bi.clone() * (ti.clone() * coefficient))) * &u;
-            counter.arithmetic_operation();
+        if t.abs() <= u.abs() {
+            nest(b.iter().rev(), t, &u, counter)
+        } else {
+            nest(b.iter(), &u, t, counter)
         }
-        counter.arithmetic_operation();
-        acc + &(b[n].clone() * (ti * t))
     }
 
     /// [`Bezier::eval_each`]'s loop for one evaluation `g` (a closed form, or Horner's
@@ -436,6 +461,43 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     }
 }
 
+/// `Σᵢ C(n, i) yⁱ xⁿ⁻ⁱ pᵢ` for the points p₀, …, pₙ (n ≥ 4; one counted step is already
+/// recorded) by Horner's nesting in x with the powers of y formed on their own:
+/// `(⋯((p₀x + C(n,1) y p₁)x + C(n,2) y² p₂)x + ⋯) + yⁿ pₙ`.
+fn nest<'a, S: Scalar + 'a, const D: usize, C: Counter>(
+    mut points: impl ExactSizeIterator<Item = &'a Point<S, D>>,
+    x: &S,
+    y: &S,
+    counter: &mut C,
+) -> Point<S, D> {
+    let n = points.len() - 1;
+    let first = points.next().expect("n + 1 ≥ 5 points");
+    // acc = Σ_{j<i} C(n, j) yʲ xⁱ⁻ʲ pⱼ after step i; yi = yⁱ.
+    let mut yi = S::one();
+    let mut acc = first.clone() * x;
+    // Past the table, C(n, i) = C(n, i − 1)·(n − i + 1)/i keeps each step O(1).
+    let mut c = S::one();
+    for (i, pi) in points
+        .by_ref()
+        .take(n - 1)
+        .enumerate()
+        .map(|(k, p)| (k + 1, p))
+    {
+        yi = yi * y;
+        let coefficient = if n < BINOMIAL_ROWS {
+            binomial::<S>(n, i)
+        } else {
+            c = c * S::from_i64((n - i + 1) as i64) / S::from_i64(i as i64);
+            c.clone()
+        };
+        acc = (acc + &(pi.clone() * (yi.clone() * coefficient))) * x;
+        counter.arithmetic_operation();
+    }
+    counter.arithmetic_operation();
+    let last = points.next().expect("the last point");
+    acc + &(last.clone() * (yi * y))
+}
+
 /// `p` itself. For `f64`, taken apart and put together again coordinate by coordinate: where
 /// a point returned in memory by an out-of-line call (the checked path, Horner's loop) meets
 /// one computed in registers, the compiler then merges the two in registers, instead of
@@ -461,7 +523,12 @@ pub(crate) fn horner_line<S: Scalar, const D: usize>(
     b0.clone() * u + &(b1.clone() * t)
 }
 
-/// Horner's nesting of degree 2, `(b₀u + 2t b₁)u + t² b₂` (u = 1 − t).
+/// Horner's nesting of degree 2, `(b₀u + 2t b₁)u + (b₂t)t` (u = 1 − t).
+///
+/// The point b₂ is multiplied by t twice rather than by t²: t² alone leaves the range of
+/// `f64` where b₂t² need not (t² is 0 for |t| below 1.5e-162 even when b₂ is 1e300, ∞ for
+/// |t| above 1.3e154 even when b₂ is 0), while (b₂t)t underflows or overflows only where the
+/// term itself does.
 #[inline(always)]
 pub(crate) fn horner_quadratic<S: Scalar, const D: usize>(
     b0: &Point<S, D>,
@@ -471,11 +538,18 @@ pub(crate) fn horner_quadratic<S: Scalar, const D: usize>(
     u: &S,
 ) -> Point<S, D> {
     let two_t = S::from_i64(2) * t;
-    (b0.clone() * u + &(b1.clone() * two_t)) * u + &(b2.clone() * (t.clone() * t))
+    (b0.clone() * u + &(b1.clone() * two_t)) * u + &(b2.clone() * t * t)
 }
 
-/// Horner's nesting of degree 3, `((b₀u + c₁t)u + c₂t²)u + b₃t³` (u = 1 − t) with the
-/// scaled points c₁ = 3b₁ and c₂ = 3b₂.
+/// Horner's nesting of degree 3 from both ends, `(b₀u + c₁t)u·u + (c₂u + b₃t)t·t`
+/// (u = 1 − t) with the scaled points c₁ = 3b₁ and c₂ = 3b₂: the lower half nested in u,
+/// the upper in t.
+///
+/// No power of t or u is formed on its own, so nothing leaves the range of `f64` unless a
+/// term itself does (the one-sided nesting `((b₀u + c₁t)u + c₂t²)u + b₃t³` lost c₂t² at
+/// t = 1.76e-243, where t² is 0 but 3b₂t² is 1e-264 for b₂ = 1.13e221). The price: two
+/// more multiplications per coordinate than the one-sided nesting with t² and t³ formed once;
+/// the two halves are independent chains.
 #[inline(always)]
 pub(crate) fn horner_cubic<S: Scalar, const D: usize>(
     b0: &Point<S, D>,
@@ -485,8 +559,9 @@ pub(crate) fn horner_cubic<S: Scalar, const D: usize>(
     t: &S,
     u: &S,
 ) -> Point<S, D> {
-    let t2 = t.clone() * t;
-    ((b0.clone() * u + &(c1.clone() * t)) * u + &(c2.clone() * &t2)) * u + &(b3.clone() * (t2 * t))
+    let low = b0.clone() * u + &(c1.clone() * t);
+    let high = c2.clone() * u + &(b3.clone() * t);
+    low * u * u + &(high * t * t)
 }
 
 /// The bound on |t| stored in a curve: for |t| at most this value, every intermediate of
@@ -494,8 +569,10 @@ pub(crate) fn horner_cubic<S: Scalar, const D: usize>(
 /// Negative when no parameter is safe; irrelevant (+∞) for exact scalars.
 ///
 /// Why: with M' = max(1, largest |coordinate|) and w = |t| + |1 − t| ≥ 1, the partial sums
-/// Σⱼ C(n, j) tʲ (1 − t)ⁱ⁻ʲ bⱼ of the nesting, the scalars C(n, i) tⁱ and the ratio
-/// recurrence's C(n, i − 1)(n − i + 1) are all at most (n + 1) 2ⁿ M' wⁿ, so
+/// Σⱼ C(n, j) tʲ (1 − t)ⁱ⁻ʲ bⱼ of the nesting (and those of the mirrored nesting, t and
+/// 1 − t swapped, and the cubic's halves and their products with t or 1 − t), the scalars
+/// C(n, i) tⁱ (or C(n, i) (1 − t)ⁱ) and the ratio recurrence's C(n, i − 1)(n − i + 1) are
+/// all at most (n + 1) 2ⁿ M' wⁿ, as w is symmetric in t and 1 − t, so
 /// `2ⁿ⁺¹ (n + 1) M' wⁿ ≤ f64::MAX` leaves a factor 2 for rounding. With K = f64::MAX /
 /// (2ⁿ⁺¹ (n + 1) M') ≥ 1 and W = 2^⌊⌊log₂ K⌋ / n⌋ (so Wⁿ ≤ K, read off K's exponent: no
 /// `powf` on the way, as curves are built by the thousand when flattening or intersecting),
