@@ -128,6 +128,13 @@ pub const MAX_INTERSECTION_PAIRS: usize = 1 << 20;
 /// lists, and their lengths multiply.
 pub const MAX_BASIS_TABLE: usize = 1 << 24;
 
+/// The most knots a knot-vector builder
+/// ([`KnotVector::clamped_uniform`](crate::spline::KnotVector::clamped_uniform),
+/// [`KnotVector::uniform`](crate::spline::KnotVector::uniform)) makes: n + d + 1 for n
+/// control points of degree d, 2^26. The count is a number; 512 MiB of `f64` knots at the
+/// limit.
+pub const MAX_KNOTS: usize = 1 << 26;
+
 /// One limit: its constant's name, its value and what it bounds, as the error message and
 /// the table in `docs/design.md` say them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -248,9 +255,15 @@ pub(crate) const BASIS_TABLE: Limit = Limit {
     max: MAX_BASIS_TABLE,
     what: "Lagrange basis table size",
 };
+/// [`MAX_KNOTS`].
+pub(crate) const KNOTS: Limit = Limit {
+    name: "MAX_KNOTS",
+    max: MAX_KNOTS,
+    what: "built knot count",
+};
 
 /// Every limit, in the order of the table in `docs/design.md`.
-pub const ALL: [Limit; 15] = [
+pub const ALL: [Limit; 16] = [
     POINTS,
     COCIRCULAR,
     KEYS,
@@ -266,6 +279,7 @@ pub const ALL: [Limit; 15] = [
     FLATTEN_SEGMENTS,
     INTERSECTION_PAIRS,
     BASIS_TABLE,
+    KNOTS,
 ];
 
 #[cfg(test)]
