@@ -1,4 +1,4 @@
-//! B-splines: knot vectors.
+//! B-splines: knot vectors and the B-spline basis.
 //!
 //! # The knot convention
 //!
@@ -28,11 +28,13 @@
 //! is exact (the partition of unity holds with `==`).
 //!
 //! Values are right-continuous, with the closed last interval: at u = t_n the last non-empty
-//! span is used.
+//! span is used. In the Cox–de Boor recursion a term whose denominator (a support width) is
+//! zero is zero, the convention 0/0 = 0 of [PPB, §5.3].
 //!
 //! | file | problem | time |
 //! |---|---|---|
 //! | `knots.rs` | [`KnotVector`]: validation, [`clamped_uniform`](KnotVector::clamped_uniform), [`uniform`](KnotVector::uniform), [`averaged`](KnotVector::averaged), [`from_spl`](KnotVector::from_spl), [`multiplicities`](KnotVector::multiplicities), [`domain`](KnotVector::domain), [`span`](KnotVector::span) [PPB, §5.1, §5.4, §5.7], [SPL, §12] | Θ(n + d); span O(log(n − d)) |
+//! | `basis.rs` | [`KnotVector::basis`] ([`Basis`]), [`KnotVector::basis_derivatives`] ([`BasisDerivatives`]) [PPB, §5.3, §5.7] | Θ(d²); O(d² + d·K²) |
 //!
 //! ```
 //! use compgeo::spline::KnotVector;
@@ -40,13 +42,17 @@
 //! // 5 control points of degree 2: 8 knots, domain [t₂, t₅] = [0, 3].
 //! let t = KnotVector::clamped_uniform(2, 5, 0.0, 3.0)?;
 //! assert_eq!(t.knots().len(), 5 + 2 + 1);
-//! assert_eq!(t.span(&1.5)?, 3);
+//! let b = t.basis(&1.5)?;
+//! assert_eq!(b.values().iter().sum::<f64>(), 1.0);
 //! # Ok::<(), compgeo::Error>(())
 //! ```
 
+mod basis;
 mod knots;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 1] = [&knots::SPAN];
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 3] =
+    [&knots::SPAN, &basis::BASIS, &basis::BASIS_DERIVATIVES];
 
+pub use basis::{Basis, BasisDerivatives};
 pub use knots::KnotVector;
