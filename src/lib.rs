@@ -110,6 +110,9 @@
 //! | `spline/cubic-natural`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: exactly 7n + 4 point operations | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
 //! | `spline/cubic-periodic`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: Θ(n) point operations | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
 //! | `fit/least-squares`: [`spline::fit_bezier`] | Θ(m·n² + n³ + m·n·D) | Θ(n² + m·n + n·D) | not counted | [PPB, §4.7] | `src/spline/interpolate/least_squares.rs` |
+//! | `bspline/span`: [`spline::KnotVector::span`] | O(log(n − d)) | O(1) | comparisons: at most ⌈log₂(n − d + 1)⌉ + 1 comparisons with knots, plus 2 for the domain | [PPB, §5.4] | `src/spline/bspline/knots.rs` |
+//! | `bspline/basis`: [`spline::KnotVector::basis`] | Θ(d²) | O(d) | arithmetic operations: exactly d(d + 1)/2 steps of the triangular scheme | [PPB, §5.3] | `src/spline/bspline/basis.rs` |
+//! | `bspline/basis-derivatives`: [`spline::KnotVector::basis_derivatives`] | O(d² + d·K²) | O((k + 1)(d + 1)) | arithmetic operations: exactly d(d + 1)/2 + (d + 1)·K(K + 3)/2 steps, K = min(k, d) | [PPB, §5.7] | `src/spline/bspline/basis.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!

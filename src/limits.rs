@@ -123,10 +123,20 @@ pub const MAX_FLATTEN_SEGMENTS: usize = 1 << 20;
 /// intersections): 2^20.
 pub const MAX_INTERSECTION_PAIRS: usize = 1 << 20;
 
-/// The most values of the Lagrange basis the command line's `interpolate lagrange` prints:
-/// one per node and evaluation parameter, 2^24 (about 400 MB of JSON). Its input is two
-/// lists, and their lengths multiply.
+/// The most values of a basis table: the Lagrange basis the command line's
+/// `interpolate lagrange` prints (one per node and evaluation parameter, about 400 MB of JSON
+/// at the limit: its input is two lists, and their lengths multiply), and the (k + 1)(d + 1)
+/// derivatives of the B-spline basis that
+/// [`KnotVector::basis_derivatives`](crate::spline::KnotVector::basis_derivatives) returns
+/// (two numbers, the order and the degree, multiply): 2^24.
 pub const MAX_BASIS_TABLE: usize = 1 << 24;
+
+/// The most knots a knot-vector builder
+/// ([`KnotVector::clamped_uniform`](crate::spline::KnotVector::clamped_uniform),
+/// [`KnotVector::uniform`](crate::spline::KnotVector::uniform)) makes: n + d + 1 for n
+/// control points of degree d, 2^26. The count is a number; 512 MiB of `f64` knots at the
+/// limit.
+pub const MAX_KNOTS: usize = 1 << 26;
 
 /// One limit: its constant's name, its value and what it bounds, as the error message and
 /// the table in `docs/design.md` say them.
@@ -246,11 +256,17 @@ pub(crate) const INTERSECTION_PAIRS: Limit = Limit {
 pub(crate) const BASIS_TABLE: Limit = Limit {
     name: "MAX_BASIS_TABLE",
     max: MAX_BASIS_TABLE,
-    what: "Lagrange basis table size",
+    what: "basis table size",
+};
+/// [`MAX_KNOTS`].
+pub(crate) const KNOTS: Limit = Limit {
+    name: "MAX_KNOTS",
+    max: MAX_KNOTS,
+    what: "built knot count",
 };
 
 /// Every limit, in the order of the table in `docs/design.md`.
-pub const ALL: [Limit; 15] = [
+pub const ALL: [Limit; 16] = [
     POINTS,
     COCIRCULAR,
     KEYS,
@@ -266,6 +282,7 @@ pub const ALL: [Limit; 15] = [
     FLATTEN_SEGMENTS,
     INTERSECTION_PAIRS,
     BASIS_TABLE,
+    KNOTS,
 ];
 
 #[cfg(test)]

@@ -24,6 +24,7 @@
 //! | `parse.rs` | [`parse_scalar`]: exact reading of integers, decimals and fractions, bounded by [`MAX_EXACT_DIGITS`] and [`MAX_EXACT_EXPONENT`] |
 //! | `curve.rs` | the curve traits and [`Domain`] |
 //! | [`bezier`] | Bernstein basis, [`Bezier`] and its algorithms (one per file), [`Reparametrised`], [`CompositeBezier`] and its joins, intersection, the evaluation schemes ([`BezierEvaluation`]) |
+//! | [`bspline`] | [`KnotVector`] (validation, builders, multiplicities, domain, span search, the SPL adapter) and the basis ([`Basis`], [`BasisDerivatives`]) |
 //! | [`interpolate`] | polynomial, Lagrange/Aitken, Newton and Hermite interpolation, cubic and quadratic splines, least squares, parameterisations |
 //! | `frenet.rs` | [`FrenetFrame`], [`frenet_frame`], [`bezier_frenet`], [`curvature_vector`], G² checks [`is_g2_join`], [`is_g2`] |
 //!
@@ -35,6 +36,7 @@
 //! Donaire, *Resumen de la asignatura Geometría Aplicada*.
 
 pub mod bezier;
+pub mod bspline;
 mod curve;
 mod frenet;
 pub mod interpolate;
@@ -42,11 +44,12 @@ mod parse;
 mod scalar;
 
 /// The curve algorithms that are not a choice among evaluation schemes, declared: the Bézier
-/// operations, interpolation and fitting, the Frenet frame.
+/// operations, interpolation and fitting, the B-spline knots and basis, the Frenet frame.
 pub(crate) fn declarations() -> impl Iterator<Item = &'static crate::complexity::Declaration> {
     bezier::DECLARATIONS
         .into_iter()
         .chain(interpolate::DECLARATIONS)
+        .chain(bspline::DECLARATIONS)
         .chain([&frenet::FRENET])
 }
 
@@ -55,6 +58,7 @@ pub use bezier::{
     CompositeBezier, Evaluation as BezierEvaluation, Intersection, Join, Reparametrised,
     MAX_FLATTEN_SEGMENTS, MAX_INTERSECTION_PAIRS,
 };
+pub use bspline::{Basis, BasisDerivatives, KnotVector};
 pub use curve::{Curve, CurveDerivative, Domain, Subsegment};
 pub use frenet::{bezier_frenet, curvature_vector, frenet_frame, is_g2, is_g2_join, FrenetFrame};
 pub use interpolate::{

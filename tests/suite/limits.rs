@@ -240,3 +240,32 @@ fn interpolation_checks_degrees_and_dense_systems() {
     assert_eq!(lagrange(&nodes[..5], &pts[..5]).unwrap().nodes().len(), 5);
     assert!(vandermonde(&nodes[..8], &pts[..8]).is_ok());
 }
+
+#[test]
+fn knot_vectors_check_degrees_counts_and_tables_before_allocating() {
+    use compgeo::spline::KnotVector;
+    let big = limits::MAX_DEGREE as u128 + 1;
+    assert_limit(
+        KnotVector::<f64>::clamped_uniform(limits::MAX_DEGREE + 1, 2, 0.0, 1.0),
+        "MAX_DEGREE",
+        big,
+    );
+    assert_limit(
+        KnotVector::<f64>::averaged(limits::MAX_DEGREE + 1, &[0.0, 1.0]),
+        "MAX_DEGREE",
+        big,
+    );
+    assert_limit(
+        KnotVector::<f64>::uniform(3, limits::MAX_KNOTS - 3, 0.0, 1.0),
+        "MAX_KNOTS",
+        limits::MAX_KNOTS as u128 + 1,
+    );
+    // An order and a degree within MAX_DEGREE whose table is not.
+    let t = KnotVector::clamped_uniform(300, 301, 0.0, 1.0).unwrap();
+    let k = limits::MAX_DEGREE;
+    assert_limit(
+        t.basis_derivatives(&0.5, k),
+        "MAX_BASIS_TABLE",
+        (k as u128 + 1) * 301,
+    );
+}

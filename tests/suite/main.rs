@@ -14,6 +14,7 @@ mod attack_degenerate;
 mod attack_readers;
 mod bezier;
 mod bezier_eval;
+mod bspline_basis;
 mod calipers;
 mod cli;
 mod complexity;

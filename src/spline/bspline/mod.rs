@@ -1,0 +1,58 @@
+//! B-splines: knot vectors and the B-spline basis.
+//!
+//! # The knot convention
+//!
+//! One convention, used by every item of this module: a spline of **degree d with n control
+//! points** c₀, …, c_{n−1} lives on **n + d + 1 knots** t₀ ≤ t₁ ≤ … ≤ t_{n+d}; the basis
+//! function N_i (i = 0, …, n − 1) has support [t_i, t_{i+d+1}], and the spline
+//! s(u) = Σ c_i N_i(u) is defined on its **domain [t_d, t_n]**, where the basis functions sum
+//! to one. The domain is the same formula for clamped vectors (t₀ = … = t_d and
+//! t_n = … = t_{n+d}, whose curves start and end at their end control points) and for
+//! unclamped ones (uniform vectors, whose first and last d knots lie outside the domain). This
+//! is [PPB, §5.7]'s convention (m + 1 B-splines N₀, …, N_m on knots a₀, …, a_{m+n+1}, on
+//! [a_n, a_{m+1}]).
+//!
+//! The course's lecture notes [SPL, §7, §12] count differently: n + N control points of
+//! degree n on 2n + N − 1 knots u₀, …, u_{2n+N−2}, that is control points + degree − 1
+//! knots, without the two end knots t₀ and t_{n+d}, which influence no basis function on the
+//! domain. [`KnotVector::from_spl`] and [`KnotVector::to_spl`] convert (tᵢ₊₁ = uᵢ); a test
+//! checks that both give the same basis.
+//!
+//! # Exactness
+//!
+//! Knots and parameters are compared exactly, never with a tolerance: a knot a few ulps from
+//! another is a distinct knot, with its own (tiny) span, and the multiplicity of a knot is the
+//! number of times that very number occurs. A tolerance would merge distinct knots until a
+//! multiplicity passes d + 1, and would decide differently for `f64` and for the exact
+//! back end; with exact comparisons both decide the same, and with `BigRational` every value
+//! is exact (the partition of unity holds with `==`).
+//!
+//! Values are right-continuous, with the closed last interval: at u = t_n the last non-empty
+//! span is used. In the Cox–de Boor recursion a term whose denominator (a support width) is
+//! zero is zero, the convention 0/0 = 0 of [PPB, §5.3].
+//!
+//! | file | problem | time |
+//! |---|---|---|
+//! | `knots.rs` | [`KnotVector`]: validation, [`clamped_uniform`](KnotVector::clamped_uniform), [`uniform`](KnotVector::uniform), [`averaged`](KnotVector::averaged), [`from_spl`](KnotVector::from_spl), [`multiplicities`](KnotVector::multiplicities), [`domain`](KnotVector::domain), [`span`](KnotVector::span) [PPB, §5.1, §5.4, §5.7], [SPL, §12] | Θ(n + d); span O(log(n − d)) |
+//! | `basis.rs` | [`KnotVector::basis`] ([`Basis`]), [`KnotVector::basis_derivatives`] ([`BasisDerivatives`]) [PPB, §5.3, §5.7] | Θ(d²); O(d² + d·K²) |
+//!
+//! ```
+//! use compgeo::spline::KnotVector;
+//!
+//! // 5 control points of degree 2: 8 knots, domain [t₂, t₅] = [0, 3].
+//! let t = KnotVector::clamped_uniform(2, 5, 0.0, 3.0)?;
+//! assert_eq!(t.knots().len(), 5 + 2 + 1);
+//! let b = t.basis(&1.5)?;
+//! assert_eq!(b.values().iter().sum::<f64>(), 1.0);
+//! # Ok::<(), compgeo::Error>(())
+//! ```
+
+mod basis;
+mod knots;
+
+/// The B-spline algorithms, declared.
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 3] =
+    [&knots::SPAN, &basis::BASIS, &basis::BASIS_DERIVATIVES];
+
+pub use basis::{Basis, BasisDerivatives};
+pub use knots::KnotVector;
