@@ -113,6 +113,8 @@
 //! | `bspline/span`: [`spline::KnotVector::span`] | O(log(n − d)) | O(1) | comparisons: at most ⌈log₂(n − d + 1)⌉ + 1 comparisons with knots, plus 2 for the domain | [PPB, §5.4] | `src/spline/bspline/knots.rs` |
 //! | `bspline/basis`: [`spline::KnotVector::basis`] | Θ(d²) | O(d) | arithmetic operations: exactly d(d + 1)/2 steps of the triangular scheme | [PPB, §5.3] | `src/spline/bspline/basis.rs` |
 //! | `bspline/basis-derivatives`: [`spline::KnotVector::basis_derivatives`] | O(d² + d·K²) | O((k + 1)(d + 1)) | arithmetic operations: exactly d(d + 1)/2 + (d + 1)·K(K + 3)/2 steps, K = min(k, d) | [PPB, §5.7] | `src/spline/bspline/basis.rs` |
+//! | `bspline/de-boor`: [`spline::BSpline::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1)/2 affine combinations per point off the knots, (d − r)(d − r + 1)/2 at a knot of multiplicity r | [PPB, §5.4] | `src/spline/bspline/de_boor.rs` |
+//! | `bspline/insert`: [`spline::BSpline::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly r(d − s) − r(r − 1)/2 affine combinations, s the knot's multiplicity before | [PPB, §6.1] | `src/spline/bspline/insert.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!

@@ -17,6 +17,7 @@
 //! | [`Reparametrised`] | the real line | [`Reparametrised`] | [`Reparametrised`] |
 //! | [`CompositeBezier`] (also Hermite curves and splines) | [u₀, u_m] | [`CompositeBezier`] | [`CompositeBezier`] |
 //! | [`Polynomial`], [`NewtonForm`], [`LagrangeForm`] | the real line | [`Polynomial`] | [`Reparametrised`] |
+//! | [`BSpline`] | [t_d, t_n] | [`BSpline`] (degree d − 1) | not yet |
 //!
 //! | module or file | what it holds |
 //! |---|---|
@@ -24,7 +25,7 @@
 //! | `parse.rs` | [`parse_scalar`]: exact reading of integers, decimals and fractions, bounded by [`MAX_EXACT_DIGITS`] and [`MAX_EXACT_EXPONENT`] |
 //! | `curve.rs` | the curve traits and [`Domain`] |
 //! | [`bezier`] | Bernstein basis, [`Bezier`] and its algorithms (one per file), [`Reparametrised`], [`CompositeBezier`] and its joins, intersection, the evaluation schemes ([`BezierEvaluation`]) |
-//! | [`bspline`] | [`KnotVector`] (validation, builders, multiplicities, domain, span search, the SPL adapter) and the basis ([`Basis`], [`BasisDerivatives`]) |
+//! | [`bspline`] | [`KnotVector`] (validation, builders, multiplicities, domain, span search, the SPL adapter), the basis ([`Basis`], [`BasisDerivatives`]), [`BSpline`] curves with de Boor's algorithm ([`DeBoorTrace`]) and Boehm's insertion |
 //! | [`interpolate`] | polynomial, Lagrange/Aitken, Newton and Hermite interpolation, cubic and quadratic splines, least squares, parameterisations |
 //! | `frenet.rs` | [`FrenetFrame`], [`frenet_frame`], [`bezier_frenet`], [`curvature_vector`], G² checks [`is_g2_join`], [`is_g2`] |
 //!
@@ -58,7 +59,7 @@ pub use bezier::{
     CompositeBezier, Evaluation as BezierEvaluation, Intersection, Join, Reparametrised,
     MAX_FLATTEN_SEGMENTS, MAX_INTERSECTION_PAIRS,
 };
-pub use bspline::{Basis, BasisDerivatives, KnotVector};
+pub use bspline::{BSpline, Basis, BasisDerivatives, DeBoorTrace, KnotVector};
 pub use curve::{Curve, CurveDerivative, Domain, Subsegment};
 pub use frenet::{bezier_frenet, curvature_vector, frenet_frame, is_g2, is_g2_join, FrenetFrame};
 pub use interpolate::{

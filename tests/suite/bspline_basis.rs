@@ -19,7 +19,7 @@ fn step() -> impl Strategy<Value = Q> {
 
 /// A valid exact knot vector of degree 0..=4 with repeated knots: distinct values with
 /// multiplicities 1..=d + 1, n = d + 1..=d + 5 control points.
-fn knot_vector() -> impl Strategy<Value = KnotVector<Q>> {
+pub(crate) fn knot_vector() -> impl Strategy<Value = KnotVector<Q>> {
     (0usize..=4, 1usize..=5).prop_flat_map(|(d, extra)| {
         let n = d + extra;
         let len = n + d + 1;
@@ -44,7 +44,7 @@ fn knot_vector() -> impl Strategy<Value = KnotVector<Q>> {
 }
 
 /// A parameter of the domain: an end, a knot of the domain, or a rational in between.
-fn parameter(t: &KnotVector<Q>) -> impl Strategy<Value = Q> {
+pub(crate) fn parameter(t: &KnotVector<Q>) -> impl Strategy<Value = Q> {
     let (a, b) = (t.bounds().0.clone(), t.bounds().1.clone());
     let inner: Vec<Q> = t
         .knots()

@@ -454,7 +454,7 @@ impl<S: Scalar> KnotVector<S> {
 /// With `f64`, when a difference overflows (knots farther apart than the double range) every
 /// term is halved first, which is exact for the normal numbers such knots are and leaves the
 /// ratios unchanged.
-fn ratios<S: Scalar>(lo: &S, u: &S, hi: &S) -> (S, S) {
+pub(super) fn ratios<S: Scalar>(lo: &S, u: &S, hi: &S) -> (S, S) {
     let width = hi.clone() - lo;
     if width.is_finite() {
         let right = hi.clone() - u;
@@ -470,7 +470,7 @@ fn ratios<S: Scalar>(lo: &S, u: &S, hi: &S) -> (S, S) {
 }
 
 /// x/(hi − lo) for lo < hi; with `f64`, when the width overflows, (x/2)/(hi/2 − lo/2).
-fn quotient<S: Scalar>(x: S, lo: &S, hi: &S) -> S {
+pub(super) fn quotient<S: Scalar>(x: S, lo: &S, hi: &S) -> S {
     let width = hi.clone() - lo;
     if width.is_finite() {
         return x / width;

@@ -1,4 +1,5 @@
-//! B-splines: knot vectors and the B-spline basis.
+//! B-splines: knot vectors, the B-spline basis, and B-spline curves with de Boor's algorithm
+//! and Boehm's knot insertion.
 //!
 //! # The knot convention
 //!
@@ -35,6 +36,9 @@
 //! |---|---|---|
 //! | `knots.rs` | [`KnotVector`]: validation, [`clamped_uniform`](KnotVector::clamped_uniform), [`uniform`](KnotVector::uniform), [`averaged`](KnotVector::averaged), [`from_spl`](KnotVector::from_spl), [`multiplicities`](KnotVector::multiplicities), [`domain`](KnotVector::domain), [`span`](KnotVector::span) [PPB, §5.1, §5.4, §5.7], [SPL, §12] | Θ(n + d); span O(log(n − d)) |
 //! | `basis.rs` | [`KnotVector::basis`] ([`Basis`]), [`KnotVector::basis_derivatives`] ([`BasisDerivatives`]) [PPB, §5.3, §5.7] | Θ(d²); O(d² + d·K²) |
+//! | `curve.rs` | [`BSpline`]: validation, the curve traits, the derivative curve [PPB, §5.6] | Θ(nD); Θ((n + d)D) |
+//! | `de_boor.rs` | [`BSpline::de_boor`], [`BSpline::de_boor_with`], the net [`BSpline::de_boor_trace`] ([`DeBoorTrace`]) [PPB, §5.4] | Θ(d²D) |
+//! | `insert.rs` | [`BSpline::insert`], [`BSpline::insert_with`]: Boehm's insertion, once or r times [PPB, §6.1] | Θ((n + d + rd)D) |
 //!
 //! ```
 //! use compgeo::spline::KnotVector;
@@ -48,11 +52,21 @@
 //! ```
 
 mod basis;
+mod curve;
+mod de_boor;
+mod insert;
 mod knots;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 3] =
-    [&knots::SPAN, &basis::BASIS, &basis::BASIS_DERIVATIVES];
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
+    &knots::SPAN,
+    &basis::BASIS,
+    &basis::BASIS_DERIVATIVES,
+    &de_boor::DE_BOOR,
+    &insert::INSERT,
+];
 
 pub use basis::{Basis, BasisDerivatives};
+pub use curve::BSpline;
+pub use de_boor::DeBoorTrace;
 pub use knots::KnotVector;

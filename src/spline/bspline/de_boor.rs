@@ -1,0 +1,351 @@
+//! De Boor's algorithm: the point s(u) of a B-spline curve by repeated affine combinations of
+//! its control points, and the whole scheme (the de Boor net) as a value.
+//!
+//! The problem: the point s(u) = Σ cᵢ Nᵢ(u) without computing the basis. The idea: on the span
+//! t_μ ≤ u < t_{μ+1} only c_{μ−d}, …, c_μ matter, and the recursion of the basis regroups the
+//! sum into d levels of affine combinations
+//! c_i^k = (1 − α) c_{i−1}^{k−1} + α c_i^{k−1}, α = (u − tᵢ)/(t_{i+d+1−k} − tᵢ),
+//! i = μ − d + k, …, μ, until the one point c_μ^d = s(u) is left [PPB, §5.4]. Each α lies in
+//! [0, 1], so every step is a convex combination. At a knot u = t_μ of multiplicity r the
+//! points c_{μ−r+1}, …, c_μ have basis functions that vanish at u, and the scheme stops r
+//! levels early: c_{μ−r}^{d−r} = s(u) (with r ≥ d, the control point c_{μ−d} itself).
+//!
+//! Follows [PPB, §5.4] (the algorithm and its triangular scheme), [SPL, §6–7] (de Boor's
+//! algorithm as repeated de Casteljau steps on the polar form) and [PPB, §6.1] (its columns
+//! are the control points after inserting u).
+//!
+//! # Complexity
+//!
+//! Θ(d²D) per point after the O(log(n − d)) span search: exactly d(d + 1)/2 affine
+//! combinations when u is not a knot, (d − r)(d − r + 1)/2 at a knot of multiplicity r;
+//! O(dD) auxiliary space (O(d²D) for the trace).
+//!
+//! Invariants the tests check (exactly on rationals): de Boor equals Σ cᵢ Nᵢ(u) from the basis
+//! at every parameter, the counts above, and the net's last point is the curve's.
+
+use super::BSpline;
+use crate::complexity::Declaration;
+use crate::count::{Counter, NoCount, Operation};
+use crate::spline::bspline::basis::ratios;
+use crate::spline::scalar::{Point, Scalar};
+use crate::Result;
+
+/// De Boor's evaluation, declared.
+pub(crate) const DE_BOOR: Declaration = Declaration {
+    problem: "bspline",
+    name: "de-boor",
+    function: "spline::BSpline::de_boor",
+    file: "src/spline/bspline/de_boor.rs",
+    summary: "the point of a B-spline curve by repeated affine combinations of d + 1 control points",
+    time: "Θ(d²D)",
+    space: "O(dD)",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly d(d + 1)/2 affine combinations per point off the knots, (d − r)(d − r + 1)/2 at a knot of multiplicity r",
+    source: "[PPB, §5.4]",
+    claims: &[],
+};
+
+/// The whole scheme of de Boor's algorithm at one parameter (the de Boor net, as the course
+/// draws it [PPB, §5.4, Fig. 5.6]): every intermediate point, level by level.
+///
+/// Level k holds the points c_i^k for i = μ − d + k, …, μ − r (μ the span, r the
+/// multiplicity of u as a knot, at most d): level 0 is the control points the parameter
+/// depends on, the last level the single point s(u). By [PPB, §6.1] the first and the last
+/// point of each level are the new control points after inserting u.
+///
+/// ```
+/// use compgeo::spline::{BSpline, KnotVector, Point};
+///
+/// // The uniform quadratic on 0, 1, …, 5 at u = 2.5: two levels.
+/// let t = KnotVector::new(2, vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0])?;
+/// let c = vec![Point::new([0.0]), Point::new([4.0]), Point::new([8.0])];
+/// let net = BSpline::new(c, t)?.de_boor_trace(&2.5)?;
+/// assert_eq!((net.span(), net.multiplicity(), net.first()), (2, 0, 0));
+/// assert_eq!(net.levels().len(), 3);
+/// assert_eq!(net.level(1), [Point::new([3.0]), Point::new([5.0])]);
+/// assert_eq!(net.point(), &Point::new([4.0]));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct DeBoorTrace<S, const D: usize> {
+    span: usize,
+    multiplicity: usize,
+    levels: Vec<Vec<Point<S, D>>>,
+}
+
+impl<S: Scalar, const D: usize> DeBoorTrace<S, D> {
+    /// The span μ of the parameter (t_μ ≤ u < t_{μ+1}, or the last non-empty span at t_n).
+    ///
+    /// ```
+    /// # use compgeo::spline::{BSpline, KnotVector, Point};
+    /// let s = BSpline::new(vec![Point::new([0.0]); 3], KnotVector::clamped_uniform(1, 3, 0.0, 2.0)?)?;
+    /// assert_eq!(s.de_boor_trace(&1.5)?.span(), 2);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn span(&self) -> usize {
+        self.span
+    }
+
+    /// How many levels were skipped: the multiplicity r of u as a knot t_μ = u (0 when u is
+    /// not a knot, and at the end of the domain), at most d.
+    ///
+    /// ```
+    /// # use compgeo::spline::{BSpline, KnotVector, Point};
+    /// let s = BSpline::new(vec![Point::new([0.0]); 3], KnotVector::clamped_uniform(1, 3, 0.0, 2.0)?)?;
+    /// assert_eq!(s.de_boor_trace(&1.0)?.multiplicity(), 1);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn multiplicity(&self) -> usize {
+        self.multiplicity
+    }
+
+    /// The index μ − d of the first control point of level 0 (the point j of level k is
+    /// c^k_{first + k + j}).
+    ///
+    /// ```
+    /// # use compgeo::spline::{BSpline, KnotVector, Point};
+    /// let s = BSpline::new(vec![Point::new([0.0]); 3], KnotVector::clamped_uniform(1, 3, 0.0, 2.0)?)?;
+    /// assert_eq!(s.de_boor_trace(&1.5)?.first(), 1);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn first(&self) -> usize {
+        self.span + 1 - self.levels[0].len() - self.multiplicity
+    }
+
+    /// The levels 0, …, d − r, each one point shorter than the one before.
+    ///
+    /// ```
+    /// # use compgeo::spline::{BSpline, KnotVector, Point};
+    /// let s = BSpline::new(vec![Point::new([0.0]); 4], KnotVector::clamped_uniform(3, 4, 0.0, 1.0)?)?;
+    /// let lengths: Vec<usize> = s.de_boor_trace(&0.5)?.levels().iter().map(Vec::len).collect();
+    /// assert_eq!(lengths, [4, 3, 2, 1]);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn levels(&self) -> &[Vec<Point<S, D>>] {
+        &self.levels
+    }
+
+    /// The points c^k_{μ−d+k}, …, c^k_{μ−r} of level k.
+    ///
+    /// # Panics
+    ///
+    /// If `k` exceeds d − r (the last level).
+    ///
+    /// ```
+    /// # use compgeo::spline::{BSpline, KnotVector, Point};
+    /// let s = BSpline::new(vec![Point::new([0.0]), Point::new([2.0])], KnotVector::clamped_uniform(1, 2, 0.0, 1.0)?)?;
+    /// assert_eq!(s.de_boor_trace(&0.25)?.level(1), [Point::new([0.5])]);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn level(&self, k: usize) -> &[Point<S, D>] {
+        &self.levels[k]
+    }
+
+    /// The point s(u), the single point of the last level.
+    ///
+    /// ```
+    /// # use compgeo::spline::{BSpline, KnotVector, Point};
+    /// let s = BSpline::new(vec![Point::new([0.0]), Point::new([2.0])], KnotVector::clamped_uniform(1, 2, 0.0, 1.0)?)?;
+    /// assert_eq!(s.de_boor_trace(&0.25)?.point(), &Point::new([0.5]));
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn point(&self) -> &Point<S, D> {
+        &self.levels[self.levels.len() - 1][0]
+    }
+}
+
+impl<S: Scalar, const D: usize> BSpline<S, D> {
+    /// The point s(u) by de Boor's algorithm. See [`BSpline::de_boor_with`].
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) named `"u"` if `u` is NaN,
+    /// infinite or outside the domain [t_d, t_n].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(d²D) time after the O(log(n − d)) span search, O(dD) auxiliary space.
+    ///
+    /// ```
+    /// use compgeo::spline::{BSpline, KnotVector, Point};
+    ///
+    /// let t = KnotVector::new(2, vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0])?;
+    /// let c = vec![Point::new([0.0]), Point::new([4.0]), Point::new([8.0])];
+    /// let s = BSpline::new(c, t)?;
+    /// assert_eq!(s.de_boor(&2.0)?, Point::new([2.0])); // at a knot: the midpoint of c₀c₁
+    /// assert!(s.de_boor(&1.5).is_err()); // outside [t₂, t₃] = [2, 3]
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn de_boor(&self, u: &S) -> Result<Point<S, D>> {
+        self.de_boor_with(u, &mut NoCount)
+    }
+
+    /// The point s(u) by de Boor's algorithm, counting its affine combinations.
+    ///
+    /// Idea: find the span μ, copy c_{μ−d}, …, c_{μ−r} (r the multiplicity of u as the knot
+    /// t_μ, 0 if u is not a knot, at most d) and replace them level by level by the affine
+    /// combinations c_i^k = (1 − α) c_{i−1}^{k−1} + α c_i^{k−1} with
+    /// α = (u − tᵢ)/(t_{i+d+1−k} − tᵢ), each weight computed as its own ratio of two knot
+    /// distances (both in [0, 1], so knots a subnormal distance apart do not overflow). At
+    /// the end of the domain the last non-empty span is used (the closed last interval), and
+    /// at an interior knot the span on its right (right-continuous).
+    ///
+    /// Follows [PPB, §5.4].
+    ///
+    /// # Errors
+    ///
+    /// As [`BSpline::de_boor`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(d²D) time after the O(log(n − d)) span search: exactly d(d + 1)/2 affine combinations
+    /// when u is not a knot (and at the end of the domain), (d − r)(d − r + 1)/2 at a knot of
+    /// multiplicity r (so d(d − 1)/2 at a simple knot and none at a knot of multiplicity d);
+    /// O(dD) auxiliary space.
+    ///
+    /// # Counts
+    ///
+    /// One [`arithmetic_operation`](Counter::arithmetic_operation) per affine combination, and
+    /// the span search's [`comparison`](Counter::comparison)s
+    /// ([`KnotVector::span_with`](super::KnotVector::span_with)).
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{BSpline, KnotVector, Point};
+    ///
+    /// let t = KnotVector::uniform(3, 8, 0.0, 1.0)?;
+    /// let s = BSpline::new((0..8).map(|i| Point::new([i as f64])).collect(), t)?;
+    /// let mut c = Counts::default();
+    /// s.de_boor_with(&0.3, &mut c)?;
+    /// assert_eq!(c.arithmetic_operations, 6); // 3·4/2
+    /// let mut c = Counts::default();
+    /// s.de_boor_with(&0.4, &mut c)?; // a simple knot: one level fewer
+    /// assert_eq!(c.arithmetic_operations, 3);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn de_boor_with<C: Counter>(&self, u: &S, counter: &mut C) -> Result<Point<S, D>> {
+        let (span, r) = self.locate(u, counter)?;
+        let mut q = self.window(span, r);
+        self.de_boor_levels(span, r, u, &mut q, counter, |_| {});
+        Ok(q.pop().expect("the last level has one point"))
+    }
+
+    /// The de Boor net at `u`: every intermediate point of [`BSpline::de_boor`], by level.
+    ///
+    /// # Errors
+    ///
+    /// As [`BSpline::de_boor`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(d²D) time and space (the (d + 1)(d + 2)/2 points of the net).
+    ///
+    /// ```
+    /// use compgeo::spline::{BSpline, KnotVector, Point};
+    ///
+    /// let t = KnotVector::clamped_uniform(2, 3, 0.0, 1.0)?; // a Bézier parabola
+    /// let c = vec![Point::new([0.0, 0.0]), Point::new([1.0, 2.0]), Point::new([2.0, 0.0])];
+    /// let net = BSpline::new(c, t)?.de_boor_trace(&0.5)?;
+    /// assert_eq!(net.level(1), [Point::new([0.5, 1.0]), Point::new([1.5, 1.0])]);
+    /// assert_eq!(net.point(), &Point::new([1.0, 1.0]));
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn de_boor_trace(&self, u: &S) -> Result<DeBoorTrace<S, D>> {
+        let (span, r) = self.locate(u, &mut NoCount)?;
+        let mut q = self.window(span, r);
+        let mut levels = vec![q.clone()];
+        self.de_boor_levels(span, r, u, &mut q, &mut NoCount, |level| {
+            levels.push(level.to_vec());
+        });
+        Ok(DeBoorTrace {
+            span,
+            multiplicity: r,
+            levels,
+        })
+    }
+
+    /// The span μ of `u` (checked) and the multiplicity r ≤ d of u as the knot t_μ.
+    fn locate<C: Counter>(&self, u: &S, counter: &mut C) -> Result<(usize, usize)> {
+        let span = self.knots().span_with(u, counter)?;
+        let t = self.knots().knots();
+        let d = self.degree();
+        let r = (0..d).take_while(|&j| t[span - j] == *u).count();
+        Ok((span, r))
+    }
+
+    /// The control points c_{μ−d}, …, c_{μ−r} of level 0.
+    fn window(&self, span: usize, r: usize) -> Vec<Point<S, D>> {
+        let d = self.degree();
+        self.control()[span - d..=span - r].to_vec()
+    }
+
+    /// Runs levels 1, …, d − r of the scheme on `q` (level 0, d − r + 1 points), calling
+    /// `level` with each level's points; `q` ends as the last level.
+    fn de_boor_levels<C: Counter>(
+        &self,
+        span: usize,
+        r: usize,
+        u: &S,
+        q: &mut Vec<Point<S, D>>,
+        counter: &mut C,
+        mut level: impl FnMut(&[Point<S, D>]),
+    ) {
+        let d = self.degree();
+        let t = self.knots().knots();
+        let m = d - r; // levels to run
+        for k in 1..=m {
+            // After level k, q[k..=m] holds c^k_{μ−d+k}, …, c^k_{μ−r}; go down so each
+            // combination reads level k − 1.
+            for j in (k..=m).rev() {
+                let i = span - d + j;
+                let (lo, hi) = (&t[i], &t[i + d + 1 - k]);
+                let (right, left) = ratios(lo, u, hi);
+                q[j] = Point::combine(&q[j - 1], &right, &q[j], &left);
+                counter.arithmetic_operation();
+            }
+            level(&q[k..]);
+        }
+        q.drain(..m);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::count::Counts;
+    use crate::spline::KnotVector;
+
+    #[test]
+    fn counts_drop_with_the_multiplicity_of_the_knot() {
+        // Degree 3 with knots of multiplicity 1, 2, 3 at 1, 2, 3.
+        let t = KnotVector::new(
+            3,
+            vec![
+                0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 3.0, 3.0, 3.0, 4.0, 4.0, 4.0, 4.0,
+            ],
+        )
+        .unwrap();
+        let s = BSpline::new((0..10).map(|i| Point::new([i as f64])).collect(), t).unwrap();
+        for (u, ops) in [(0.5, 6), (1.0, 3), (2.0, 1), (3.0, 0), (3.5, 6), (4.0, 6)] {
+            let mut c = Counts::default();
+            s.de_boor_with(&u, &mut c).unwrap();
+            assert_eq!(c.arithmetic_operations, ops, "u = {u}");
+            let net = s.de_boor_trace(&u).unwrap();
+            assert_eq!(net.point(), &s.de_boor(&u).unwrap());
+            assert_eq!(net.levels().len(), 4 - net.multiplicity());
+        }
+        // At the triple knot the curve passes through c_{μ−3}.
+        assert_eq!(s.de_boor(&3.0).unwrap(), Point::new([6.0]));
+        assert_eq!(s.de_boor(&4.0).unwrap(), Point::new([9.0]));
+    }
+
+    #[test]
+    fn knots_of_multiplicity_d_plus_one_take_the_right_piece() {
+        let t = KnotVector::new(1, vec![0.0, 0.0, 1.0, 1.0, 2.0, 2.0]).unwrap();
+        let c = [0.0, 1.0, 5.0, 6.0].map(|x| Point::new([x])).to_vec();
+        let s = BSpline::new(c, t).unwrap();
+        assert_eq!(s.de_boor(&1.0).unwrap(), Point::new([5.0]));
+        let net = s.de_boor_trace(&1.0).unwrap();
+        assert_eq!((net.span(), net.multiplicity(), net.first()), (3, 1, 2));
+    }
+}
