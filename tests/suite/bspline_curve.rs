@@ -109,6 +109,15 @@ proptest! {
                     one = one.insert(&u, 1).unwrap();
                 }
                 prop_assert_eq!(&one, &r);
+                // The new control points are the borders of the first r levels of the de
+                // Boor net at u [PPB, §6.1].
+                let net = s.de_boor_trace(&u).unwrap();
+                let (mu, m) = (net.span(), net.multiplicity());
+                for k in 1..=times {
+                    let level = net.level(k);
+                    prop_assert_eq!(&r.control()[mu - d + k], &level[0]);
+                    prop_assert_eq!(&r.control()[mu + times - k - m], level.last().unwrap());
+                }
                 let sm = if s.knots().knots()[s.knots().span(&u).unwrap()] == u { before } else { 0 };
                 let want = times * (d - sm) - times * (times - 1) / 2;
                 prop_assert_eq!(c.arithmetic_operations, want as u64);

@@ -10,7 +10,7 @@
 //! points c_{μ−r+1}, …, c_μ have basis functions that vanish at u, and the scheme stops r
 //! levels early: c_{μ−r}^{d−r} = s(u) (with r ≥ d, the control point c_{μ−d} itself).
 //!
-//! Follows [PPB, §5.4] (the algorithm and its triangular scheme), [SPL, §6–7] (de Boor's
+//! Follows [PPB, §5.4] (the algorithm and its triangular scheme), [SPL, §5, §7] (de Boor's
 //! algorithm as repeated de Casteljau steps on the polar form) and [PPB, §6.1] (its columns
 //! are the control points after inserting u).
 //!
