@@ -6,7 +6,9 @@
 //! collinear), mixed magnitudes from 1e-300 to 1e300, boxes from a few ulps wide to the
 //! whole range of `f64`.
 
-use crate::common::{run_json, set};
+#[cfg(feature = "cli")]
+use crate::common::run_json;
+use crate::common::set;
 use compgeo::delaunay::{voronoi, ClipBox};
 use compgeo::geometry::Point2;
 use num_rational::BigRational;
@@ -247,6 +249,7 @@ fn lattices_with_cocircular_and_collinear_sites() {
     check_against_oracle(&line, &ClipBox::new(0.0, 0.0, 1.0, 1.0).unwrap());
 }
 
+#[cfg(feature = "cli")]
 #[test]
 fn the_issue_commands_give_the_exact_splits() {
     let v = run_json(
