@@ -294,18 +294,32 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         let t = self.knots().knots();
         let m = d - r; // levels to run
         for k in 1..=m {
-            // After level k, q[k..=m] holds c^k_{μ−d+k}, …, c^k_{μ−r}; go down so each
-            // combination reads level k − 1.
-            for j in (k..=m).rev() {
-                let i = span - d + j;
-                let (lo, hi) = (&t[i], &t[i + d + 1 - k]);
-                let (right, left) = ratios(lo, u, hi);
-                q[j] = Point::combine(&q[j - 1], &right, &q[j], &left);
-                counter.arithmetic_operation();
-            }
+            de_boor_level(t, d, span, k, u, q, counter);
             level(&q[k..]);
         }
         q.drain(..m);
+    }
+}
+
+/// Level `k` of the de Boor scheme in place, shared by evaluation and insertion: with
+/// `q[k − 1..]` holding level k − 1 of the points c_{μ−d+k−1}, … (μ = `span`, degree `d`),
+/// afterwards `q[k..]` holds level k. It goes down so each combination reads level k − 1;
+/// one affine combination (counted) per point.
+pub(super) fn de_boor_level<S: Scalar, const D: usize, C: Counter>(
+    t: &[S],
+    d: usize,
+    span: usize,
+    k: usize,
+    u: &S,
+    q: &mut [Point<S, D>],
+    counter: &mut C,
+) {
+    for j in (k..q.len()).rev() {
+        let i = span - d + j;
+        let (lo, hi) = (&t[i], &t[i + d + 1 - k]);
+        let (right, left) = ratios(lo, u, hi);
+        q[j] = Point::combine(&q[j - 1], &right, &q[j], &left);
+        counter.arithmetic_operation();
     }
 }
 

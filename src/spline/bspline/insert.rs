@@ -25,10 +25,10 @@
 //! Invariants the tests check (exactly on rationals): the curve is unchanged at every
 //! parameter, single and repeated insertions agree, and the knots gain exactly r copies of û.
 
+use super::de_boor::de_boor_level;
 use super::{BSpline, KnotVector};
 use crate::complexity::Declaration;
 use crate::count::{Counter, NoCount, Operation};
-use crate::spline::bspline::basis::ratios;
 use crate::spline::scalar::{Point, Scalar};
 use crate::{Error, Result};
 
@@ -162,13 +162,7 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         let m = d - s;
         let mut tail = Vec::with_capacity(r);
         for k in 1..=r {
-            for j in (k..=m).rev() {
-                let i = span - d + j;
-                let (lo, hi) = (&t[i], &t[i + d + 1 - k]);
-                let (right, left) = ratios(lo, u, hi);
-                q[j] = Point::combine(&q[j - 1], &right, &q[j], &left);
-                counter.arithmetic_operation();
-            }
+            de_boor_level(t, d, span, k, u, &mut q, counter);
             if k < r {
                 control.push(q[k].clone());
                 tail.push(q[m].clone());
