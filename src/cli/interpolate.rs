@@ -322,7 +322,7 @@ fn composite_json<S: JsonScalar, const D: usize>(
 }
 
 /// The points of `rows`, each named in errors as `label(index)` ("point 2", "tangent 0").
-fn to_points<S: JsonScalar, const D: usize>(
+pub(super) fn to_points<S: JsonScalar, const D: usize>(
     rows: &[Vec<String>],
     label: impl Fn(usize) -> String,
 ) -> Result<Vec<Point<S, D>>, CliError> {
@@ -363,7 +363,11 @@ fn read_one<S: JsonScalar, const D: usize>(
 }
 
 /// A flat list of numbers, `one` naming an entry ("knot") and `all` the list ("knots").
-fn read_scalars<S: JsonScalar>(text: &str, one: &str, all: &str) -> Result<Vec<S>, CliError> {
+pub(super) fn read_scalars<S: JsonScalar>(
+    text: &str,
+    one: &str,
+    all: &str,
+) -> Result<Vec<S>, CliError> {
     parse_number_list(text, all)?
         .iter()
         .enumerate()

@@ -20,6 +20,7 @@
 //! rule of "Values beyond f64" in `docs/design.md`.
 
 mod bezier;
+mod bspline;
 mod delaunay;
 mod diameter;
 mod error;
@@ -76,6 +77,8 @@ enum Command {
     Diameter(diameter::DiameterArgs),
     /// Bézier curves: evaluate, split, elevate or differentiate, in f64 or exact rationals
     Bezier(bezier::BezierArgs),
+    /// B-spline curves: evaluate (with the de Boor net), insert knots, differentiate, the basis
+    Bspline(bspline::BsplineArgs),
     /// Interpolation: cubic Hermite, C² cubic spline, Lagrange or Newton, in f64 or exact
     Interpolate(interpolate::InterpolateArgs),
     /// Delaunay triangulation of a point set: CCW triangles, hull, merged duplicates
@@ -121,6 +124,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Hull(args) => hull::run(args),
         Command::Diameter(args) => diameter::run(args),
         Command::Bezier(args) => bezier::run(args),
+        Command::Bspline(args) => bspline::run(args),
         Command::Interpolate(args) => interpolate::run(args),
         Command::Delaunay(args) => delaunay::run(args),
         Command::Voronoi(args) => proximity::run_voronoi(args),
@@ -224,7 +228,7 @@ mod tests {
             "{top}"
         );
         assert!(!top.contains("help"), "{top}");
-        for group in ["bezier", "interpolate"] {
+        for group in ["bezier", "bspline", "interpolate"] {
             let text = missing_subcommand(&args(&["compgeo", group]));
             assert!(text.contains(&format!("`compgeo {group}`")), "{text}");
         }
