@@ -147,6 +147,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(graph::entries());
     all.extend(hull::entries());
     all.extend(spline::entries());
+    all.extend(bspline::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
     all
@@ -186,6 +187,7 @@ where
         .collect()
 }
 
+mod bspline;
 mod delaunay;
 mod graph;
 mod hull;

@@ -28,7 +28,7 @@
 //! O((k + 1)(d + 1)) space for the table.
 
 use super::KnotVector;
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::Scalar;
 use crate::{limits, Error, Result};
@@ -492,7 +492,11 @@ pub(crate) const BASIS: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly d(d + 1)/2 steps of the triangular scheme",
     source: "[PPB, §5.3]",
-    claims: &[],
+    claims: &[on(
+        "random-degree",
+        Bound::Quadratic,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// The basis derivatives, declared.

@@ -24,7 +24,7 @@
 //! at every parameter, the counts above, and the net's last point is the curve's.
 
 use super::BSpline;
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::bspline::basis::ratios;
 use crate::spline::scalar::{Point, Scalar};
@@ -42,7 +42,7 @@ pub(crate) const DE_BOOR: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly d(d + 1)/2 affine combinations per point off the knots, (d − r)(d − r + 1)/2 at a knot of multiplicity r",
     source: "[PPB, §5.4]",
-    claims: &[],
+    claims: &[on("random-degree", Bound::Quadratic, Operation::ArithmeticOperations), on("random-control", Bound::Log, Operation::Comparisons)],
 };
 
 /// The whole scheme of de Boor's algorithm at one parameter (the de Boor net, as the course

@@ -27,7 +27,7 @@
 
 use super::de_boor::de_boor_level;
 use super::{BSpline, KnotVector};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{Point, Scalar};
 use crate::{Error, Result};
@@ -44,7 +44,11 @@ pub(crate) const INSERT: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly r(d − s) − r(r − 1)/2 affine combinations, s the knot's multiplicity before",
     source: "[PPB, §6.1]",
-    claims: &[],
+    claims: &[on(
+        "random-degree",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 impl<S: Scalar, const D: usize> BSpline<S, D> {

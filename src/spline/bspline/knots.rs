@@ -15,7 +15,7 @@
 //! Validation and the builders take Θ(n + d) comparisons and field operations (averaging
 //! Θ(n·d)); the span search O(log(n − d)) comparisons.
 
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::curve::Domain;
 use crate::spline::scalar::{validate_parameter, Scalar};
@@ -576,7 +576,7 @@ pub(crate) const SPAN: Declaration = Declaration {
     operation: Some(Operation::Comparisons),
     counts: "at most ⌈log₂(n − d + 1)⌉ + 1 comparisons with knots, plus 2 for the domain",
     source: "[PPB, §5.4]",
-    claims: &[],
+    claims: &[on("random-control", Bound::Log, Operation::Comparisons)],
 };
 
 /// Checks the invariants of [`KnotVector`].

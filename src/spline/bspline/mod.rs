@@ -66,6 +66,14 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
     &insert::INSERT,
 ];
 
+/// The declarations the catalog's entries measure, by name.
+pub(crate) mod declarations {
+    pub(crate) use super::basis::BASIS;
+    pub(crate) use super::de_boor::DE_BOOR;
+    pub(crate) use super::insert::INSERT;
+    pub(crate) use super::knots::SPAN;
+}
+
 pub use basis::{Basis, BasisDerivatives};
 pub use curve::BSpline;
 pub use de_boor::DeBoorTrace;
