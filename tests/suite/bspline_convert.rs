@@ -242,7 +242,13 @@ fn close(a: &[Point<f64, 2>], b: &[Point<Q, 2>], bound: f64) -> Result<(), TestC
         let e = e.to_f64();
         for j in 0..2 {
             prop_assert!(p[j].is_finite(), "{:?}", p);
-            prop_assert!((p[j] - e[j]).abs() <= bound, "{:?} vs {:?} (bound {})", p, e, bound);
+            prop_assert!(
+                (p[j] - e[j]).abs() <= bound,
+                "{:?} vs {:?} (bound {})",
+                p,
+                e,
+                bound
+            );
         }
     }
     Ok(())
@@ -368,7 +374,12 @@ fn huge_and_subnormal_coordinates_give_the_exact_conversion_and_elevation() {
     let c = pairs
         .map(|(x, y)| Point::new([x as f64 * 1e300, y as f64 * 1e300]))
         .to_vec();
-    agrees_with_exact(&BSpline::new(c, u).unwrap(), 1, &[0.0, 0.5, 2.0, 3.0], 1e-13);
+    agrees_with_exact(
+        &BSpline::new(c, u).unwrap(),
+        1,
+        &[0.0, 0.5, 2.0, 3.0],
+        1e-13,
+    );
     // Subnormal coordinates: finite, and within a few units of the smallest subnormal.
     let tiny = f64::from_bits(1);
     let c: Vec<Point<f64, 2>> = [(1, 3), (5, 2), (2, 7), (9, 1), (4, 4)]
@@ -381,7 +392,10 @@ fn huge_and_subnormal_coordinates_give_the_exact_conversion_and_elevation() {
     for (pf, pq) in bf.pieces().iter().zip(bq.pieces()) {
         quanta(pf.control(), pq.control());
     }
-    quanta(s.elevate(1).unwrap().control(), e.elevate(1).unwrap().control());
+    quanta(
+        s.elevate(1).unwrap().control(),
+        e.elevate(1).unwrap().control(),
+    );
 }
 
 #[test]
@@ -414,7 +428,8 @@ fn bad_input_gives_named_errors() {
     let e = BSpline::from_bezier(&b).unwrap_err();
     assert!(
         matches!(e, Error::InvalidParameter { name: "pieces", .. })
-            && e.to_string().contains("piece 1 has degree 1, piece 0 has degree 2"),
+            && e.to_string()
+                .contains("piece 1 has degree 1, piece 0 has degree 2"),
         "{e}"
     );
     // Ends one ulp apart do not match: compared exactly.
@@ -438,7 +453,10 @@ fn bad_input_gives_named_errors() {
     let b = CompositeBezier::new(vec![0.0, 1.0, 3.0], vec![vec![p(1.0)], vec![p(7.0)]]).unwrap();
     let s = BSpline::from_bezier(&b).unwrap();
     assert_eq!(s.knots().knots(), [0.0, 1.0, 3.0]);
-    assert_eq!((s.eval(&0.5).unwrap(), s.eval(&1.0).unwrap()), (p(1.0), p(7.0)));
+    assert_eq!(
+        (s.eval(&0.5).unwrap(), s.eval(&1.0).unwrap()),
+        (p(1.0), p(7.0))
+    );
     // Degrees beyond the limit, and knots beyond the limit, before any allocation.
     let t = KnotVector::clamped_uniform(1, 3, 0.0, 1.0).unwrap();
     let s = BSpline::new(vec![p(0.0), p(1.0), p(3.0)], t).unwrap();
@@ -454,7 +472,13 @@ fn bad_input_gives_named_errors() {
     let s = BSpline::new(vec![p(0.0); 3000], t).unwrap();
     let e = s.elevate(60_000).unwrap_err();
     assert!(
-        matches!(e, Error::LimitExceeded { limit: "MAX_KNOTS", .. }),
+        matches!(
+            e,
+            Error::LimitExceeded {
+                limit: "MAX_KNOTS",
+                ..
+            }
+        ),
         "{e}"
     );
     assert_eq!(s.elevate(0).unwrap(), s);
@@ -559,7 +583,10 @@ fn the_bezier_ordinates_of_ppb_5_12_3() {
     // m + n + 1 becomes its degree-m Bézier points after inserting n + 1, …, m (here n = 2,
     // m = 5), as Zhou's formula gives them.
     let (n, m) = (2usize, 5usize);
-    let knots: Vec<Q> = (0..=n).chain(m + 1..=m + n + 1).map(|k| qi(k as i64)).collect();
+    let knots: Vec<Q> = (0..=n)
+        .chain(m + 1..=m + n + 1)
+        .map(|k| qi(k as i64))
+        .collect();
     let pts: Vec<Point<Q, 2>> = [(0, 0), (3, 6), (9, -3)].map(point).to_vec();
     let mut s = BSpline::new(pts.clone(), KnotVector::new(n, knots).unwrap()).unwrap();
     for k in n + 1..=m {

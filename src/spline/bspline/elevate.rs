@@ -98,7 +98,7 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// let e = s.elevate(1)?;
     /// assert_eq!(e.degree(), 3);
     /// assert_eq!(e.knots().knots(), [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.0, 2.0]);
-    /// assert_eq!(e.control(), [0.0, 4.0, 8.0, 11.0, 10.0, 6.0].map(|x| Point::new([x])));
+    /// assert_eq!(e.control(), [0.0, 4.0, 7.0, 11.0, 10.0, 6.0].map(|x| Point::new([x])));
     /// assert_eq!(e.eval(&0.5)?, s.eval(&0.5)?);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
@@ -221,10 +221,7 @@ fn elevated_knots<S: Scalar>(knots: &KnotVector<S>, times: usize) -> Result<Knot
     let n = knots.control_points();
     let (start, end) = (&t[d], &t[n]);
     let runs = knots.multiplicities();
-    let inside = runs
-        .iter()
-        .filter(|(v, _)| v >= start && v <= end)
-        .count();
+    let inside = runs.iter().filter(|(v, _)| v >= start && v <= end).count();
     let len = t.len() as u128 + times as u128 * inside as u128;
     crate::limits::KNOTS.check(len)?;
     let below = runs.iter().filter(|(v, _)| v < start).count() * times;
