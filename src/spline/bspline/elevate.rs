@@ -124,8 +124,13 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// rounding with `f64` stays small. A basis function that vanishes on the whole domain
     /// (only at an unclamped end whose knot is repeated) takes the end piece's blossom.
     ///
-    /// Follows [PPB, §6.4] (with its index slips corrected as in the [module](self) docs) and
-    /// [PPB, §3.12].
+    /// Follows [PPB, §6.4] and [PPB, §3.12]. The seed's formula in §6.4 has index slips;
+    /// read correctly, one elevation of degree n is
+    /// d_j = 1/(n+1) Σ_{k=1}^{n+1} s[â_{j+1} … (â_{j+k} left out) … â_{j+n+1}] (the argument
+    /// left out is â_{j+k}, not â_k, and the blossom has n arguments). The example of
+    /// Micchelli's formula in [PPB, §6.5] is misprinted: it is
+    /// N¹(u|abc) = ½ (N²(u|aabc) + N²(u|abbc) + N²(u|abcc)), every knot doubled in turn, with
+    /// the factor 1/(n+1) of the formula itself.
     ///
     /// # Errors
     ///
