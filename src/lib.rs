@@ -115,6 +115,9 @@
 //! | `bspline/basis-derivatives`: [`spline::KnotVector::basis_derivatives`] | O(d² + d·K²) | O((k + 1)(d + 1)) | arithmetic operations: exactly d(d + 1)/2 + (d + 1)·K(K + 3)/2 steps, K = min(k, d) | [PPB, §5.7] | `src/spline/bspline/basis.rs` |
 //! | `bspline/de-boor`: [`spline::BSpline::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1)/2 affine combinations per point off the knots, (d − r)(d − r + 1)/2 at a knot of multiplicity r | [PPB, §5.4] | `src/spline/bspline/de_boor.rs` |
 //! | `bspline/insert`: [`spline::BSpline::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly r(d − s) − r(r − 1)/2 affine combinations, s the knot's multiplicity before | [PPB, §6.1] | `src/spline/bspline/insert.rs` |
+//! | `bspline/to-bezier`: [`spline::BSpline::to_bezier`] | Θ(n + d + p·d·D) plus O(n·d²·D) | Θ(p·d·D) | arithmetic operations: exactly Σ (d − m)(d − m + 1)/2 affine combinations over the distinct knots in the domain, m the multiplicity (at most d) | [PPB, §5.10] | `src/spline/bspline/to_bezier.rs` |
+//! | `bspline/from-bezier`: [`spline::BSpline::from_bezier`] | Θ(p·d·D) | Θ(p·d·D) | not counted | [PPB, §5.10] | `src/spline/bspline/to_bezier.rs` |
+//! | `bspline/elevate`: [`spline::BSpline::elevate`] | Θ((n + p·t)(d + t)²·D) | O((n + p·(d + t))D) | arithmetic operations: the conversion's, (d + 1)(t + 1) Zhou terms per piece and exactly (d + t)(d + t + 1)/2 affine combinations per new control point | [PPB, §6.4] | `src/spline/bspline/elevate.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!

@@ -16,6 +16,7 @@ mod bezier;
 mod bezier_eval;
 mod bspline_basis;
 mod bspline_cli;
+mod bspline_convert;
 mod bspline_curve;
 mod calipers;
 mod cli;

@@ -39,6 +39,8 @@
 //! | `curve.rs` | [`BSpline`]: validation, the curve traits, the derivative curve [PPB, §5.6] | Θ(nD); Θ((n + d)D) |
 //! | `de_boor.rs` | [`BSpline::de_boor`], [`BSpline::de_boor_with`], the net [`BSpline::de_boor_trace`] ([`DeBoorTrace`]) [PPB, §5.4] | Θ(d²D) |
 //! | `insert.rs` | [`BSpline::insert`], [`BSpline::insert_with`]: Boehm's insertion, once or r times [PPB, §6.1] | Θ((n + d + rd)D) |
+//! | `to_bezier.rs` | [`BSpline::to_bezier`], [`BSpline::to_bezier_with`] (a [`CompositeBezier`](crate::spline::CompositeBezier) over the distinct knots of the domain), [`BSpline::from_bezier`] (interior knots of multiplicity d) [PPB, §5.10] | Θ(n + d + p·d·D) plus O(n·d²·D); Θ(p·d·D) |
+//! | `elevate.rs` | [`BSpline::elevate`], [`BSpline::elevate_with`]: degree d → d + t, every knot t more times, by blossoms of the elevated Bézier pieces [PPB, §6.4, §6.5] | Θ((n + p·t)(d + t)²·D) |
 //!
 //! ```
 //! use compgeo::spline::KnotVector;
@@ -54,16 +56,21 @@
 mod basis;
 mod curve;
 mod de_boor;
+mod elevate;
 mod insert;
 mod knots;
+mod to_bezier;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 8] = [
     &knots::SPAN,
     &basis::BASIS,
     &basis::BASIS_DERIVATIVES,
     &de_boor::DE_BOOR,
     &insert::INSERT,
+    &to_bezier::TO_BEZIER,
+    &to_bezier::FROM_BEZIER,
+    &elevate::ELEVATE,
 ];
 
 /// The declarations the catalog's entries measure, by name.
