@@ -39,6 +39,9 @@
 //! | `curve.rs` | [`BSpline`]: validation, the curve traits, the derivative curve [PPB, §5.6] | Θ(nD); Θ((n + d)D) |
 //! | `de_boor.rs` | [`BSpline::de_boor`], [`BSpline::de_boor_with`], the net [`BSpline::de_boor_trace`] ([`DeBoorTrace`]) [PPB, §5.4] | Θ(d²D) |
 //! | `insert.rs` | [`BSpline::insert`], [`BSpline::insert_with`]: Boehm's insertion, once or r times [PPB, §6.1] | Θ((n + d + rd)D) |
+//! | `blossom.rs` | [`BSpline::blossom`], [`BSpline::blossom_in_span`] (and `_with`): the polar form of a piece by the extended de Boor algorithm [PPB, §5.5, §5.9], [SPL, §6–7] | Θ(d²D) |
+//! | `greville.rs` | [`KnotVector::greville`], [`KnotVector::marsden`] (Marsden's identity), [`BSpline::graph`] [PPB, §5.8, §5.12 Ex. 4] | Θ(nd) |
+//! | `batch.rs` | [`BSpline::eval_sorted`], [`BSpline::eval_sorted_with`], [`BSpline::eval_sorted_into`]: de Boor at sorted parameters with a forward span walk [PPB, §5.4] | Θ(m·d²D + n) |
 //!
 //! ```
 //! use compgeo::spline::KnotVector;
@@ -52,18 +55,25 @@
 //! ```
 
 mod basis;
+mod batch;
+mod blossom;
 mod curve;
 mod de_boor;
+mod greville;
 mod insert;
 mod knots;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 9] = [
     &knots::SPAN,
     &basis::BASIS,
     &basis::BASIS_DERIVATIVES,
     &de_boor::DE_BOOR,
     &insert::INSERT,
+    &blossom::BLOSSOM,
+    &greville::GREVILLE,
+    &greville::MARSDEN,
+    &batch::EVAL_SORTED,
 ];
 
 pub use basis::{Basis, BasisDerivatives};
