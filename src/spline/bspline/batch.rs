@@ -260,7 +260,9 @@ mod tests {
         )
         .unwrap();
         let s = BSpline::new((0..11).map(|i| Point::new([(i * i) as f64])).collect(), t).unwrap();
-        let us = [0.0, 0.0, 0.5, 1.0, 1.0, 1.5, 2.0, 2.5, 3.0, 3.0, 3.5, 4.0, 4.0];
+        let us = [
+            0.0, 0.0, 0.5, 1.0, 1.0, 1.5, 2.0, 2.5, 3.0, 3.0, 3.5, 4.0, 4.0,
+        ];
         let mut c = Counts::default();
         let got = s.eval_sorted_with(&us, &mut c).unwrap();
         let mut want_ops = 0;

@@ -262,7 +262,10 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         if args.len() != d {
             return Err(Error::InvalidParameter {
                 name: "blossom arguments",
-                reason: format!("a curve of degree {d} needs {d} arguments, got {}", args.len()),
+                reason: format!(
+                    "a curve of degree {d} needs {d} arguments, got {}",
+                    args.len()
+                ),
             });
         }
         for u in args {
@@ -320,7 +323,10 @@ mod tests {
         let s = BSpline::new([0.0, 1.0, 5.0, 6.0].map(|x| Point::new([x])).to_vec(), t).unwrap();
         for span in [0, 2, 4, 9] {
             let e = s.blossom_in_span(span, &[0.5]).unwrap_err();
-            assert!(matches!(e, Error::InvalidParameter { name: "span", .. }), "{e}");
+            assert!(
+                matches!(e, Error::InvalidParameter { name: "span", .. }),
+                "{e}"
+            );
         }
         assert_eq!(s.blossom_in_span(1, &[1.0]).unwrap(), Point::new([1.0]));
         assert_eq!(s.blossom_in_span(3, &[1.0]).unwrap(), Point::new([5.0]));
