@@ -115,6 +115,10 @@
 //! | `bspline/basis-derivatives`: [`spline::KnotVector::basis_derivatives`] | O(d² + d·K²) | O((k + 1)(d + 1)) | arithmetic operations: exactly d(d + 1)/2 + (d + 1)·K(K + 3)/2 steps, K = min(k, d) | [PPB, §5.7] | `src/spline/bspline/basis.rs` |
 //! | `bspline/de-boor`: [`spline::BSpline::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1)/2 affine combinations per point off the knots, (d − r)(d − r + 1)/2 at a knot of multiplicity r | [PPB, §5.4] | `src/spline/bspline/de_boor.rs` |
 //! | `bspline/insert`: [`spline::BSpline::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly r(d − s) − r(r − 1)/2 affine combinations, s the knot's multiplicity before | [PPB, §6.1] | `src/spline/bspline/insert.rs` |
+//! | `bspline/blossom`: [`spline::BSpline::blossom`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1)/2 affine combinations per value | [PPB, §5.5] | `src/spline/bspline/blossom.rs` |
+//! | `bspline/greville`: [`spline::KnotVector::greville`] | Θ(nd) | Θ(n) | not counted | [PPB, §5.8] | `src/spline/bspline/greville.rs` |
+//! | `bspline/marsden`: [`spline::KnotVector::marsden`] | Θ(nd) | Θ(n) | not counted | [PPB, §5.12, Ex. 4] | `src/spline/bspline/greville.rs` |
+//! | `bspline/eval-sorted`: [`spline::BSpline::eval_sorted`] | Θ(m·d²D + n) | O(dD) | arithmetic operations: exactly de Boor's affine combinations at each parameter; at most m + n comparisons for the walk | [PPB, §5.4] | `src/spline/bspline/batch.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!
