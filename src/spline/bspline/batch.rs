@@ -112,7 +112,7 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// let t = KnotVector::uniform(3, 8, 0.0, 1.0)?;
     /// let s = BSpline::new((0..8).map(|i| Point::new([i as f64])).collect(), t)?;
     /// let mut c = Counts::default();
-    /// let us: Vec<f64> = (0..100).map(|k| k as f64 / 99.0).collect();
+    /// let us: Vec<f64> = (0..100).map(|k| (k as f64 + 0.5) / 100.0).collect();
     /// s.eval_sorted_with(&us, &mut c)?;
     /// assert_eq!(c.arithmetic_operations, 100 * 6); // no parameter is a knot
     /// assert!(c.comparisons <= 100 + 8 + 2 * 4);

@@ -71,10 +71,10 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     ///
     /// // s(u) = u² on [0, 2] as a clamped quadratic with a knot at 1: its blossom is u₁u₂.
     /// let t = KnotVector::new(2, vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0])?;
-    /// let c = [0.0, 0.0, 1.0, 4.0].map(|x| Point::new([x])).to_vec();
+    /// let c = [0.0, 0.0, 2.0, 4.0].map(|x| Point::new([x])).to_vec();
     /// let s = BSpline::new(c, t)?;
     /// assert_eq!(s.blossom(&[0.5, 1.5])?, Point::new([0.75]));
-    /// assert_eq!(s.blossom(&[1.0, 2.0])?, s.control()[3]); // c₃ = s[t₄, t₅]
+    /// assert_eq!(s.blossom(&[1.0, 2.0])?, s.control()[2]); // c₂ = s[t₃, t₄]
     /// assert_eq!(s.blossom(&[1.5, 1.5])?, s.eval(&1.5)?);
     /// assert!(s.blossom(&[1.0]).is_err()); // degree 2 takes two arguments
     /// # Ok::<(), compgeo::Error>(())
