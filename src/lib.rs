@@ -118,6 +118,10 @@
 //! | `bspline/to-bezier`: [`spline::BSpline::to_bezier`] | Θ(n + d + p·d·D) plus O(n·d²·D) | Θ(p·d·D) | arithmetic operations: exactly Σ (d − m)(d − m + 1)/2 affine combinations over the distinct knots in the domain, m the multiplicity (at most d) | [PPB, §5.10] | `src/spline/bspline/to_bezier.rs` |
 //! | `bspline/from-bezier`: [`spline::BSpline::from_bezier`] | Θ(p·d·D) | Θ(p·d·D) | not counted | [PPB, §5.10] | `src/spline/bspline/to_bezier.rs` |
 //! | `bspline/elevate`: [`spline::BSpline::elevate`] | Θ((n + p·t)(d + t)²·D) | O((n + p·(d + t))D) | arithmetic operations: the conversion's, (d + 1)(t + 1) Zhou terms per piece and exactly (d + t)(d + t + 1)/2 affine combinations per new control point | [PPB, §6.4] | `src/spline/bspline/elevate.rs` |
+//! | `bspline/blossom`: [`spline::BSpline::blossom`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1)/2 affine combinations per value | [PPB, §5.5] | `src/spline/bspline/blossom.rs` |
+//! | `bspline/greville`: [`spline::KnotVector::greville`] | Θ(nd) | Θ(n) | not counted | [PPB, §5.8] | `src/spline/bspline/greville.rs` |
+//! | `bspline/marsden`: [`spline::KnotVector::marsden`] | Θ(nd) | Θ(n) | not counted | [PPB, §5.12, Ex. 4] | `src/spline/bspline/greville.rs` |
+//! | `bspline/eval-sorted`: [`spline::BSpline::eval_sorted`] | Θ(m·d²D + n) | O(dD) | arithmetic operations: exactly de Boor's affine combinations at each parameter; at most m + n comparisons for the walk | [PPB, §5.4] | `src/spline/bspline/batch.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!

@@ -15,6 +15,7 @@ mod attack_readers;
 mod bezier;
 mod bezier_eval;
 mod bspline_basis;
+mod bspline_blossom;
 mod bspline_cli;
 mod bspline_convert;
 mod bspline_curve;

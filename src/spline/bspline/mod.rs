@@ -41,6 +41,9 @@
 //! | `insert.rs` | [`BSpline::insert`], [`BSpline::insert_with`]: Boehm's insertion, once or r times [PPB, §6.1] | Θ((n + d + rd)D) |
 //! | `to_bezier.rs` | [`BSpline::to_bezier`], [`BSpline::to_bezier_with`] (a [`CompositeBezier`](crate::spline::CompositeBezier) over the distinct knots of the domain), [`BSpline::from_bezier`] (interior knots of multiplicity d) [PPB, §5.10] | Θ(n + d + p·d·D) plus O(n·d²·D); Θ(p·d·D) |
 //! | `elevate.rs` | [`BSpline::elevate`], [`BSpline::elevate_with`]: degree d → d + t, every knot t more times, by blossoms of the elevated Bézier pieces [PPB, §6.4, §6.5] | Θ((n + p·t)(d + t)²·D) |
+//! | `blossom.rs` | [`BSpline::blossom`], [`BSpline::blossom_in_span`] (and `_with`): the polar form of a piece by the extended de Boor algorithm [PPB, §5.5, §5.9], [SPL, §6–7] | Θ(d²D) |
+//! | `greville.rs` | [`KnotVector::greville`], [`KnotVector::marsden`] (Marsden's identity), [`BSpline::graph`] [PPB, §5.8, §5.12 Ex. 4] | Θ(nd) |
+//! | `batch.rs` | [`BSpline::eval_sorted`], [`BSpline::eval_sorted_with`], [`BSpline::eval_sorted_into`]: de Boor at sorted parameters with a forward span walk [PPB, §5.4] | Θ(m·d²D + n) |
 //!
 //! ```
 //! use compgeo::spline::KnotVector;
@@ -54,15 +57,18 @@
 //! ```
 
 mod basis;
+mod batch;
+mod blossom;
 mod curve;
 mod de_boor;
 mod elevate;
+mod greville;
 mod insert;
 mod knots;
 mod to_bezier;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 8] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 12] = [
     &knots::SPAN,
     &basis::BASIS,
     &basis::BASIS_DERIVATIVES,
@@ -71,6 +77,10 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 8] = [
     &to_bezier::TO_BEZIER,
     &to_bezier::FROM_BEZIER,
     &elevate::ELEVATE,
+    &blossom::BLOSSOM,
+    &greville::GREVILLE,
+    &greville::MARSDEN,
+    &batch::EVAL_SORTED,
 ];
 
 /// The declarations the catalog's entries measure, by name.
