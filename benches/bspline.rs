@@ -223,9 +223,25 @@ fn bench_eval(c: &mut Criterion) {
             })
         })
     });
-    // The batch variant goes here (issue 14, "batch evaluation at sorted parameters"):
-    // `compgeo_eval_sorted`, `BSpline::eval_sorted` on the same `ts`, returning the same
-    // coordinate sum.
+    // The batch variant: one span search and a forward walk for the whole sorted list, into
+    // a buffer kept across iterations (the points equal `de_boor`'s bit for bit).
+    let mut out = Vec::with_capacity(ts.len());
+    ours.eval_sorted_into(&ts, &mut out)
+        .expect("sorted, in the domain");
+    for (i, &t) in ts.iter().enumerate().step_by(997) {
+        assert_eq!(
+            out[i],
+            ours.de_boor(&t).expect("in the domain"),
+            "eval_sorted at {t}"
+        );
+    }
+    group.bench_function("compgeo_eval_sorted", |b| {
+        b.iter(|| {
+            ours.eval_sorted_into(black_box(&ts), &mut out)
+                .expect("sorted, in the domain");
+            out.iter().map(|q| q[0] + q[1]).sum::<f64>()
+        })
+    });
     group.bench_function("truck_subs", |b| {
         b.iter(|| {
             coordinate_sum(black_box(&ts), |t| {
