@@ -115,6 +115,9 @@
 //! | `bspline/basis-derivatives`: [`spline::KnotVector::basis_derivatives`] | O(d² + d·K²) | O((k + 1)(d + 1)) | arithmetic operations: exactly d(d + 1)/2 + (d + 1)·K(K + 3)/2 steps, K = min(k, d) | [PPB, §5.7] | `src/spline/bspline/basis.rs` |
 //! | `bspline/de-boor`: [`spline::BSpline::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1)/2 affine combinations per point off the knots, (d − r)(d − r + 1)/2 at a knot of multiplicity r | [PPB, §5.4] | `src/spline/bspline/de_boor.rs` |
 //! | `bspline/insert`: [`spline::BSpline::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly r(d − s) − r(r − 1)/2 affine combinations, s the knot's multiplicity before | [PPB, §6.1] | `src/spline/bspline/insert.rs` |
+//! | `rational-bezier/de-casteljau`: [`spline::RationalBezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1) affine combinations per point: n(n + 1)/2 on the weighted points and as many on the weights | [SPL, §14] | `src/spline/rational/bezier.rs` |
+//! | `nurbs/de-boor`: [`spline::Nurbs::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1) affine combinations per point off the knots, (d − r)(d − r + 1) at a knot of multiplicity r | [SPL, §14] | `src/spline/rational/nurbs.rs` |
+//! | `nurbs/insert`: [`spline::Nurbs::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly 2(r(d − s) − r(r − 1)/2) affine combinations, s the knot's multiplicity before | [SPL, §14] | `src/spline/rational/nurbs.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!
