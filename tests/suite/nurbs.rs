@@ -445,7 +445,7 @@ fn the_circle_in_f64_is_round_and_passes_the_axis_points() {
         assert_eq!(c.eval(&(k as f64)).unwrap(), Point::new([*x, *y]));
     }
     for k in 0..=400 {
-        let p = c.eval(&(k as f64 / 100.0)).unwrap() - &Point::new([0.5, -0.25]);
+        let p = c.eval(&(k as f64 / 100.0)).unwrap() - Point::new([0.5, -0.25]);
         assert!(
             (p.norm_squared().sqrt() - 3.0).abs() <= 2e-15 * 3.0,
             "{k}: {p:?}"
