@@ -122,6 +122,9 @@
 //! | `bspline/greville`: [`spline::KnotVector::greville`] | Θ(nd) | Θ(n) | not counted | [PPB, §5.8] | `src/spline/bspline/greville.rs` |
 //! | `bspline/marsden`: [`spline::KnotVector::marsden`] | Θ(nd) | Θ(n) | not counted | [PPB, §5.12, Ex. 4] | `src/spline/bspline/greville.rs` |
 //! | `bspline/eval-sorted`: [`spline::BSpline::eval_sorted`] | Θ(m·d²D + n) | O(dD) | arithmetic operations: exactly de Boor's affine combinations at each parameter; at most m + n comparisons for the walk | [PPB, §5.4] | `src/spline/bspline/batch.rs` |
+//! | `rational-bezier/de-casteljau`: [`spline::RationalBezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1) affine combinations per point: n(n + 1)/2 on the weighted points and as many on the weights | [SPL, §14] | `src/spline/rational/bezier.rs` |
+//! | `nurbs/de-boor`: [`spline::Nurbs::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1) affine combinations per point off the knots, (d − r)(d − r + 1) at a knot of multiplicity r | [SPL, §14] | `src/spline/rational/nurbs.rs` |
+//! | `nurbs/insert`: [`spline::Nurbs::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly 2(r(d − s) − r(r − 1)/2) affine combinations, s the knot's multiplicity before | [SPL, §14] | `src/spline/rational/nurbs.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!

@@ -18,6 +18,8 @@
 //! | [`CompositeBezier`] (also Hermite curves and splines) | [u₀, u_m] | [`CompositeBezier`] | [`CompositeBezier`] |
 //! | [`Polynomial`], [`NewtonForm`], [`LagrangeForm`] | the real line | [`Polynomial`] | [`Reparametrised`] |
 //! | [`BSpline`] | [t_d, t_n] | [`BSpline`] (degree d − 1) | not yet |
+//! | [`RationalBezier`] | [0, 1] | [`RationalBezier`] (degree 2n) | not yet |
+//! | [`Nurbs`] | [t_d, t_n] | [`NurbsDerivative`] (by the quotient rule) | not yet |
 //!
 //! | module or file | what it holds |
 //! |---|---|
@@ -26,6 +28,7 @@
 //! | `curve.rs` | the curve traits and [`Domain`] |
 //! | [`bezier`] | Bernstein basis, [`Bezier`] and its algorithms (one per file), [`Reparametrised`], [`CompositeBezier`] and its joins, intersection, the evaluation schemes ([`BezierEvaluation`]) |
 //! | [`bspline`] | [`KnotVector`] (validation, builders, multiplicities, domain, span search, the SPL adapter), the basis ([`Basis`], [`BasisDerivatives`]), [`BSpline`] curves with de Boor's algorithm ([`DeBoorTrace`]) and Boehm's insertion |
+//! | [`rational`] | [`RationalBezier`] and [`Nurbs`] in homogeneous coordinates (de Casteljau, de Boor, insertion, derivatives by the quotient rule), exact conics ([`Nurbs::circle`], [`RationalBezier::circular_arc`], [`ConicKind`]) |
 //! | [`interpolate`] | polynomial, Lagrange/Aitken, Newton and Hermite interpolation, cubic and quadratic splines, least squares, parameterisations |
 //! | `frenet.rs` | [`FrenetFrame`], [`frenet_frame`], [`bezier_frenet`], [`curvature_vector`], G² checks [`is_g2_join`], [`is_g2`] |
 //!
@@ -42,6 +45,7 @@ mod curve;
 mod frenet;
 pub mod interpolate;
 mod parse;
+pub mod rational;
 mod scalar;
 
 /// The curve algorithms that are not a choice among evaluation schemes, declared: the Bézier
@@ -51,6 +55,7 @@ pub(crate) fn declarations() -> impl Iterator<Item = &'static crate::complexity:
         .into_iter()
         .chain(interpolate::DECLARATIONS)
         .chain(bspline::DECLARATIONS)
+        .chain(rational::DECLARATIONS)
         .chain([&frenet::FRENET])
 }
 
@@ -71,4 +76,5 @@ pub use interpolate::{
 #[cfg(feature = "cli")]
 pub(crate) use parse::{parse_f64, parse_f64_or_word, read_scalar};
 pub use parse::{parse_scalar, ParseScalar, MAX_EXACT_DIGITS, MAX_EXACT_EXPONENT};
+pub use rational::{ConicKind, Nurbs, NurbsDerivative, RationalBezier};
 pub use scalar::{binomial, validate_parameter, validate_points, Finite, Point, Scalar};

@@ -36,6 +36,7 @@ mod hull;
 mod interpolate;
 mod interpolate_cli;
 mod limits;
+mod nurbs;
 mod overflow;
 mod predicates;
 mod proximity;
