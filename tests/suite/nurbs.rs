@@ -652,3 +652,54 @@ fn huge_and_subnormal_weights_give_the_same_curve() {
         );
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Elevation and the rational Bézier pieces leave the rational curve identical at every
+    /// sample, exactly; the pieces' breakpoints are the distinct knots of the domain.
+    #[test]
+    fn elevation_and_bezier_pieces_keep_the_curve(s in nurbs(), times in 1usize..=2) {
+        let e = s.elevate(times).unwrap();
+        prop_assert_eq!(e.degree(), s.degree() + times);
+        prop_assert!(e.weights().iter().all(|w| *w > qi(0)));
+        let (breaks, pieces) = s.to_bezier().unwrap();
+        prop_assert_eq!(breaks.len(), pieces.len() + 1);
+        for u in samples(s.knots()) {
+            let want = s.eval(&u).unwrap();
+            prop_assert_eq!(&e.eval(&u).unwrap(), &want);
+            // The piece over [a, b] containing u, at the local parameter (u − a)/(b − a); at
+            // a breakpoint both neighbours give the point (the curve is continuous for
+            // multiplicities up to d).
+            for (k, w) in breaks.windows(2).enumerate() {
+                if w[0] <= u && u <= w[1] && s.knots().multiplicity(&w[0]) <= s.degree()
+                    && s.knots().multiplicity(&w[1]) <= s.degree()
+                {
+                    let local = (u.clone() - &w[0]) / (w[1].clone() - &w[0]);
+                    prop_assert_eq!(&pieces[k].eval(&local).unwrap(), &want, "piece {}", k);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_elevated_circle_is_still_exactly_round() {
+    let r = q(5, 2);
+    let c = Nurbs::circle(Point::new([qi(1), q(-1, 3)]), r.clone()).unwrap();
+    let e = c.elevate(1).unwrap();
+    let (_, quarters) = c.to_bezier().unwrap();
+    assert_eq!(quarters.len(), 4);
+    for k in 0..=32 {
+        let u = q(k, 8);
+        let p = e.eval(&u).unwrap();
+        let (x, y) = (p[0].clone() - qi(1), p[1].clone() + q(1, 3));
+        assert_eq!(x.clone() * &x + y.clone() * &y, r.clone() * &r, "at {u}");
+        let piece = usize::try_from(k.min(31) / 8).unwrap();
+        let local = u - qi(i64::try_from(piece).unwrap());
+        assert_eq!(
+            quarters[piece].eval(&local).unwrap(),
+            c.eval(&q(k, 8)).unwrap()
+        );
+    }
+}

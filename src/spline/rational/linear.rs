@@ -1,0 +1,177 @@
+//! The linear operations of a NURBS curve, by the B-spline operations on its homogeneous form:
+//! degree elevation and the conversion to rational Bézier pieces.
+//!
+//! Both are linear in the control points and depend on the knots only, so applied to the
+//! weighted points Σ wᵢcᵢNᵢ and to the weights Σ wᵢNᵢ (the two halves of
+//! [`Nurbs::homogeneous`]) they give the homogeneous form of the same rational curve in the
+//! new representation [SPL, §14]. The weights of the result stay positive: elevation and
+//! knot insertion make each new weight a convex combination of old ones.
+//!
+//! # Complexity
+//!
+//! Twice the B-spline operation: [`BSpline::elevate`](crate::spline::BSpline::elevate) and
+//! [`BSpline::to_bezier`](crate::spline::BSpline::to_bezier), once with D coordinates and once
+//! with one.
+
+use super::{Nurbs, RationalBezier};
+use crate::complexity::Declaration;
+use crate::count::{Counter, NoCount, Operation};
+use crate::spline::scalar::Scalar;
+use crate::Result;
+
+/// NURBS degree elevation, declared.
+pub(crate) const NURBS_ELEVATE: Declaration = Declaration {
+    problem: "nurbs",
+    name: "elevate",
+    function: "spline::Nurbs::elevate",
+    file: "src/spline/rational/linear.rs",
+    summary: "the same rational curve in a higher degree, by B-spline elevation of both homogeneous halves",
+    time: "Θ((n + p·t)(d + t)²·D)",
+    space: "O((n + p·(d + t))D)",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "B-spline elevation's count for D + 1 coordinates, as two curves",
+    source: "[SPL, §14]",
+    claims: &[],
+};
+
+/// NURBS to rational Bézier pieces, declared.
+pub(crate) const NURBS_TO_BEZIER: Declaration = Declaration {
+    problem: "nurbs",
+    name: "to-bezier",
+    function: "spline::Nurbs::to_bezier",
+    file: "src/spline/rational/linear.rs",
+    summary: "the rational Bézier pieces of a NURBS curve, one per non-empty span of the domain",
+    time: "Θ(n + d + p·d·D) plus O(n·d²·D)",
+    space: "Θ(p·d·D)",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "B-spline conversion's count, as two curves",
+    source: "[SPL, §14]",
+    claims: &[],
+};
+
+impl<S: Scalar, const D: usize> Nurbs<S, D> {
+    /// The same curve of degree d + `times`. See [`Nurbs::elevate_with`].
+    ///
+    /// # Errors
+    ///
+    /// As [`BSpline::elevate`](crate::spline::BSpline::elevate); [`Error::Overflow`](crate::Error::Overflow)
+    /// if, with `f64`, a control point (a quotient) is beyond the double range.
+    ///
+    /// # Complexity
+    ///
+    /// Θ((n + p·t)(d + t)²·D) time for p non-empty spans and t = `times`.
+    ///
+    /// ```
+    /// use compgeo::spline::{Curve, Nurbs, Point};
+    ///
+    /// let c = Nurbs::circle(Point::new([0.0, 0.0]), 5.0)?;
+    /// let e = c.elevate(1)?;
+    /// assert_eq!(e.degree(), 3);
+    /// let p = e.eval(&2.5)?;
+    /// assert!((p[0] + 3.0).abs() < 1e-12 && (p[1] + 4.0).abs() < 1e-12);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn elevate(&self, times: usize) -> Result<Self> {
+        self.elevate_with(times, &mut NoCount)
+    }
+
+    /// [`Nurbs::elevate`], counting what
+    /// [`BSpline::elevate_with`](crate::spline::BSpline::elevate_with) counts for the weighted
+    /// points and for the weights.
+    ///
+    /// # Errors
+    ///
+    /// As [`Nurbs::elevate`].
+    ///
+    /// # Complexity
+    ///
+    /// As [`Nurbs::elevate`].
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{KnotVector, Nurbs, Point};
+    ///
+    /// let t = KnotVector::clamped_uniform(2, 3, 0.0, 1.0)?;
+    /// let c = vec![Point::new([0.0, 0.0]), Point::new([1.0, 1.0]), Point::new([2.0, 0.0])];
+    /// let s = Nurbs::new(c, vec![1.0, 2.0, 1.0], t)?;
+    /// let mut n = Counts::default();
+    /// assert_eq!(s.elevate_with(1, &mut n)?.control().len(), 4);
+    /// assert!(n.arithmetic_operations > 0);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn elevate_with<C: Counter>(&self, times: usize, counter: &mut C) -> Result<Self> {
+        let (numerator, denominator) = self.homogeneous();
+        let numerator = numerator.elevate_with(times, counter)?;
+        let denominator = denominator.elevate_with(times, counter)?;
+        Nurbs::from_homogeneous(numerator, denominator)
+    }
+
+    /// The rational Bézier pieces, one per non-empty span [t_i, t_{i+1}] of the domain, each
+    /// on [0, 1] (the piece over [a, b] at s is the curve at a + s(b − a)). See
+    /// [`Nurbs::to_bezier_with`].
+    ///
+    /// # Errors
+    ///
+    /// As [`BSpline::to_bezier`](crate::spline::BSpline::to_bezier);
+    /// [`Error::Overflow`](crate::Error::Overflow) if, with `f64`, a control point is beyond
+    /// the double range.
+    ///
+    /// # Complexity
+    ///
+    /// Twice B-spline conversion: Θ(n + d + p·d·D) plus O(n·d²·D) for p pieces.
+    ///
+    /// ```
+    /// use compgeo::spline::{Curve, Nurbs, Point};
+    ///
+    /// let c = Nurbs::circle(Point::new([0.0, 0.0]), 1.0)?;
+    /// let (breaks, quarters) = c.to_bezier()?;
+    /// assert_eq!(breaks, [0.0, 1.0, 2.0, 3.0, 4.0]);
+    /// assert_eq!(quarters.len(), 4);
+    /// assert_eq!(quarters[0].eval(&0.5)?, c.eval(&0.5)?);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn to_bezier(&self) -> Result<(Vec<S>, Vec<RationalBezier<S, D>>)> {
+        self.to_bezier_with(&mut NoCount)
+    }
+
+    /// [`Nurbs::to_bezier`], counting what
+    /// [`BSpline::to_bezier_with`](crate::spline::BSpline::to_bezier_with) counts for the
+    /// weighted points and for the weights. Returns the breakpoints (the distinct knots of
+    /// the domain) and the pieces between them.
+    ///
+    /// # Errors
+    ///
+    /// As [`Nurbs::to_bezier`].
+    ///
+    /// # Complexity
+    ///
+    /// As [`Nurbs::to_bezier`].
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{KnotVector, Nurbs, Point};
+    ///
+    /// let t = KnotVector::new(2, vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0])?;
+    /// let c = vec![Point::new([0.0]), Point::new([1.0]), Point::new([3.0]), Point::new([4.0])];
+    /// let mut n = Counts::default();
+    /// let (breaks, pieces) = Nurbs::new(c, vec![1.0, 3.0, 3.0, 1.0], t)?.to_bezier_with(&mut n)?;
+    /// assert_eq!((breaks.len(), pieces.len()), (3, 2));
+    /// assert_eq!(n.arithmetic_operations, 2); // one affine combination per half
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn to_bezier_with<C: Counter>(
+        &self,
+        counter: &mut C,
+    ) -> Result<(Vec<S>, Vec<RationalBezier<S, D>>)> {
+        let (numerator, denominator) = self.homogeneous();
+        let numerator = numerator.to_bezier_with(counter)?;
+        let denominator = denominator.to_bezier_with(counter)?;
+        let pieces = numerator
+            .pieces()
+            .iter()
+            .zip(denominator.pieces())
+            .map(|(a, w)| RationalBezier::from_homogeneous(a.clone(), w.clone()))
+            .collect::<Result<Vec<_>>>()?;
+        Ok((numerator.partition().to_vec(), pieces))
+    }
+}
