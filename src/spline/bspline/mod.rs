@@ -1,5 +1,5 @@
-//! B-splines: knot vectors, the B-spline basis, and B-spline curves with de Boor's algorithm
-//! and Boehm's knot insertion.
+//! B-splines: knot vectors, the B-spline basis, and B-spline curves with de Boor's algorithm,
+//! Boehm's knot insertion, the Oslo refinement, knot removal and splitting.
 //!
 //! # The knot convention
 //!
@@ -39,6 +39,9 @@
 //! | `curve.rs` | [`BSpline`]: validation, the curve traits, the derivative curve [PPB, §5.6] | Θ(nD); Θ((n + d)D) |
 //! | `de_boor.rs` | [`BSpline::de_boor`], [`BSpline::de_boor_with`], the net [`BSpline::de_boor_trace`] ([`DeBoorTrace`]) [PPB, §5.4] | Θ(d²D) |
 //! | `insert.rs` | [`BSpline::insert`], [`BSpline::insert_with`]: Boehm's insertion, once or r times [PPB, §6.1] | Θ((n + d + rd)D) |
+//! | `refine.rs` | [`BSpline::refine`], [`BSpline::refine_with`]: the Oslo algorithm, m knots at once by the discrete B-splines [PPB, §6.2] | O(m log m + (n + m)D + md(d² + dD + log n)) |
+//! | `remove.rs` | [`BSpline::remove`], [`BSpline::remove_within`] and their `_with` forms: knot removal, exact or within a distance, checked by re-insertion [PPB, §6.1] | O(r²(n + d)D) |
+//! | `split.rs` | [`BSpline::split`], [`BSpline::split_with`]: the two pieces at a parameter, clamped at the cut [PPB, §6.1] | Θ((n + d²)D) |
 //!
 //! ```
 //! use compgeo::spline::KnotVector;
@@ -56,14 +59,20 @@ mod curve;
 mod de_boor;
 mod insert;
 mod knots;
+mod refine;
+mod remove;
+mod split;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 8] = [
     &knots::SPAN,
     &basis::BASIS,
     &basis::BASIS_DERIVATIVES,
     &de_boor::DE_BOOR,
     &insert::INSERT,
+    &refine::REFINE,
+    &remove::REMOVE,
+    &split::SPLIT,
 ];
 
 pub use basis::{Basis, BasisDerivatives};
