@@ -243,7 +243,12 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
 /// The widest non-empty span [t_μ, t_{μ+1}) of the domain that meets [lo, hi), starting from
 /// the span of lo (clamped into the domain, so the first or last span serves a basis function
 /// that vanishes on the whole domain).
-fn widest_span<S: Scalar, C: Counter>(knots: &KnotVector<S>, lo: &S, hi: &S, counter: &mut C) -> usize {
+fn widest_span<S: Scalar, C: Counter>(
+    knots: &KnotVector<S>,
+    lo: &S,
+    hi: &S,
+    counter: &mut C,
+) -> usize {
     let (start, end) = knots.bounds();
     let clamped = if lo < start {
         start
@@ -321,7 +326,10 @@ mod tests {
             assert_eq!(r.eval(&u).unwrap(), s.eval(&u).unwrap());
         }
         let e = s.refine(&[2.5, f64::NAN]).unwrap_err();
-        assert_eq!(e.to_string(), "invalid new_knots: new knot 1 is not finite (NaN)");
+        assert_eq!(
+            e.to_string(),
+            "invalid new_knots: new knot 1 is not finite (NaN)"
+        );
         let e = s.refine(&[1.5]).unwrap_err();
         assert_eq!(
             e.to_string(),
@@ -329,7 +337,10 @@ mod tests {
         );
         assert!(s.refine(&[3.0, 3.0]).is_ok());
         let e = s.refine(&[3.0, 3.0, 3.0]).unwrap_err();
-        assert!(e.to_string().contains("knot 3 would have multiplicity 3"), "{e}");
+        assert!(
+            e.to_string().contains("knot 3 would have multiplicity 3"),
+            "{e}"
+        );
         assert_eq!(s.refine(&[]).unwrap(), s);
     }
 }

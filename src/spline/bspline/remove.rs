@@ -273,10 +273,7 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
             if let Some((j, far)) = first_mismatch(&back, self.control(), tolerance) {
                 let have = d as i64 - s as i64 + k as i64 - 1;
                 let continuity = if S::EXACT {
-                    format!(
-                        "the curve is C^{have} there, not C^{}",
-                        have + 1
-                    )
+                    format!("the curve is C^{have} there, not C^{}", have + 1)
                 } else {
                     format!(
                         "with rounded arithmetic the curve is not shown to be C^{} there",

@@ -61,7 +61,7 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ((n + d²)D) time and space.
+    /// Θ((n + d²)D) time, O((n + d²)D) space.
     ///
     /// ```
     /// use compgeo::spline::{BSpline, Curve, KnotVector, Point};
@@ -99,7 +99,7 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ((n + d²)D) time and space.
+    /// Θ((n + d²)D) time, O((n + d²)D) space.
     ///
     /// # Counts
     ///
