@@ -143,7 +143,8 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// The tolerance is a Euclidean distance between control points (in the units of the
     /// coordinates), not a tolerance on knots: the knots stay exact, and `u` must be one of
     /// them. The original curve and the result differ by at most `tolerance` at every
-    /// parameter (see the [module](self) documentation). With a zero tolerance it is
+    /// parameter: on the original knots the two curves differ by Σ (ĉ_j − c_j) N_j(u), and
+    /// the basis functions are non-negative and sum to one. With a zero tolerance it is
     /// [`BSpline::remove`].
     ///
     /// # Errors
