@@ -125,6 +125,9 @@
 //! | `rational-bezier/de-casteljau`: [`spline::RationalBezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1) affine combinations per point: n(n + 1)/2 on the weighted points and as many on the weights | [SPL, §14] | `src/spline/rational/bezier.rs` |
 //! | `nurbs/de-boor`: [`spline::Nurbs::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1) affine combinations per point off the knots, (d − r)(d − r + 1) at a knot of multiplicity r | [SPL, §14] | `src/spline/rational/nurbs.rs` |
 //! | `nurbs/insert`: [`spline::Nurbs::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly 2(r(d − s) − r(r − 1)/2) affine combinations, s the knot's multiplicity before | [SPL, §14] | `src/spline/rational/nurbs.rs` |
+//! | `bspline/refine`: [`spline::BSpline::refine`] | O(m log m + (n + m)D + md(d² + dD + log n)) | O((n + m)D) | arithmetic operations: exactly q(d(d + 1)/2 + d + 1) operations, q ≤ md the new control points that are not copies | [PPB, §6.2] | `src/spline/bspline/refine.rs` |
+//! | `bspline/remove`: [`spline::BSpline::remove`] | O(r²(n + d)D) | O((n + d)D) | arithmetic operations: per removal of a knot of multiplicity s ≤ d: d − s solved points, and d − sᵢ + 1 combinations per re-inserted copy of multiplicity sᵢ | [PPB, §6.1] | `src/spline/bspline/remove.rs` |
+//! | `bspline/split`: [`spline::BSpline::split`] | Θ((n + d²)D) | O((n + d²)D) | arithmetic operations: exactly (d − s)(d − s + 1)/2 affine combinations, s ≤ d the multiplicity of u (none at d + 1) | [PPB, §6.1] | `src/spline/bspline/split.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!

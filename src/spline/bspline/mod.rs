@@ -1,5 +1,5 @@
-//! B-splines: knot vectors, the B-spline basis, and B-spline curves with de Boor's algorithm
-//! and Boehm's knot insertion.
+//! B-splines: knot vectors, the B-spline basis, and B-spline curves with de Boor's algorithm,
+//! Boehm's knot insertion, the Oslo refinement, knot removal and splitting.
 //!
 //! # The knot convention
 //!
@@ -44,6 +44,9 @@
 //! | `blossom.rs` | [`BSpline::blossom`], [`BSpline::blossom_in_span`] (and `_with`): the polar form of a piece by the extended de Boor algorithm [PPB, §5.5, §5.9], [SPL, §6–7] | Θ(d²D) |
 //! | `greville.rs` | [`KnotVector::greville`], [`KnotVector::marsden`] (Marsden's identity), [`BSpline::graph`] [PPB, §5.8, §5.12 Ex. 4] | Θ(nd) |
 //! | `batch.rs` | [`BSpline::eval_sorted`], [`BSpline::eval_sorted_with`], [`BSpline::eval_sorted_into`]: de Boor at sorted parameters with a forward span walk [PPB, §5.4] | Θ(m·d²D + n) |
+//! | `refine.rs` | [`BSpline::refine`], [`BSpline::refine_with`]: the Oslo algorithm, m knots at once by the discrete B-splines [PPB, §6.2] | O(m log m + (n + m)D + md(d² + dD + log n)) |
+//! | `remove.rs` | [`BSpline::remove`], [`BSpline::remove_within`] and their `_with` forms: knot removal, exact or within a distance, checked by re-insertion [PPB, §6.1] | O(r²(n + d)D) |
+//! | `split.rs` | [`BSpline::split`], [`BSpline::split_with`]: the two pieces at a parameter, clamped at the cut [PPB, §6.1] | Θ((n + d²)D) |
 //!
 //! ```
 //! use compgeo::spline::KnotVector;
@@ -65,10 +68,13 @@ mod elevate;
 mod greville;
 mod insert;
 mod knots;
+mod refine;
+mod remove;
+mod split;
 mod to_bezier;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 12] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 15] = [
     &knots::SPAN,
     &basis::BASIS,
     &basis::BASIS_DERIVATIVES,
@@ -81,6 +87,9 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 12] = [
     &greville::GREVILLE,
     &greville::MARSDEN,
     &batch::EVAL_SORTED,
+    &refine::REFINE,
+    &remove::REMOVE,
+    &split::SPLIT,
 ];
 
 /// The declarations the catalog's entries measure, by name.
