@@ -16,6 +16,7 @@ mod bezier;
 mod bezier_eval;
 mod bspline_basis;
 mod bspline_curve;
+mod bspline_fit;
 mod calipers;
 mod cli;
 mod complexity;

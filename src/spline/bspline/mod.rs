@@ -51,22 +51,32 @@
 //! # Ok::<(), compgeo::Error>(())
 //! ```
 
+mod banded;
 mod basis;
+mod cubic;
 mod curve;
 mod de_boor;
+mod fit;
 mod insert;
+mod interpolate;
 mod knots;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 9] = [
     &knots::SPAN,
     &basis::BASIS,
     &basis::BASIS_DERIVATIVES,
     &de_boor::DE_BOOR,
     &insert::INSERT,
+    &banded::BANDED,
+    &interpolate::INTERPOLATE,
+    &fit::FIT,
+    &cubic::CUBIC_SPLINE,
 ];
 
+pub use banded::BandMatrix;
 pub use basis::{Basis, BasisDerivatives};
 pub use curve::BSpline;
 pub use de_boor::DeBoorTrace;
+pub use fit::ParameterFit;
 pub use knots::KnotVector;
