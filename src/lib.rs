@@ -115,6 +115,10 @@
 //! | `bspline/basis-derivatives`: [`spline::KnotVector::basis_derivatives`] | O(d² + d·K²) | O((k + 1)(d + 1)) | arithmetic operations: exactly d(d + 1)/2 + (d + 1)·K(K + 3)/2 steps, K = min(k, d) | [PPB, §5.7] | `src/spline/bspline/basis.rs` |
 //! | `bspline/de-boor`: [`spline::BSpline::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1)/2 affine combinations per point off the knots, (d − r)(d − r + 1)/2 at a knot of multiplicity r | [PPB, §5.4] | `src/spline/bspline/de_boor.rs` |
 //! | `bspline/insert`: [`spline::BSpline::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly r(d − s) − r(r − 1)/2 affine combinations, s the knot's multiplicity before | [PPB, §6.1] | `src/spline/bspline/insert.rs` |
+//! | `bspline/banded-solve`: [`spline::BandMatrix::solve`] | Θ(n·l·(u + D)) | Θ(n(l + u + 1)) | arithmetic operations: exactly Σₖ rₖ(wₖ + 2) + Σₖ (wₖ + 1), rₖ = min(l, n − 1 − k), wₖ = min(u, n − 1 − k) | [PPB, §6.7] | `src/spline/bspline/banded.rs` |
+//! | `bspline/interpolate`: [`spline::BSpline::interpolate_at`] | Θ(n d² + n D d) | Θ(n(d + D)) | arithmetic operations: exactly n·d(d + 1)/2 basis steps plus the banded solve's count with l = u = d | [PPB, §6.7] | `src/spline/bspline/interpolate.rs` |
+//! | `bspline/fit`: [`spline::BSpline::fit`] | Θ(m d² + m d D + n d² + m log m) | Θ(n(d + D) + m) | arithmetic operations: m·d(d + 1)/2 basis steps, (d + 1)(d + 2) per parameter for the normal equations, then the banded solve's count with l = u = d | [PPB, §4.7] | `src/spline/bspline/fit.rs` |
+//! | `bspline/cubic-spline`: [`spline::BSpline::cubic_spline`] | Θ(N·D) | Θ(N·D) | not counted | [SPL, §3] | `src/spline/bspline/cubic.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!

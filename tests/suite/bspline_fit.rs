@@ -330,10 +330,11 @@ proptest! {
             _ => EndCondition::Bessel,
         };
         if kind == 2 && u.len() < 3 {
-            prop_assert!(matches!(
+            let few = matches!(
                 BSpline::cubic_spline(&p, &u, &end),
                 Err(Error::TooFew { needed: 3, .. })
-            ));
+            );
+            prop_assert!(few);
             return Ok(());
         }
         let s = BSpline::cubic_spline(&p, &u, &end).unwrap();
@@ -381,7 +382,11 @@ fn parameter_improvement_in_f64_decreases_and_stays_in_the_domain() {
     let t = KnotVector::clamped_uniform(3, 6, 0.0, 1.0).unwrap();
     let f = BSpline::fit_improved(&p, &u, t, 10).unwrap();
     assert!(f.errors.windows(2).all(|w| w[1] <= w[0]), "{:?}", f.errors);
-    assert!(f.errors[f.errors.len() - 1] < 0.5 * f.errors[0], "{:?}", f.errors);
+    assert!(
+        f.errors[f.errors.len() - 1] < 0.5 * f.errors[0],
+        "{:?}",
+        f.errors
+    );
     assert!(f.params.iter().all(|u| (0.0..=1.0).contains(u)));
 }
 
@@ -401,8 +406,18 @@ fn the_quadratic_through_three_points_by_hand() {
 fn huge_and_subnormal_data_give_the_exact_result_closely() {
     let tiny = f64::from_bits(1);
     for scale in [1e300, 1.0, 1e-310, tiny * 64.0] {
-        let raw = [(0.0, 1.0), (2.0, 3.0), (3.0, -1.0), (5.0, 2.0), (6.0, 0.0), (8.0, 1.0)];
-        let p: Vec<Point<f64, 2>> = raw.iter().map(|&(x, y)| Point::new([x * scale, y * scale])).collect();
+        let raw = [
+            (0.0, 1.0),
+            (2.0, 3.0),
+            (3.0, -1.0),
+            (5.0, 2.0),
+            (6.0, 0.0),
+            (8.0, 1.0),
+        ];
+        let p: Vec<Point<f64, 2>> = raw
+            .iter()
+            .map(|&(x, y)| Point::new([x * scale, y * scale]))
+            .collect();
         let pq: Vec<Point<Q, 2>> = p.iter().map(|x| Point::from_f64(x).unwrap()).collect();
         let u: Vec<f64> = (0..6).map(|k| k as f64).collect();
         let uq: Vec<Q> = u.iter().map(|x| Q::from_f64(*x).unwrap()).collect();
@@ -411,7 +426,10 @@ fn huge_and_subnormal_data_give_the_exact_result_closely() {
         let s = BSpline::interpolate_at(&p, &u, t.clone()).unwrap();
         let sq = BSpline::interpolate_at(&pq, &uq, tq.clone()).unwrap();
         let fitted = BSpline::fit(&p, &u, t).unwrap();
-        let big = p.iter().flat_map(|x| x.coords().iter().map(|c| c.abs())).fold(0.0, f64::max);
+        let big = p
+            .iter()
+            .flat_map(|x| x.coords().iter().map(|c| c.abs()))
+            .fold(0.0, f64::max);
         // Subnormal data keep only their few significant bits.
         let rel = if scale < 1e-300 { 1e-1 } else { 1e-13 };
         for (a, b) in [(&s, &sq), (&fitted, &sq)] {
@@ -419,14 +437,21 @@ fn huge_and_subnormal_data_give_the_exact_result_closely() {
                 for k in 0..2 {
                     let want = y[k].to_f64();
                     assert!(x[k].is_finite(), "{scale}: {x:?}");
-                    assert!((x[k] - want).abs() <= rel * big, "{scale}: {} vs {want}", x[k]);
+                    assert!(
+                        (x[k] - want).abs() <= rel * big,
+                        "{scale}: {} vs {want}",
+                        x[k]
+                    );
                 }
             }
         }
         for (uk, pk) in u.iter().zip(&p) {
             let got = s.eval(uk).unwrap();
             for k in 0..2 {
-                assert!((got[k] - pk[k]).abs() <= rel * big, "{scale}: {got:?} vs {pk:?}");
+                assert!(
+                    (got[k] - pk[k]).abs() <= rel * big,
+                    "{scale}: {got:?} vs {pk:?}"
+                );
             }
         }
     }
@@ -450,19 +475,37 @@ fn schoenberg_whitney_failures_name_the_index_the_inequality_and_the_knots() {
     );
     // τ₃ = 1 = t₃, a simple knot: N₃ starts there and vanishes.
     let e = BSpline::interpolate_at(&p, &[0.0, 0.25, 0.5, 1.0, 3.0], t.clone()).unwrap_err();
-    assert!(e.to_string().contains("index 3: N_3(τ_3) = 0 for τ_3 = 1"), "{e}");
-    assert!(e.to_string().contains("but τ_3 = t_3, allowed only where t_3 = t_5"), "{e}");
+    assert!(
+        e.to_string().contains("index 3: N_3(τ_3) = 0 for τ_3 = 1"),
+        "{e}"
+    );
+    assert!(
+        e.to_string()
+            .contains("but τ_3 = t_3, allowed only where t_3 = t_5"),
+        "{e}"
+    );
     // The clamped ends are allowed: τ₀ = t₀ and τ₄ = t₅.
-    assert!(t.check_schoenberg_whitney(&[0.0, 0.5, 1.5, 2.5, 3.0]).is_ok());
+    assert!(t
+        .check_schoenberg_whitney(&[0.0, 0.5, 1.5, 2.5, 3.0])
+        .is_ok());
     // At an unclamped end the last function does not end: N₂ on 0, 1, …, 5 (domain [2, 3],
     // support [2, 5]) is non-zero at t₃ = 3, N₀ (support [0, 3]) vanishes there.
     let u = KnotVector::new(2, vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0]).unwrap();
     assert!(u.check_schoenberg_whitney(&[2.0, 2.5, 3.0]).is_ok());
     // On 0, 1, …, 6 (domain [2, 4]) N₀ (support [0, 3]) vanishes at 3.
     let u = KnotVector::new(2, vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0]).unwrap();
-    let e = u.check_schoenberg_whitney(&[3.0, 3.25, 3.5, 4.0]).unwrap_err();
-    assert!(e.to_string().contains("index 0: N_0(τ_0) = 0 for τ_0 = 3"), "{e}");
-    assert!(e.to_string().contains("but τ_0 = t_3, allowed only at the end"), "{e}");
+    let e = u
+        .check_schoenberg_whitney(&[3.0, 3.25, 3.5, 4.0])
+        .unwrap_err();
+    assert!(
+        e.to_string().contains("index 0: N_0(τ_0) = 0 for τ_0 = 3"),
+        "{e}"
+    );
+    assert!(
+        e.to_string()
+            .contains("but τ_0 = t_3, allowed only at the end"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -478,7 +521,10 @@ fn repeated_parameters_are_named_by_both_indices_never_nan() {
     // A chord too short to move the running sum of chord lengths in f64: equal parameters.
     let p = [(0.0, 0.0), (1e17, 0.0), (1e17, 4.0), (2e17, 4.0)].map(|(x, y)| Point::new([x, y]));
     let e = BSpline::interpolate(&p, 2, Parameterisation::ChordLength).unwrap_err();
-    assert!(e.to_string().contains("parameters 1 and 2 are equal"), "{e}");
+    assert!(
+        e.to_string().contains("parameters 1 and 2 are equal"),
+        "{e}"
+    );
     // Consecutive equal points under chord length: named by parameterise.
     let p = [(0.0, 0.0), (1.0, 0.0), (1.0, 0.0), (2.0, 0.0)].map(|(x, y)| Point::new([x, y]));
     let e = BSpline::interpolate(&p, 2, Parameterisation::ChordLength).unwrap_err();
@@ -508,30 +554,59 @@ fn bad_input_is_a_named_error() {
         Err(Error::NonFinite { index: 1, .. })
     ));
     let e = BSpline::interpolate_at(&p, &[0.0, f64::NAN, 0.5, 1.0], t.clone()).unwrap_err();
-    assert!(e.to_string().contains("parameter 1 is not finite (NaN)"), "{e}");
+    assert!(
+        e.to_string().contains("parameter 1 is not finite (NaN)"),
+        "{e}"
+    );
     let e = BSpline::fit(&p, &[0.0, 0.25, 0.5, 1.5], t.clone()).unwrap_err();
-    assert!(e.to_string().contains("parameter 3 (1.5) is outside the domain [0, 1]"), "{e}");
+    assert!(
+        e.to_string()
+            .contains("parameter 3 (1.5) is outside the domain [0, 1]"),
+        "{e}"
+    );
     let e = BSpline::interpolate_at(&p, &[0.0, 0.5, 0.25, 1.0], t.clone()).unwrap_err();
-    assert!(e.to_string().contains("parameter 2 (0.25) is below parameter 1"), "{e}");
+    assert!(
+        e.to_string()
+            .contains("parameter 2 (0.25) is below parameter 1"),
+        "{e}"
+    );
     let e = BSpline::interpolate_at(&p[..3], &[0.0, 0.5, 1.0], t.clone()).unwrap_err();
-    assert!(matches!(e, Error::InvalidParameter { name: "knots", .. }), "{e}");
+    assert!(
+        matches!(e, Error::InvalidParameter { name: "knots", .. }),
+        "{e}"
+    );
     let e = BSpline::interpolate_at(&p, &[0.0, 0.5, 1.0], t.clone()).unwrap_err();
     assert!(e.to_string().contains("3 parameters for 4 points"), "{e}");
     // Too few points: for the degree, and for the control points of a fit.
     assert!(matches!(
         BSpline::interpolate(&p[..2], 2, Parameterisation::Uniform),
-        Err(Error::TooFew { needed: 3, got: 2, .. })
+        Err(Error::TooFew {
+            needed: 3,
+            got: 2,
+            ..
+        })
     ));
     let e = BSpline::fit(&p[..3], &[0.0, 0.5, 1.0], t.clone()).unwrap_err();
-    assert!(e.to_string().contains("N_3 (support [t_3, t_6] = [0.5, 1]) has too little data"), "{e}");
+    // N₀ ← 0, N₁ ← 0.5, and 1 is the closed end, where only N₃ is non-zero.
+    assert!(
+        e.to_string()
+            .contains("N_2 (support [t_2, t_5] = [0, 1]) has too little data"),
+        "{e}"
+    );
     let empty: [Point<f64, 1>; 0] = [];
-    assert!(matches!(BSpline::fit(&empty, &[], t), Err(Error::Empty { .. })));
+    assert!(matches!(
+        BSpline::fit(&empty, &[], t),
+        Err(Error::Empty { .. })
+    ));
     assert!(matches!(
         BSpline::cubic_spline(&p, &[0.0, 1.0, 2.0, 3.0], &EndCondition::Periodic),
         Err(Error::InvalidParameter { name: "end", .. })
     ));
     assert!(matches!(
         BSpline::cubic_spline(&p, &[0.0, 1.0, 1.0, 3.0], &EndCondition::Natural),
-        Err(Error::InvalidParameter { name: "partition", .. })
+        Err(Error::InvalidParameter {
+            name: "partition",
+            ..
+        })
     ));
 }

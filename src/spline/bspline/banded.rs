@@ -171,7 +171,10 @@ impl<S: Scalar> BandMatrix<S> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn get(&self, i: usize, j: usize) -> S {
-        assert!(i < self.size && j < self.size, "({i}, {j}) outside the matrix");
+        assert!(
+            i < self.size && j < self.size,
+            "({i}, {j}) outside the matrix"
+        );
         if self.in_band(i, j) {
             self.entries[self.at(i, j)].clone()
         } else {
@@ -238,7 +241,8 @@ impl<S: Scalar> BandMatrix<S> {
     ///
     /// # Complexity
     ///
-    /// Θ(n·l·(u + D)) time, no space beyond the matrix and the right-hand sides it takes.
+    /// Θ(n·l·(u + D)) time; Θ(n(l + u + 1)) space, the band it takes (nothing beyond it and
+    /// the right-hand sides).
     ///
     /// ```
     /// use compgeo::spline::{BandMatrix, Point};
@@ -276,7 +280,8 @@ impl<S: Scalar> BandMatrix<S> {
     ///
     /// # Complexity
     ///
-    /// Θ(n·l·(u + D)) time, no space beyond the matrix and the right-hand sides it takes.
+    /// Θ(n·l·(u + D)) time; Θ(n(l + u + 1)) space, the band it takes (nothing beyond it and
+    /// the right-hand sides).
     ///
     /// # Counts
     ///

@@ -67,7 +67,7 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ(N·D) time and space for N + 1 points in R^D.
+    /// Θ(N·D) time and Θ(N·D) space for N + 1 points in R^D.
     ///
     /// ```
     /// use compgeo::spline::{cubic_spline, BSpline, Curve, EndCondition, Point};

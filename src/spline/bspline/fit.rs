@@ -246,9 +246,9 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// let u: Vec<f64> = (0..=12).map(|k| k as f64 / 12.0).collect();
     /// let t = KnotVector::clamped_uniform(3, 5, 0.0, 1.0)?;
     /// let f = BSpline::fit_improved(&p, &u, t, 5)?;
-    /// assert_eq!(f.errors.len(), 6);
+    /// assert!(f.errors.len() >= 2 && f.errors.len() <= 6);
     /// assert!(f.errors.windows(2).all(|w| w[1] <= w[0]));
-    /// assert!(f.errors[5] < f.errors[0]);
+    /// assert!(f.errors[f.errors.len() - 1] < f.errors[0]);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn fit_improved(
@@ -351,11 +351,7 @@ impl<S: Scalar> KnotVector<S> {
         let (d, n, t) = (self.degree(), self.control_points(), self.knots());
         let after = match last {
             None => String::new(),
-            Some(u) => format!(
-                " above {}, the parameter chosen for N_{}",
-                u.to_f64(),
-                i - 1
-            ),
+            Some(u) => format!(" above {}, the one chosen for N_{}", u.to_f64(), i - 1),
         };
         Error::InvalidParameter {
             name: "params",
@@ -363,7 +359,7 @@ impl<S: Scalar> KnotVector<S> {
                 "the fit is not unique: basis function N_{i} (support [t_{i}, t_{}] = [{}, {}]) \
                  has too little data: the {m} parameters hold no n = {n} increasing ones with \
                  N_j(τ_{{k_j}}) ≠ 0 for every j (the Schoenberg–Whitney condition for a \
-                 subsequence), and none is left for N_{i} where it does not vanish{after}",
+                 subsequence), and no parameter is left where N_{i} does not vanish{after}",
                 i + d + 1,
                 t[i].to_f64(),
                 t[i + d + 1].to_f64()

@@ -153,7 +153,11 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// );
     /// # Ok::<(), compgeo::Error>(())
     /// ```
-    pub fn interpolate_at(points: &[Point<S, D>], params: &[S], knots: KnotVector<S>) -> Result<Self> {
+    pub fn interpolate_at(
+        points: &[Point<S, D>],
+        params: &[S],
+        knots: KnotVector<S>,
+    ) -> Result<Self> {
         Self::interpolate_at_with(points, params, knots, &mut NoCount)
     }
 
@@ -331,11 +335,17 @@ impl<S: Scalar> KnotVector<S> {
         let violated = if u < lo {
             format!("τ_{k} < t_{k}")
         } else if u == lo {
-            format!("τ_{k} = t_{k}, allowed only where t_{k} = t_{} (d + 1 equal knots)", k + d)
+            format!(
+                "τ_{k} = t_{k}, allowed only where t_{k} = t_{} (d + 1 equal knots)",
+                k + d
+            )
         } else if u > hi {
             format!("τ_{k} > t_{e}")
         } else if u == hi {
-            format!("τ_{k} = t_{e}, allowed only at the end t_n where t_{} = t_{e}", k + 1)
+            format!(
+                "τ_{k} = t_{e}, allowed only at the end t_n where t_{} = t_{e}",
+                k + 1
+            )
         } else {
             format!("N_{k} vanishes at τ_{k}")
         };
@@ -428,8 +438,8 @@ mod tests {
         assert!(!t.basis_nonzero(1, &0.0));
         assert!(t.basis_nonzero(3, &2.0));
         assert!(!t.basis_nonzero(2, &2.0));
-        assert!(!t.basis_nonzero(2, &1.0));
-        assert!(t.basis_nonzero(1, &1.0));
+        assert!(!t.basis_nonzero(3, &1.0)); // N₃ starts at the simple knot 1
+        assert!(t.basis_nonzero(2, &1.0));
         // An unclamped end: N₂ on 0..5 ends at t₅ = 3 = t_n... its left limit there is 0.
         let u = KnotVector::new(2, vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0]).unwrap();
         assert!(!u.basis_nonzero(0, &3.0) && u.basis_nonzero(1, &3.0) && u.basis_nonzero(2, &3.0));
@@ -439,10 +449,20 @@ mod tests {
     #[test]
     fn repeated_and_decreasing_parameters_are_named() {
         let e = check_increasing(&[0.0, 0.5, 0.5, 1.0]).unwrap_err();
-        assert!(e.to_string().contains("parameters 1 and 2 are equal (0.5)"), "{e}");
+        assert!(
+            e.to_string().contains("parameters 1 and 2 are equal (0.5)"),
+            "{e}"
+        );
         let e = check_increasing(&[0.0, 0.5, 0.25]).unwrap_err();
-        assert!(e.to_string().contains("parameter 2 (0.25) is below parameter 1"), "{e}");
+        assert!(
+            e.to_string()
+                .contains("parameter 2 (0.25) is below parameter 1"),
+            "{e}"
+        );
         let e = check_increasing(&[0.0, f64::NAN]).unwrap_err();
-        assert!(e.to_string().contains("parameter 1 is not finite (NaN)"), "{e}");
+        assert!(
+            e.to_string().contains("parameter 1 is not finite (NaN)"),
+            "{e}"
+        );
     }
 }

@@ -1,5 +1,5 @@
 //! B-splines: knot vectors, the B-spline basis, and B-spline curves with de Boor's algorithm
-//! and Boehm's knot insertion.
+//! and Boehm's knot insertion, interpolation and least-squares fitting.
 //!
 //! # The knot convention
 //!
@@ -39,6 +39,10 @@
 //! | `curve.rs` | [`BSpline`]: validation, the curve traits, the derivative curve [PPB, §5.6] | Θ(nD); Θ((n + d)D) |
 //! | `de_boor.rs` | [`BSpline::de_boor`], [`BSpline::de_boor_with`], the net [`BSpline::de_boor_trace`] ([`DeBoorTrace`]) [PPB, §5.4] | Θ(d²D) |
 //! | `insert.rs` | [`BSpline::insert`], [`BSpline::insert_with`]: Boehm's insertion, once or r times [PPB, §6.1] | Θ((n + d + rd)D) |
+//! | `banded.rs` | [`BandMatrix`]: banded Gaussian elimination without pivoting, every pivot checked [PPB, §6.7] | Θ(n·l·(u + D)) |
+//! | `interpolate.rs` | [`BSpline::interpolate`], [`BSpline::interpolate_at`] (and `_with`): collocation after [`KnotVector::check_schoenberg_whitney`] [PPB, §6.7, §4.5] | Θ(n d² + n D d) |
+//! | `fit.rs` | [`BSpline::fit`], [`BSpline::fit_with`]: least squares after [`KnotVector::check_fit_rank`]; [`BSpline::fit_improved`] ([`ParameterFit`]) [PPB, §4.7–4.8] | Θ(m d² + m d D + n d² + m log m) |
+//! | `cubic.rs` | [`BSpline::cubic_spline`]: the C² cubic spline as a B-spline (natural, clamped, Bessel) [SPL, §3] | Θ(N·D) |
 //!
 //! ```
 //! use compgeo::spline::KnotVector;
