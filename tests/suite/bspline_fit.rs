@@ -14,6 +14,9 @@
 //! numbers (§4.9 and §5.12 are proofs and drawings); the hand-derived quadratic below stands
 //! in for one.
 
+// The dense oracles index rows and columns as the textbook eliminations do.
+#![allow(clippy::needless_range_loop)]
+
 use crate::bspline_basis::knot_vector;
 use crate::spline_common::{q, qi, Q};
 use compgeo::count::Counts;

@@ -351,8 +351,9 @@ impl<S: Scalar> BandMatrix<S> {
         }
         for k in (0..n).rev() {
             let mut x = rhs[k].clone();
-            for j in k + 1..=(k + u).min(n - 1) {
-                let delta = rhs[j].clone() * &self.entries[self.at(k, j)];
+            let last = (k + u).min(n - 1);
+            for (j, xj) in rhs.iter().enumerate().take(last + 1).skip(k + 1) {
+                let delta = xj.clone() * &self.entries[self.at(k, j)];
                 x -= &delta;
                 counter.arithmetic_operation();
             }
@@ -408,11 +409,15 @@ mod tests {
         let x = [1.0, -2.0, 3.0];
         let mut m = BandMatrix::zeros(3, 2, 2).unwrap();
         let mut rhs = Vec::new();
-        for i in 0..3 {
-            for j in 0..3 {
-                m.set(i, j, a[i][j]).unwrap();
+        for (i, row) in a.iter().enumerate() {
+            for (j, v) in row.iter().enumerate() {
+                m.set(i, j, *v).unwrap();
             }
-            rhs.push(Point::new([(0..3).map(|j| a[i][j] * x[j]).sum::<f64>()]));
+            rhs.push(Point::new([row
+                .iter()
+                .zip(x)
+                .map(|(v, xj)| v * xj)
+                .sum::<f64>()]));
         }
         let got = m.solve(rhs).unwrap();
         for (g, w) in got.iter().zip(x) {
