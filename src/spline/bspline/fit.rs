@@ -293,8 +293,10 @@ impl<S: Scalar> KnotVector<S> {
     /// number of control points), so that the least-squares fit is unique and its normal
     /// equations are positive definite: exactly when some n parameters
     /// τ_{k₀} < … < τ_{k_{n−1}} satisfy N_i(τ_{k_i}) ≠ 0 for every i (the Schoenberg–Whitney
-    /// condition for a subsequence; see the [module](self) docs for why the greedy choice
-    /// decides it). Decided exactly on the knots.
+    /// condition for a subsequence). The sets {u : N_i(u) ≠ 0} are intervals whose ends never
+    /// decrease with i, so choosing greedily, for N₀, N₁, … in turn, the smallest parameter
+    /// above the last one chosen where the function does not vanish decides it. Decided
+    /// exactly on the knots.
     ///
     /// # Errors
     ///
