@@ -128,6 +128,10 @@
 //! | `bspline/refine`: [`spline::BSpline::refine`] | O(m log m + (n + m)D + md(d² + dD + log n)) | O((n + m)D) | arithmetic operations: exactly q(d(d + 1)/2 + d + 1) operations, q ≤ md the new control points that are not copies | [PPB, §6.2] | `src/spline/bspline/refine.rs` |
 //! | `bspline/remove`: [`spline::BSpline::remove`] | O(r²(n + d)D) | O((n + d)D) | arithmetic operations: per removal of a knot of multiplicity s ≤ d: d − s solved points, and d − sᵢ + 1 combinations per re-inserted copy of multiplicity sᵢ | [PPB, §6.1] | `src/spline/bspline/remove.rs` |
 //! | `bspline/split`: [`spline::BSpline::split`] | Θ((n + d²)D) | O((n + d²)D) | arithmetic operations: exactly (d − s)(d − s + 1)/2 affine combinations, s ≤ d the multiplicity of u (none at d + 1) | [PPB, §6.1] | `src/spline/bspline/split.rs` |
+//! | `bspline/banded-solve`: [`spline::BandMatrix::solve`] | Θ(n·l·(u + D)) | Θ(n(l + u + 1)) | arithmetic operations: exactly Σₖ rₖ(wₖ + 2) + Σₖ (wₖ + 1), rₖ = min(l, n − 1 − k), wₖ = min(u, n − 1 − k) | [PPB, §6.7] | `src/spline/bspline/banded.rs` |
+//! | `bspline/interpolate`: [`spline::BSpline::interpolate_at`] | Θ(n d² + n D d) | Θ(n(d + D)) | arithmetic operations: exactly n·d(d + 1)/2 basis steps plus the banded solve's count with l = u = d | [PPB, §6.7] | `src/spline/bspline/interpolate.rs` |
+//! | `bspline/fit`: [`spline::BSpline::fit`] | Θ(m d² + m d D + n d² + m log m) | Θ(n(d + D) + m) | arithmetic operations: m·d(d + 1)/2 basis steps, (d + 1)(d + 2) per parameter for the normal equations, then the banded solve's count with l = u = d | [PPB, §4.7] | `src/spline/bspline/fit.rs` |
+//! | `bspline/cubic-spline`: [`spline::BSpline::cubic_spline`] | Θ(N·D) | Θ(N·D) | not counted | [SPL, §3] | `src/spline/bspline/cubic.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!

@@ -64,7 +64,9 @@ pub use bezier::{
     CompositeBezier, Evaluation as BezierEvaluation, Intersection, Join, Reparametrised,
     MAX_FLATTEN_SEGMENTS, MAX_INTERSECTION_PAIRS,
 };
-pub use bspline::{BSpline, Basis, BasisDerivatives, DeBoorTrace, KnotVector};
+pub use bspline::{
+    BSpline, BandMatrix, Basis, BasisDerivatives, DeBoorTrace, KnotVector, ParameterFit,
+};
 pub use curve::{Curve, CurveDerivative, Domain, Subsegment};
 pub use frenet::{bezier_frenet, curvature_vector, frenet_frame, is_g2, is_g2_join, FrenetFrame};
 pub use interpolate::{

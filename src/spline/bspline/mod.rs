@@ -1,5 +1,7 @@
 //! B-splines: knot vectors, the B-spline basis, and B-spline curves with de Boor's algorithm,
 //! Boehm's knot insertion, the Oslo refinement, knot removal and splitting.
+//! B-splines: knot vectors, the B-spline basis, and B-spline curves with de Boor's algorithm
+//! and Boehm's knot insertion, interpolation and least-squares fitting.
 //!
 //! # The knot convention
 //!
@@ -47,6 +49,10 @@
 //! | `refine.rs` | [`BSpline::refine`], [`BSpline::refine_with`]: the Oslo algorithm, m knots at once by the discrete B-splines [PPB, §6.2] | O(m log m + (n + m)D + md(d² + dD + log n)) |
 //! | `remove.rs` | [`BSpline::remove`], [`BSpline::remove_within`] and their `_with` forms: knot removal, exact or within a distance, checked by re-insertion [PPB, §6.1] | O(r²(n + d)D) |
 //! | `split.rs` | [`BSpline::split`], [`BSpline::split_with`]: the two pieces at a parameter, clamped at the cut [PPB, §6.1] | Θ((n + d²)D) |
+//! | `banded.rs` | [`BandMatrix`]: banded Gaussian elimination without pivoting, every pivot checked [PPB, §6.7] | Θ(n·l·(u + D)) |
+//! | `interpolate.rs` | [`BSpline::interpolate`], [`BSpline::interpolate_at`] (and `_with`): collocation after [`KnotVector::check_schoenberg_whitney`] [PPB, §6.7, §4.5] | Θ(n d² + n D d) |
+//! | `fit.rs` | [`BSpline::fit`], [`BSpline::fit_with`]: least squares after [`KnotVector::check_fit_rank`]; [`BSpline::fit_improved`] ([`ParameterFit`]) [PPB, §4.7–4.8] | Θ(m d² + m d D + n d² + m log m) |
+//! | `cubic.rs` | [`BSpline::cubic_spline`]: the C² cubic spline as a B-spline (natural, clamped, Bessel) [SPL, §3] | Θ(N·D) |
 //!
 //! ```
 //! use compgeo::spline::KnotVector;
@@ -59,14 +65,18 @@
 //! # Ok::<(), compgeo::Error>(())
 //! ```
 
+mod banded;
 mod basis;
 mod batch;
 mod blossom;
+mod cubic;
 mod curve;
 mod de_boor;
 mod elevate;
+mod fit;
 mod greville;
 mod insert;
+mod interpolate;
 mod knots;
 mod refine;
 mod remove;
@@ -74,7 +84,7 @@ mod split;
 mod to_bezier;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 15] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 19] = [
     &knots::SPAN,
     &basis::BASIS,
     &basis::BASIS_DERIVATIVES,
@@ -90,6 +100,10 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 15] = [
     &refine::REFINE,
     &remove::REMOVE,
     &split::SPLIT,
+    &banded::BANDED,
+    &interpolate::INTERPOLATE,
+    &fit::FIT,
+    &cubic::CUBIC_SPLINE,
 ];
 
 /// The declarations the catalog's entries measure, by name.
@@ -100,7 +114,9 @@ pub(crate) mod declarations {
     pub(crate) use super::knots::SPAN;
 }
 
+pub use banded::BandMatrix;
 pub use basis::{Basis, BasisDerivatives};
 pub use curve::BSpline;
 pub use de_boor::DeBoorTrace;
+pub use fit::ParameterFit;
 pub use knots::KnotVector;
