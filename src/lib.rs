@@ -122,9 +122,6 @@
 //! | `bspline/greville`: [`spline::KnotVector::greville`] | Θ(nd) | Θ(n) | not counted | [PPB, §5.8] | `src/spline/bspline/greville.rs` |
 //! | `bspline/marsden`: [`spline::KnotVector::marsden`] | Θ(nd) | Θ(n) | not counted | [PPB, §5.12, Ex. 4] | `src/spline/bspline/greville.rs` |
 //! | `bspline/eval-sorted`: [`spline::BSpline::eval_sorted`] | Θ(m·d²D + n) | O(dD) | arithmetic operations: exactly de Boor's affine combinations at each parameter; at most m + n comparisons for the walk | [PPB, §5.4] | `src/spline/bspline/batch.rs` |
-//! | `rational-bezier/de-casteljau`: [`spline::RationalBezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1) affine combinations per point: n(n + 1)/2 on the weighted points and as many on the weights | [SPL, §14] | `src/spline/rational/bezier.rs` |
-//! | `nurbs/de-boor`: [`spline::Nurbs::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1) affine combinations per point off the knots, (d − r)(d − r + 1) at a knot of multiplicity r | [SPL, §14] | `src/spline/rational/nurbs.rs` |
-//! | `nurbs/insert`: [`spline::Nurbs::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly 2(r(d − s) − r(r − 1)/2) affine combinations, s the knot's multiplicity before | [SPL, §14] | `src/spline/rational/nurbs.rs` |
 //! | `bspline/refine`: [`spline::BSpline::refine`] | O(m log m + (n + m)D + md(d² + dD + log n)) | O((n + m)D) | arithmetic operations: exactly q(d(d + 1)/2 + d + 1) operations, q ≤ md the new control points that are not copies | [PPB, §6.2] | `src/spline/bspline/refine.rs` |
 //! | `bspline/remove`: [`spline::BSpline::remove`] | O(r²(n + d)D) | O((n + d)D) | arithmetic operations: per removal of a knot of multiplicity s ≤ d: d − s solved points, and d − sᵢ + 1 combinations per re-inserted copy of multiplicity sᵢ | [PPB, §6.1] | `src/spline/bspline/remove.rs` |
 //! | `bspline/split`: [`spline::BSpline::split`] | Θ((n + d²)D) | O((n + d²)D) | arithmetic operations: exactly (d − s)(d − s + 1)/2 affine combinations, s ≤ d the multiplicity of u (none at d + 1) | [PPB, §6.1] | `src/spline/bspline/split.rs` |
@@ -132,6 +129,11 @@
 //! | `bspline/interpolate`: [`spline::BSpline::interpolate_at`] | Θ(n d² + n D d) | Θ(n(d + D)) | arithmetic operations: exactly n·d(d + 1)/2 basis steps plus the banded solve's count with l = u = d | [PPB, §6.7] | `src/spline/bspline/interpolate.rs` |
 //! | `bspline/fit`: [`spline::BSpline::fit`] | Θ(m d² + m d D + n d² + m log m) | Θ(n(d + D) + m) | arithmetic operations: m·d(d + 1)/2 basis steps, (d + 1)(d + 2) per parameter for the normal equations, then the banded solve's count with l = u = d | [PPB, §4.7] | `src/spline/bspline/fit.rs` |
 //! | `bspline/cubic-spline`: [`spline::BSpline::cubic_spline`] | Θ(N·D) | Θ(N·D) | not counted | [SPL, §3] | `src/spline/bspline/cubic.rs` |
+//! | `rational-bezier/de-casteljau`: [`spline::RationalBezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1) affine combinations per point: n(n + 1)/2 on the weighted points and as many on the weights | [SPL, §14] | `src/spline/rational/bezier.rs` |
+//! | `nurbs/de-boor`: [`spline::Nurbs::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1) affine combinations per point off the knots, (d − r)(d − r + 1) at a knot of multiplicity r | [SPL, §14] | `src/spline/rational/nurbs.rs` |
+//! | `nurbs/insert`: [`spline::Nurbs::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly 2(r(d − s) − r(r − 1)/2) affine combinations, s the knot's multiplicity before | [SPL, §14] | `src/spline/rational/nurbs.rs` |
+//! | `nurbs/elevate`: [`spline::Nurbs::elevate`] | Θ((n + p·t)(d + t)²·D) | O((n + p·(d + t))D) | arithmetic operations: B-spline elevation's count for D + 1 coordinates, as two curves | [SPL, §14] | `src/spline/rational/linear.rs` |
+//! | `nurbs/to-bezier`: [`spline::Nurbs::to_bezier`] | Θ(n + d + p·d·D) plus O(n·d²·D) | Θ(p·d·D) | arithmetic operations: B-spline conversion's count, as two curves | [SPL, §14] | `src/spline/rational/linear.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
 //! <!-- /algorithms -->
 //!

@@ -59,7 +59,8 @@ impl<S: Scalar, const D: usize> Nurbs<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ((n + p·t)(d + t)²·D) time for p non-empty spans and t = `times`.
+    /// Θ((n + p·t)(d + t)²·D) time and O((n + p·(d + t))D) space for p non-empty spans and
+    /// t = `times`: twice B-spline elevation.
     ///
     /// ```
     /// use compgeo::spline::{Curve, Nurbs, Point};
@@ -118,7 +119,8 @@ impl<S: Scalar, const D: usize> Nurbs<S, D> {
     ///
     /// # Complexity
     ///
-    /// Twice B-spline conversion: Θ(n + d + p·d·D) plus O(n·d²·D) for p pieces.
+    /// Θ(n + d + p·d·D) plus O(n·d²·D) time and Θ(p·d·D) space for p pieces: twice B-spline
+    /// conversion.
     ///
     /// ```
     /// use compgeo::spline::{Curve, Nurbs, Point};
