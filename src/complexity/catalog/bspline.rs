@@ -1,100 +1,204 @@
-//! Catalog entries of [`crate::spline::bspline`]: each B-spline algorithm measured in each of
-//! its two sizes separately, so both growths are visible.
+//! Catalog entries of [`crate::spline::bspline`] and the NURBS evaluation: each algorithm
+//! measured in each of its sizes separately, so every growth is visible.
 //!
-//! - `random-degree`: n is the degree d, on a clamped uniform cubic-like curve with 2(d + 1)
-//!   control points in the unit square; the counted operation is the arithmetic step
-//!   ([`Operation::ArithmeticOperations`]): de Boor's d(d + 1)/2 affine combinations, the
-//!   basis's triangular scheme, insertion's d combinations.
-//! - `random-control`: n is the number of control points of a cubic on clamped uniform knots;
-//!   the counted operation is the span search's comparison ([`Operation::Comparisons`]), the
-//!   only part of an evaluation that grows with n (⌈lg(n − d)⌉ + O(1) by bisection).
+//! - `random-degree`: n is the degree d, on a clamped uniform curve with 2(d + 1) control
+//!   points in the unit square; the counted operation is the arithmetic step
+//!   ([`Operation::ArithmeticOperations`]): de Boor's and the blossom's d(d + 1)/2 affine
+//!   combinations, the basis's triangular scheme, insertion's d combinations, a split's
+//!   d(d + 1)/2, NURBS de Boor's d(d + 1) (both homogeneous halves).
+//! - `random-control`: n is the number of control points (or data points) of a cubic on
+//!   clamped uniform knots. The span search's comparisons ([`Operation::Comparisons`]) are the
+//!   only part of an evaluation that grows with n (⌈lg(n − d)⌉ + O(1) by bisection); the
+//!   conversion to Bézier pieces, elevation by one, the Oslo refinement at every span's
+//!   midpoint, interpolation of n points (chord length) and the least-squares fit of n points
+//!   by n/4 + 4 control points grow linearly in their arithmetic.
+//! - `random-parameters`: n is the number of sorted parameters evaluated at once on a cubic
+//!   with 64 control points (linear).
 //!
-//! The parameter (or the inserted knot) is the first generated coordinate, uniform in [0, 1),
-//! drawn with the same seed as the control points.
+//! The parameter (or the inserted knot, or the split) is the first generated coordinate,
+//! uniform in [0, 1), drawn with the same seed as the control points.
 //!
 //! [`Operation::ArithmeticOperations`]: crate::count::Operation::ArithmeticOperations
 //! [`Operation::Comparisons`]: crate::count::Operation::Comparisons
 
-use crate::complexity::{Entry, Workload};
+use crate::complexity::{Declaration, Entry, Workload};
 use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{points, PointKind};
-use crate::spline::{BSpline, KnotVector, Point};
+use crate::spline::{BSpline, KnotVector, Nurbs, Parameterisation, Point};
 
 /// The input distribution in which n is the degree.
-pub(crate) const RANDOM_DEGREE: &str = "random-degree";
-/// The input distribution in which n is the number of control points (degree 3).
-pub(crate) const RANDOM_CONTROL: &str = "random-control";
+const RANDOM_DEGREE: &str = "random-degree";
+/// The input distribution in which n is the number of control (or data) points, degree 3.
+const RANDOM_CONTROL: &str = "random-control";
+/// The input distribution in which n is the number of sorted parameters, on a fixed cubic.
+const RANDOM_PARAMETERS: &str = "random-parameters";
 
-/// Which B-spline algorithm a workload runs.
+/// The number of control points of the fixed cubic of `random-parameters`.
+const FIXED_CONTROL: usize = 64;
+
+/// Which algorithm a workload runs.
 #[derive(Clone, Copy, Debug)]
 enum Run {
-    /// [`BSpline::de_boor_with`].
     DeBoor,
-    /// [`KnotVector::basis_with`].
     Basis,
-    /// [`KnotVector::span_with`].
     Span,
-    /// [`BSpline::insert_with`], once.
     Insert,
+    Blossom,
+    Split,
+    NurbsDeBoor,
+    ToBezier,
+    Elevate,
+    Refine,
+    Interpolate,
+    Fit,
+    EvalSorted,
 }
 
-/// One call of `run` on a random curve whose degree (`in_degree`) or number of control points
-/// is n.
+/// What n counts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Size {
+    Degree,
+    Control,
+    Parameters,
+}
+
+/// One call of `run` on random input of size n in `size`.
 struct Sweep {
     run: Run,
-    in_degree: bool,
+    size: Size,
+}
+
+/// The prepared input: a curve, a parameter, and the data or parameters some runs need.
+#[derive(Clone)]
+struct Prepared {
+    curve: BSpline<f64, 2>,
+    u: f64,
+    /// Blossom arguments, refinement knots, fitting or evaluation parameters.
+    params: Vec<f64>,
+    /// Data points to interpolate or fit.
+    data: Vec<Point<f64, 2>>,
+    /// The curve with weights in [1/2, 3/2), for the NURBS run.
+    nurbs: Option<Nurbs<f64, 2>>,
 }
 
 /// The B-spline entries.
 pub(super) fn entries() -> Vec<Entry> {
-    use crate::spline::bspline::declarations as d;
-    // n is the degree or the number of control points, as the input name says.
-    let sweep = |run, in_degree| Sweep { run, in_degree };
+    use crate::spline::bspline::declarations as b;
+    use crate::spline::rational::NURBS_DE_BOOR;
+    let entry = |declaration: &'static Declaration, run: Run, size: Size| {
+        let input = match size {
+            Size::Degree => RANDOM_DEGREE,
+            Size::Control => RANDOM_CONTROL,
+            Size::Parameters => RANDOM_PARAMETERS,
+        };
+        let e = Entry::declared(declaration, input, Sweep { run, size });
+        match (size, run) {
+            (Size::Degree, _) => e.quick(4, 256).full(4, 512),
+            (Size::Control, Run::DeBoor | Run::Span) => e.quick(64, 1 << 16).full(64, 1 << 20),
+            (Size::Control, _) => e.quick(64, 1 << 12).full(64, 1 << 16),
+            (Size::Parameters, _) => e.quick(64, 1 << 14).full(64, 1 << 18),
+        }
+    };
     vec![
-        Entry::declared(&d::DE_BOOR, RANDOM_DEGREE, sweep(Run::DeBoor, true))
-            .quick(4, 256)
-            .full(4, 512),
-        Entry::declared(&d::DE_BOOR, RANDOM_CONTROL, sweep(Run::DeBoor, false))
-            .quick(64, 1 << 16)
-            .full(64, 1 << 20),
-        Entry::declared(&d::BASIS, RANDOM_DEGREE, sweep(Run::Basis, true))
-            .quick(4, 256)
-            .full(4, 512),
-        Entry::declared(&d::SPAN, RANDOM_CONTROL, sweep(Run::Span, false))
-            .quick(64, 1 << 16)
-            .full(64, 1 << 20),
-        Entry::declared(&d::INSERT, RANDOM_DEGREE, sweep(Run::Insert, true))
-            .quick(4, 256)
-            .full(4, 512),
+        entry(&b::DE_BOOR, Run::DeBoor, Size::Degree),
+        entry(&b::DE_BOOR, Run::DeBoor, Size::Control),
+        entry(&b::BASIS, Run::Basis, Size::Degree),
+        entry(&b::SPAN, Run::Span, Size::Control),
+        entry(&b::INSERT, Run::Insert, Size::Degree),
+        entry(&b::BLOSSOM, Run::Blossom, Size::Degree),
+        entry(&b::SPLIT, Run::Split, Size::Degree),
+        entry(&NURBS_DE_BOOR, Run::NurbsDeBoor, Size::Degree),
+        entry(&b::TO_BEZIER, Run::ToBezier, Size::Control),
+        entry(&b::ELEVATE, Run::Elevate, Size::Control),
+        entry(&b::REFINE, Run::Refine, Size::Control),
+        entry(&b::INTERPOLATE, Run::Interpolate, Size::Control),
+        entry(&b::FIT, Run::Fit, Size::Control),
+        entry(&b::EVAL_SORTED, Run::EvalSorted, Size::Parameters),
     ]
 }
 
 impl Workload for Sweep {
-    type Input = (BSpline<f64, 2>, f64);
+    type Input = Prepared;
     type Output = usize;
 
-    fn prepare(&self, n: usize, seed: u64) -> Result<Self::Input> {
-        let (degree, count) = if self.in_degree {
-            (n, 2 * (n + 1))
-        } else {
-            (3, n.max(4))
+    fn prepare(&self, n: usize, seed: u64) -> Result<Prepared> {
+        let (degree, count) = match self.size {
+            Size::Degree => (n, 2 * (n + 1)),
+            Size::Control => (3, n.max(4)),
+            Size::Parameters => (3, FIXED_CONTROL),
         };
         let pts = points(PointKind::UniformSquare, count, seed)?;
         let u = pts[0].x;
+        let data: Vec<Point<f64, 2>> = pts.iter().map(|&p| Point::from(p)).collect();
         let knots = KnotVector::clamped_uniform(degree, count, 0.0, 1.0)?;
-        let curve = BSpline::new(pts.into_iter().map(Point::from).collect(), knots)?;
-        Ok((curve, u))
+        let curve = BSpline::new(data.clone(), knots)?;
+        let params = match (self.size, self.run) {
+            (Size::Degree, _) => pts.iter().take(degree).map(|p| p.x).collect(),
+            (_, Run::Refine) => {
+                let t = curve.knots().knots();
+                (degree..count).map(|i| (t[i] + t[i + 1]) / 2.0).collect()
+            }
+            (_, Run::Fit) => (0..count).map(|i| i as f64 / (count - 1) as f64).collect(),
+            (Size::Parameters, _) => {
+                let mut us: Vec<f64> = points(PointKind::UniformSquare, n, seed ^ 1)?
+                    .iter()
+                    .map(|p| p.x)
+                    .collect();
+                us.sort_by(f64::total_cmp);
+                us
+            }
+            _ => Vec::new(),
+        };
+        let nurbs = match self.run {
+            Run::NurbsDeBoor => {
+                let weights = pts.iter().map(|p| 0.5 + p.y).collect();
+                Some(Nurbs::new(data.clone(), weights, curve.knots().clone())?)
+            }
+            _ => None,
+        };
+        Ok(Prepared {
+            curve,
+            u,
+            params,
+            data,
+            nurbs,
+        })
     }
 
-    fn run<C: Counter>(&self, input: &mut Self::Input, c: &mut C) -> Result<Self::Output> {
-        let (curve, u) = input;
-        // A small summary of the result keeps the optimiser from dropping the work.
+    fn run<C: Counter>(&self, input: &mut Prepared, c: &mut C) -> Result<usize> {
+        let Prepared {
+            curve,
+            u,
+            params,
+            data,
+            nurbs,
+        } = input;
+        // A small summary of each result keeps the optimiser from dropping the work.
         Ok(match self.run {
             Run::DeBoor => curve.de_boor_with(u, c)?.coords()[0].to_bits() as usize,
             Run::Basis => curve.knots().basis_with(u, c)?.span(),
             Run::Span => curve.knots().span_with(u, c)?,
             Run::Insert => curve.insert_with(u, 1, c)?.control().len(),
+            Run::Blossom => curve.blossom_with(params, c)?.coords()[0].to_bits() as usize,
+            Run::Split => curve.split_with(u, c)?.0.control().len(),
+            Run::NurbsDeBoor => match nurbs {
+                Some(s) => s.de_boor_with(u, c)?.coords()[0].to_bits() as usize,
+                None => 0,
+            },
+            Run::ToBezier => curve.to_bezier_with(c)?.pieces().len(),
+            Run::Elevate => curve.elevate_with(1, c)?.control().len(),
+            Run::Refine => curve.refine_with(params, c)?.control().len(),
+            Run::Interpolate => {
+                BSpline::interpolate_with(data, 3, Parameterisation::ChordLength, c)?
+                    .control()
+                    .len()
+            }
+            Run::Fit => {
+                let knots = KnotVector::clamped_uniform(3, data.len() / 4 + 4, 0.0, 1.0)?;
+                BSpline::fit_with(data, params, knots, c)?.control().len()
+            }
+            Run::EvalSorted => curve.eval_sorted_with(params, c)?.len(),
         })
     }
 }

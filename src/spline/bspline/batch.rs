@@ -23,7 +23,7 @@
 
 use super::de_boor::de_boor_level;
 use super::BSpline;
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{Point, Scalar};
 use crate::{Error, Result};
@@ -40,7 +40,7 @@ pub(crate) const EVAL_SORTED: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly de Boor's affine combinations at each parameter; at most m + n comparisons for the walk",
     source: "[PPB, §5.4]",
-    claims: &[],
+    claims: &[on("random-parameters", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 impl<S: Scalar, const D: usize> BSpline<S, D> {

@@ -30,7 +30,7 @@
 //! consecutive knots for every span of the fundamental theorem.
 
 use super::BSpline;
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::bspline::basis::ratios;
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
@@ -48,7 +48,11 @@ pub(crate) const BLOSSOM: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly d(d + 1)/2 affine combinations per value",
     source: "[PPB, §5.5]",
-    claims: &[],
+    claims: &[on(
+        "random-degree",
+        Bound::Quadratic,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 impl<S: Scalar, const D: usize> BSpline<S, D> {

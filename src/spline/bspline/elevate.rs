@@ -53,7 +53,7 @@
 
 use super::basis::ratios;
 use super::{BSpline, KnotVector};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{Point, Scalar};
 use crate::{Error, Result};
@@ -70,7 +70,7 @@ pub(crate) const ELEVATE: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "the conversion's, (d + 1)(t + 1) Zhou terms per piece and exactly (d + t)(d + t + 1)/2 affine combinations per new control point",
     source: "[PPB, §6.4]",
-    claims: &[],
+    claims: &[on("random-control", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 impl<S: Scalar, const D: usize> BSpline<S, D> {

@@ -38,7 +38,7 @@
 use super::banded::BandMatrix;
 use super::interpolate::check_in_domain;
 use super::{BSpline, KnotVector};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::curve::{Curve, CurveDerivative};
 use crate::spline::scalar::{pow2_scale, validate_points, Point, Scalar};
@@ -56,7 +56,7 @@ pub(crate) const FIT: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "m·d(d + 1)/2 basis steps, (d + 1)(d + 2) per parameter for the normal equations, then the banded solve's count with l = u = d",
     source: "[PPB, §4.7]",
-    claims: &[],
+    claims: &[on("random-control", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 /// How many times a Newton step that takes a point farther from the curve is halved before

@@ -31,7 +31,7 @@
 
 use super::banded::BandMatrix;
 use super::{BSpline, KnotVector};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{pow2_scale, validate_points, Point, Scalar};
 use crate::spline::{parameterise, Parameterisation};
@@ -49,7 +49,7 @@ pub(crate) const INTERPOLATE: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly n·d(d + 1)/2 basis steps plus the banded solve's count with l = u = d",
     source: "[PPB, §6.7]",
-    claims: &[],
+    claims: &[on("random-control", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 impl<S: Scalar, const D: usize> BSpline<S, D> {

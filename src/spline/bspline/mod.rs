@@ -109,9 +109,17 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 19] = [
 /// The declarations the catalog's entries measure, by name.
 pub(crate) mod declarations {
     pub(crate) use super::basis::BASIS;
+    pub(crate) use super::batch::EVAL_SORTED;
+    pub(crate) use super::blossom::BLOSSOM;
     pub(crate) use super::de_boor::DE_BOOR;
+    pub(crate) use super::elevate::ELEVATE;
+    pub(crate) use super::fit::FIT;
     pub(crate) use super::insert::INSERT;
+    pub(crate) use super::interpolate::INTERPOLATE;
     pub(crate) use super::knots::SPAN;
+    pub(crate) use super::refine::REFINE;
+    pub(crate) use super::split::SPLIT;
+    pub(crate) use super::to_bezier::TO_BEZIER;
 }
 
 pub use banded::BandMatrix;

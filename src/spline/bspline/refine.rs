@@ -40,7 +40,7 @@
 
 use super::basis::ratios;
 use super::{BSpline, KnotVector};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{Point, Scalar};
 use crate::{Error, Result};
@@ -57,7 +57,7 @@ pub(crate) const REFINE: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly q(d(d + 1)/2 + d + 1) operations, q ≤ md the new control points that are not copies",
     source: "[PPB, §6.2]",
-    claims: &[],
+    claims: &[on("random-control", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 impl<S: Scalar, const D: usize> BSpline<S, D> {

@@ -28,7 +28,7 @@
 //! half, and the pieces meet at s(u).
 
 use super::{BSpline, KnotVector};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{validate_parameter, Scalar};
 use crate::{Error, Result};
@@ -45,7 +45,7 @@ pub(crate) const SPLIT: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly (d − s)(d − s + 1)/2 affine combinations, s ≤ d the multiplicity of u (none at d + 1)",
     source: "[PPB, §6.1]",
-    claims: &[],
+    claims: &[on("random-degree", Bound::Quadratic, Operation::ArithmeticOperations)],
 };
 
 impl<S: Scalar, const D: usize> BSpline<S, D> {

@@ -38,7 +38,7 @@
 
 use super::de_boor::de_boor_level;
 use super::{BSpline, KnotVector};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{Point, Scalar};
 use crate::spline::{Bezier, CompositeBezier};
@@ -56,7 +56,7 @@ pub(crate) const TO_BEZIER: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly Σ (d − m)(d − m + 1)/2 affine combinations over the distinct knots in the domain, m the multiplicity (at most d)",
     source: "[PPB, §5.10]",
-    claims: &[],
+    claims: &[on("random-control", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 /// The conversion from piecewise Bézier form, declared.

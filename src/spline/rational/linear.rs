@@ -4,8 +4,10 @@
 //! Both are linear in the control points and depend on the knots only, so applied to the
 //! weighted points Σ wᵢcᵢNᵢ and to the weights Σ wᵢNᵢ (the two halves of
 //! [`Nurbs::homogeneous`]) they give the homogeneous form of the same rational curve in the
-//! new representation [SPL, §14]. The weights of the result stay positive: elevation and
-//! knot insertion make each new weight a convex combination of old ones.
+//! new representation [SPL, §14]. The weights of the result stay positive: knot insertion
+//! makes each new weight a convex combination of old ones, and elevation on clamped ends an
+//! average of blossom values of the weight function inside the domain (on unclamped ends it
+//! would extrapolate, so it is refused there).
 //!
 //! # Complexity
 //!
@@ -17,7 +19,7 @@ use super::{Nurbs, RationalBezier};
 use crate::complexity::Declaration;
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::Scalar;
-use crate::Result;
+use crate::{Error, Result};
 
 /// NURBS degree elevation, declared.
 pub(crate) const NURBS_ELEVATE: Declaration = Declaration {
@@ -54,8 +56,12 @@ impl<S: Scalar, const D: usize> Nurbs<S, D> {
     ///
     /// # Errors
     ///
-    /// As [`BSpline::elevate`](crate::spline::BSpline::elevate); [`Error::Overflow`](crate::Error::Overflow)
-    /// if, with `f64`, a control point (a quotient) is beyond the double range.
+    /// [`Error::InvalidParameter`] named `"knots"` unless the ends are clamped
+    /// (t₁ = … = t_d and t_n = … = t_{n+d−1}; t₀ and t_{n+d} are free): on other knot vectors
+    /// the B-spline elevation extrapolates the end pieces beyond the domain, where the
+    /// weights may turn negative; otherwise as
+    /// [`BSpline::elevate`](crate::spline::BSpline::elevate), and [`Error::Overflow`] if, with
+    /// `f64`, a control point (a quotient) is beyond the double range.
     ///
     /// # Complexity
     ///
@@ -101,6 +107,18 @@ impl<S: Scalar, const D: usize> Nurbs<S, D> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn elevate_with<C: Counter>(&self, times: usize, counter: &mut C) -> Result<Self> {
+        let (d, t) = (self.degree(), self.knots().knots());
+        let n = t.len() - d - 1;
+        // B-spline elevation extends the end pieces beyond the domain where the knots there
+        // are not all at its ends; the weights of those control points, extrapolated, may
+        // turn negative. With t₁ = … = t_d and t_n = … = t_{n+d−1} every new weight is an
+        // average of blossom values inside the domain: positive.
+        if d > 0 && (t[1] != t[d] || t[n] != t[n + d - 1]) {
+            return Err(Error::InvalidParameter {
+                name: "knots",
+                reason: "elevating a NURBS curve needs clamped ends (t_1 = … = t_d and t_n = … = t_{n+d−1}): beyond the domain the elevated weights may turn negative".to_string(),
+            });
+        }
         let (numerator, denominator) = self.homogeneous();
         let numerator = numerator.elevate_with(times, counter)?;
         let denominator = denominator.elevate_with(times, counter)?;

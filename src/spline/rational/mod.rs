@@ -59,4 +59,6 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
 
 pub use bezier::RationalBezier;
 pub use conic::ConicKind;
+/// NURBS evaluation, declared: the catalog measures it.
+pub(crate) use nurbs::NURBS_DE_BOOR;
 pub use nurbs::{Nurbs, NurbsDerivative};

@@ -40,7 +40,7 @@
 
 use super::quotient::quotient_derivatives;
 use super::weights::{homogeneous, project, validate_weights};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::bspline::{BSpline, KnotVector};
 use crate::spline::curve::{Curve, CurveDerivative, Domain};
@@ -59,7 +59,7 @@ pub(crate) const NURBS_DE_BOOR: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly d(d + 1) affine combinations per point off the knots, (d − r)(d − r + 1) at a knot of multiplicity r",
     source: "[SPL, §14]",
-    claims: &[],
+    claims: &[on("random-degree", Bound::Quadratic, Operation::ArithmeticOperations)],
 };
 
 /// The NURBS knot insertion, declared.
