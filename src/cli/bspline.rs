@@ -1,5 +1,7 @@
-//! `compgeo bspline eval|insert|derivative|basis`: one operation on a B-spline curve given by
-//! its control points, degree and knots, in `f64` or (with `--exact`) in exact rationals.
+//! `compgeo bspline eval|insert|derivative|refine|remove|elevate|to-bezier|split|basis`: one
+//! operation on a B-spline curve given by its control points, degree and knots, and
+//! `compgeo bspline interpolate|fit`: a curve from data points; in `f64` or (with `--exact`)
+//! in exact rationals.
 //!
 //! Control points are JSON `[[x, y], ...]` in any dimension from 1 to 4 (or `[x, ...]` for one
 //! coordinate); knots are a flat list `[0, 0, 0, "1/2", 1, 1, 1]`. Numbers are JSON numbers or
@@ -14,11 +16,11 @@
 
 use super::bezier::{point, points, scalars, JsonScalar};
 use super::input::{parse_number_arrays, parse_number_list, read_text};
-use super::interpolate::{read_scalars, to_points};
+use super::interpolate::{read_scalars, to_points, Knots};
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
-use crate::spline::{parse_scalar, BSpline, CurveDerivative, KnotVector, Point};
+use crate::spline::{parameterise, parse_scalar, BSpline, CurveDerivative, KnotVector, Point};
 use clap::{Args, Subcommand};
 use num_rational::BigRational;
 use serde_json::{json, Value};
@@ -67,6 +69,63 @@ enum Op {
         #[arg(long = "u", value_name = "U", allow_hyphen_values = true)]
         u: Option<String>,
     },
+    /// The same curve with all the given knots inserted at once (the Oslo algorithm)
+    Refine {
+        #[command(flatten)]
+        curve: CurveArgs,
+        /// The knots to insert, JSON ["1/4", 0.5, ...], in the domain (any order)
+        #[arg(long = "new", value_name = "JSON", allow_hyphen_values = true)]
+        new: String,
+    },
+    /// The same curve with the knot u removed r times, if the curve allows it
+    Remove {
+        #[command(flatten)]
+        curve: CurveArgs,
+        /// The knot to remove, strictly inside the domain
+        #[arg(long = "u", value_name = "U", allow_hyphen_values = true)]
+        u: String,
+        /// How many times
+        #[arg(long, default_value_t = 1)]
+        times: usize,
+        /// Accept a removal that moves every control point by at most this distance
+        /// [default: exact removal only]
+        #[arg(long, value_name = "DISTANCE", allow_hyphen_values = true)]
+        tolerance: Option<String>,
+    },
+    /// The same curve in a degree t higher (every knot t more times)
+    Elevate {
+        #[command(flatten)]
+        curve: CurveArgs,
+        /// How many degrees to raise
+        #[arg(long, default_value_t = 1)]
+        times: usize,
+    },
+    /// The Bézier pieces of the curve, one per non-empty knot interval of the domain
+    ToBezier {
+        #[command(flatten)]
+        curve: CurveArgs,
+    },
+    /// The two curves on [t_d, u] and [u, t_n]
+    Split {
+        #[command(flatten)]
+        curve: CurveArgs,
+        /// Where to split, strictly inside the domain
+        #[arg(long = "u", value_name = "U", allow_hyphen_values = true)]
+        u: String,
+    },
+    /// The B-spline of a degree through the points (collocation, averaged knots)
+    Interpolate {
+        #[command(flatten)]
+        data: DataArgs,
+    },
+    /// The least-squares B-spline with the given number of control points (clamped uniform knots)
+    Fit {
+        #[command(flatten)]
+        data: DataArgs,
+        /// The number of control points, at least degree + 1
+        #[arg(long)]
+        control_points: usize,
+    },
     /// The non-zero basis functions N_{μ−d}, …, N_μ at u (and their derivatives)
     Basis {
         /// The knots, JSON [0, 0, "1/2", 1, 1]
@@ -111,10 +170,54 @@ struct CurveArgs {
     exact: bool,
 }
 
+/// The data of `interpolate` and `fit`.
+#[derive(Debug, Args)]
+struct DataArgs {
+    /// The points, JSON [[x, y], ...] (dimension 1 to 4)
+    #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+    points: String,
+    /// The degree d
+    #[arg(long, default_value_t = 3)]
+    degree: usize,
+    /// How to choose the parameters of the points
+    #[arg(long, value_enum, default_value = "chord-length")]
+    parameterisation: Knots,
+    /// Compute in exact rationals and print every number as a string such as "47/18"
+    #[arg(long)]
+    exact: bool,
+}
+
 /// Runs `compgeo bspline`.
 pub(super) fn run(args: BsplineArgs) -> Result<(), CliError> {
     let curve = match &args.op {
-        Op::Eval { curve, .. } | Op::Insert { curve, .. } | Op::Derivative { curve, .. } => curve,
+        Op::Eval { curve, .. }
+        | Op::Insert { curve, .. }
+        | Op::Derivative { curve, .. }
+        | Op::Refine { curve, .. }
+        | Op::Remove { curve, .. }
+        | Op::Elevate { curve, .. }
+        | Op::ToBezier { curve, .. }
+        | Op::Split { curve, .. } => curve,
+        Op::Interpolate { data } | Op::Fit { data, .. } => {
+            let rows = parse_number_arrays(&data.points)?;
+            let d = rows[0].len();
+            let value = match (data.exact, d) {
+                (false, 1) => run_data::<f64, 1>(&args.op, data, &rows)?,
+                (false, 2) => run_data::<f64, 2>(&args.op, data, &rows)?,
+                (false, 3) => run_data::<f64, 3>(&args.op, data, &rows)?,
+                (false, 4) => run_data::<f64, 4>(&args.op, data, &rows)?,
+                (true, 1) => run_data::<BigRational, 1>(&args.op, data, &rows)?,
+                (true, 2) => run_data::<BigRational, 2>(&args.op, data, &rows)?,
+                (true, 3) => run_data::<BigRational, 3>(&args.op, data, &rows)?,
+                (true, 4) => run_data::<BigRational, 4>(&args.op, data, &rows)?,
+                _ => {
+                    return Err(CliError::Shape(format!(
+                        "points have {d} coordinates; 1 to 4 are supported"
+                    )))
+                }
+            };
+            return print_json(&value);
+        }
         Op::Basis {
             knots,
             degree,
@@ -250,8 +353,80 @@ fn run_typed<S: JsonScalar, const D: usize>(
             }
             out
         }
-        Op::Basis { .. } => unreachable!("basis needs no control points and runs before"),
+        Op::Refine { new, .. } => {
+            let knots = read_scalars::<S>(new, "new knot", "new knots")?;
+            let mut counts = Counts::default();
+            let r = s.refine_with(&knots, &mut counts)?;
+            let mut out = curve_json(&r)?;
+            out["counts"] = json!(counts);
+            out
+        }
+        Op::Remove {
+            u,
+            times,
+            tolerance,
+            ..
+        } => {
+            let u: S = parse_scalar(u, "u")?;
+            let r = match tolerance {
+                None => s.remove(&u, *times)?,
+                Some(text) => s.remove_within(&u, *times, &parse_scalar(text, "tolerance")?)?,
+            };
+            curve_json(&r)?
+        }
+        Op::Elevate { times, .. } => {
+            let mut counts = Counts::default();
+            let r = s.elevate_with(*times, &mut counts)?;
+            let mut out = curve_json(&r)?;
+            out["counts"] = json!(counts);
+            out
+        }
+        Op::ToBezier { .. } => {
+            let pieces = s.to_bezier()?;
+            let printed = pieces
+                .pieces()
+                .iter()
+                .enumerate()
+                .map(|(k, b)| points(b.control(), &format!("pieces[{k}]")))
+                .collect::<Result<Vec<_>, _>>()?;
+            json!({
+                "degree": s.degree(),
+                "breakpoints": scalars(pieces.partition(), "breakpoints")?,
+                "pieces": printed,
+            })
+        }
+        Op::Split { u, .. } => {
+            let u: S = parse_scalar(u, "u")?;
+            let (left, right) = s.split(&u)?;
+            json!({"left": curve_json(&left)?, "right": curve_json(&right)?})
+        }
+        Op::Interpolate { .. } | Op::Fit { .. } | Op::Basis { .. } => {
+            unreachable!("interpolate, fit and basis read no control points and run before")
+        }
     })
+}
+
+/// `interpolate` and `fit`: a curve from data points.
+fn run_data<S: JsonScalar, const D: usize>(
+    op: &Op,
+    data: &DataArgs,
+    rows: &[Vec<String>],
+) -> Result<Value, CliError> {
+    let pts: Vec<Point<S, D>> = to_points(rows, |i| format!("point {i}"))?;
+    let kind = data.parameterisation.kind();
+    let mut counts = Counts::default();
+    let s = match op {
+        Op::Fit { control_points, .. } => {
+            let params = parameterise(&pts, kind)?;
+            let (first, last) = (params[0].clone(), params[params.len() - 1].clone());
+            let knots = KnotVector::clamped_uniform(data.degree, *control_points, first, last)?;
+            BSpline::fit_with(&pts, &params, knots, &mut counts)?
+        }
+        _ => BSpline::interpolate_with(&pts, data.degree, kind, &mut counts)?,
+    };
+    let mut out = curve_json(&s)?;
+    out["counts"] = json!(counts);
+    Ok(out)
 }
 
 /// `compgeo bspline basis`: the non-zero basis functions at u, and their derivatives.

@@ -128,7 +128,7 @@ enum End {
 
 /// The parameterisations.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum Knots {
+pub(super) enum Knots {
     /// 0, 1, 2, ...
     Uniform,
     /// Knot gaps equal to the chord lengths
@@ -286,6 +286,17 @@ fn run_typed<S: JsonScalar, const D: usize>(
     })
 }
 
+impl Knots {
+    /// The library's parameterisation.
+    pub(super) fn kind(self) -> Parameterisation {
+        match self {
+            Knots::Uniform => Parameterisation::Uniform,
+            Knots::ChordLength => Parameterisation::ChordLength,
+            Knots::Centripetal => Parameterisation::Centripetal,
+        }
+    }
+}
+
 /// The knots from `--knots`, or from the parameterisation.
 fn knots_of<S: JsonScalar, const D: usize>(
     data: &CurveData,
@@ -293,14 +304,7 @@ fn knots_of<S: JsonScalar, const D: usize>(
 ) -> Result<Vec<S>, CliError> {
     match &data.knots {
         Some(text) => read_scalars(text, "knot", "knots"),
-        None => {
-            let kind = match data.parameterisation {
-                Knots::Uniform => Parameterisation::Uniform,
-                Knots::ChordLength => Parameterisation::ChordLength,
-                Knots::Centripetal => Parameterisation::Centripetal,
-            };
-            Ok(parameterise(pts, kind)?)
-        }
+        None => Ok(parameterise(pts, data.parameterisation.kind())?),
     }
 }
 

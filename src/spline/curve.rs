@@ -90,8 +90,10 @@ impl<S: Scalar> Domain<S> {
 ///   (a Bézier curve in its local parameter, a polynomial interpolant in any of its forms)
 ///   evaluates at every real parameter: its domain is [`Domain::Real`], and the control
 ///   polygon of a Bézier curve describes its segment over [0, 1] without limiting where it
-///   can be evaluated. A piecewise curve (composite Bézier curves, splines, and the B-splines
-///   and NURBS still to come) is defined on its partition [u₀, u_m]: [`Domain::Interval`].
+///   can be evaluated. A piecewise curve (composite Bézier curves, splines, B-splines and
+///   NURBS on [t_d, t_n]) is defined on its partition [u₀, u_m]: [`Domain::Interval`]. A
+///   rational Bézier curve is defined on [0, 1] only, where its weights keep the denominator
+///   positive.
 /// - **A subsegment keeps the parameter**: the piece over [a, b] evaluates at u ∈ [a, b] to
 ///   the curve's point at u, so halves cut at c reproduce the curve on both sides of c.
 ///   Polynomial curves give their piece as a [`Reparametrised`](super::Reparametrised)

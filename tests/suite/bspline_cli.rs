@@ -394,3 +394,130 @@ fn bad_input_names_the_index_and_the_value() {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(8))]
+
+    /// refine, elevate, to-bezier and split print the library's curves exactly.
+    #[test]
+    fn refine_elevate_convert_and_split_match_the_library((s, u) in curve_and_parameter()) {
+        let ut = u.to_string();
+        if s.knots().multiplicity(&u) < s.degree() {
+            let new = json_list(std::slice::from_ref(&u));
+            let out = run_op("refine", &s, &["--new", &new], true);
+            let want = s.refine(std::slice::from_ref(&u)).unwrap();
+            prop_assert_eq!(exact_points(&out["control"]), want.control().to_vec());
+            prop_assert_eq!(exact_list(&out["knots"]), want.knots().knots().to_vec());
+        }
+        let out = run_op("elevate", &s, &[], true);
+        let want = s.elevate(1).unwrap();
+        prop_assert_eq!(exact_points(&out["control"]), want.control().to_vec());
+        prop_assert_eq!(out["degree"].as_u64().unwrap() as usize, s.degree() + 1);
+        let out = run_op("to-bezier", &s, &[], true);
+        let want = s.to_bezier().unwrap();
+        prop_assert_eq!(exact_list(&out["breakpoints"]), want.partition().to_vec());
+        for (got, b) in out["pieces"].as_array().unwrap().iter().zip(want.pieces()) {
+            prop_assert_eq!(exact_points(got), b.control().to_vec());
+        }
+        let (lo, hi) = s.knots().bounds();
+        if &u > lo && &u < hi {
+            let out = run_op("split", &s, &["--u", &ut], true);
+            let (left, right) = s.split(&u).unwrap();
+            prop_assert_eq!(exact_points(&out["left"]["control"]), left.control().to_vec());
+            prop_assert_eq!(exact_list(&out["right"]["knots"]), right.knots().knots().to_vec());
+        }
+    }
+}
+
+#[test]
+fn remove_interpolate_and_fit_match_the_library() {
+    // Insert-then-remove on the command line gives the parabola back.
+    let out = run_json(
+        &[
+            "bspline",
+            "remove",
+            "--control",
+            r#"[[0,0],["1/2",1],[1,1],["3/2",1],[2,0]]"#,
+            "--degree",
+            "2",
+            "--knots",
+            r#"[0,0,0,"1/2","1/2",1,1,1]"#,
+            "--u",
+            "1/2",
+            "--times",
+            "2",
+            "--exact",
+        ],
+        None,
+    );
+    assert_eq!(
+        exact_points(&out["control"]),
+        [(0, 0), (1, 2), (2, 0)]
+            .map(|(x, y)| Point::new([qi(x), qi(y)]))
+            .to_vec()
+    );
+    let line = assert_rejected(
+        &[
+            "bspline",
+            "remove",
+            "--control",
+            "[[0,0],[1,2],[3,2],[4,0],[6,1]]",
+            "--u",
+            "1/2",
+        ],
+        None,
+    );
+    assert!(line.contains("0 of 1 removals succeeded"), "{line}");
+    // Interpolation passes through the points; the fit equals the library's.
+    let data = "[[0,0],[1,2],[3,1],[4,4],[5,0],[6,1],[7,3]]";
+    let out = run_json(
+        &[
+            "bspline",
+            "interpolate",
+            "--points",
+            data,
+            "--parameterisation",
+            "uniform",
+            "--exact",
+        ],
+        None,
+    );
+    let s = BSpline::new(
+        exact_points(&out["control"]),
+        KnotVector::new(3, exact_list(&out["knots"])).unwrap(),
+    )
+    .unwrap();
+    let pts = [(0, 0), (1, 2), (3, 1), (4, 4), (5, 0), (6, 1), (7, 3)]
+        .map(|(x, y)| Point::new([qi(x), qi(y)]));
+    for (i, p) in pts.iter().enumerate() {
+        assert_eq!(&s.eval(&qi(i64::try_from(i).unwrap())).unwrap(), p);
+    }
+    let out = run_json(
+        &[
+            "bspline",
+            "fit",
+            "--points",
+            data,
+            "--control-points",
+            "4",
+            "--parameterisation",
+            "uniform",
+            "--exact",
+        ],
+        None,
+    );
+    let params: Vec<Q> = (0..7).map(qi).collect();
+    let knots = KnotVector::clamped_uniform(3, 4, qi(0), qi(6)).unwrap();
+    let want = BSpline::fit(&pts, &params, knots).unwrap();
+    assert_eq!(exact_points(&out["control"]), want.control().to_vec());
+    let line = assert_rejected(
+        &[
+            "bspline",
+            "interpolate",
+            "--points",
+            "[[0,0],[0,0],[1,1],[2,2],[3,3]]",
+        ],
+        None,
+    );
+    assert!(line.contains("points 0 and 1"), "{line}");
+}
