@@ -8,16 +8,12 @@
 //! apart, near 1e300 and subnormal), bad input as named errors, and [PPB, §5.12, Ex. 7].
 
 use crate::bspline_basis::{knot_vector, parameter};
+use crate::spline_common::bspline::{exact, point};
 use crate::spline_common::{q, qi, Q};
 use compgeo::count::Counts;
 use compgeo::spline::{BSpline, Curve, KnotVector, Point, Scalar};
 use compgeo::Error;
 use proptest::prelude::*;
-
-/// A point of the plane with integer coordinates (any scalar).
-fn point<S: Scalar>((x, y): (i64, i64)) -> Point<S, 2> {
-    Point::new([S::from_i64(x), S::from_i64(y)])
-}
 
 /// An exact curve on a random knot vector of degree 0..=4 (repeated knots included).
 fn curve() -> impl Strategy<Value = BSpline<Q, 2>> {
@@ -249,14 +245,6 @@ fn f64_curve() -> impl Strategy<Value = BSpline<f64, 2>> {
                 BSpline::new(c.into_iter().map(point).collect(), t).ok()
             })
     })
-}
-
-/// The exact curve with the same knots and control points as an `f64` one.
-fn exact(s: &BSpline<f64, 2>) -> BSpline<Q, 2> {
-    let t = s.knots().knots().iter().map(|k| Q::from_f64(*k).unwrap());
-    let t = KnotVector::new(s.degree(), t.collect()).unwrap();
-    let c = s.control().iter().map(|p| Point::from_f64(p).unwrap());
-    BSpline::new(c.collect(), t).unwrap()
 }
 
 /// The largest |coordinate| of the control points (at least the smallest normal).

@@ -9,16 +9,12 @@
 //! subnormal coordinates), bad input as named errors, and exercises of [PPB, §5.12, §6.9].
 
 use crate::bspline_basis::knot_vector;
+use crate::spline_common::bspline::{exact, point, samples};
 use crate::spline_common::{q, qi, Q};
 use compgeo::count::Counts;
 use compgeo::spline::{BSpline, Bezier, CompositeBezier, Curve, KnotVector, Point, Scalar};
 use compgeo::Error;
 use proptest::prelude::*;
-
-/// A point of the plane with integer coordinates (any scalar).
-fn point<S: Scalar>((x, y): (i64, i64)) -> Point<S, 2> {
-    Point::new([S::from_i64(x), S::from_i64(y)])
-}
 
 /// An exact curve on a random knot vector of degree 0..=4 (repeated knots, clamped or not).
 fn curve() -> impl Strategy<Value = BSpline<Q, 2>> {
@@ -39,16 +35,6 @@ fn domain_knots(t: &KnotVector<Q>) -> Vec<(Q, usize)> {
         .into_iter()
         .filter(|(v, _)| v >= a && v <= b)
         .collect()
-}
-
-/// Every knot of the domain and 25 rationals across it.
-fn samples(t: &KnotVector<Q>) -> Vec<Q> {
-    let (a, b) = (t.bounds().0.clone(), t.bounds().1.clone());
-    let mut us: Vec<Q> = (0..=24)
-        .map(|k| a.clone() + (b.clone() - &a) * q(k, 24))
-        .collect();
-    us.extend(domain_knots(t).into_iter().map(|(v, _)| v));
-    us
 }
 
 /// Σ over the distinct knots of the domain of (d − m)(d − m + 1)/2, m capped at d.
@@ -252,25 +238,6 @@ fn close(a: &[Point<f64, 2>], b: &[Point<Q, 2>], bound: f64) -> Result<(), TestC
         }
     }
     Ok(())
-}
-
-/// The exact curve with the same knots and control points as an `f64` one.
-fn exact(s: &BSpline<f64, 2>) -> BSpline<Q, 2> {
-    let t = KnotVector::new(
-        s.degree(),
-        s.knots()
-            .knots()
-            .iter()
-            .map(|k| Q::from_f64(*k).unwrap())
-            .collect(),
-    )
-    .unwrap();
-    let c = s
-        .control()
-        .iter()
-        .map(|p| Point::from_f64(p).unwrap())
-        .collect();
-    BSpline::new(c, t).unwrap()
 }
 
 /// The largest absolute coordinate of the control points.

@@ -8,16 +8,12 @@
 //! 1e300 and subnormal), bad input as named errors, and [PPB, §5.12, Ex. 7].
 
 use crate::bspline_basis::{knot_vector, parameter};
+use crate::spline_common::bspline::{exact, point, samples};
 use crate::spline_common::{q, qi, Q};
 use compgeo::count::Counts;
 use compgeo::spline::{BSpline, Bezier, Curve, CurveDerivative, Domain, KnotVector, Point, Scalar};
 use compgeo::Error;
 use proptest::prelude::*;
-
-/// A point of the plane with integer coordinates in −20..=20 (any scalar).
-fn point<S: Scalar>((x, y): (i64, i64)) -> Point<S, 2> {
-    Point::new([S::from_i64(x), S::from_i64(y)])
-}
 
 /// An exact curve on a random knot vector of degree 0..=4 (repeated knots included).
 fn curve() -> impl Strategy<Value = BSpline<Q, 2>> {
@@ -37,16 +33,6 @@ fn curve_and_parameter() -> impl Strategy<Value = (BSpline<Q, 2>, Q)> {
         let u = parameter(s.knots());
         (Just(s), u)
     })
-}
-
-/// Every knot of the domain and 25 rationals across it.
-fn samples(t: &KnotVector<Q>) -> Vec<Q> {
-    let (a, b) = (t.bounds().0.clone(), t.bounds().1.clone());
-    let mut us: Vec<Q> = (0..=24)
-        .map(|k| a.clone() + (b.clone() - &a) * q(k, 24))
-        .collect();
-    us.extend(t.knots().iter().filter(|k| **k >= a && **k <= b).cloned());
-    us
 }
 
 /// Σ cᵢ Nᵢ(u) from the basis.
@@ -266,25 +252,6 @@ fn the_exercise_of_ppb_5_12_7() {
         let u = qi(3) + q(j, 8);
         assert_eq!(s.eval(&u).unwrap(), b.eval(&q(j, 8)).unwrap());
     }
-}
-
-/// The exact curve with the same knots and control points as an `f64` one.
-fn exact(s: &BSpline<f64, 2>) -> BSpline<Q, 2> {
-    let t = KnotVector::new(
-        s.degree(),
-        s.knots()
-            .knots()
-            .iter()
-            .map(|k| Q::from_f64(*k).unwrap())
-            .collect(),
-    )
-    .unwrap();
-    let c = s
-        .control()
-        .iter()
-        .map(|p| Point::from_f64(p).unwrap())
-        .collect();
-    BSpline::new(c, t).unwrap()
 }
 
 /// `f64` evaluation, insertion and first derivative agree with the exact ones at `us`, each

@@ -18,6 +18,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use crate::bspline_basis::knot_vector;
+use crate::spline_common::bspline::point;
 use crate::spline_common::{q, qi, Q};
 use compgeo::count::Counts;
 use compgeo::spline::{
@@ -26,11 +27,6 @@ use compgeo::spline::{
 };
 use compgeo::Error;
 use proptest::prelude::*;
-
-/// A point of the plane with integer coordinates.
-fn point<S: Scalar>((x, y): (i64, i64)) -> Point<S, 2> {
-    Point::new([S::from_i64(x), S::from_i64(y)])
-}
 
 /// The rank of a rational matrix by exact elimination with row exchanges.
 fn dense_rank(mut a: Vec<Vec<Q>>) -> usize {

@@ -8,16 +8,12 @@
 //! as named errors.
 
 use crate::bspline_basis::{knot_vector, parameter};
+use crate::spline_common::bspline::{exact, point};
 use crate::spline_common::{q, qi, Q};
 use compgeo::count::Counts;
 use compgeo::spline::{BSpline, Curve, CurveDerivative, KnotVector, Point, Scalar};
 use compgeo::Error;
 use proptest::prelude::*;
-
-/// A point of the plane with integer coordinates (any scalar).
-fn point<S: Scalar>((x, y): (i64, i64)) -> Point<S, 2> {
-    Point::new([S::from_i64(x), S::from_i64(y)])
-}
 
 /// An exact curve on a random knot vector of degree 0..=4 (repeated knots, clamped or not).
 fn curve() -> impl Strategy<Value = BSpline<Q, 2>> {
@@ -238,25 +234,6 @@ proptest! {
             close_all(back.control(), sq.control(), 1e-9);
         }
     }
-}
-
-/// The exact curve with the same knots and control points as an `f64` one.
-fn exact(s: &BSpline<f64, 2>) -> BSpline<Q, 2> {
-    let t = KnotVector::new(
-        s.degree(),
-        s.knots()
-            .knots()
-            .iter()
-            .map(|k| Q::from_f64(*k).unwrap())
-            .collect(),
-    )
-    .unwrap();
-    let c = s
-        .control()
-        .iter()
-        .map(|p| Point::from_f64(p).unwrap())
-        .collect();
-    BSpline::new(c, t).unwrap()
 }
 
 /// Every `f64` point finite and within `bound` of the exact one, coordinate by coordinate.

@@ -11,6 +11,7 @@
 //! near 1e300 or subnormal), and overflow as a named error.
 
 use crate::bspline_basis::{knot_vector, parameter};
+use crate::spline_common::bspline::{point, samples};
 use crate::spline_common::{q, qi, Q};
 use compgeo::count::Counts;
 use compgeo::spline::{
@@ -19,11 +20,6 @@ use compgeo::spline::{
 };
 use compgeo::Error;
 use proptest::prelude::*;
-
-/// A point of the plane with integer coordinates (any scalar).
-fn point<S: Scalar>((x, y): (i64, i64)) -> Point<S, 2> {
-    Point::new([S::from_i64(x), S::from_i64(y)])
-}
 
 /// A positive rational weight k/4, k = 1, …, 16 (repeats and ratios up to 16 included).
 fn weight() -> impl Strategy<Value = Q> {
@@ -59,16 +55,6 @@ fn rational_bezier() -> impl Strategy<Value = RationalBezier<Q, 2>> {
         )
             .prop_map(|(c, w)| RationalBezier::new(c.into_iter().map(point).collect(), w).unwrap())
     })
-}
-
-/// Every knot of the domain and 25 rationals across it.
-fn samples(t: &KnotVector<Q>) -> Vec<Q> {
-    let (a, b) = (t.bounds().0.clone(), t.bounds().1.clone());
-    let mut us: Vec<Q> = (0..=24)
-        .map(|k| a.clone() + (b.clone() - &a) * q(k, 24))
-        .collect();
-    us.extend(t.knots().iter().filter(|k| **k >= a && **k <= b).cloned());
-    us
 }
 
 /// Σ wᵢ cᵢ Nᵢ(u) / Σ wᵢ Nᵢ(u) from the basis and the data as given.

@@ -2,6 +2,7 @@
 //! integer pairs printed in the seeds, and the properties every curve type must have
 //! (`curve_properties`).
 
+pub mod bspline;
 pub mod curve_properties;
 
 use compgeo::spline::Point;
