@@ -225,9 +225,38 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// ```
     pub fn de_boor_with<C: Counter>(&self, u: &S, counter: &mut C) -> Result<Point<S, D>> {
         let (span, r) = self.locate(u, counter)?;
-        let mut q = self.window(span, r);
+        // Up to degree 5 the d − r + 1 points of the scheme live in an array of exactly that
+        // length on the stack: an allocation per point cost more than the arithmetic of a
+        // cubic. The arithmetic, and so every result, is the same on both paths.
+        Ok(match self.degree() - r {
+            0 => self.de_boor_on_stack::<1, C>(span, r, u, counter),
+            1 => self.de_boor_on_stack::<2, C>(span, r, u, counter),
+            2 => self.de_boor_on_stack::<3, C>(span, r, u, counter),
+            3 => self.de_boor_on_stack::<4, C>(span, r, u, counter),
+            4 => self.de_boor_on_stack::<5, C>(span, r, u, counter),
+            5 => self.de_boor_on_stack::<6, C>(span, r, u, counter),
+            m => {
+                let mut q = self.window(span, r);
+                self.de_boor_levels(span, r, u, &mut q, counter, |_| {});
+                q.swap_remove(m)
+            }
+        })
+    }
+
+    /// The scheme of [`BSpline::de_boor_with`] on an array of the N = d − r + 1 points of
+    /// level 0 (the caller matches N to the span and multiplicity).
+    #[inline]
+    fn de_boor_on_stack<const N: usize, C: Counter>(
+        &self,
+        span: usize,
+        r: usize,
+        u: &S,
+        counter: &mut C,
+    ) -> Point<S, D> {
+        let window = &self.control()[span - self.degree()..=span - r];
+        let mut q: [Point<S, D>; N] = std::array::from_fn(|j| window[j].clone());
         self.de_boor_levels(span, r, u, &mut q, counter, |_| {});
-        Ok(q.pop().expect("the last level has one point"))
+        q.into_iter().next_back().expect("N = d − r + 1 ≥ 1 points")
     }
 
     /// The de Boor net at `u`: every intermediate point of [`BSpline::de_boor`], by level.
@@ -280,24 +309,26 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     }
 
     /// Runs levels 1, …, d − r of the scheme on `q` (level 0, d − r + 1 points), calling
-    /// `level` with each level's points; `q` ends as the last level.
+    /// `level` with each level's points; `q[k..]` holds level k afterwards, so the last
+    /// point of `q` is s(u).
+    #[inline]
     fn de_boor_levels<C: Counter>(
         &self,
         span: usize,
         r: usize,
         u: &S,
-        q: &mut Vec<Point<S, D>>,
+        q: &mut [Point<S, D>],
         counter: &mut C,
         mut level: impl FnMut(&[Point<S, D>]),
     ) {
         let d = self.degree();
         let t = self.knots().knots();
         let m = d - r; // levels to run
+        debug_assert_eq!(q.len(), m + 1);
         for k in 1..=m {
             de_boor_level(t, d, span, k, u, q, counter);
             level(&q[k..]);
         }
-        q.drain(..m);
     }
 }
 

@@ -157,23 +157,22 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         let n = self.control().len();
         let old = self.control();
 
+        // New points: c₀, …, c_{μ−d}; the first point of levels 1, …, r − 1; the whole level
+        // r; the last point of levels r − 1, …, 1; c_{μ−s}, …, c_{n−1} (n + r in all). The
+        // scheme runs in place on c_{μ−d}, …, c_{μ−s} at the end of the new points: a level
+        // k writes only its own points q[k..=m], so q[k − 1] keeps the first point of level
+        // k − 1 and the front border builds itself; the back border is saved level by level.
         let mut control: Vec<Point<S, D>> = Vec::with_capacity(n + r);
-        control.extend_from_slice(&old[..=span - d]);
-        // The scheme on c_{μ−d}, …, c_{μ−s}; after level k, q[k..=m] holds its points. New
-        // points: c₀, …, c_{μ−d}; the first point of levels 1, …, r − 1; the whole level r; the
-        // last point of levels r − 1, …, 1; c_{μ−s}, …, c_{n−1} (n + r in all).
-        let mut q: Vec<Point<S, D>> = old[span - d..=span - s].to_vec();
+        control.extend_from_slice(&old[..=span - s]);
         let m = d - s;
-        let mut tail = Vec::with_capacity(r);
+        let q = &mut control[span - d..];
+        let mut tail = Vec::with_capacity(r - 1);
         for k in 1..=r {
-            de_boor_level(t, d, span, k, u, &mut q, counter);
+            de_boor_level(t, d, span, k, u, q, counter);
             if k < r {
-                control.push(q[k].clone());
                 tail.push(q[m].clone());
             }
         }
-        // The last level: its points c^r_{μ−d+r}, …, c^r_{μ−s}, whole.
-        control.extend_from_slice(&q[r..=m]);
         control.extend(tail.into_iter().rev());
         control.extend_from_slice(&old[span - s..]);
 
@@ -181,7 +180,10 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         new_knots.extend_from_slice(&t[..=span]);
         new_knots.extend(std::iter::repeat_n(u.clone(), r));
         new_knots.extend_from_slice(&t[span + 1..]);
-        let new_knots = KnotVector::new(d, new_knots)?;
+        // Valid by construction: u is finite and in the domain, at or after t_μ and before
+        // t_{μ+1} (or at the closed end), its multiplicity stays at most d, the count is
+        // within the limit, and the domain [t_d, t_n] keeps both ends (μ ≥ d, μ < n).
+        let new_knots = KnotVector::valid_by_construction(d, new_knots);
         BSpline::derived(control, new_knots, "knot insertion")
     }
 }

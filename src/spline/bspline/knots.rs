@@ -145,6 +145,18 @@ impl<S: Scalar> KnotVector<S> {
         KnotVector::new(degree, t)
     }
 
+    /// A knot vector its caller has built valid (a refinement of a valid one by knots
+    /// checked to be in the domain and below multiplicity d + 1): the Θ(n + d) validation
+    /// of [`KnotVector::new`] would run again over knots already checked, so it runs in debug
+    /// builds only.
+    pub(super) fn valid_by_construction(degree: usize, knots: Vec<S>) -> Self {
+        debug_assert!(
+            validate(degree, &knots).is_ok(),
+            "an invalid derived knot vector"
+        );
+        KnotVector { degree, knots }
+    }
+
     /// The clamped (open) uniform knot vector of `degree` for `control_points` control points
     /// over [start, end]: d + 1 copies of `start`, the n − d − 1 interior knots equally spaced,
     /// d + 1 copies of `end`. With n = d + 1 it is the Bézier case [PPB, §5.3, Obs. 1].
