@@ -325,7 +325,7 @@ fn refinement(ours: &BSpline<f64, 2>) -> Vec<f64> {
     new
 }
 
-/// Ours: one insertion after another (the Oslo refinement of issue 14 will go beside it).
+/// Ours: one insertion after another (the Oslo refinement runs beside it).
 fn ours_refined(s: &BSpline<f64, 2>, new: &[f64]) -> BSpline<f64, 2> {
     new.iter()
         .fold(s.clone(), |s, u| s.insert(u, 1).expect("insertable"))
@@ -358,8 +358,15 @@ fn bench_refine(c: &mut Criterion) {
             BatchSize::SmallInput,
         )
     });
-    // Ours by the Oslo algorithm goes here (issue 14): `compgeo_refine`, on the same `new`,
-    // checked against `ours_refined` above.
+    // Ours by the Oslo algorithm: every new control point at once, the same curve.
+    let oslo = ours.refine(&new).expect("refinable");
+    let one_by_one = ours_refined(&ours, &new);
+    assert_eq!(oslo.knots().knots(), one_by_one.knots().knots());
+    let d = distance(&ours_control(&oslo), &ours_control(&one_by_one));
+    assert!(d <= AGREEMENT, "Oslo against repeated insertion: {d:e}");
+    group.bench_function("compgeo_refine", |b| {
+        b.iter(|| ours.refine(black_box(&new)).expect("refinable"))
+    });
     group.bench_function("truck_repeated_add_knot", |b| {
         b.iter_batched(
             || truck.clone(),
@@ -420,9 +427,25 @@ fn bench_interpolate(c: &mut Criterion) {
 
     let mut group = group(c, "bspline/interpolate");
     group.throughput(Throughput::Elements(INTERPOLATED as u64));
-    // Ours goes here (issue 14, collocation interpolation): `compgeo_interpolate`, a cubic
-    // through `pts` at `params` on `KnotVector::averaged(DEGREE, &params)`, the same curve as
-    // curvo's (check its control points against curvo's within AGREEMENT first).
+    // Ours: the cubic through `pts` at the same chord-length parameters on averaged knots,
+    // the curve curvo builds; it passes through the points.
+    let ours_pts: Vec<Point<f64, 2>> = pts.iter().map(|&q| Point::new(q)).collect();
+    let interpolate = || {
+        let knots = KnotVector::averaged(DEGREE, &params).expect("increasing parameters");
+        BSpline::interpolate_at(&ours_pts, &params, knots).expect("interpolable")
+    };
+    {
+        let s = interpolate();
+        let at: Vec<[f64; 2]> = params
+            .iter()
+            .map(|u| s.eval(u).expect("in the domain").0)
+            .collect();
+        let d = distance(&at, &pts);
+        assert!(d <= AGREEMENT, "our interpolation: {d:e}");
+    }
+    group.bench_function("compgeo_interpolate", |b| {
+        b.iter(|| black_box(interpolate()))
+    });
     group.bench_function("curvo_interpolate", |b| {
         b.iter(|| NurbsCurve2D::interpolate(black_box(&curvo_pts), DEGREE).expect("interpolable"))
     });

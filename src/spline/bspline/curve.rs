@@ -156,6 +156,23 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
             Err(Error::Overflow { what })
         }
     }
+
+    /// [`BSpline::derived`] for a curve whose control points outside `computed` are copies of
+    /// a valid curve's: only the computed ones are checked.
+    pub(super) fn derived_in(
+        control: Vec<Point<S, D>>,
+        knots: KnotVector<S>,
+        computed: std::ops::Range<usize>,
+        what: &'static str,
+    ) -> Result<Self> {
+        debug_assert_eq!(control.len(), knots.control_points());
+        if control[computed].iter().all(Point::is_finite) {
+            debug_assert!(control.iter().all(Point::is_finite));
+            Ok(BSpline { control, knots })
+        } else {
+            Err(Error::Overflow { what })
+        }
+    }
 }
 
 /// The point s(u) by de Boor's algorithm ([`BSpline::de_boor`]), on the domain [t_d, t_n].

@@ -184,7 +184,14 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         // t_{μ+1} (or at the closed end), its multiplicity stays at most d, the count is
         // within the limit, and the domain [t_d, t_n] keeps both ends (μ ≥ d, μ < n).
         let new_knots = KnotVector::valid_by_construction(d, new_knots);
-        BSpline::derived(control, new_knots, "knot insertion")
+        // Only the r(d − s) − r(r − 1)/2 computed points can have overflowed: they are
+        // c_{μ−d+1}, …, c_{μ−s+r−1} of the new polygon; the others are copies of valid ones.
+        BSpline::derived_in(
+            control,
+            new_knots,
+            span - d + 1..span - s + r,
+            "knot insertion",
+        )
     }
 }
 
