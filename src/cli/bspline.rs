@@ -151,10 +151,10 @@ enum Op {
 
 /// The curve and the arithmetic, shared by the curve operations.
 #[derive(Debug, Args)]
-struct CurveArgs {
+pub(super) struct CurveArgs {
     /// Control points as JSON [[x, y], ...] (dimension 1 to 4), or `-` to read them from stdin
     #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
-    control: String,
+    pub(super) control: String,
     /// The degree d [default: 3, or n − 1 for n < 4 control points]
     #[arg(long)]
     degree: Option<usize>,
@@ -167,7 +167,7 @@ struct CurveArgs {
     spl: bool,
     /// Compute in exact rationals and print every number as a string such as "47/18"
     #[arg(long)]
-    exact: bool,
+    pub(super) exact: bool,
 }
 
 /// The data of `interpolate` and `fit`.
@@ -274,7 +274,7 @@ fn knot_vector<S: JsonScalar>(
 }
 
 /// The curve the arguments describe.
-fn curve_of<S: JsonScalar, const D: usize>(
+pub(super) fn curve_of<S: JsonScalar, const D: usize>(
     args: &CurveArgs,
     rows: &[Vec<String>],
 ) -> Result<BSpline<S, D>, CliError> {

@@ -30,6 +30,7 @@ mod hull;
 // The fuzz checks (`crate::fuzzing`) call the readers directly.
 pub(crate) mod input;
 mod interpolate;
+mod nurbs;
 mod output;
 mod proximity;
 mod report;
@@ -79,6 +80,8 @@ enum Command {
     Bezier(bezier::BezierArgs),
     /// B-spline curves: evaluate (with the de Boor net), insert knots, differentiate, the basis
     Bspline(bspline::BsplineArgs),
+    /// NURBS curves: evaluate, insert knots, elevate, rational Bézier pieces
+    Nurbs(nurbs::NurbsArgs),
     /// Interpolation: cubic Hermite, C² cubic spline, Lagrange or Newton, in f64 or exact
     Interpolate(interpolate::InterpolateArgs),
     /// Delaunay triangulation of a point set: CCW triangles, hull, merged duplicates
@@ -125,6 +128,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Diameter(args) => diameter::run(args),
         Command::Bezier(args) => bezier::run(args),
         Command::Bspline(args) => bspline::run(args),
+        Command::Nurbs(args) => nurbs::run(args),
         Command::Interpolate(args) => interpolate::run(args),
         Command::Delaunay(args) => delaunay::run(args),
         Command::Voronoi(args) => proximity::run_voronoi(args),
@@ -228,7 +232,7 @@ mod tests {
             "{top}"
         );
         assert!(!top.contains("help"), "{top}");
-        for group in ["bezier", "bspline", "interpolate"] {
+        for group in ["bezier", "bspline", "interpolate", "nurbs"] {
             let text = missing_subcommand(&args(&["compgeo", group]));
             assert!(text.contains(&format!("`compgeo {group}`")), "{text}");
         }

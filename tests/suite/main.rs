@@ -39,6 +39,7 @@ mod interpolate;
 mod interpolate_cli;
 mod limits;
 mod nurbs;
+mod nurbs_cli;
 mod overflow;
 mod predicates;
 mod proximity;
