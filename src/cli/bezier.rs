@@ -100,21 +100,8 @@ pub(super) fn run(args: BezierArgs) -> Result<(), CliError> {
     };
     let rows = parse_number_arrays(&text)?;
     let d = rows[0].len();
-    let value = match (curve.exact, d) {
-        (false, 1) => run_typed::<f64, 1>(&args.op, &rows)?,
-        (false, 2) => run_typed::<f64, 2>(&args.op, &rows)?,
-        (false, 3) => run_typed::<f64, 3>(&args.op, &rows)?,
-        (false, 4) => run_typed::<f64, 4>(&args.op, &rows)?,
-        (true, 1) => run_typed::<BigRational, 1>(&args.op, &rows)?,
-        (true, 2) => run_typed::<BigRational, 2>(&args.op, &rows)?,
-        (true, 3) => run_typed::<BigRational, 3>(&args.op, &rows)?,
-        (true, 4) => run_typed::<BigRational, 4>(&args.op, &rows)?,
-        _ => {
-            return Err(CliError::Shape(format!(
-                "control points have {d} coordinates; 1 to 4 are supported"
-            )))
-        }
-    };
+    let value =
+        by_scalar_and_dimension!(curve.exact, d, "control points", run_typed(&args.op, &rows))?;
     print_json(&value)
 }
 

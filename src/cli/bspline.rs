@@ -201,21 +201,8 @@ pub(super) fn run(args: BsplineArgs) -> Result<(), CliError> {
         Op::Interpolate { data } | Op::Fit { data, .. } => {
             let rows = parse_number_arrays(&data.points)?;
             let d = rows[0].len();
-            let value = match (data.exact, d) {
-                (false, 1) => run_data::<f64, 1>(&args.op, data, &rows)?,
-                (false, 2) => run_data::<f64, 2>(&args.op, data, &rows)?,
-                (false, 3) => run_data::<f64, 3>(&args.op, data, &rows)?,
-                (false, 4) => run_data::<f64, 4>(&args.op, data, &rows)?,
-                (true, 1) => run_data::<BigRational, 1>(&args.op, data, &rows)?,
-                (true, 2) => run_data::<BigRational, 2>(&args.op, data, &rows)?,
-                (true, 3) => run_data::<BigRational, 3>(&args.op, data, &rows)?,
-                (true, 4) => run_data::<BigRational, 4>(&args.op, data, &rows)?,
-                _ => {
-                    return Err(CliError::Shape(format!(
-                        "points have {d} coordinates; 1 to 4 are supported"
-                    )))
-                }
-            };
+            let value =
+                by_scalar_and_dimension!(data.exact, d, "points", run_data(&args.op, data, &rows))?;
             return print_json(&value);
         }
         Op::Basis {
@@ -241,21 +228,12 @@ pub(super) fn run(args: BsplineArgs) -> Result<(), CliError> {
     };
     let rows = parse_number_arrays(&text)?;
     let d = rows[0].len();
-    let value = match (curve.exact, d) {
-        (false, 1) => run_typed::<f64, 1>(&args.op, curve, &rows)?,
-        (false, 2) => run_typed::<f64, 2>(&args.op, curve, &rows)?,
-        (false, 3) => run_typed::<f64, 3>(&args.op, curve, &rows)?,
-        (false, 4) => run_typed::<f64, 4>(&args.op, curve, &rows)?,
-        (true, 1) => run_typed::<BigRational, 1>(&args.op, curve, &rows)?,
-        (true, 2) => run_typed::<BigRational, 2>(&args.op, curve, &rows)?,
-        (true, 3) => run_typed::<BigRational, 3>(&args.op, curve, &rows)?,
-        (true, 4) => run_typed::<BigRational, 4>(&args.op, curve, &rows)?,
-        _ => {
-            return Err(CliError::Shape(format!(
-                "control points have {d} coordinates; 1 to 4 are supported"
-            )))
-        }
-    };
+    let value = by_scalar_and_dimension!(
+        curve.exact,
+        d,
+        "control points",
+        run_typed(&args.op, curve, &rows)
+    )?;
     print_json(&value)
 }
 

@@ -22,7 +22,6 @@ use crate::spline::{
     parameterise, CompositeBezier, Curve, EndCondition, HermiteNode, Parameterisation, Point,
 };
 use clap::{Args, Subcommand, ValueEnum};
-use num_rational::BigRational;
 use serde_json::{json, Value};
 
 /// Arguments of `compgeo interpolate`.
@@ -145,21 +144,7 @@ pub(super) fn run(args: InterpolateArgs) -> Result<(), CliError> {
     };
     let rows = parse_number_arrays(points_text)?;
     let d = rows[0].len();
-    let value = match (exact, d) {
-        (false, 1) => run_typed::<f64, 1>(&args.method, &rows)?,
-        (false, 2) => run_typed::<f64, 2>(&args.method, &rows)?,
-        (false, 3) => run_typed::<f64, 3>(&args.method, &rows)?,
-        (false, 4) => run_typed::<f64, 4>(&args.method, &rows)?,
-        (true, 1) => run_typed::<BigRational, 1>(&args.method, &rows)?,
-        (true, 2) => run_typed::<BigRational, 2>(&args.method, &rows)?,
-        (true, 3) => run_typed::<BigRational, 3>(&args.method, &rows)?,
-        (true, 4) => run_typed::<BigRational, 4>(&args.method, &rows)?,
-        _ => {
-            return Err(CliError::Shape(format!(
-                "points have {d} coordinates; 1 to 4 are supported"
-            )))
-        }
-    };
+    let value = by_scalar_and_dimension!(exact, d, "points", run_typed(&args.method, &rows))?;
     print_json(&value)
 }
 

@@ -19,6 +19,29 @@
 //! when it exceeds `f64::MAX` (`"distance": "5.0846440246145847e308"`), never as `null`: the
 //! rule of "Values beyond f64" in `docs/design.md`.
 
+/// Calls `f::<S, D>(args)` for the scalar (`f64`, or `BigRational` when `exact`) and the
+/// dimension `dim` (1 to 4) of the input, the one dispatch every curve command needs; another
+/// dimension is a [`CliError::Shape`] naming `what` ("control points have 5 coordinates; 1 to
+/// 4 are supported").
+macro_rules! by_scalar_and_dimension {
+    ($exact:expr, $dim:expr, $what:literal, $f:ident($($arg:expr),* $(,)?)) => {
+        match ($exact, $dim) {
+            (false, 1) => $f::<f64, 1>($($arg),*),
+            (false, 2) => $f::<f64, 2>($($arg),*),
+            (false, 3) => $f::<f64, 3>($($arg),*),
+            (false, 4) => $f::<f64, 4>($($arg),*),
+            (true, 1) => $f::<num_rational::BigRational, 1>($($arg),*),
+            (true, 2) => $f::<num_rational::BigRational, 2>($($arg),*),
+            (true, 3) => $f::<num_rational::BigRational, 3>($($arg),*),
+            (true, 4) => $f::<num_rational::BigRational, 4>($($arg),*),
+            (_, d) => Err(CliError::Shape(format!(
+                "{} have {d} coordinates; 1 to 4 are supported",
+                $what
+            ))),
+        }
+    };
+}
+
 mod bezier;
 mod bspline;
 mod delaunay;

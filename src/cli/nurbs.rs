@@ -16,7 +16,6 @@ use super::CliError;
 use crate::count::Counts;
 use crate::spline::{parse_scalar, Nurbs};
 use clap::{Args, Subcommand};
-use num_rational::BigRational;
 use serde_json::{json, Value};
 use std::path::Path;
 
@@ -90,21 +89,12 @@ pub(super) fn run(args: NurbsArgs) -> Result<(), CliError> {
     };
     let rows = parse_number_arrays(&text)?;
     let d = rows[0].len();
-    let value = match (rational.curve.exact, d) {
-        (false, 1) => run_typed::<f64, 1>(&args.op, rational, &rows)?,
-        (false, 2) => run_typed::<f64, 2>(&args.op, rational, &rows)?,
-        (false, 3) => run_typed::<f64, 3>(&args.op, rational, &rows)?,
-        (false, 4) => run_typed::<f64, 4>(&args.op, rational, &rows)?,
-        (true, 1) => run_typed::<BigRational, 1>(&args.op, rational, &rows)?,
-        (true, 2) => run_typed::<BigRational, 2>(&args.op, rational, &rows)?,
-        (true, 3) => run_typed::<BigRational, 3>(&args.op, rational, &rows)?,
-        (true, 4) => run_typed::<BigRational, 4>(&args.op, rational, &rows)?,
-        _ => {
-            return Err(CliError::Shape(format!(
-                "control points have {d} coordinates; 1 to 4 are supported"
-            )))
-        }
-    };
+    let value = by_scalar_and_dimension!(
+        rational.curve.exact,
+        d,
+        "control points",
+        run_typed(&args.op, rational, &rows)
+    )?;
     print_json(&value)
 }
 
