@@ -3,7 +3,8 @@
 //! against the divided-difference definition); Boehm's insertion, single and r-fold, against
 //! the curve itself at every knot and at rational parameters between them, and the r-fold
 //! insertion against r single ones; a clamped curve without interior knots against the Bézier
-//! curve of the same control points; the derivative curve against the derivatives of the basis.
+//! curve of the same control points; the derivative curve and the extended de Boor algorithm's
+//! derivatives against the derivatives of the basis, and its Taylor expansion against the piece.
 //! Then the counts, the `f64` path against the exact one (also on knots a few ulps apart, near
 //! 1e300 and subnormal), bad input as named errors, and [PPB, §5.12, Ex. 7].
 
@@ -130,6 +131,45 @@ proptest! {
     }
 
     #[test]
+    fn the_extended_de_boor_derivatives_are_the_basis_derivatives(
+        (s, u) in curve_and_parameter(),
+        extra in 0usize..=2,
+    ) {
+        // [PPB, §5.9]: the tetrahedral scheme against Σ cᵢ Nᵢ⁽ʳ⁾(u), every order at once,
+        // with its exact count.
+        let d = s.degree();
+        let mut counts = Counts::default();
+        let all = s.derivatives_with(&u, d + extra, &mut counts).unwrap();
+        prop_assert_eq!(all.len(), d + extra + 1);
+        for (r, got) in all.iter().enumerate() {
+            prop_assert_eq!(got, &s.derivative_at(&u, r).unwrap(), "order {}", r);
+        }
+        let want = d * (d + 1) / 2 + d * (d + 1) * (d + 2) / 6;
+        prop_assert_eq!(counts.arithmetic_operations, want as u64);
+    }
+
+    #[test]
+    fn the_taylor_expansion_is_the_piece((s, u) in curve_and_parameter(), j in 0i64..=8) {
+        // s_μ(v) = Σ s⁽ʳ⁾(u)(v − u)ʳ/r! at every v of the span of u [PPB, §5.9], its ends
+        // included (the piece's limit at the right end, by evaluating the piece's Bézier form).
+        let t = s.knots();
+        let mu = t.span(&u).unwrap();
+        let (a, b) = (t.knots()[mu].clone(), t.knots()[mu + 1].clone());
+        let v = a.clone() + (b.clone() - &a) * q(j, 8);
+        let all = s.derivatives(&u, s.degree()).unwrap();
+        let h = v.clone() - &u;
+        let (mut taylor, mut power) = (Point::<Q, 2>::zero(), qi(1));
+        for (r, dr) in all.iter().enumerate() {
+            if r > 0 {
+                power = power * &h / qi(r as i64);
+            }
+            taylor += &(dr.clone() * &power);
+        }
+        let piece = s.blossom_in_span(mu, &vec![v.clone(); s.degree()]).unwrap();
+        prop_assert_eq!(taylor, piece);
+    }
+
+    #[test]
     fn clamped_without_interior_knots_is_the_bezier_curve(
         c in prop::collection::vec((-20i64..=20, -20i64..=20), 1..=8),
         (a, w) in (-3i64..=3, 1i64..=4),
@@ -240,6 +280,9 @@ fn the_exercise_of_ppb_5_12_7() {
             "order {k}"
         );
     }
+    // The same by the extended de Boor algorithm [PPB, §5.9], all orders at once.
+    let all = s.derivatives(&qi(3), 4).unwrap();
+    assert_eq!(all, want.map(|w| Point::new([qi(w)])));
     // Inserting 3 and 4 twice each (4 is the closed end of the domain) leaves the Bézier
     // points 5, 4, 1, 0 as c₂, …, c₅.
     let r = s.insert(&qi(3), 2).unwrap().insert(&qi(4), 2).unwrap();

@@ -5,13 +5,18 @@
 //!   points in the unit square; the counted operation is the arithmetic step
 //!   ([`Operation::ArithmeticOperations`]): de Boor's and the blossom's d(d + 1)/2 affine
 //!   combinations, the basis's triangular scheme, insertion's d combinations, a split's
-//!   d(d + 1)/2, NURBS de Boor's d(d + 1) (both homogeneous halves).
+//!   d(d + 1)/2, NURBS de Boor's d(d + 1) (both homogeneous halves), and the removal of a
+//!   knot inserted once at the parameter: d − 1 solved points and d combinations of the check;
+//!   all d derivatives by the extended de Boor algorithm grow cubically (d(d + 1)(d + 2)/6
+//!   differences).
 //! - `random-control`: n is the number of control points (or data points) of a cubic on
 //!   clamped uniform knots. The span search's comparisons ([`Operation::Comparisons`]) are the
 //!   only part of an evaluation that grows with n (⌈lg(n − d)⌉ + O(1) by bisection); the
 //!   conversion to Bézier pieces, elevation by one, the Oslo refinement at every span's
-//!   midpoint, interpolation of n points (chord length) and the least-squares fit of n points
-//!   by n/4 + 4 control points grow linearly in their arithmetic.
+//!   midpoint, interpolation of n points (chord length), the least-squares fit of n points
+//!   by n/4 + 4 control points, the C² cubic spline in B-spline form through n points at
+//!   uniform parameters, and the Greville abscissae and Marsden coefficients of the knot
+//!   vector grow linearly in their arithmetic.
 //! - `random-parameters`: n is the number of sorted parameters evaluated at once on a cubic
 //!   with 64 control points (linear).
 //!
@@ -25,7 +30,7 @@ use crate::complexity::{Declaration, Entry, Workload};
 use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{points, PointKind};
-use crate::spline::{BSpline, KnotVector, Nurbs, Parameterisation, Point};
+use crate::spline::{BSpline, EndCondition, KnotVector, Nurbs, Parameterisation, Point};
 
 /// The input distribution in which n is the degree.
 const RANDOM_DEGREE: &str = "random-degree";
@@ -53,6 +58,11 @@ enum Run {
     Interpolate,
     Fit,
     EvalSorted,
+    Remove,
+    Derivatives,
+    CubicSpline,
+    Greville,
+    Marsden,
 }
 
 /// What n counts.
@@ -115,6 +125,11 @@ pub(super) fn entries() -> Vec<Entry> {
         entry(&b::INTERPOLATE, Run::Interpolate, Size::Control),
         entry(&b::FIT, Run::Fit, Size::Control),
         entry(&b::EVAL_SORTED, Run::EvalSorted, Size::Parameters),
+        entry(&b::REMOVE, Run::Remove, Size::Degree),
+        entry(&b::DERIVATIVES, Run::Derivatives, Size::Degree),
+        entry(&b::CUBIC_SPLINE, Run::CubicSpline, Size::Control),
+        entry(&b::GREVILLE, Run::Greville, Size::Control),
+        entry(&b::MARSDEN, Run::Marsden, Size::Control),
     ]
 }
 
@@ -129,17 +144,29 @@ impl Workload for Sweep {
             Size::Parameters => (3, FIXED_CONTROL),
         };
         let pts = points(PointKind::UniformSquare, count, seed)?;
-        let u = pts[0].x;
+        // Unit knot spacing for the derivatives, so that the d-th derivative of a curve of
+        // degree 512 (about d!/∏ widths times 2^d) stays far inside the double range.
+        let end = match self.run {
+            Run::Derivatives => (count - degree) as f64,
+            _ => 1.0,
+        };
+        let u = pts[0].x * end;
         let data: Vec<Point<f64, 2>> = pts.iter().map(|&p| Point::from(p)).collect();
-        let knots = KnotVector::clamped_uniform(degree, count, 0.0, 1.0)?;
-        let curve = BSpline::new(data.clone(), knots)?;
+        let knots = KnotVector::clamped_uniform(degree, count, 0.0, end)?;
+        let mut curve = BSpline::new(data.clone(), knots)?;
+        if let Run::Remove = self.run {
+            // A knot the curve can lose again: the parameter, inserted once.
+            curve = curve.insert(&u, 1)?;
+        }
         let params = match (self.size, self.run) {
             (Size::Degree, _) => pts.iter().take(degree).map(|p| p.x).collect(),
             (_, Run::Refine) => {
                 let t = curve.knots().knots();
                 (degree..count).map(|i| (t[i] + t[i + 1]) / 2.0).collect()
             }
-            (_, Run::Fit) => (0..count).map(|i| i as f64 / (count - 1) as f64).collect(),
+            (_, Run::Fit | Run::CubicSpline) => {
+                (0..count).map(|i| i as f64 / (count - 1) as f64).collect()
+            }
             (Size::Parameters, _) => {
                 let mut us: Vec<f64> = points(PointKind::UniformSquare, n, seed ^ 1)?
                     .iter()
@@ -199,6 +226,19 @@ impl Workload for Sweep {
                 BSpline::fit_with(data, params, knots, c)?.control().len()
             }
             Run::EvalSorted => curve.eval_sorted_with(params, c)?.len(),
+            // Within 1e-9 (the points are in the unit square): rounding moves them slightly.
+            Run::Remove => curve.remove_within_with(u, 1, &1e-9, c)?.control().len(),
+            Run::Derivatives => {
+                let d = curve.degree();
+                curve.derivatives_with(u, d, c)?[d].coords()[0].to_bits() as usize
+            }
+            Run::CubicSpline => {
+                BSpline::cubic_spline_with(data, params, &EndCondition::Natural, c)?
+                    .control()
+                    .len()
+            }
+            Run::Greville => curve.knots().greville_with(c).len(),
+            Run::Marsden => curve.knots().marsden_with(u, c)?.len(),
         })
     }
 }

@@ -18,8 +18,7 @@
 //! from the arguments (the span of their mean, see there).
 //!
 //! [PPB, §5.9]'s tetrahedral scheme is the same recursion with some arguments replaced by
-//! the direction ε = 1 − 0 (derivatives); only the point version is implemented here (the
-//! derivatives are in `curve.rs`).
+//! the direction ε = 1 − 0: its derivative form is [`BSpline::derivatives`].
 //!
 //! # Complexity
 //!

@@ -23,8 +23,8 @@
 
 use super::banded::BandMatrix;
 use super::{BSpline, KnotVector};
-use crate::complexity::Declaration;
-use crate::count::NoCount;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::spline::interpolate::check_partition;
 use crate::spline::scalar::{pow2_scale, validate_points, Point, Scalar};
 use crate::spline::EndCondition;
@@ -39,10 +39,10 @@ pub(crate) const CUBIC_SPLINE: Declaration = Declaration {
     summary: "the C² cubic interpolating spline as a B-spline, by a tridiagonal solve",
     time: "Θ(N·D)",
     space: "Θ(N·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly 6(N + 1) + 5(N + 2) + 1: the basis values of the N + 1 data rows (6 each) and the tridiagonal solve of the N + 3 rows",
     source: "[SPL, §3]",
-    claims: &[],
+    claims: &[on("random-control", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 impl<S: Scalar, const D: usize> BSpline<S, D> {
@@ -87,6 +87,44 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         points: &[Point<S, D>],
         partition: &[S],
         end: &EndCondition<S, D>,
+    ) -> Result<Self> {
+        Self::cubic_spline_with(points, partition, end, &mut NoCount)
+    }
+
+    /// The C² cubic spline in B-spline form (see [`BSpline::cubic_spline`]), counting its
+    /// arithmetic.
+    ///
+    /// # Errors
+    ///
+    /// As [`BSpline::cubic_spline`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(N·D) time and Θ(N·D) space for N + 1 points in R^D.
+    ///
+    /// # Counts
+    ///
+    /// The [`arithmetic_operation`](Counter::arithmetic_operation)s of the basis values of
+    /// the N + 1 data rows ([`KnotVector::basis_with`]: 6 each)
+    /// and of the tridiagonal solve ([`BandMatrix::solve_with`]: 5(N + 2) + 1 for its
+    /// N + 3 rows): exactly 6(N + 1) + 5(N + 2) + 1. The two derivative rows are not counted.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{BSpline, EndCondition, Point};
+    ///
+    /// let u: Vec<f64> = (0..=10).map(f64::from).collect();
+    /// let p: Vec<Point<f64, 1>> = u.iter().map(|&x| Point::new([x * x])).collect();
+    /// let mut c = Counts::default();
+    /// BSpline::cubic_spline_with(&p, &u, &EndCondition::Natural, &mut c)?;
+    /// assert_eq!(c.arithmetic_operations, 6 * 11 + 5 * 12 + 1);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn cubic_spline_with<C: Counter>(
+        points: &[Point<S, D>],
+        partition: &[S],
+        end: &EndCondition<S, D>,
+        counter: &mut C,
     ) -> Result<Self> {
         let needed = match end {
             EndCondition::Natural | EndCondition::Clamped { .. } => 2,
@@ -161,33 +199,34 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
 
         let mut band = BandMatrix::zeros(size, 1, 1)?;
         let mut rhs = Vec::with_capacity(size);
-        let data_row = |band: &mut BandMatrix<S>, rhs: &mut Vec<Point<S, D>>, k: usize| {
-            let b = knots.basis_with(&partition[k], &mut NoCount)?;
-            for (j, v) in b.values().iter().enumerate() {
-                // The zeros (N_{k+3}(u_k)) may lie outside the band.
-                if !v.is_zero() {
-                    band.set(k + 1, b.first() + j, v.clone())?;
+        let data_row =
+            |band: &mut BandMatrix<S>, rhs: &mut Vec<Point<S, D>>, k: usize, counter: &mut C| {
+                let b = knots.basis_with(&partition[k], counter)?;
+                for (j, v) in b.values().iter().enumerate() {
+                    // The zeros (N_{k+3}(u_k)) may lie outside the band.
+                    if !v.is_zero() {
+                        band.set(k + 1, b.first() + j, v.clone())?;
+                    }
                 }
-            }
-            rhs.push(points[k].clone() * &scale);
-            Ok::<(), Error>(())
-        };
+                rhs.push(points[k].clone() * &scale);
+                Ok::<(), Error>(())
+            };
         // Row 0 is s(u₀) = p₀; data row k ≥ 1 goes to row k + 1, after the start condition.
-        let b = knots.basis_with(u0, &mut NoCount)?;
+        let b = knots.basis_with(u0, counter)?;
         band.set(0, 0, b.get(0))?;
         rhs.push(points[0].clone() * &scale);
         derivative_row(&knots, &mut band, 1, u0, start.0)?;
         rhs.push(start.1.clone() * &scale);
         for k in 1..big_n {
-            data_row(&mut band, &mut rhs, k)?;
+            data_row(&mut band, &mut rhs, k, counter)?;
         }
         derivative_row(&knots, &mut band, big_n + 1, un, finish.0)?;
         rhs.push(finish.1.clone() * &scale);
-        let b = knots.basis_with(un, &mut NoCount)?;
+        let b = knots.basis_with(un, counter)?;
         band.set(big_n + 2, big_n + 2, b.get(big_n + 2))?;
         rhs.push(points[big_n].clone() * &scale);
 
-        let mut control = band.solve(rhs)?;
+        let mut control = band.solve_with(rhs, counter)?;
         if !S::EXACT {
             let back = S::one() / &scale;
             for c in &mut control {

@@ -24,7 +24,8 @@
 //! is (u, s(u)).
 
 use super::{BSpline, KnotVector};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
 use crate::{Error, Result};
 
@@ -37,10 +38,14 @@ pub(crate) const GREVILLE: Declaration = Declaration {
     summary: "the B-spline coefficients of the identity: means of d consecutive knots",
     time: "Θ(nd)",
     space: "Θ(n)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly n·d: one per knot in a mean (n for degree 0)",
     source: "[PPB, §5.8]",
-    claims: &[],
+    claims: &[on(
+        "random-control",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// Marsden's identity, declared.
@@ -52,10 +57,14 @@ pub(crate) const MARSDEN: Declaration = Declaration {
     summary: "the B-spline coefficients of (y − u)^d: products of d knot distances",
     time: "Θ(nd)",
     space: "Θ(n)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly n·d: one per factor of a product",
     source: "[PPB, §5.12, Ex. 4]",
-    claims: &[],
+    claims: &[on(
+        "random-control",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 impl<S: Scalar> KnotVector<S> {
@@ -87,11 +96,36 @@ impl<S: Scalar> KnotVector<S> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn greville(&self) -> Vec<S> {
+        self.greville_with(&mut NoCount)
+    }
+
+    /// The Greville abscissae (see [`KnotVector::greville`]), counting one
+    /// [`arithmetic_operation`](Counter::arithmetic_operation) per knot added into a mean:
+    /// exactly n·d (n for degree 0, one midpoint each).
+    ///
+    /// # Complexity
+    ///
+    /// Θ(nd) time, Θ(n) space.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::KnotVector;
+    ///
+    /// let t = KnotVector::clamped_uniform(2, 5, 0.0, 3.0)?; // 0 0 0 1 2 3 3 3
+    /// let mut c = Counts::default();
+    /// assert_eq!(t.greville_with(&mut c), [0.0, 0.5, 1.5, 2.5, 3.0]);
+    /// assert_eq!(c.arithmetic_operations, 5 * 2);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn greville_with<C: Counter>(&self, counter: &mut C) -> Vec<S> {
         let (d, n, t) = (self.degree(), self.control_points(), self.knots());
         if d == 0 {
             let half = S::from_ratio(1, 2);
             return (0..n)
-                .map(|i| t[i].clone() * &half + t[i + 1].clone() * &half)
+                .map(|i| {
+                    counter.arithmetic_operation();
+                    t[i].clone() * &half + t[i + 1].clone() * &half
+                })
                 .collect();
         }
         let degree = S::from_i64(d as i64);
@@ -99,6 +133,7 @@ impl<S: Scalar> KnotVector<S> {
             .map(|i| {
                 let mut mean = S::zero();
                 for k in &t[i + 1..=i + d] {
+                    counter.arithmetic_operation();
                     mean += k.clone() / &degree;
                 }
                 // Exactly the mean lies in [t_{i+1}, t_{i+d}]; rounding must not leave it.
@@ -143,12 +178,39 @@ impl<S: Scalar> KnotVector<S> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn marsden(&self, y: &S) -> Result<Vec<S>> {
+        self.marsden_with(y, &mut NoCount)
+    }
+
+    /// Marsden's coefficients ψᵢ(y) (see [`KnotVector::marsden`]), counting one
+    /// [`arithmetic_operation`](Counter::arithmetic_operation) per factor multiplied in:
+    /// exactly n·d.
+    ///
+    /// # Errors
+    ///
+    /// As [`KnotVector::marsden`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(nd) time, Θ(n) space.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::KnotVector;
+    ///
+    /// let t = KnotVector::new(2, vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0])?;
+    /// let mut c = Counts::default();
+    /// assert_eq!(t.marsden_with(&3.0, &mut c)?, [9.0, 6.0, 2.0, 1.0]);
+    /// assert_eq!(c.arithmetic_operations, 4 * 2);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn marsden_with<C: Counter>(&self, y: &S, counter: &mut C) -> Result<Vec<S>> {
         validate_parameter(y, "y")?;
         let (d, n, t) = (self.degree(), self.control_points(), self.knots());
         let psi: Vec<S> = (0..n)
             .map(|i| {
                 let mut product = S::one();
                 for k in &t[i + 1..=i + d] {
+                    counter.arithmetic_operation();
                     product = product * (y.clone() - k);
                 }
                 product

@@ -1,7 +1,6 @@
 //! B-splines: knot vectors, the B-spline basis, and B-spline curves with de Boor's algorithm,
-//! Boehm's knot insertion, the Oslo refinement, knot removal and splitting.
-//! B-splines: knot vectors, the B-spline basis, and B-spline curves with de Boor's algorithm
-//! and Boehm's knot insertion, interpolation and least-squares fitting.
+//! Boehm's knot insertion, the Oslo refinement, knot removal, splitting, conversion to and
+//! from Bézier pieces, degree elevation, interpolation and least-squares fitting.
 //!
 //! # The knot convention
 //!
@@ -40,6 +39,7 @@
 //! | `basis.rs` | [`KnotVector::basis`] ([`Basis`]), [`KnotVector::basis_derivatives`] ([`BasisDerivatives`]) [PPB, §5.3, §5.7] | Θ(d²); O(d² + d·K²) |
 //! | `curve.rs` | [`BSpline`]: validation, the curve traits, the derivative curve [PPB, §5.6] | Θ(nD); Θ((n + d)D) |
 //! | `de_boor.rs` | [`BSpline::de_boor`], [`BSpline::de_boor_with`], the net [`BSpline::de_boor_trace`] ([`DeBoorTrace`]) [PPB, §5.4] | Θ(d²D) |
+//! | `derivatives.rs` | [`BSpline::derivatives`], [`BSpline::derivatives_with`]: s(u), s′(u), …, s⁽ᵏ⁾(u) at once by the extended de Boor algorithm (the tetrahedral scheme) [PPB, §5.9] | Θ((d² + K³)D) |
 //! | `insert.rs` | [`BSpline::insert`], [`BSpline::insert_with`]: Boehm's insertion, once or r times [PPB, §6.1] | Θ((n + d + rd)D) |
 //! | `to_bezier.rs` | [`BSpline::to_bezier`], [`BSpline::to_bezier_with`] (a [`CompositeBezier`](crate::spline::CompositeBezier) over the distinct knots of the domain), [`BSpline::from_bezier`] (interior knots of multiplicity d) [PPB, §5.10] | Θ(n + d + p·d·D) plus O(n·d²·D); Θ(p·d·D) |
 //! | `elevate.rs` | [`BSpline::elevate`], [`BSpline::elevate_with`]: degree d → d + t, every knot t more times, by blossoms of the elevated Bézier pieces [PPB, §6.4, §6.5] | Θ((n + p·t)(d + t)²·D) |
@@ -72,6 +72,7 @@ mod blossom;
 mod cubic;
 mod curve;
 mod de_boor;
+mod derivatives;
 mod elevate;
 mod fit;
 mod greville;
@@ -84,11 +85,12 @@ mod split;
 mod to_bezier;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 19] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 20] = [
     &knots::SPAN,
     &basis::BASIS,
     &basis::BASIS_DERIVATIVES,
     &de_boor::DE_BOOR,
+    &derivatives::DERIVATIVES,
     &insert::INSERT,
     &to_bezier::TO_BEZIER,
     &to_bezier::FROM_BEZIER,
@@ -111,13 +113,17 @@ pub(crate) mod declarations {
     pub(crate) use super::basis::BASIS;
     pub(crate) use super::batch::EVAL_SORTED;
     pub(crate) use super::blossom::BLOSSOM;
+    pub(crate) use super::cubic::CUBIC_SPLINE;
     pub(crate) use super::de_boor::DE_BOOR;
+    pub(crate) use super::derivatives::DERIVATIVES;
     pub(crate) use super::elevate::ELEVATE;
     pub(crate) use super::fit::FIT;
+    pub(crate) use super::greville::{GREVILLE, MARSDEN};
     pub(crate) use super::insert::INSERT;
     pub(crate) use super::interpolate::INTERPOLATE;
     pub(crate) use super::knots::SPAN;
     pub(crate) use super::refine::REFINE;
+    pub(crate) use super::remove::REMOVE;
     pub(crate) use super::split::SPLIT;
     pub(crate) use super::to_bezier::TO_BEZIER;
 }

@@ -42,7 +42,7 @@
 
 use super::basis::ratios;
 use super::{BSpline, KnotVector};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
 use crate::{Error, Result};
@@ -59,7 +59,7 @@ pub(crate) const REMOVE: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "per removal of a knot of multiplicity s ≤ d: d − s solved points, and d − sᵢ + 1 combinations per re-inserted copy of multiplicity sᵢ",
     source: "[PPB, §6.1]",
-    claims: &[],
+    claims: &[on("random-degree", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 impl<S: Scalar, const D: usize> BSpline<S, D> {
