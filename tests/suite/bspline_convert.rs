@@ -5,14 +5,17 @@
 //! at every knot and at rationals between, its knot multiplicities against the rule, two
 //! elevations by one against one by two, a curve without interior knots against Bézier
 //! elevation, and Micchelli's formula (with the seed's erratum) against the Cox–de Boor
-//! recursion. Then the counts, `f64` against exact (knots a few ulps apart, 1e300 and
+//! recursion; the antiderivative against the curve and the Bézier pieces' integrals. Then the
+//! counts, `f64` against exact (knots a few ulps apart, 1e300 and
 //! subnormal coordinates), bad input as named errors, and exercises of [PPB, §5.12, §6.9].
 
 use crate::bspline_basis::knot_vector;
 use crate::spline_common::bspline::{exact, point, samples};
 use crate::spline_common::{q, qi, Q};
 use compgeo::count::Counts;
-use compgeo::spline::{BSpline, Bezier, CompositeBezier, Curve, KnotVector, Point, Scalar};
+use compgeo::spline::{
+    BSpline, Bezier, CompositeBezier, Curve, CurveDerivative, KnotVector, Point, Scalar,
+};
 use compgeo::Error;
 use proptest::prelude::*;
 
@@ -179,6 +182,48 @@ proptest! {
         // And its one piece is that Bézier curve.
         let pieces = e.to_bezier().unwrap();
         prop_assert_eq!(pieces.pieces(), &[by_one][..]);
+    }
+
+    #[test]
+    fn the_integral_is_the_antiderivative_and_the_sum_of_the_bezier_integrals(s in curve()) {
+        // The antiderivative's derivative is s on the whole domain (right-continuous at a
+        // jump, as s), it starts at 0, and its value at t_n is Σ (b − a)∫₀¹ of the Bézier
+        // pieces (an independent oracle), [PPB, §5.12, Ex. 2] on a clamped vector.
+        let d = s.degree();
+        let mut c = Counts::default();
+        let big_s = s.integral_with(&mut c).unwrap();
+        prop_assert_eq!(big_s.degree(), d + 1);
+        prop_assert_eq!(big_s.domain(), s.domain());
+        let (start, end) = (s.knots().bounds().0.clone(), s.knots().bounds().1.clone());
+        prop_assert_eq!(big_s.eval(&start).unwrap(), Point::zero());
+        for u in samples(s.knots()) {
+            prop_assert_eq!(big_s.derivative_at(&u, 1).unwrap(), s.eval(&u).unwrap(), "at {}", u);
+        }
+        let n = s.control().len() as u64;
+        let t = s.knots().knots();
+        let clamped_start = t[0] == t[d];
+        let want = if clamped_start { n } else { n + (d + 1) as u64 * (d + 2) as u64 / 2 + n + 1 };
+        // (de Boor at t_d skips the levels of t_d's multiplicity; an upper bound then.)
+        prop_assert!(c.arithmetic_operations <= want);
+        if clamped_start {
+            prop_assert_eq!(c.arithmetic_operations, n);
+        }
+        let b = s.to_bezier().unwrap();
+        let mut oracle = Point::<Q, 2>::zero();
+        for (i, piece) in b.pieces().iter().enumerate() {
+            let width = b.partition()[i + 1].clone() - &b.partition()[i];
+            oracle += &(piece.definite_integral() * &width);
+        }
+        prop_assert_eq!(s.definite_integral().unwrap(), oracle.clone());
+        prop_assert_eq!(big_s.eval(&end).unwrap(), oracle.clone());
+        if s.knots().is_clamped() {
+            let order = qi(d as i64 + 1);
+            let mut formula = Point::<Q, 2>::zero();
+            for (i, ci) in s.control().iter().enumerate() {
+                formula += &(ci.clone() * &((t[i + d + 1].clone() - &t[i]) / &order));
+            }
+            prop_assert_eq!(formula, oracle);
+        }
     }
 
     #[test]

@@ -7,7 +7,8 @@
 //! points against the interpolant, and its residual orthogonal to every basis function
 //! [PPB, §4.7]; the rank check against the dense rank; the cubic spline in B-spline form
 //! against the tangent-based `cubic_spline` at random rational parameters; the parameter
-//! improvement's errors never increasing [PPB, §4.8]. Then f64 against exact on 1e300 and
+//! improvement's errors never increasing [PPB, §4.8]; [PPB, §6.9, Ex. 9] (shifted data shift
+//! the interpolant). Then f64 against exact on 1e300 and
 //! subnormal data, and bad input as named errors.
 //!
 //! The course's §4.6–4.8 and §5.12 state no worked example of interpolation or fitting with
@@ -240,6 +241,24 @@ proptest! {
                 let index = format!("fails at index {k}: N_{k}(τ_{k}) = 0");
                 prop_assert!(msg.contains(&index), "{}", msg);
             }
+        }
+    }
+
+    #[test]
+    fn interpolating_shifted_points_shifts_the_interpolant(
+        (d, u, p) in averaged_case(),
+        (hx, hy) in (-9i64..=9, -9i64..=9),
+    ) {
+        // [PPB, §6.9, Ex. 9]: the rows of the collocation matrix sum to one (the parameters
+        // lie in the domain), so the spline through pᵢ + h is s + h: every control point
+        // moves by h, exactly.
+        let t = KnotVector::averaged(d, &u).unwrap();
+        let h: Point<Q, 2> = point((hx, hy));
+        let shifted: Vec<Point<Q, 2>> = p.iter().map(|pk| pk.clone() + &h).collect();
+        let s = BSpline::interpolate_at(&p, &u, t.clone()).unwrap();
+        let sh = BSpline::interpolate_at(&shifted, &u, t).unwrap();
+        for (a, b) in s.control().iter().zip(sh.control()) {
+            prop_assert_eq!(a.clone() + &h, b.clone());
         }
     }
 

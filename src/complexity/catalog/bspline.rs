@@ -15,8 +15,8 @@
 //!   conversion to Bézier pieces, elevation by one, the Oslo refinement at every span's
 //!   midpoint, interpolation of n points (chord length), the least-squares fit of n points
 //!   by n/4 + 4 control points, the C² cubic spline in B-spline form through n points at
-//!   uniform parameters, and the Greville abscissae and Marsden coefficients of the knot
-//!   vector grow linearly in their arithmetic.
+//!   uniform parameters, the Greville abscissae and Marsden coefficients of the knot vector,
+//!   and the antiderivative grow linearly in their arithmetic.
 //! - `random-parameters`: n is the number of sorted parameters evaluated at once on a cubic
 //!   with 64 control points (linear).
 //!
@@ -63,6 +63,7 @@ enum Run {
     CubicSpline,
     Greville,
     Marsden,
+    Integral,
 }
 
 /// What n counts.
@@ -130,6 +131,7 @@ pub(super) fn entries() -> Vec<Entry> {
         entry(&b::CUBIC_SPLINE, Run::CubicSpline, Size::Control),
         entry(&b::GREVILLE, Run::Greville, Size::Control),
         entry(&b::MARSDEN, Run::Marsden, Size::Control),
+        entry(&b::INTEGRAL, Run::Integral, Size::Control),
     ]
 }
 
@@ -239,6 +241,7 @@ impl Workload for Sweep {
             }
             Run::Greville => curve.knots().greville_with(c).len(),
             Run::Marsden => curve.knots().marsden_with(u, c)?.len(),
+            Run::Integral => curve.integral_with(c)?.control().len(),
         })
     }
 }

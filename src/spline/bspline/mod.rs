@@ -45,6 +45,7 @@
 //! | `elevate.rs` | [`BSpline::elevate`], [`BSpline::elevate_with`]: degree d → d + t, every knot t more times, by blossoms of the elevated Bézier pieces [PPB, §6.4, §6.5] | Θ((n + p·t)(d + t)²·D) |
 //! | `blossom.rs` | [`BSpline::blossom`], [`BSpline::blossom_in_span`] (and `_with`): the polar form of a piece by the extended de Boor algorithm [PPB, §5.5, §5.9], [SPL, §6–7] | Θ(d²D) |
 //! | `greville.rs` | [`KnotVector::greville`], [`KnotVector::marsden`] (Marsden's identity), [`BSpline::graph`] [PPB, §5.8, §5.12 Ex. 4] | Θ(nd) |
+//! | `integral.rs` | [`BSpline::integral`], [`BSpline::integral_with`] (the antiderivative of degree d + 1), [`BSpline::definite_integral`] [PPB, §5.6, §5.12 Ex. 2] | Θ((n + d)D) |
 //! | `batch.rs` | [`BSpline::eval_sorted`], [`BSpline::eval_sorted_with`], [`BSpline::eval_sorted_into`]: de Boor at sorted parameters with a forward span walk [PPB, §5.4] | Θ(m·d²D + n) |
 //! | `refine.rs` | [`BSpline::refine`], [`BSpline::refine_with`]: the Oslo algorithm, m knots at once by the discrete B-splines [PPB, §6.2] | O(m log m + (n + m)D + md(d² + dD + log n)) |
 //! | `remove.rs` | [`BSpline::remove`], [`BSpline::remove_within`] and their `_with` forms: knot removal, exact or within a distance, checked by re-insertion [PPB, §6.1] | O(r²(n + d)D) |
@@ -77,6 +78,7 @@ mod elevate;
 mod fit;
 mod greville;
 mod insert;
+mod integral;
 mod interpolate;
 mod knots;
 mod refine;
@@ -85,7 +87,7 @@ mod split;
 mod to_bezier;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 20] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 21] = [
     &knots::SPAN,
     &basis::BASIS,
     &basis::BASIS_DERIVATIVES,
@@ -98,6 +100,7 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 20] = [
     &blossom::BLOSSOM,
     &greville::GREVILLE,
     &greville::MARSDEN,
+    &integral::INTEGRAL,
     &batch::EVAL_SORTED,
     &refine::REFINE,
     &remove::REMOVE,
@@ -120,6 +123,7 @@ pub(crate) mod declarations {
     pub(crate) use super::fit::FIT;
     pub(crate) use super::greville::{GREVILLE, MARSDEN};
     pub(crate) use super::insert::INSERT;
+    pub(crate) use super::integral::INTEGRAL;
     pub(crate) use super::interpolate::INTERPOLATE;
     pub(crate) use super::knots::SPAN;
     pub(crate) use super::refine::REFINE;
