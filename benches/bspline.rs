@@ -7,7 +7,8 @@
 //!   `point_at`, and its `evaluator`, which remembers the span of the last parameter);
 //! - `bspline/insert`: one knot inserted once (ours: `BSpline::insert`; truck: `add_knot`;
 //!   curvo: `try_add_knot`, the last two in place on a clone made outside the timing);
-//! - `bspline/refine`: 1000 sorted seeded knots inserted (ours: repeated `insert`; truck:
+//! - `bspline/refine`: 1000 sorted seeded knots inserted (ours: `refine`, one backward pass
+//!   of Boehm's insertions, `oslo`, the Oslo algorithm, and repeated `insert`; truck:
 //!   repeated `add_knot`; curvo: `try_refine_knot`);
 //! - `bspline/interpolate`: a cubic through 201 seeded points at chord-length parameters
 //!   with averaged knots (curvo's `interpolate`; truck-geometry 0.5 has no interpolation of
@@ -358,14 +359,22 @@ fn bench_refine(c: &mut Criterion) {
             BatchSize::SmallInput,
         )
     });
-    // Ours by the Oslo algorithm: every new control point at once, the same curve.
-    let oslo = ours.refine(&new).expect("refinable");
+    // Ours in one call: the backward pass of Boehm's insertions (`refine`) and the Oslo
+    // algorithm (`oslo`), each the same curve as the insertions one by one.
     let one_by_one = ours_refined(&ours, &new);
-    assert_eq!(oslo.knots().knots(), one_by_one.knots().knots());
-    let d = distance(&ours_control(&oslo), &ours_control(&one_by_one));
-    assert!(d <= AGREEMENT, "Oslo against repeated insertion: {d:e}");
+    for (name, refined) in [
+        ("refine", ours.refine(&new).expect("refinable")),
+        ("oslo", ours.oslo(&new).expect("refinable")),
+    ] {
+        assert_eq!(refined.knots().knots(), one_by_one.knots().knots());
+        let d = distance(&ours_control(&refined), &ours_control(&one_by_one));
+        assert!(d <= AGREEMENT, "{name} against repeated insertion: {d:e}");
+    }
     group.bench_function("compgeo_refine", |b| {
         b.iter(|| ours.refine(black_box(&new)).expect("refinable"))
+    });
+    group.bench_function("compgeo_oslo", |b| {
+        b.iter(|| ours.oslo(black_box(&new)).expect("refinable"))
     });
     group.bench_function("truck_repeated_add_knot", |b| {
         b.iter_batched(

@@ -76,6 +76,10 @@ enum Op {
         /// The knots to insert, JSON ["1/4", 0.5, ...], in the domain (any order)
         #[arg(long = "new", value_name = "JSON", allow_hyphen_values = true)]
         new: String,
+        /// Compute the new control points by the Oslo algorithm (the same curve; its own
+        /// counts) instead of one backward pass of Boehm's insertions
+        #[arg(long)]
+        oslo: bool,
     },
     /// The same curve with the knot u removed r times, if the curve allows it
     Remove {
@@ -331,10 +335,14 @@ fn run_typed<S: JsonScalar, const D: usize>(
             }
             out
         }
-        Op::Refine { new, .. } => {
+        Op::Refine { new, oslo, .. } => {
             let knots = read_scalars::<S>(new, "new knot", "new knots")?;
             let mut counts = Counts::default();
-            let r = s.refine_with(&knots, &mut counts)?;
+            let r = if *oslo {
+                s.oslo_with(&knots, &mut counts)?
+            } else {
+                s.refine_with(&knots, &mut counts)?
+            };
             let mut out = curve_json(&r)?;
             out["counts"] = json!(counts);
             out

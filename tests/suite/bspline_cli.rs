@@ -6,6 +6,7 @@
 
 use crate::common::{assert_rejected, run_json};
 use crate::spline_common::{q, qi, Q};
+use compgeo::count::Counts;
 use compgeo::spline::{BSpline, Curve, CurveDerivative, KnotVector, Point};
 use proptest::prelude::*;
 use serde_json::Value;
@@ -408,6 +409,13 @@ proptest! {
             let want = s.refine(std::slice::from_ref(&u)).unwrap();
             prop_assert_eq!(exact_points(&out["control"]), want.control().to_vec());
             prop_assert_eq!(exact_list(&out["knots"]), want.knots().knots().to_vec());
+            // --oslo: the same curve, the Oslo algorithm's counts.
+            let oslo = run_op("refine", &s, &["--new", &new, "--oslo"], true);
+            prop_assert_eq!(exact_points(&oslo["control"]), want.control().to_vec());
+            let mut counts = Counts::default();
+            s.oslo_with(std::slice::from_ref(&u), &mut counts).unwrap();
+            let printed = oslo["counts"]["arithmetic_operations"].as_u64().unwrap();
+            prop_assert_eq!(printed, counts.arithmetic_operations);
         }
         let out = run_op("elevate", &s, &[], true);
         let want = s.elevate(1).unwrap();

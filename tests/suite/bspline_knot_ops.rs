@@ -1,5 +1,6 @@
-//! Knot manipulation of B-spline curves, checked exactly on the rational back end: the Oslo
-//! refinement against the same knots inserted one by one with Boehm's algorithm (identical
+//! Knot manipulation of B-spline curves, checked exactly on the rational back end: the
+//! refinement (one backward pass of Boehm's insertions, and the Oslo algorithm) against the
+//! same knots inserted one by one with Boehm's algorithm (identical
 //! control points) and against the curve at rational parameters; insert-then-remove giving the
 //! identical control points back; a removal that succeeds exactly when the derivative of order
 //! d − s + 1 is continuous at the knot (from both sides, by the basis derivatives of the curve
@@ -75,39 +76,61 @@ proptest! {
 
     #[test]
     fn refinement_is_the_single_insertions_exactly((s, us) in curve_and_knots()) {
+        // Both algorithms, the backward pass of Boehm's insertions and the Oslo algorithm,
+        // against the same knots inserted one by one, in the order given.
         let d = s.degree();
         let mut c = Counts::default();
         let result = s.refine_with(&us, &mut c);
-        // The oracle: the same knots one by one, in the order given.
+        let mut c_oslo = Counts::default();
+        let oslo = s.oslo_with(&us, &mut c_oslo);
         let mut one = Ok(s.clone());
+        let mut c_one = Counts::default();
         for u in &us {
-            one = one.and_then(|r: BSpline<Q, 2>| r.insert(u, 1));
+            one = one.and_then(|r: BSpline<Q, 2>| r.insert_with(u, 1, &mut c_one));
         }
-        match result {
-            Ok(r) => {
+        match (result, oslo) {
+            (Ok(r), Ok(o)) => {
                 let one = one.unwrap();
                 prop_assert_eq!(&r, &one);
+                prop_assert_eq!(&o, &one);
                 prop_assert_eq!(r.knots().knots().len(), s.knots().knots().len() + us.len());
                 for v in domain_samples(s.knots()) {
                     prop_assert_eq!(r.eval(&v).unwrap(), s.eval(&v).unwrap(), "u = {}", v);
                 }
-                // Each computed point costs d(d + 1)/2 + d + 1; at most md are computed
+                // The backward pass makes exactly Σ r(d − s) − r(r − 1)/2 combinations over the
+                // distinct new knots (r new copies, s old ones), also at t_n, where a single
+                // insertion combines with the copies above it too (and counts d).
+                let mut want = 0u64;
+                let mut distinct = us.clone();
+                distinct.sort();
+                distinct.dedup();
+                for v in &distinct {
+                    let r = us.iter().filter(|w| *w == v).count() as u64;
+                    let old = s.knots().multiplicity(v) as u64;
+                    want += r * (d as u64 - old) - r * (r - 1) / 2;
+                }
+                prop_assert_eq!(c.arithmetic_operations, want);
+                prop_assert!(c.arithmetic_operations <= c_one.arithmetic_operations);
+                // Oslo: each computed point costs d(d + 1)/2 + d + 1; at most md are computed
                 // (all of them for degree 0).
                 let per = (d * (d + 1) / 2 + d + 1) as u64;
-                prop_assert_eq!(c.arithmetic_operations % per, 0);
+                prop_assert_eq!(c_oslo.arithmetic_operations % per, 0);
                 let most = if d == 0 { r.control().len() } else { us.len() * d };
-                prop_assert!(c.arithmetic_operations <= per * most as u64);
+                prop_assert!(c_oslo.arithmetic_operations <= per * most as u64);
             }
-            Err(e) => {
+            (Err(e), Err(e_oslo)) => {
                 // Refused exactly when some knot would pass multiplicity d.
                 prop_assert!(one.is_err(), "{}", e);
                 let over = us.iter().any(|u| {
                     s.knots().multiplicity(u) + us.iter().filter(|v| *v == u).count() > d
                 });
                 prop_assert!(over, "{}", e);
-                let named = matches!(e, Error::InvalidParameter { name: "new_knots", .. });
-                prop_assert!(named, "{}", e);
+                for e in [e, e_oslo] {
+                    let named = matches!(e, Error::InvalidParameter { name: "new_knots", .. });
+                    prop_assert!(named, "{}", e);
+                }
             }
+            (r, o) => prop_assert!(false, "refine {:?} but oslo {:?}", r.is_ok(), o.is_ok()),
         }
     }
 

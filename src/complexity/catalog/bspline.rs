@@ -12,8 +12,8 @@
 //! - `random-control`: n is the number of control points (or data points) of a cubic on
 //!   clamped uniform knots. The span search's comparisons ([`Operation::Comparisons`]) are the
 //!   only part of an evaluation that grows with n (⌈lg(n − d)⌉ + O(1) by bisection); the
-//!   conversion to Bézier pieces, elevation by one, the Oslo refinement at every span's
-//!   midpoint, interpolation of n points (chord length), the least-squares fit of n points
+//!   conversion to Bézier pieces, elevation by one, the refinement at every span's midpoint
+//!   (by one backward pass of Boehm's insertions, and by the Oslo algorithm), interpolation of n points (chord length), the least-squares fit of n points
 //!   by n/4 + 4 control points, the C² cubic spline in B-spline form through n points at
 //!   uniform parameters, the Greville abscissae and Marsden coefficients of the knot vector,
 //!   and the antiderivative grow linearly in their arithmetic.
@@ -55,6 +55,7 @@ enum Run {
     ToBezier,
     Elevate,
     Refine,
+    Oslo,
     Interpolate,
     Fit,
     EvalSorted,
@@ -123,6 +124,7 @@ pub(super) fn entries() -> Vec<Entry> {
         entry(&b::TO_BEZIER, Run::ToBezier, Size::Control),
         entry(&b::ELEVATE, Run::Elevate, Size::Control),
         entry(&b::REFINE, Run::Refine, Size::Control),
+        entry(&b::OSLO, Run::Oslo, Size::Control),
         entry(&b::INTERPOLATE, Run::Interpolate, Size::Control),
         entry(&b::FIT, Run::Fit, Size::Control),
         entry(&b::EVAL_SORTED, Run::EvalSorted, Size::Parameters),
@@ -162,7 +164,7 @@ impl Workload for Sweep {
         }
         let params = match (self.size, self.run) {
             (Size::Degree, _) => pts.iter().take(degree).map(|p| p.x).collect(),
-            (_, Run::Refine) => {
+            (_, Run::Refine | Run::Oslo) => {
                 let t = curve.knots().knots();
                 (degree..count).map(|i| (t[i] + t[i + 1]) / 2.0).collect()
             }
@@ -218,6 +220,7 @@ impl Workload for Sweep {
             Run::ToBezier => curve.to_bezier_with(c)?.pieces().len(),
             Run::Elevate => curve.elevate_with(1, c)?.control().len(),
             Run::Refine => curve.refine_with(params, c)?.control().len(),
+            Run::Oslo => curve.oslo_with(params, c)?.control().len(),
             Run::Interpolate => {
                 BSpline::interpolate_with(data, 3, Parameterisation::ChordLength, c)?
                     .control()

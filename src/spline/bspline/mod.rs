@@ -47,7 +47,8 @@
 //! | `greville.rs` | [`KnotVector::greville`], [`KnotVector::marsden`] (Marsden's identity), [`BSpline::graph`] [PPB, §5.8, §5.12 Ex. 4] | Θ(nd) |
 //! | `integral.rs` | [`BSpline::integral`], [`BSpline::integral_with`] (the antiderivative of degree d + 1), [`BSpline::definite_integral`] [PPB, §5.6, §5.12 Ex. 2] | Θ((n + d)D) |
 //! | `batch.rs` | [`BSpline::eval_sorted`], [`BSpline::eval_sorted_with`], [`BSpline::eval_sorted_into`]: de Boor at sorted parameters with a forward span walk [PPB, §5.4] | Θ(m·d²D + n) |
-//! | `refine.rs` | [`BSpline::refine`], [`BSpline::refine_with`]: the Oslo algorithm, m knots at once by the discrete B-splines [PPB, §6.2] | O(m log m + (n + m)D + md(d² + dD + log n)) |
+//! | `refine.rs` | [`BSpline::refine`], [`BSpline::refine_with`]: m knots at once by Boehm's insertions in one backward pass, each point written once [PPB, §6.1–6.2] | O(m log m + log n + (n + m + md)D) |
+//! | `oslo.rs` | [`BSpline::oslo`], [`BSpline::oslo_with`]: the Oslo algorithm, m knots at once by the discrete B-splines [PPB, §6.2] | O(m log m + (n + m)D + md(d² + dD + log n)) |
 //! | `remove.rs` | [`BSpline::remove`], [`BSpline::remove_within`] and their `_with` forms: knot removal, exact or within a distance, checked by re-insertion [PPB, §6.1] | O(r²(n + d)D) |
 //! | `split.rs` | [`BSpline::split`], [`BSpline::split_with`]: the two pieces at a parameter, clamped at the cut [PPB, §6.1] | Θ((n + d²)D) |
 //! | `banded.rs` | [`BandMatrix`]: banded Gaussian elimination without pivoting, every pivot checked [PPB, §6.7] | Θ(n·l·(u + D)) |
@@ -81,13 +82,14 @@ mod insert;
 mod integral;
 mod interpolate;
 mod knots;
+mod oslo;
 mod refine;
 mod remove;
 mod split;
 mod to_bezier;
 
 /// The B-spline algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 21] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 22] = [
     &knots::SPAN,
     &basis::BASIS,
     &basis::BASIS_DERIVATIVES,
@@ -103,6 +105,7 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 21] = [
     &integral::INTEGRAL,
     &batch::EVAL_SORTED,
     &refine::REFINE,
+    &oslo::OSLO,
     &remove::REMOVE,
     &split::SPLIT,
     &banded::BANDED,
@@ -126,6 +129,7 @@ pub(crate) mod declarations {
     pub(crate) use super::integral::INTEGRAL;
     pub(crate) use super::interpolate::INTERPOLATE;
     pub(crate) use super::knots::SPAN;
+    pub(crate) use super::oslo::OSLO;
     pub(crate) use super::refine::REFINE;
     pub(crate) use super::remove::REMOVE;
     pub(crate) use super::split::SPLIT;
