@@ -17,9 +17,9 @@
 //! | [`Reparametrised`] | the real line | [`Reparametrised`] | [`Reparametrised`] |
 //! | [`CompositeBezier`] (also Hermite curves and splines) | [u₀, u_m] | [`CompositeBezier`] | [`CompositeBezier`] |
 //! | [`Polynomial`], [`NewtonForm`], [`LagrangeForm`] | the real line | [`Polynomial`] | [`Reparametrised`] |
-//! | [`BSpline`] | [t_d, t_n] | [`BSpline`] (degree d − 1) | not yet |
+//! | [`BSpline`] | [t_d, t_n] | [`BSpline`] (degree d − 1) | [`BSpline`] (cut ends clamped) |
 //! | [`RationalBezier`] | [0, 1] | [`RationalBezier`] (degree 2n) | not yet |
-//! | [`Nurbs`] | [t_d, t_n] | [`NurbsDerivative`] (by the quotient rule) | not yet |
+//! | [`Nurbs`] | [t_d, t_n] | [`NurbsDerivative`] (by the quotient rule) | [`Nurbs`] (cut ends clamped) |
 //!
 //! | module or file | what it holds |
 //! |---|---|

@@ -479,3 +479,63 @@ fn bad_input_is_a_named_error() {
     assert!(e.to_string().contains("multiplicity 4"), "{e}");
     assert!(s.insert(&0.5, usize::MAX).is_err());
 }
+
+/// The curve traits' properties (`spline_common::curve_properties`) on B-splines: f64 against
+/// exact, subsegments reproducing the curve, derivatives as differences of blossoms.
+mod traits {
+    use crate::spline_common::curve_properties::{curve_property_tests, eighths, points, Family};
+    use compgeo::spline::{BSpline, KnotVector, Scalar};
+    use proptest::prelude::*;
+
+    /// Continuous B-splines of degree 1 to 4, clamped or not, knots and coordinates in
+    /// eighths.
+    struct Continuous;
+
+    impl Family for Continuous {
+        /// The degree, the knot increments (in eighths) and the control points.
+        type Data = (usize, Vec<i64>, Vec<(i64, i64)>);
+        type Curve<S: Scalar> = BSpline<S, 2>;
+        const TOLERANCE: f64 = 1e-12;
+        fn data() -> BoxedStrategy<Self::Data> {
+            (1usize..=4, 0usize..=5)
+                .prop_flat_map(|(d, extra)| {
+                    let n = d + 1 + extra;
+                    (
+                        Just(d),
+                        prop::collection::vec(0i64..=3, n + d),
+                        prop::collection::vec((-80i64..=80, -80i64..=80), n),
+                    )
+                })
+                .prop_map(|(d, mut steps, c)| {
+                    // At most d − 1 zero steps in a row (multiplicity at most d: continuous),
+                    // and a non-empty domain [t_d, t_n].
+                    let mut zeros = 0;
+                    for step in &mut steps {
+                        zeros = if *step == 0 { zeros + 1 } else { 0 };
+                        if zeros >= d {
+                            (*step, zeros) = (1, 0);
+                        }
+                    }
+                    let n = c.len();
+                    if steps[d..n].iter().all(|s| *s == 0) {
+                        steps[d] = 1;
+                    }
+                    (d, steps, c)
+                })
+                .boxed()
+        }
+        fn build<S: Scalar>((d, steps, c): &Self::Data) -> BSpline<S, 2> {
+            let mut knots = vec![eighths::<S>(0)];
+            let mut sum = 0;
+            for step in steps {
+                sum += step;
+                knots.push(eighths(sum));
+            }
+            BSpline::new(points(c), KnotVector::new(*d, knots).unwrap()).unwrap()
+        }
+    }
+
+    curve_property_tests! {
+        continuous_b_splines: Continuous, 48;
+    }
+}

@@ -4,7 +4,8 @@
 //! curve itself; the derivatives of every order against the symbolic quotient rule applied to
 //! the polynomial pieces of the numerator and the denominator (interpolated from their
 //! values, so neither the basis derivatives nor the recurrence of the library is used); the
-//! rational Bézier curve against the NURBS curve on the knots 0, …, 0, 1, …, 1. The exact
+//! rational Bézier curve against the NURBS curve on the knots 0, …, 0, 1, …, 1; subsegments
+//! against the curve on their interval. The exact
 //! circle and arcs: x² + y² = r² with `==` at random rational parameters, and the tangent
 //! orthogonal to the radius. Then the counts, the weights' validation errors (index and
 //! value), the `f64` path against the exact one (also with coordinates near 1e300 and weights
@@ -16,7 +17,7 @@ use crate::spline_common::{q, qi, Q};
 use compgeo::count::Counts;
 use compgeo::spline::{
     BSpline, Bezier, ConicKind, Curve, CurveDerivative, KnotVector, Nurbs, Point, RationalBezier,
-    Scalar,
+    Scalar, Subsegment,
 };
 use compgeo::Error;
 use proptest::prelude::*;
@@ -250,6 +251,31 @@ proptest! {
                 prop_assert!(matches!(e, Error::InvalidParameter { name: "times", .. }), "{}", e);
             }
         }
+    }
+
+    #[test]
+    fn subsegments_are_the_curve_on_their_interval((s, u) in nurbs_and_parameter(), k in 1i64..=7) {
+        // The piece over [a, b] (a = u, or the start of the domain when u is its end) equals
+        // the curve at every sample inside, with positive weights; a reversed or empty
+        // interval is an error.
+        let (start, end) = (s.knots().bounds().0.clone(), s.knots().bounds().1.clone());
+        let a = if u < end { u.clone() } else { start.clone() };
+        let b = a.clone() + (end.clone() - &a) * q(k, 8);
+        let piece = s.subsegment(&a, &b).unwrap();
+        prop_assert_eq!(piece.degree(), s.degree());
+        prop_assert!(piece.weights().iter().all(|w| *w > qi(0)));
+        for v in samples(s.knots()) {
+            if v >= a && v <= b {
+                let at_b_from_left = v == b && s.knots().multiplicity(&b) > s.degree();
+                if !at_b_from_left {
+                    prop_assert_eq!(piece.eval(&v).unwrap(), s.eval(&v).unwrap(), "u = {}", v);
+                }
+            } else {
+                prop_assert!(piece.eval(&v).is_err());
+            }
+        }
+        prop_assert!(s.subsegment(&b, &a).is_err());
+        prop_assert!(s.subsegment(&a, &a).is_err());
     }
 
     #[test]

@@ -30,6 +30,7 @@
 use super::{BSpline, KnotVector};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
+use crate::spline::curve::{check_interval, Subsegment};
 use crate::spline::scalar::{validate_parameter, Scalar};
 use crate::{Error, Result};
 
@@ -159,6 +160,52 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
             "B-spline split",
         )?;
         Ok((left, right))
+    }
+}
+
+/// The piece over [a, b] by two splits: at a (unless it is t_d) keeping the right part, then
+/// at b (unless it is t_n) keeping the left part. Knots stay where they were (the parameter
+/// is kept); the cut ends are clamped.
+impl<S: Scalar, const D: usize> Subsegment<S, D> for BSpline<S, D> {
+    type Segment = BSpline<S, D>;
+
+    /// The piece over [a, b] ⊆ [t_d, t_n] as a B-spline of the same degree on the knots of
+    /// [a, b], d + 1 copies of a cut end: [`BSpline::split`] at a and at b. At a knot of
+    /// multiplicity d + 1 (a jump), the piece starting there starts with the right limit and
+    /// the piece ending there ends with the left one.
+    ///
+    /// # Errors
+    ///
+    /// As [`Subsegment::subsegment`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ((n + d²)D) time and space, two splits.
+    ///
+    /// ```
+    /// use compgeo::spline::{BSpline, Curve, KnotVector, Point, Subsegment};
+    ///
+    /// let t = KnotVector::clamped_uniform(2, 5, 0.0, 3.0)?;
+    /// let c = [0.0, 2.0, -1.0, 3.0, 1.0].map(|x| Point::new([x])).to_vec();
+    /// let s = BSpline::new(c, t)?;
+    /// let piece = s.subsegment(&0.5, &2.0)?;
+    /// assert_eq!(piece.knots().knots(), [0.5, 0.5, 0.5, 1.0, 2.0, 2.0, 2.0]);
+    /// assert_eq!(piece.eval(&1.25)?, s.eval(&1.25)?);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    fn subsegment(&self, a: &S, b: &S) -> Result<Self> {
+        check_interval(&self.knots().domain(), a, b)?;
+        let (start, end) = self.knots().bounds();
+        let from_a = if a > start {
+            self.split(a)?.1
+        } else {
+            self.clone()
+        };
+        if b < end {
+            Ok(from_a.split(b)?.0)
+        } else {
+            Ok(from_a)
+        }
     }
 }
 

@@ -1,5 +1,5 @@
 //! The linear operations of a NURBS curve, by the B-spline operations on its homogeneous form:
-//! degree elevation and the conversion to rational Bézier pieces.
+//! degree elevation, the conversion to rational Bézier pieces and the piece over an interval.
 //!
 //! Both are linear in the control points and depend on the knots only, so applied to the
 //! weighted points Σ wᵢcᵢNᵢ and to the weights Σ wᵢNᵢ (the two halves of
@@ -18,6 +18,7 @@
 use super::{Nurbs, RationalBezier};
 use crate::complexity::Declaration;
 use crate::count::{Counter, NoCount, Operation};
+use crate::spline::curve::Subsegment;
 use crate::spline::scalar::Scalar;
 use crate::{Error, Result};
 
@@ -193,5 +194,38 @@ impl<S: Scalar, const D: usize> Nurbs<S, D> {
             .map(|(a, w)| RationalBezier::from_homogeneous(a.clone(), w.clone()))
             .collect::<Result<Vec<_>>>()?;
         Ok((numerator.partition().to_vec(), pieces))
+    }
+}
+
+/// The piece over [a, b] by the B-spline subsegment of both homogeneous halves.
+impl<S: Scalar, const D: usize> Subsegment<S, D> for Nurbs<S, D> {
+    type Segment = Nurbs<S, D>;
+
+    /// The piece over [a, b] ⊆ [t_d, t_n] as a NURBS curve of the same degree on the knots
+    /// of [a, b] (the cut ends clamped): [`BSpline::subsegment`](crate::spline::BSpline)
+    /// of the weighted points and of the weights. The new weights are convex combinations of
+    /// the old ones (knot insertion), so they stay positive.
+    ///
+    /// # Errors
+    ///
+    /// As [`Subsegment::subsegment`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ((n + d²)D) time and space: two splits of each half.
+    ///
+    /// ```
+    /// use compgeo::spline::{Curve, Nurbs, Point, Subsegment};
+    ///
+    /// // A quarter of the unit circle, exactly: the parameters 0 to 1 of the full circle.
+    /// let c = Nurbs::circle(Point::new([0.0, 0.0]), 1.0)?;
+    /// let quarter = c.subsegment(&0.0, &1.0)?;
+    /// assert_eq!(quarter.eval(&0.5)?, c.eval(&0.5)?);
+    /// assert_eq!(quarter.control().len(), 3);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    fn subsegment(&self, a: &S, b: &S) -> Result<Self> {
+        let (numerator, denominator) = self.homogeneous();
+        Nurbs::from_homogeneous(numerator.subsegment(a, b)?, denominator.subsegment(a, b)?)
     }
 }

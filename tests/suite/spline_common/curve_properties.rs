@@ -25,8 +25,8 @@
 
 use super::Q;
 use compgeo::spline::{
-    Bezier, CompositeBezier, Curve, CurveDerivative, Domain, Point, Reparametrised, Scalar,
-    Subsegment,
+    BSpline, Bezier, CompositeBezier, Curve, CurveDerivative, Domain, Point, Reparametrised,
+    Scalar, Subsegment,
 };
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
@@ -66,6 +66,16 @@ impl<S: Scalar> Pieces<S> for CompositeBezier<S, 2> {
             .zip(self.pieces())
             .map(|(w, b)| (w[0].clone(), w[1].clone(), b.clone()))
             .collect()
+    }
+}
+
+impl<S: Scalar> Pieces<S> for BSpline<S, 2> {
+    fn pieces(&self) -> Vec<(S, S, Bezier<S, 2>)> {
+        Pieces::pieces(
+            &self
+                .to_bezier()
+                .expect("the Bézier pieces of a valid B-spline"),
+        )
     }
 }
 
