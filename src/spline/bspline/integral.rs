@@ -53,8 +53,8 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     ///
     /// # Errors
     ///
-    /// [`Error::Overflow`] if, with `f64`, a control point of the antiderivative is beyond
-    /// the double range; [`Error::LimitExceeded`] for a curve already of degree
+    /// [`Error::Overflow`](crate::Error::Overflow) if, with `f64`, a control point of the antiderivative is beyond
+    /// the double range; [`Error::LimitExceeded`](crate::Error::LimitExceeded) for a curve already of degree
     /// [`MAX_DEGREE`](crate::limits::MAX_DEGREE).
     ///
     /// # Complexity
