@@ -135,6 +135,7 @@
 //! | `rational-bezier/de-casteljau`: [`spline::RationalBezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1) affine combinations per point: n(n + 1)/2 on the weighted points and as many on the weights | [SPL, §14] | `src/spline/rational/bezier.rs` |
 //! | `nurbs/de-boor`: [`spline::Nurbs::de_boor`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1) affine combinations per point off the knots, (d − r)(d − r + 1) at a knot of multiplicity r | [SPL, §14] | `src/spline/rational/nurbs.rs` |
 //! | `nurbs/insert`: [`spline::Nurbs::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly 2(r(d − s) − r(r − 1)/2) affine combinations, s the knot's multiplicity before | [SPL, §14] | `src/spline/rational/nurbs.rs` |
+//! | `nurbs/refine`: [`spline::Nurbs::refine`] | O(m log m + log n + (n + m + md)D) | O((n + m)D) | arithmetic operations: B-spline refinement's count, as two curves | [SPL, §14] | `src/spline/rational/linear.rs` |
 //! | `nurbs/elevate`: [`spline::Nurbs::elevate`] | Θ((n + p·t)(d + t)²·D) | O((n + p·(d + t))D) | arithmetic operations: B-spline elevation's count for D + 1 coordinates, as two curves | [SPL, §14] | `src/spline/rational/linear.rs` |
 //! | `nurbs/to-bezier`: [`spline::Nurbs::to_bezier`] | Θ(n + d + p·d·D) plus O(n·d²·D) | Θ(p·d·D) | arithmetic operations: B-spline conversion's count, as two curves | [SPL, §14] | `src/spline/rational/linear.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |

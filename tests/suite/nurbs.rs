@@ -254,6 +254,24 @@ proptest! {
     }
 
     #[test]
+    fn refinement_is_the_single_insertions((s, u) in nurbs_and_parameter(), k in 1i64..=7) {
+        let (start, end) = (s.knots().bounds().0.clone(), s.knots().bounds().1.clone());
+        let v = start.clone() + (end - &start) * q(k, 8);
+        let new = [v.clone(), u.clone()];
+        let one = s.insert(&v, 1).and_then(|r| r.insert(&u, 1));
+        match (s.refine(&new), one) {
+            (Ok(r), Ok(one)) => {
+                prop_assert_eq!(&r, &one);
+                prop_assert!(r.weights().iter().all(|w| *w > qi(0)));
+            }
+            (Err(e), Err(_)) => {
+                prop_assert!(matches!(e, Error::InvalidParameter { name: "new_knots", .. }), "{}", e);
+            }
+            (r, one) => prop_assert!(false, "refine {:?}, insertions {:?}", r.is_ok(), one.is_ok()),
+        }
+    }
+
+    #[test]
     fn subsegments_are_the_curve_on_their_interval((s, u) in nurbs_and_parameter(), k in 1i64..=7) {
         // The piece over [a, b] (a = u, or the start of the domain when u is its end) equals
         // the curve at every sample inside, with positive weights; a reversed or empty

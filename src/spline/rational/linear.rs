@@ -52,7 +52,82 @@ pub(crate) const NURBS_TO_BEZIER: Declaration = Declaration {
     claims: &[],
 };
 
+/// NURBS knot refinement, declared.
+pub(crate) const NURBS_REFINE: Declaration = Declaration {
+    problem: "nurbs",
+    name: "refine",
+    function: "spline::Nurbs::refine",
+    file: "src/spline/rational/linear.rs",
+    summary: "the same rational curve with m knots added, by B-spline refinement of both homogeneous halves",
+    time: "O(m log m + log n + (n + m + md)D)",
+    space: "O((n + m)D)",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "B-spline refinement's count, as two curves",
+    source: "[SPL, §14]",
+    claims: &[],
+};
+
 impl<S: Scalar, const D: usize> Nurbs<S, D> {
+    /// The same curve with all of `new_knots` added (any order, repeats allowed): the
+    /// B-spline refinement ([`BSpline::refine`](crate::spline::BSpline::refine), one
+    /// backward pass of Boehm's insertions) of both homogeneous halves. The new weights are
+    /// convex combinations of the old ones.
+    ///
+    /// # Errors
+    ///
+    /// As [`BSpline::refine`](crate::spline::BSpline::refine); [`Error::Overflow`] if, with
+    /// `f64`, a control point (a quotient) is beyond the double range.
+    ///
+    /// # Complexity
+    ///
+    /// O(m log m + log n + (n + m + md)D) time, O((n + m)D) space for m new knots.
+    ///
+    /// ```
+    /// use compgeo::spline::{Curve, Nurbs, Point};
+    ///
+    /// let c = Nurbs::circle(Point::new([0.0, 0.0]), 1.0)?;
+    /// let r = c.refine(&[0.5, 2.5])?;
+    /// assert_eq!(r.control().len(), c.control().len() + 2);
+    /// let (p, q) = (r.eval(&0.25)?, c.eval(&0.25)?);
+    /// assert!((p[0] - q[0]).abs() < 1e-15 && (p[1] - q[1]).abs() < 1e-15);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn refine(&self, new_knots: &[S]) -> Result<Self> {
+        self.refine_with(new_knots, &mut NoCount)
+    }
+
+    /// [`Nurbs::refine`], counting what
+    /// [`BSpline::refine_with`](crate::spline::BSpline::refine_with) counts for the weighted
+    /// points and for the weights.
+    ///
+    /// # Errors
+    ///
+    /// As [`Nurbs::refine`].
+    ///
+    /// # Complexity
+    ///
+    /// O(m log m + log n + (n + m + md)D) time, O((n + m)D) space for m new knots.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{KnotVector, Nurbs, Point};
+    ///
+    /// let t = KnotVector::clamped_uniform(2, 3, 0.0, 1.0)?;
+    /// let c = vec![Point::new([0.0, 0.0]), Point::new([1.0, 1.0]), Point::new([2.0, 0.0])];
+    /// let s = Nurbs::new(c, vec![1.0, 2.0, 1.0], t)?;
+    /// let mut n = Counts::default();
+    /// s.refine_with(&[0.5], &mut n)?;
+    /// assert_eq!(n.arithmetic_operations, 2 * 2); // d combinations per half
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn refine_with<C: Counter>(&self, new_knots: &[S], counter: &mut C) -> Result<Self> {
+        let (numerator, denominator) = self.homogeneous();
+        Nurbs::from_homogeneous(
+            numerator.refine_with(new_knots, counter)?,
+            denominator.refine_with(new_knots, counter)?,
+        )
+    }
+
     /// The same curve of degree d + `times`. See [`Nurbs::elevate_with`].
     ///
     /// # Errors

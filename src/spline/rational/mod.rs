@@ -19,7 +19,7 @@
 //! | `quotient.rs` | the quotient rule of any order, c⁽ᵏ⁾ from a⁽ⁱ⁾ and w⁽ⁱ⁾ [Piegl and Tiller, eq. (4.8)] | Θ(k²D) |
 //! | `bezier.rs` | [`RationalBezier`]: validation, [`de_casteljau`](RationalBezier::de_casteljau) in homogeneous coordinates, the curve traits, the derivative curve of degree 2n [SPL, §14] | Θ(n²D) |
 //! | `nurbs.rs` | [`Nurbs`]: validation, [`de_boor`](Nurbs::de_boor), [`insert`](Nurbs::insert), the curve traits, [`NurbsDerivative`] [SPL, §14] | Θ(d²D); Θ((n + d + rd)D) |
-//! | `linear.rs` | [`Nurbs::elevate`], [`Nurbs::to_bezier`] (and `_with`): the B-spline operations on both homogeneous halves [SPL, §14] | twice the B-spline operation |
+//! | `linear.rs` | [`Nurbs::refine`], [`Nurbs::elevate`], [`Nurbs::to_bezier`] (and `_with`), the piece over an interval ([`Subsegment`](crate::spline::Subsegment)): the B-spline operations on both homogeneous halves [SPL, §14] | twice the B-spline operation |
 //! | `conic.rs` | exact conics: [`Nurbs::circle`], [`RationalBezier::circular_arc`], [`RationalBezier::conic`], [`ConicKind`] [Piegl and Tiller, §7.2–7.5] | O(1) |
 //!
 //! Degree elevation and the conversion of a NURBS curve to rational Bézier pieces
@@ -49,10 +49,11 @@ mod quotient;
 mod weights;
 
 /// The rational curve algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 6] = [
     &bezier::RATIONAL_DE_CASTELJAU,
     &nurbs::NURBS_DE_BOOR,
     &nurbs::NURBS_INSERT,
+    &linear::NURBS_REFINE,
     &linear::NURBS_ELEVATE,
     &linear::NURBS_TO_BEZIER,
 ];
