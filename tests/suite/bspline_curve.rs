@@ -222,6 +222,18 @@ proptest! {
             for j in 0..2 {
                 prop_assert!((got[j] - exact[j]).abs() <= bound, "u = {}: {:?} vs {:?}", u, got, exact);
             }
+            // The extended de Boor derivatives: order r divides r times by a width of at
+            // least 1/8 and multiplies by at most d, so |s⁽ʳ⁾| ≤ (16d)ʳ·m and the rounding
+            // error grows alike.
+            let all_f = sf.derivatives(&u, d).unwrap();
+            let all_q = sq.derivatives(&uq, d).unwrap();
+            for (r, (g, e)) in all_f.iter().zip(&all_q).enumerate() {
+                let e = e.to_f64();
+                let scale = (16.0 * d.max(1) as f64).powi(r as i32);
+                for j in 0..2 {
+                    prop_assert!((g[j] - e[j]).abs() <= 1e-13 * scale * m, "order {} at {}: {:?} vs {:?}", r, u, g, e);
+                }
+            }
             if sf.knots().multiplicity(&u) < d {
                 let rf = sf.insert(&u, 1).unwrap();
                 let rq = sq.insert(&uq, 1).unwrap();
