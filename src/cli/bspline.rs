@@ -65,11 +65,13 @@ enum Op {
         /// The order r of the derivative
         #[arg(long, default_value_t = 1)]
         order: usize,
-        /// Also evaluate the derivative at this parameter
+        /// Also evaluate the derivative at this parameter, and every order up to it (the
+        /// extended de Boor algorithm)
         #[arg(long = "u", value_name = "U", allow_hyphen_values = true)]
         u: Option<String>,
     },
-    /// The same curve with all the given knots inserted at once (the Oslo algorithm)
+    /// The same curve with all the given knots inserted at once (one backward pass of
+    /// Boehm's insertions, or the Oslo algorithm)
     Refine {
         #[command(flatten)]
         curve: CurveArgs,
@@ -332,6 +334,11 @@ fn run_typed<S: JsonScalar, const D: usize>(
             if let Some(u) = u {
                 let u: S = parse_scalar(u, "u")?;
                 out["point"] = point(&s.derivative_at(&u, *order)?, "point")?;
+                // Every order up to this one at u, by the extended de Boor algorithm.
+                let mut counts = Counts::default();
+                let all = s.derivatives_with(&u, *order, &mut counts)?;
+                out["derivatives"] = points(&all, "derivatives")?;
+                out["counts"] = json!(counts);
             }
             out
         }

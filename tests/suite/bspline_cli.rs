@@ -146,6 +146,12 @@ proptest! {
         prop_assert_eq!(exact_list(&out["knots"]), ds.knots().knots().to_vec());
         let p = exact_points(&Value::Array(vec![out["point"].clone()]));
         prop_assert_eq!(&p[0], &s.derivative_at(&u, 1).unwrap());
+        // Every order up to the requested one, by the extended de Boor algorithm.
+        let out = run_op("derivative", &s, &["--u", &ut, "--order", "3"], true);
+        prop_assert_eq!(exact_points(&out["derivatives"]), s.derivatives(&u, 3).unwrap());
+        let mut counts = Counts::default();
+        s.derivatives_with(&u, 3, &mut counts).unwrap();
+        prop_assert_eq!(out["counts"]["arithmetic_operations"].as_u64().unwrap(), counts.arithmetic_operations);
     }
 }
 
