@@ -20,6 +20,7 @@
 //! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the course's divide and conquer, Lawson's flips, Fortune's sweep), the exact checker, the Voronoi diagram and its clipping | `src/delaunay/`, one file per builder |
 //! | [`proximity`] | closest pair (on the Delaunay triangulation, by divide and conquer), nearest search, all nearest neighbours, Euclidean MST, largest empty circle | `src/proximity/`, one file per problem |
 //! | [`spline`] | curves, generic over the scalar (`f64`, exact rationals) and the dimension: the curve traits, [`spline::bezier`] (Bernstein basis, Bézier, reparametrised and composite curves, one algorithm per file), [`spline::interpolate`] (polynomial, Hermite and spline interpolation, least squares), Frenet frames | `src/spline/`: `bezier/` and `interpolate/` one algorithm per file |
+//! | [`surface`] | tensor-product surfaces sharing traits ([`Surface`](surface::Surface), [`SurfaceDerivative`](surface::SurfaceDerivative)): the validated [`ControlNet`](surface::ControlNet), [`BezierPatch`](surface::BezierPatch) evaluated in either order or by the tensor de Casteljau algorithm, isoparametric curves, partial derivatives | `src/surface/`, one algorithm per file |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command | `src/cli/` |
 //!
 //! Every algorithm's own file is in the table below.
@@ -139,6 +140,9 @@
 //! | `nurbs/elevate`: [`spline::Nurbs::elevate`] | Θ((n + p·t)(d + t)²·D) | O((n + p·(d + t))D) | arithmetic operations: B-spline elevation's count for D + 1 coordinates, as two curves | [SPL, §14] | `src/spline/rational/linear.rs` |
 //! | `nurbs/to-bezier`: [`spline::Nurbs::to_bezier`] | Θ(n + d + p·d·D) plus O(n·d²·D) | Θ(p·d·D) | arithmetic operations: B-spline conversion's count, as two curves | [SPL, §14] | `src/spline/rational/linear.rs` |
 //! | `frenet/frame`: [`spline::frenet_frame`] | Θ(r²·D) | Θ(r·D) | not counted | [PPB, §7.6] | `src/spline/frenet.rs` |
+//! | `bezier-patch/rows-first`: [`surface::BezierPatch::rows_first`] | Θ(((m + 1)n² + m²)D) | O((m + n)D) | arithmetic operations: exactly (m + 1)n(n + 1)/2 + m(m + 1)/2 affine combinations | [FJ-surfaces, §2], [PPB, §9.2] | `src/surface/bezier.rs` |
+//! | `bezier-patch/columns-first`: [`surface::BezierPatch::columns_first`] | Θ(((n + 1)m² + n²)D) | O((m + n)D) | arithmetic operations: exactly (n + 1)m(m + 1)/2 + n(n + 1)/2 affine combinations | [FJ-surfaces, §2], [PPB, §9.2] | `src/surface/bezier.rs` |
+//! | `bezier-patch/de-casteljau`: [`surface::BezierPatch::de_casteljau`] | Θ((mn·min(m, n) + |m − n|²)D) | Θ(mn·D) | arithmetic operations: three affine combinations per bilinear step, Σₖ₌₁ᵏ (m − k + 1)(n − k + 1) steps for k = min(m, n), then the univariate ones | [PPB, §9.5] | `src/surface/bezier.rs` |
 //! <!-- /algorithms -->
 //!
 //! ## A first example
@@ -191,6 +195,7 @@ pub mod limits;
 pub mod proximity;
 pub mod sort;
 pub mod spline;
+pub mod surface;
 mod util;
 
 #[cfg(feature = "cli")]

@@ -148,6 +148,7 @@ pub fn declarations() -> Vec<&'static Declaration> {
             .map(|a| a.declaration()),
     );
     all.extend(crate::spline::declarations());
+    all.extend(crate::surface::DECLARATIONS);
     all
 }
 

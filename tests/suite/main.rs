@@ -45,6 +45,7 @@ mod predicates;
 mod proximity;
 mod registry;
 mod sort;
+mod surface_bezier;
 mod voronoi;
 mod voronoi_clip;
 mod width;

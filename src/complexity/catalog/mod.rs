@@ -148,6 +148,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(hull::entries());
     all.extend(spline::entries());
     all.extend(bspline::entries());
+    all.extend(surface::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
     all
@@ -194,6 +195,7 @@ mod hull;
 mod proximity;
 mod sort;
 mod spline;
+mod surface;
 
 /// The result of one counted run.
 pub(crate) struct Counted {

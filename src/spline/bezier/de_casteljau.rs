@@ -306,7 +306,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
 /// Runs one level of de Casteljau's scheme per parameter on the points `q`: level k replaces
 /// `q[i]` by `(1 − u) q[i] + u q[i + 1]` for the first `len − k` points, so after m levels
 /// `q[0..len − m]` are the points of column m. One counted operation per affine combination.
-pub(super) fn de_casteljau_levels<'a, S, const D: usize, C>(
+pub(crate) fn de_casteljau_levels<'a, S, const D: usize, C>(
     q: &mut [Point<S, D>],
     params: impl IntoIterator<Item = &'a S>,
     counter: &mut C,

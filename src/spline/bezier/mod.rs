@@ -59,4 +59,5 @@ pub use intersect::{intersections, Intersection, MAX_INTERSECTION_PAIRS};
 pub use joins::{c1_partition, Join};
 pub use reparametrised::Reparametrised;
 
+pub(crate) use de_casteljau::de_casteljau_levels;
 pub(crate) use joins::nearly_equal;

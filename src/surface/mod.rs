@@ -1,0 +1,43 @@
+//! Tensor-product surfaces, generic over the scalar (`f64`, exact rationals) and the
+//! dimension, sharing traits as the curves of [`spline`](crate::spline) do.
+//!
+//! A tensor-product surface moves the control points of a curve along curves of their own
+//! [FJ-surfaces, §1–2]: with a net of points c_{i,j} (i along u, j along v), each row is the
+//! control polygon of a curve in v, and the points of those curves at v are the control
+//! polygon of the curve of the surface at that v. Every algorithm on a surface is an
+//! algorithm on curves, row by row and column by column, and the surface types run the curve
+//! code of [`spline`](crate::spline) rather than a second copy of it.
+//!
+//! | type | domain | what it is |
+//! |---|---|---|
+//! | [`BezierPatch`] | the whole plane (the net describes [0, 1]²) | Σ c_{i,j} Bᵢᵐ(u) Bⱼⁿ(v) [FJ-surfaces, §2], [PPB, §9.2] |
+//!
+//! | file | what it holds |
+//! |---|---|
+//! | `traits.rs` | [`Surface`] (a [`SurfaceDomain`] and evaluation), [`SurfaceDerivative`] (partial derivatives of any orders) |
+//! | `net.rs` | [`ControlNet`]: a rectangular grid of finite points, validated once |
+//! | `bezier.rs` | [`BezierPatch`]: evaluation rows first, columns first and by the tensor de Casteljau algorithm, isoparametric curves, partial derivatives through the curve code [FJ-surfaces, §2, §5], [PPB, §9.2, §9.5] |
+//!
+//! Sources are cited as `[KEY, §section]` (see `docs/references.md`): FJ-surfaces is
+//! L. Fernández Jambrina, *Tema 5: Superficies*; PPB is M. Paluszny, H. Prautzsch, W. Boehm,
+//! *Métodos de Bézier y B-splines*.
+
+mod bezier;
+mod net;
+mod traits;
+
+/// The surface algorithms, declared.
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 3] = [
+    &bezier::ROWS_FIRST,
+    &bezier::COLUMNS_FIRST,
+    &bezier::TENSOR_DE_CASTELJAU,
+];
+
+/// The declarations the catalog's entries measure, by name.
+pub(crate) mod declarations {
+    pub(crate) use super::bezier::{COLUMNS_FIRST, ROWS_FIRST, TENSOR_DE_CASTELJAU};
+}
+
+pub use bezier::BezierPatch;
+pub use net::ControlNet;
+pub use traits::{Surface, SurfaceDerivative, SurfaceDomain};
