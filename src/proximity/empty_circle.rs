@@ -176,6 +176,7 @@ enum Candidate {
 /// The candidate with the largest exact squared radius (the first of equal ones).
 fn largest_candidate<C: Counter>(p: &[Point2], t: &Triangulation, counter: &mut C) -> Candidate {
     let mut best = (Candidate::HullVertex(t.hull[0]), SquaredRadius::zero());
+    let corners = corners(p, &t.hull, counter);
     let mut offer = |candidate: Candidate, r2: SquaredRadius| {
         if r2.cmp(&best.1) == Ordering::Greater {
             best = (candidate, r2);
@@ -183,7 +184,7 @@ fn largest_candidate<C: Counter>(p: &[Point2], t: &Triangulation, counter: &mut 
     };
     for tri in t.triangles.chunks_exact(3) {
         let x = Circumcentre::new(p[tri[0]], p[tri[1]], p[tri[2]]);
-        if in_hull(p, &t.hull, &x, counter) {
+        if in_hull(p, &corners, &x, counter) {
             offer(
                 Candidate::VoronoiVertex([tri[0], tri[1], tri[2]]),
                 x.squared_radius(),
@@ -254,9 +255,28 @@ fn widest_gap<C: Counter>(points: &[Point2], line: &[usize], c: &mut C) -> Empty
     }
 }
 
+/// The strict corners of the triangulation's `hull` (counter-clockwise, points in the
+/// middle of edges included, not all collinear): the points where the boundary turns, in
+/// the same order, from the same first point (the lexicographically smallest is always a
+/// corner). One counted orientation test per hull point.
+///
+/// The fan search of [`in_hull`] needs them: from a fan edge along a boundary segment
+/// (such as `hull[0] → hull[last]` when `hull[last]` lies in the middle of the last edge)
+/// the wedge is degenerate, and a point beyond the hull on that line would pass.
+fn corners<C: Counter>(p: &[Point2], hull: &[usize], c: &mut C) -> Vec<usize> {
+    let h = hull.len();
+    (0..h)
+        .filter(|&k| {
+            let (prev, next) = (hull[(k + h - 1) % h], hull[(k + 1) % h]);
+            c.orient2d(p[prev], p[hull[k]], p[next]) != Orientation::Collinear
+        })
+        .map(|k| hull[k])
+        .collect()
+}
+
 /// Whether the exact circumcentre `x` is in the closed convex polygon `hull`
-/// (counter-clockwise, at least three points, not all collinear): a binary search in the
-/// fan from `hull[0]`, one counted orientation test per step.
+/// (counter-clockwise strict corners, at least three): a binary search in the fan from
+/// `hull[0]`, one counted orientation test per step.
 fn in_hull<C: Counter>(p: &[Point2], hull: &[usize], x: &Circumcentre, c: &mut C) -> bool {
     let h0 = p[hull[0]];
     let last = hull.len() - 1;
