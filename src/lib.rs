@@ -20,7 +20,7 @@
 //! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the course's divide and conquer, Lawson's flips, Fortune's sweep), the exact checker, the Voronoi diagram and its clipping | `src/delaunay/`, one file per builder |
 //! | [`proximity`] | closest pair (on the Delaunay triangulation, by divide and conquer), nearest search, all nearest neighbours, Euclidean MST, largest empty circle | `src/proximity/`, one file per problem |
 //! | [`spline`] | curves, generic over the scalar (`f64`, exact rationals) and the dimension: the curve traits, [`spline::bezier`] (Bernstein basis, Bézier, reparametrised and composite curves, one algorithm per file), [`spline::interpolate`] (polynomial, Hermite and spline interpolation, least squares), Frenet frames | `src/spline/`: `bezier/` and `interpolate/` one algorithm per file |
-//! | [`surface`] | tensor-product surfaces sharing traits ([`Surface`](surface::Surface), [`SurfaceDerivative`](surface::SurfaceDerivative)): the validated [`ControlNet`](surface::ControlNet), [`BezierPatch`](surface::BezierPatch) evaluated in either order or by the tensor de Casteljau algorithm, isoparametric curves, partial derivatives | `src/surface/`, one algorithm per file |
+//! | [`surface`] | tensor-product surfaces sharing traits ([`Surface`](surface::Surface), [`SurfaceDerivative`](surface::SurfaceDerivative)): the validated [`ControlNet`](surface::ControlNet), [`BezierPatch`](surface::BezierPatch) evaluated in either order or by the tensor de Casteljau algorithm, isoparametric curves, partial derivatives, [`tessellate`](surface::tessellate) into a [`TriangleMesh`](surface::TriangleMesh) written as OBJ or STL | `src/surface/`, one algorithm per file |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command | `src/cli/` |
 //!
 //! Every algorithm's own file is in the table below.
@@ -143,6 +143,7 @@
 //! | `bezier-patch/rows-first`: [`surface::BezierPatch::rows_first`] | Θ(((m + 1)n² + m²)D) | O((m + n)D) | arithmetic operations: exactly (m + 1)n(n + 1)/2 + m(m + 1)/2 affine combinations | [FJ-surfaces, §2], [PPB, §9.2] | `src/surface/bezier.rs` |
 //! | `bezier-patch/columns-first`: [`surface::BezierPatch::columns_first`] | Θ(((n + 1)m² + n²)D) | O((m + n)D) | arithmetic operations: exactly (n + 1)m(m + 1)/2 + n(n + 1)/2 affine combinations | [FJ-surfaces, §2], [PPB, §9.2] | `src/surface/bezier.rs` |
 //! | `bezier-patch/de-casteljau`: [`surface::BezierPatch::de_casteljau`] | Θ((mn·min(m, n) + |m − n|²)D) | Θ(mn·D) | arithmetic operations: three affine combinations per bilinear step, Σₖ₌₁ᵏ (m − k + 1)(n − k + 1) steps for k = min(m, n), then the univariate ones | [PPB, §9.5] | `src/surface/bezier.rs` |
+//! | `surface/tessellate`: [`surface::tessellate`] | Θ(N·E) for N vertices and E the cost of an evaluation | Θ(N) | arithmetic operations: exactly three surface evaluations per vertex (the point and the two first partials) | [FJ-surfaces, §2] | `src/surface/tessellate.rs` |
 //! <!-- /algorithms -->
 //!
 //! ## A first example

@@ -17,27 +17,34 @@
 //! | `traits.rs` | [`Surface`] (a [`SurfaceDomain`] and evaluation), [`SurfaceDerivative`] (partial derivatives of any orders) |
 //! | `net.rs` | [`ControlNet`]: a rectangular grid of finite points, validated once |
 //! | `bezier.rs` | [`BezierPatch`]: evaluation rows first, columns first and by the tensor de Casteljau algorithm, isoparametric curves, partial derivatives through the curve code [FJ-surfaces, §2, §5], [PPB, §9.2, §9.5] |
+//! | `tessellate.rs` | [`tessellate`], [`tessellate_at_with`]: any surface in R³ as a [`TriangleMesh`] with unit normals |
+//! | `export.rs` | [`TriangleMesh::write_obj`] (Wavefront OBJ), [`TriangleMesh::write_stl`] (ASCII STL) |
 //!
 //! Sources are cited as `[KEY, §section]` (see `docs/references.md`): FJ-surfaces is
 //! L. Fernández Jambrina, *Tema 5: Superficies*; PPB is M. Paluszny, H. Prautzsch, W. Boehm,
 //! *Métodos de Bézier y B-splines*.
 
 mod bezier;
+mod export;
 mod net;
+mod tessellate;
 mod traits;
 
 /// The surface algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 3] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 4] = [
     &bezier::ROWS_FIRST,
     &bezier::COLUMNS_FIRST,
     &bezier::TENSOR_DE_CASTELJAU,
+    &tessellate::TESSELLATE,
 ];
 
 /// The declarations the catalog's entries measure, by name.
 pub(crate) mod declarations {
     pub(crate) use super::bezier::{COLUMNS_FIRST, ROWS_FIRST, TENSOR_DE_CASTELJAU};
+    pub(crate) use super::tessellate::TESSELLATE;
 }
 
 pub use bezier::BezierPatch;
 pub use net::ControlNet;
+pub use tessellate::{tessellate, tessellate_at_with, TriangleMesh};
 pub use traits::{Surface, SurfaceDerivative, SurfaceDomain};

@@ -391,10 +391,22 @@ fn circumcentre_beyond_a_collinear_last_hull_point() {
     // circumcentre (-4, 7) of (0, 4), (-4, 2), (-1, 3) lies on the line of that edge,
     // outside the hull, and must not be taken (found by proptest; the answer is a
     // crossing of radius below 5).
-    let p = pts(&[(-1.0, 3.0), (-4.0, 1.0), (-4.0, 2.0), (0.0, 4.0), (-4.0, 0.0)]);
+    let p = pts(&[
+        (-1.0, 3.0),
+        (-4.0, 1.0),
+        (-4.0, 2.0),
+        (0.0, 4.0),
+        (-4.0, 0.0),
+    ]);
     assert!(check(&p) < q(25.0));
     // The same with the collinear points on the first edge instead.
-    let p = pts(&[(0.0, 0.0), (0.0, -1.0), (0.0, -2.0), (4.0, 0.0), (2.0, -3.0)]);
+    let p = pts(&[
+        (0.0, 0.0),
+        (0.0, -1.0),
+        (0.0, -2.0),
+        (4.0, 0.0),
+        (2.0, -3.0),
+    ]);
     check(&p);
 }
 
