@@ -46,7 +46,7 @@ mod number_arrays;
 pub use csv_points::parse_csv_points;
 pub use graph_json::parse_json_graph;
 pub use json_points::parse_json_points;
-pub use number_arrays::{parse_number_arrays, parse_number_list};
+pub use number_arrays::{parse_number_arrays, parse_number_grid, parse_number_list};
 
 use super::CliError;
 use crate::geometry::Point2;

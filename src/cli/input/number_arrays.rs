@@ -19,7 +19,7 @@ use crate::util::quote;
 /// [`CliError::Json`] with the line and column of a syntax error; [`CliError::Shape`] if
 /// the list is empty, mixes numbers and arrays, or its points differ in length.
 pub fn parse_number_arrays(text: &str) -> Result<Vec<Vec<String>>, CliError> {
-    let items = parse_items(text)?;
+    let items = parse_items(text, 1)?;
     let points: Vec<Vec<String>> = if items.iter().all(|i| matches!(i, Item::Number(_))) {
         items
             .into_iter()
@@ -33,7 +33,7 @@ pub fn parse_number_arrays(text: &str) -> Result<Vec<Vec<String>>, CliError> {
             .into_iter()
             .enumerate()
             .map(|(index, i)| match i {
-                Item::List(v) => Ok(v),
+                Item::List(v) => Ok(Item::numbers(v)),
                 Item::Number(_) => Err(CliError::Shape(format!(
                     "point {index} is a number, but other points are lists"
                 ))),
@@ -64,7 +64,7 @@ pub fn parse_number_arrays(text: &str) -> Result<Vec<Vec<String>>, CliError> {
 /// [`CliError::Json`] with the line and column of a syntax error; [`CliError::Shape`] if
 /// the list is empty or an entry is a list, naming the entry.
 pub fn parse_number_list(text: &str, what: &str) -> Result<Vec<String>, CliError> {
-    let items = parse_items(text)?;
+    let items = parse_items(text, 1)?;
     if items.is_empty() {
         return Err(CliError::Shape(format!("the list of {what} is empty")));
     }
@@ -82,14 +82,78 @@ pub fn parse_number_list(text: &str, what: &str) -> Result<Vec<String>, CliError
         .collect()
 }
 
-/// The items of the outer list, the whole text read.
-fn parse_items(text: &str) -> Result<Vec<Item>, CliError> {
+/// The entries of a JSON grid of points `[[[x, y, z], ...], ...]` (a control net: a list of
+/// rows, each a list of points), as the text of each number.
+///
+/// # Errors
+///
+/// [`CliError::Json`] with the line and column of a syntax error; [`CliError::Shape`] if
+/// the grid or a row is empty, an entry has the wrong nesting, the rows differ in length or
+/// the points in their number of coordinates, naming the row and column.
+pub fn parse_number_grid(text: &str) -> Result<Vec<Vec<Vec<String>>>, CliError> {
+    let rows = parse_items(text, 2)?;
+    if rows.is_empty() {
+        return Err(CliError::Shape(
+            "the grid of points has no rows".to_string(),
+        ));
+    }
+    let mut grid = Vec::with_capacity(rows.len());
+    for (i, row) in rows.into_iter().enumerate() {
+        let Item::List(row) = row else {
+            return Err(CliError::Shape(format!(
+                "row {i} is a number; a grid is a list of rows of points"
+            )));
+        };
+        let mut points = Vec::with_capacity(row.len());
+        for (j, p) in row.into_iter().enumerate() {
+            match p {
+                Item::List(p) => points.push(Item::numbers(p)),
+                Item::Number(_) => {
+                    return Err(CliError::Shape(format!(
+                        "point ({i}, {j}) is a number; a grid's points are lists of coordinates"
+                    )))
+                }
+            }
+        }
+        grid.push(points);
+    }
+    let columns = grid[0].len();
+    let dimension = grid[0].first().map_or(0, Vec::len);
+    for (i, row) in grid.iter().enumerate() {
+        if row.is_empty() {
+            return Err(CliError::Shape(format!("row {i} of the grid is empty")));
+        }
+        if row.len() != columns {
+            return Err(CliError::Shape(format!(
+                "row {i} has {} points, but row 0 has {columns}",
+                row.len()
+            )));
+        }
+        if let Some((j, p)) = row.iter().enumerate().find(|(_, p)| p.len() != dimension) {
+            return Err(CliError::Shape(format!(
+                "point ({i}, {j}) has {} coordinates, but point (0, 0) has {dimension}",
+                p.len()
+            )));
+        }
+    }
+    if dimension == 0 {
+        return Err(CliError::Shape(
+            "point (0, 0) has no coordinates".to_string(),
+        ));
+    }
+    Ok(grid)
+}
+
+/// The items of the outer list, the whole text read, with lists nested at most `max_depth`
+/// levels inside it.
+fn parse_items(text: &str, max_depth: usize) -> Result<Vec<Item>, CliError> {
     // Offsets index the text after the byte-order mark, which the errors' positions count.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut p = Parser {
         chars: text.char_indices().collect(),
         pos: 0,
         text,
+        max_depth,
     };
     let items = p.array(0)?;
     p.skip_ws();
@@ -101,17 +165,33 @@ fn parse_items(text: &str) -> Result<Vec<Item>, CliError> {
 
 enum Item {
     Number(String),
-    List(Vec<String>),
+    List(Vec<Item>),
+}
+
+impl Item {
+    /// The numbers of a list whose entries are numbers (the parser's depth guarantees it).
+    fn numbers(items: Vec<Item>) -> Vec<String> {
+        items
+            .into_iter()
+            .filter_map(|i| match i {
+                Item::Number(s) => Some(s),
+                Item::List(_) => None,
+            })
+            .collect()
+    }
 }
 
 struct Parser<'a> {
     chars: Vec<(usize, char)>,
     pos: usize,
     text: &'a str,
+    max_depth: usize,
 }
 
 impl Parser<'_> {
-    /// An array at nesting `depth` (0: the list of points, 1: one point).
+    /// An array at nesting `depth` (0: the outer list); arrays nest at most `max_depth`
+    /// levels below it (1 for a list of points, 2 for a grid of them), so the recursion is
+    /// bounded whatever the text.
     fn array(&mut self, depth: usize) -> Result<Vec<Item>, CliError> {
         self.skip_ws();
         self.expect('[')?;
@@ -124,18 +204,7 @@ impl Parser<'_> {
         loop {
             self.skip_ws();
             let item = match self.peek() {
-                Some('[') if depth == 0 => {
-                    let inner = self.array(1)?;
-                    Item::List(
-                        inner
-                            .into_iter()
-                            .map(|i| match i {
-                                Item::Number(s) => s,
-                                Item::List(_) => unreachable!("depth 1 holds numbers only"),
-                            })
-                            .collect(),
-                    )
-                }
+                Some('[') if depth < self.max_depth => Item::List(self.array(depth + 1)?),
                 Some('"') => Item::Number(self.string()?),
                 Some(c) if c == '-' || c == '+' || c == '.' || c.is_ascii_alphanumeric() => {
                     Item::Number(self.bare_number())
@@ -292,6 +361,43 @@ mod tests {
             }) => assert_eq!(column, 5),
             other => panic!("{other:?}"),
         }
+    }
+
+    #[test]
+    fn grids_keep_their_text_and_name_the_bad_row_or_point() {
+        let g = parse_number_grid(r#"[[[0, 1], ["1/3", 2]], [[4, 5], [6, "-7e-1"]]]"#).unwrap();
+        assert_eq!(
+            g,
+            [[["0", "1"], ["1/3", "2"]], [["4", "5"], ["6", "-7e-1"]]]
+        );
+        for (text, message) in [
+            ("[]", "the grid of points has no rows"),
+            (
+                "[[[1]], 2]",
+                "row 1 is a number; a grid is a list of rows of points",
+            ),
+            (
+                "[[[1], 2]]",
+                "point (0, 1) is a number; a grid's points are lists of coordinates",
+            ),
+            ("[[[1], [2]], [[3]]]", "row 1 has 1 points, but row 0 has 2"),
+            (
+                "[[[1], [2, 3]]]",
+                "point (0, 1) has 2 coordinates, but point (0, 0) has 1",
+            ),
+            ("[[[1]], []]", "row 1 of the grid is empty"),
+            ("[[[]]]", "point (0, 0) has no coordinates"),
+        ] {
+            match parse_number_grid(text) {
+                Err(CliError::Shape(m)) => assert_eq!(m, message, "{text}"),
+                other => panic!("{text}: {other:?}"),
+            }
+        }
+        // A fourth level is a syntax error, as a third is for a list of points.
+        assert!(matches!(
+            parse_number_grid("[[[[1]]]]"),
+            Err(CliError::Json { .. })
+        ));
     }
 
     #[test]

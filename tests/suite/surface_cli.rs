@@ -1,0 +1,293 @@
+//! The `compgeo surface` command against the library: points, partial derivatives and meshes
+//! as the library computes them (exactly with `--exact`), the OBJ and STL files read back by
+//! `tobj` and `stl_io`, and bad nets and parameters exiting with code 2 and one `error:` line
+//! naming what is wrong.
+#![cfg(all(feature = "cli", feature = "exact"))]
+
+use crate::common::{assert_rejected, run_json};
+use crate::spline_common::{q, Q};
+use compgeo::spline::Point;
+use compgeo::surface::{tessellate, BezierPatch, ControlNet, Surface, SurfaceDerivative};
+use serde_json::Value;
+
+/// A bidegree (2, 3) net in R³ with fractions, as the command reads it.
+const NET: &str = r#"[[[0,0,0],[0,1,"1/2"],[0,2,-1],[0,3,0]],
+                      [[1,0,1],[1,1,"2/3"],[1,2,2],[1,3,"-1/4"]],
+                      [[2,0,0],[2,1,1],[2,2,"3/5"],[2,3,1]]]"#;
+
+fn number(v: &Value) -> Q {
+    v.as_str().unwrap().parse().unwrap()
+}
+
+fn point3(v: &Value) -> Point<Q, 3> {
+    let c: Vec<Q> = v.as_array().unwrap().iter().map(number).collect();
+    Point::new([c[0].clone(), c[1].clone(), c[2].clone()])
+}
+
+/// The same net in the library.
+fn patch() -> BezierPatch<Q, 3> {
+    let text: Vec<Vec<Vec<Value>>> = serde_json::from_str(NET).unwrap();
+    let rows = text
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|p| {
+                    let c: Vec<Q> = p
+                        .iter()
+                        .map(|x| match x {
+                            Value::String(s) => s.parse().unwrap(),
+                            other => crate::spline_common::qi(other.as_i64().unwrap()),
+                        })
+                        .collect();
+                    Point::new([c[0].clone(), c[1].clone(), c[2].clone()])
+                })
+                .collect()
+        })
+        .collect();
+    BezierPatch::new(ControlNet::new(rows).unwrap()).unwrap()
+}
+
+#[test]
+fn eval_and_derivatives_match_the_library_exactly() {
+    let s = patch();
+    for (u, v) in [(q(1, 3), q(1, 2)), (q(0, 1), q(1, 1)), (q(-1, 2), q(7, 5))] {
+        let (us, vs) = (u.to_string(), v.to_string());
+        for algorithm in ["rows-first", "columns-first", "de-casteljau"] {
+            let out = run_json(
+                &[
+                    "surface",
+                    "eval",
+                    "--net",
+                    NET,
+                    "--u",
+                    &us,
+                    "--v",
+                    &vs,
+                    "--algorithm",
+                    algorithm,
+                    "--exact",
+                ],
+                None,
+            );
+            assert_eq!(
+                point3(&out["point"]),
+                s.eval(&u, &v).unwrap(),
+                "{algorithm}"
+            );
+            assert_eq!(out["bidegree"], serde_json::json!([2, 3]));
+            assert!(out["counts"]["arithmetic_operations"].as_u64().unwrap() > 0);
+        }
+        for (r, t) in [(1, 0), (0, 1), (1, 1), (2, 3), (3, 0)] {
+            let out = run_json(
+                &[
+                    "surface",
+                    "derivative",
+                    "--net",
+                    NET,
+                    "--u",
+                    &us,
+                    "--v",
+                    &vs,
+                    "--order-u",
+                    &r.to_string(),
+                    "--order-v",
+                    &t.to_string(),
+                    "--exact",
+                ],
+                None,
+            );
+            assert_eq!(
+                point3(&out["derivative"]),
+                s.partial_at(&u, &v, r, t).unwrap(),
+                "order ({r}, {t})"
+            );
+        }
+    }
+}
+
+#[test]
+fn tessellate_prints_the_librarys_mesh_and_writes_files_viewers_read() {
+    // With --exact both compute in rationals and round once: the same doubles.
+    let mesh = tessellate(&patch(), 3, 5).unwrap();
+    let out = run_json(
+        &[
+            "surface",
+            "tessellate",
+            "--net",
+            NET,
+            "--u-segments",
+            "3",
+            "--v-segments",
+            "5",
+            "--exact",
+        ],
+        None,
+    );
+    assert_eq!(out["vertices"], 4 * 6);
+    assert_eq!(out["triangles"], 3 * 5 * 2);
+    let positions: Vec<[f64; 3]> = serde_json::from_value(out["positions"].clone()).unwrap();
+    let normals: Vec<[f64; 3]> = serde_json::from_value(out["normals"].clone()).unwrap();
+    let triangles: Vec<[usize; 3]> = serde_json::from_value(out["indices"].clone()).unwrap();
+    assert_eq!(
+        (positions, normals, triangles),
+        (
+            mesh.positions.clone(),
+            mesh.normals.clone(),
+            mesh.triangles.clone()
+        )
+    );
+
+    let dir = std::env::temp_dir().join(format!("compgeo-surface-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (obj, stl) = (dir.join("patch.obj"), dir.join("patch.stl"));
+    let out = run_json(
+        &[
+            "surface",
+            "tessellate",
+            "--net",
+            NET,
+            "--u-segments",
+            "3",
+            "--v-segments",
+            "5",
+            "--obj",
+            obj.to_str().unwrap(),
+            "--stl",
+            stl.to_str().unwrap(),
+            "--exact",
+        ],
+        None,
+    );
+    assert_eq!(out["obj"], obj.to_str().unwrap());
+    assert!(out.get("positions").is_none());
+    let options = tobj::LoadOptions {
+        single_index: true,
+        ..Default::default()
+    };
+    let (models, _) = tobj::load_obj(&obj, &options).unwrap();
+    let m = &models[0].mesh;
+    assert_eq!(m.indices.len(), 3 * mesh.triangles.len());
+    for (k, t) in m.indices.chunks(3).zip(&mesh.triangles) {
+        for (&index, &want) in k.iter().zip(t) {
+            let i = index as usize;
+            assert_eq!(&m.positions[3 * i..3 * i + 3], &mesh.positions[want]);
+        }
+    }
+    let mut file = std::fs::File::open(&stl).unwrap();
+    let read = stl_io::read_stl(&mut file).unwrap();
+    assert_eq!(read.faces.len(), mesh.triangles.len());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn f64_eval_agrees_with_the_exact_one() {
+    let s = patch();
+    let out = run_json(
+        &[
+            "surface", "eval", "--net", NET, "--u", "0.25", "--v", "0.75",
+        ],
+        None,
+    );
+    let exact = s.eval(&q(1, 4), &q(3, 4)).unwrap();
+    for (got, want) in out["point"].as_array().unwrap().iter().zip(exact.coords()) {
+        let want: f64 = num_traits::ToPrimitive::to_f64(want).unwrap();
+        assert!((got.as_f64().unwrap() - want).abs() <= 1e-15 * want.abs().max(1.0));
+    }
+}
+
+#[test]
+fn bad_nets_and_parameters_exit_2_naming_the_problem() {
+    for (args, message) in [
+        (
+            vec![
+                "surface",
+                "eval",
+                "--net",
+                "[[[0,0],[1]]]",
+                "--u",
+                "0",
+                "--v",
+                "0",
+            ],
+            "point (0, 1) has 1 coordinates, but point (0, 0) has 2",
+        ),
+        (
+            vec![
+                "surface",
+                "eval",
+                "--net",
+                "[[[0,0]],[[1,1],[2,2]]]",
+                "--u",
+                "0",
+                "--v",
+                "0",
+            ],
+            "row 1 has 2 points, but row 0 has 1",
+        ),
+        (
+            vec![
+                "surface",
+                "eval",
+                "--net",
+                "[[[0,\"x\"]]]",
+                "--u",
+                "0",
+                "--v",
+                "0",
+            ],
+            "control point (0, 0), coordinate 1",
+        ),
+        (
+            vec![
+                "surface",
+                "eval",
+                "--net",
+                "[[[0,1e400]]]",
+                "--u",
+                "0",
+                "--v",
+                "0",
+            ],
+            "control point (0, 0), coordinate 1",
+        ),
+        (
+            vec!["surface", "eval", "--net", NET, "--u", "NaN", "--v", "0"],
+            "invalid u",
+        ),
+        (
+            vec![
+                "surface",
+                "eval",
+                "--net",
+                "[[[1,2,3,4,5]]]",
+                "--u",
+                "0",
+                "--v",
+                "0",
+            ],
+            "5 coordinates",
+        ),
+        (
+            vec!["surface", "tessellate", "--net", "[[[0,0],[1,1]]]"],
+            "three dimensions",
+        ),
+        (
+            vec!["surface", "tessellate", "--net", NET, "--u-segments", "0"],
+            "segments",
+        ),
+        (
+            vec![
+                "surface",
+                "tessellate",
+                "--net",
+                NET,
+                "--obj",
+                "/nonexistent/dir/x.obj",
+            ],
+            "cannot write",
+        ),
+    ] {
+        let err = assert_rejected(&args, None);
+        assert!(err.contains(message), "{args:?}: {err}");
+    }
+}
