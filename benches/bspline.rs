@@ -19,26 +19,30 @@
 //!
 //! Run one group with e.g. `cargo bench --bench bspline -- bspline/eval`.
 //!
-//! Medians of one run (2026-12-02, the 2-core machine shared with five other builds, load
-//! 11–14, so each time is inflated several times over; compare ratios within the run), with
-//! the de Boor and insertion code of commit c4ff9d3:
+//! Point estimates of one run (2026-12-03, commit fa62d0c, the 2-core machine shared with
+//! five other builds, load 3 at the start rising to 13, so every time is inflated and the
+//! later groups more than the earlier; compare ratios within a group), the refine group
+//! measured again at load 13:
 //!
 //! | group | compgeo | truck-geometry | curvo | ours/truck | ours/curvo |
 //! |---|---|---|---|---|---|
-//! | eval, 10⁶ calls | `eval` 506 ms, `de_boor` 442 ms | `subs` 1.04 s | `point_at` 616 ms (`evaluator` 170 ms) | 0.49, 0.43 | 0.82, 0.72 |
-//! | insert, one knot | `insert` 2.87 µs | `add_knot` 2.55 µs | `try_add_knot` 3.53 µs | 1.12 | 0.81 |
-//! | refine, 1000 knots | repeated `insert` 13.6 ms | repeated `add_knot` 547 µs | `try_refine_knot` 158 µs | 25 | 86 |
-//! | interpolate, 201 points | (to come) | (none) | `interpolate` 8.54 ms | | |
+//! | eval, 10⁶ calls | `eval` 86.1 ms, `de_boor` 85.7 ms | `subs` 380 ms | `point_at` 149 ms | 0.23 | 0.58 |
+//! | eval, 10⁶ sorted (batch) | `eval_sorted` 63.6 ms | (`subs` 380 ms) | `evaluator` 104 ms | 0.17 | 0.61 |
+//! | insert, one knot | `insert` 0.61 µs | `add_knot` 2.99 µs | `try_add_knot` 3.32 µs | 0.20 | 0.18 |
+//! | refine, 1000 knots | `refine` 53 µs, `oslo` 111 µs, repeated `insert` 1.28 ms | repeated `add_knot` 124 µs | `try_refine_knot` 45 µs | 0.43 | 1.2 |
+//! | interpolate, 201 points | `interpolate` 36 µs | (none) | `interpolate` 1.98 ms | | 0.018 |
 //!
-//! The per-call targets of issue 14 (≤ 0.5× truck, ≤ curvo) hold, barely for truck; the
-//! insertion target (≤ 0.5× truck's `add_knot`) does not. Repeated insertion copies the
-//! whole curve and revalidates its knots each time, so refinement waits for Oslo. truck's `subs` computes all n
-//! basis functions in a fresh vector after a linear search for the span, hence its cost;
-//! curvo's evaluator skips the span search for sorted parameters, the yardstick of the batch
-//! variant to come.
+//! The targets of issue 14 hold with room: per call ≤ 0.5× truck and ≤ curvo, the batch
+//! ≤ 0.3× truck's per-call time, one insertion ≤ 0.5× truck's `add_knot`. Refinement is
+//! the noisiest group (its first run in this session gave 137 µs against curvo's 36 µs; at
+//! load 2 the day before, 11.4 µs against 20.9 µs): one backward pass of Boehm's insertions
+//! does one division per new coefficient, as curvo's does, so the two are within noise of
+//! each other. truck's `subs` computes all n basis functions in a fresh vector after a
+//! linear search for the span, hence its cost; curvo's evaluator and our `eval_sorted`
+//! skip the span search for sorted parameters.
 //!
 //! Build cost of the peers, from `cargo bench --no-run --bench bspline --timings` after a
-//! cold `cargo bench --no-run --bench spline` (same load: 28 min wall, 598 s of CPU): the
+//! cold `cargo bench --no-run --bench spline` (2026-12-02, load 11–14: 28 min wall, 598 s of CPU): the
 //! crates they bring took about 100 s of CPU in the bench profile, curvo with nalgebra, wide,
 //! simba, itertools, gauss-quad and argmin three quarters of it, truck-geometry with cgmath
 //! the rest; `cargo test` and clippy build the dev-dependencies again.
