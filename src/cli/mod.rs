@@ -59,6 +59,7 @@ mod proximity;
 mod report;
 mod sort;
 mod stats;
+mod subdivide;
 
 use error::CliError;
 
@@ -105,6 +106,8 @@ enum Command {
     Bspline(bspline::BsplineArgs),
     /// NURBS curves: evaluate, insert knots, elevate, rational Bézier pieces
     Nurbs(nurbs::NurbsArgs),
+    /// Uniform subdivision of a polygon: Lane–Riesenfeld of any degree, Chaikin, four-point
+    Subdivide(subdivide::SubdivideArgs),
     /// Interpolation: cubic Hermite, C² cubic spline, Lagrange or Newton, in f64 or exact
     Interpolate(interpolate::InterpolateArgs),
     /// Delaunay triangulation of a point set: CCW triangles, hull, merged duplicates
@@ -152,6 +155,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Bezier(args) => bezier::run(args),
         Command::Bspline(args) => bspline::run(args),
         Command::Nurbs(args) => nurbs::run(args),
+        Command::Subdivide(args) => subdivide::run(args),
         Command::Interpolate(args) => interpolate::run(args),
         Command::Delaunay(args) => delaunay::run(args),
         Command::Voronoi(args) => proximity::run_voronoi(args),
