@@ -257,9 +257,10 @@ impl<S: Scalar> Mask<S> {
     ///
     /// let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]].map(Point::new);
     /// let b = Mask::lane_riesenfeld(1)?.refine(&square, Topology::Closed, 1)?;
-    /// // The midpoint rule: the vertices and the edge midpoints.
-    /// assert_eq!(b[2], Point::new([1.0, 0.0]));
-    /// assert_eq!(b[3], Point::new([1.0, 0.5]));
+    /// // The midpoint rule ½(1, 2, 1): b_{2j} the midpoint of c_{j−1}c_j, b_{2j+1} = c_j.
+    /// assert_eq!(b[2], Point::new([0.5, 0.0]));
+    /// assert_eq!(b[3], Point::new([1.0, 0.0]));
+    /// assert_eq!(b[0], Point::new([0.0, 0.5]));
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn refine<const D: usize>(
