@@ -165,8 +165,8 @@ pub fn four_point_with<S: Scalar, const D: usize, C: Counter>(
                         k => &current[k - 1],
                     }
                 };
-                for i in 0..m - 1 {
-                    next.push(current[i].clone());
+                for (i, p) in current[..m - 1].iter().enumerate() {
+                    next.push(p.clone());
                     next.push(insert(at(i), at(i + 1), at(i + 2), at(i + 3)));
                     counter.arithmetic_operation();
                 }

@@ -47,7 +47,7 @@
 //!
 //! Here n is the input's vertex count, k the number of rounds, N ≤ n·2^k the output's, L the
 //! mask's length and D the dimension. The output grows like n·2^k, so k rounds are refused
-//! with [`Error::LimitExceeded`](crate::Error::LimitExceeded) naming
+//! with [`Error::LimitExceeded`] naming
 //! [`MAX_SUBDIVISION_POINTS`](crate::limits::MAX_SUBDIVISION_POINTS) before anything beyond
 //! it is allocated.
 //!
