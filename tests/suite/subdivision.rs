@@ -509,3 +509,54 @@ fn f64_overflow_is_reported() {
         Err(Error::Overflow { .. })
     ));
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    #[test]
+    fn random_open_polygons_refine_to_the_same_spline(
+        coords in prop::collection::vec((-30i64..30, -30i64..30), 6..10),
+        d in 1usize..5,
+        rounds in 1u32..3,
+    ) {
+        let c: Vec<P2> = coords.iter().map(|&(x, y)| pt(x, y)).collect();
+        let s = open_spline(&c, d);
+        let b = lane_riesenfeld(&c, d, rounds as usize, Topology::Open).unwrap();
+        let scale = 1i64 << rounds;
+        let offset = d as i64 * (scale - 1);
+        let knots = (0..=(b.len() + d) as i64).map(|j| q(j + offset, scale)).collect();
+        let r = BSpline::new(b, KnotVector::new(d, knots).unwrap()).unwrap();
+        for u in dyadic(d as i64, c.len() as i64, rounds + 3) {
+            prop_assert_eq!(r.eval(&u).unwrap(), s.eval(&u).unwrap());
+        }
+    }
+
+    #[test]
+    fn f64_agrees_with_exact_where_every_step_is_exact(
+        coords in prop::collection::vec((-1000i64..1000, -1000i64..1000), 5..12),
+        d in 1usize..5,
+        rounds in 0usize..4,
+        closed in any::<bool>(),
+    ) {
+        // Small integers halved a few times stay exact in f64, so both back ends must agree.
+        let topology = if closed { Topology::Closed } else { Topology::Open };
+        let exact: Vec<P2> = coords.iter().map(|&(x, y)| pt(x, y)).collect();
+        let float: Vec<Point<f64, 2>> =
+            coords.iter().map(|&(x, y)| Point::new([x as f64, y as f64])).collect();
+        let to_q = |v: Vec<Point<f64, 2>>| -> Vec<P2> {
+            v.iter().map(|p| Point::from_f64(p).unwrap()).collect()
+        };
+        prop_assert_eq!(
+            to_q(lane_riesenfeld(&float, d, rounds, topology).unwrap()),
+            lane_riesenfeld(&exact, d, rounds, topology).unwrap()
+        );
+        prop_assert_eq!(
+            to_q(four_point(&float, &0.0625, rounds, topology).unwrap()),
+            four_point(&exact, &q(1, 16), rounds, topology).unwrap()
+        );
+        prop_assert_eq!(
+            to_q(limit_points(&float, 2, topology).unwrap()),
+            limit_points(&exact, 2, topology).unwrap()
+        );
+    }
+}
