@@ -138,6 +138,16 @@ pub const MAX_BASIS_TABLE: usize = 1 << 24;
 /// limit.
 pub const MAX_KNOTS: usize = 1 << 26;
 
+/// The most vertices a subdivided polygon may have after its rounds
+/// ([`lane_riesenfeld`](crate::spline::subdivision::lane_riesenfeld),
+/// [`four_point`](crate::spline::subdivision::four_point),
+/// [`Mask::refine`](crate::spline::subdivision::Mask::refine)): 2^24.
+///
+/// k rounds multiply the vertices by about 2^k, so a few bytes of input (`--rounds 40`) could
+/// otherwise ask for any amount of memory; the rounds are refused before the first one runs.
+/// 256 MiB of planar `f64` points at the limit (exact rationals take several times more).
+pub const MAX_SUBDIVISION_POINTS: usize = 1 << 24;
+
 /// One limit: its constant's name, its value and what it bounds, as the error message and
 /// the table in `docs/design.md` say them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -265,8 +275,15 @@ pub(crate) const KNOTS: Limit = Limit {
     what: "built knot count",
 };
 
+/// [`MAX_SUBDIVISION_POINTS`].
+pub(crate) const SUBDIVISION_POINTS: Limit = Limit {
+    name: "MAX_SUBDIVISION_POINTS",
+    max: MAX_SUBDIVISION_POINTS,
+    what: "subdivided polygon point count",
+};
+
 /// Every limit, in the order of the table in `docs/design.md`.
-pub const ALL: [Limit; 16] = [
+pub const ALL: [Limit; 17] = [
     POINTS,
     COCIRCULAR,
     KEYS,
@@ -283,6 +300,7 @@ pub const ALL: [Limit; 16] = [
     INTERSECTION_PAIRS,
     BASIS_TABLE,
     KNOTS,
+    SUBDIVISION_POINTS,
 ];
 
 #[cfg(test)]

@@ -59,6 +59,7 @@ mod proximity;
 mod report;
 mod sort;
 mod stats;
+mod subdivide;
 mod surface;
 
 use error::CliError;
@@ -108,6 +109,8 @@ enum Command {
     Nurbs(nurbs::NurbsArgs),
     /// Tensor-product Bézier patches: evaluate, differentiate, tessellate into OBJ/STL meshes
     Surface(surface::SurfaceArgs),
+    /// Uniform subdivision of a polygon: Lane–Riesenfeld of any degree, Chaikin, four-point
+    Subdivide(subdivide::SubdivideArgs),
     /// Interpolation: cubic Hermite, C² cubic spline, Lagrange or Newton, in f64 or exact
     Interpolate(interpolate::InterpolateArgs),
     /// Delaunay triangulation of a point set: CCW triangles, hull, merged duplicates
@@ -156,6 +159,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Bspline(args) => bspline::run(args),
         Command::Nurbs(args) => nurbs::run(args),
         Command::Surface(args) => surface::run(args),
+        Command::Subdivide(args) => subdivide::run(args),
         Command::Interpolate(args) => interpolate::run(args),
         Command::Delaunay(args) => delaunay::run(args),
         Command::Voronoi(args) => proximity::run_voronoi(args),

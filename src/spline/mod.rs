@@ -30,6 +30,7 @@
 //! | [`bspline`] | [`KnotVector`] (validation, builders, multiplicities, domain, span search, the SPL adapter), the basis ([`Basis`], [`BasisDerivatives`]), [`BSpline`] curves with de Boor's algorithm ([`DeBoorTrace`]) and Boehm's insertion |
 //! | [`rational`] | [`RationalBezier`] and [`Nurbs`] in homogeneous coordinates (de Casteljau, de Boor, insertion, derivatives by the quotient rule), exact conics ([`Nurbs::circle`], [`RationalBezier::circular_arc`], [`ConicKind`]) |
 //! | [`interpolate`] | polynomial, Lagrange/Aitken, Newton and Hermite interpolation, cubic and quadratic splines, least squares, parameterisations |
+//! | [`subdivision`] | uniform subdivision of open and closed polygons: [`lane_riesenfeld`] of any degree ([`chaikin`] is degree 2), the [`four_point`] scheme, subdivision masks ([`Mask`]) with their difference schemes, [`limit_points`] |
 //! | `frenet.rs` | [`FrenetFrame`], [`frenet_frame`], [`bezier_frenet`], [`curvature_vector`], G² checks [`is_g2_join`], [`is_g2`] |
 //!
 //! Every item is also re-exported here, flat (`compgeo::spline::Bezier`,
@@ -47,6 +48,7 @@ pub mod interpolate;
 mod parse;
 pub mod rational;
 mod scalar;
+pub mod subdivision;
 
 /// The curve algorithms that are not a choice among evaluation schemes, declared: the Bézier
 /// operations, interpolation and fitting, the B-spline knots and basis, the Frenet frame.
@@ -56,6 +58,7 @@ pub(crate) fn declarations() -> impl Iterator<Item = &'static crate::complexity:
         .chain(interpolate::DECLARATIONS)
         .chain(bspline::DECLARATIONS)
         .chain(rational::DECLARATIONS)
+        .chain(subdivision::DECLARATIONS)
         .chain([&frenet::FRENET])
 }
 
@@ -80,3 +83,6 @@ pub(crate) use parse::{parse_f64, parse_f64_or_word, read_scalar};
 pub use parse::{parse_scalar, ParseScalar, MAX_EXACT_DIGITS, MAX_EXACT_EXPONENT};
 pub use rational::{ConicKind, Nurbs, NurbsDerivative, RationalBezier};
 pub use scalar::{binomial, validate_parameter, validate_points, Finite, Point, Scalar};
+pub use subdivision::{
+    chaikin, four_point, lane_riesenfeld, limit_points, limit_stencil, Mask, Topology,
+};

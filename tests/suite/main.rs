@@ -45,6 +45,8 @@ mod predicates;
 mod proximity;
 mod registry;
 mod sort;
+mod subdivision;
+mod subdivision_cli;
 mod surface_bezier;
 mod surface_cli;
 mod surface_mesh;

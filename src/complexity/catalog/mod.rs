@@ -148,6 +148,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(hull::entries());
     all.extend(spline::entries());
     all.extend(bspline::entries());
+    all.extend(subdivision::entries());
     all.extend(surface::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
@@ -195,6 +196,7 @@ mod hull;
 mod proximity;
 mod sort;
 mod spline;
+mod subdivision;
 mod surface;
 
 /// The result of one counted run.

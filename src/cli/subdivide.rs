@@ -1,0 +1,152 @@
+//! `compgeo subdivide`: k rounds of uniform subdivision of an open or closed polygon, by the
+//! Lane–Riesenfeld algorithm of any degree (Chaikin's is degree 2) or the four-point scheme,
+//! in `f64` or (with `--exact`) in exact rationals.
+//!
+//! The polygon is JSON `[[x, y], ...]` in any dimension from 1 to 4, given with `--points`
+//! or read from stdin with `--points -`; numbers are read as `bezier` reads them. The output
+//! is `{"scheme", "rounds", "closed", "points": [...], "mask": {"start", "coefficients"},
+//! "counts"}`, plus `"degree"` and `"limit"` (the limit points of the result's vertices) for
+//! the Lane–Riesenfeld schemes and `"tension"` for the four-point scheme. Options that the
+//! scheme does not take (`--tension` with Lane–Riesenfeld, `--degree` with the four-point
+//! scheme or a degree other than 2 with Chaikin) are errors, not silently ignored.
+
+use super::bezier::{points, scalars, JsonScalar};
+use super::input::{parse_number_arrays, read_text};
+use super::interpolate::to_points;
+use super::output::print_json;
+use super::CliError;
+use crate::count::Counts;
+use crate::spline::subdivision::{
+    four_point_with, lane_riesenfeld_with, limit_points, Mask, Topology,
+};
+use crate::spline::{parse_scalar, Point};
+use clap::{Args, ValueEnum};
+use serde_json::{json, Value};
+use std::path::Path;
+
+/// Arguments of `compgeo subdivide`.
+#[derive(Debug, Args)]
+pub(super) struct SubdivideArgs {
+    /// The polygon as JSON [[x, y], ...] (dimension 1 to 4), or `-` to read it from stdin
+    #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
+    points: String,
+    /// The scheme
+    #[arg(long, value_enum)]
+    scheme: Scheme,
+    /// The degree d of lane-riesenfeld, at least 1 [default: 3]
+    #[arg(long)]
+    degree: Option<usize>,
+    /// How many rounds (each doubles the vertices)
+    #[arg(long, default_value_t = 1)]
+    rounds: usize,
+    /// The polygon is closed (its last vertex joined to its first); else it is open
+    #[arg(long)]
+    closed: bool,
+    /// The tension w of four-point, a decimal or a fraction [default: 1/16]
+    #[arg(long, value_name = "W", allow_hyphen_values = true)]
+    tension: Option<String>,
+    /// Compute in exact rationals and print every number as a string such as "47/18"
+    #[arg(long)]
+    exact: bool,
+}
+
+/// The schemes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Scheme {
+    /// Uniform B-spline subdivision of degree d: double, then d passes of midpoints
+    LaneRiesenfeld,
+    /// Lane–Riesenfeld of degree 2: cut every corner at ¼ and ¾
+    Chaikin,
+    /// The interpolating four-point scheme with tension w (1/16 reproduces cubics)
+    FourPoint,
+}
+
+/// Runs `compgeo subdivide`.
+pub(super) fn run(args: SubdivideArgs) -> Result<(), CliError> {
+    check_options(&args)?;
+    let text = if args.points == "-" {
+        read_text(Path::new("-"))?
+    } else {
+        args.points.clone()
+    };
+    let rows = parse_number_arrays(&text)?;
+    let d = rows[0].len();
+    let value = by_scalar_and_dimension!(args.exact, d, "points", run_typed(&args, &rows))?;
+    print_json(&value)
+}
+
+/// Options the chosen scheme does not take are errors.
+fn check_options(args: &SubdivideArgs) -> Result<(), CliError> {
+    let usage = |m: &str| Err(CliError::Usage(m.to_string()));
+    match args.scheme {
+        Scheme::FourPoint if args.degree.is_some() => {
+            usage("--degree applies to lane-riesenfeld only; four-point has no degree")
+        }
+        Scheme::Chaikin if args.degree.is_some_and(|d| d != 2) => {
+            usage("chaikin is degree 2; use --scheme lane-riesenfeld for another degree")
+        }
+        Scheme::LaneRiesenfeld | Scheme::Chaikin if args.tension.is_some() => {
+            usage("--tension applies to four-point only")
+        }
+        _ => Ok(()),
+    }
+}
+
+fn run_typed<S: JsonScalar, const D: usize>(
+    args: &SubdivideArgs,
+    rows: &[Vec<String>],
+) -> Result<Value, CliError> {
+    let polygon: Vec<Point<S, D>> = to_points(rows, |i| format!("point {i}"))?;
+    let topology = if args.closed {
+        Topology::Closed
+    } else {
+        Topology::Open
+    };
+    let mut counts = Counts::default();
+    let mut out = match args.scheme {
+        Scheme::LaneRiesenfeld | Scheme::Chaikin => {
+            let degree = match args.scheme {
+                Scheme::Chaikin => 2,
+                _ => args.degree.unwrap_or(3),
+            };
+            let refined =
+                lane_riesenfeld_with(&polygon, degree, args.rounds, topology, &mut counts)?;
+            let limit = limit_points(&refined, degree, topology)?;
+            let mask = Mask::<S>::lane_riesenfeld(degree)?;
+            json!({
+                "degree": degree,
+                "points": points(&refined, "points")?,
+                "limit": points(&limit, "limit")?,
+                "mask": mask_json(&mask)?,
+            })
+        }
+        Scheme::FourPoint => {
+            let w: S = match &args.tension {
+                Some(text) => parse_scalar(text, "tension")?,
+                None => S::from_ratio(1, 16),
+            };
+            let refined = four_point_with(&polygon, &w, args.rounds, topology, &mut counts)?;
+            json!({
+                "tension": scalars(std::slice::from_ref(&w), "tension")?[0],
+                "points": points(&refined, "points")?,
+                "mask": mask_json(&Mask::four_point(&w)?)?,
+            })
+        }
+    };
+    out["scheme"] = json!(args
+        .scheme
+        .to_possible_value()
+        .map(|v| v.get_name().to_string()));
+    out["rounds"] = json!(args.rounds);
+    out["closed"] = json!(args.closed);
+    out["counts"] = json!(counts);
+    Ok(out)
+}
+
+/// A mask as printed: the first exponent and the coefficients.
+fn mask_json<S: JsonScalar>(mask: &Mask<S>) -> Result<Value, CliError> {
+    Ok(json!({
+        "start": mask.start(),
+        "coefficients": scalars(mask.coefficients(), "mask.coefficients")?,
+    }))
+}
