@@ -138,6 +138,11 @@ pub const MAX_BASIS_TABLE: usize = 1 << 24;
 /// limit.
 pub const MAX_KNOTS: usize = 1 << 26;
 
+/// The most control polygons [`BetaSpline::subdivide`](crate::spline::BetaSpline::subdivide)
+/// returns: m·2ᵏ for m segments and k rounds, 2^20. The round count is a number, and each
+/// round doubles the output; four points a polygon, 64 MiB of planar `f64` points at the limit.
+pub const MAX_SUBDIVIDED_PIECES: usize = 1 << 20;
+
 /// One limit: its constant's name, its value and what it bounds, as the error message and
 /// the table in `docs/design.md` say them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -265,8 +270,15 @@ pub(crate) const KNOTS: Limit = Limit {
     what: "built knot count",
 };
 
+/// [`MAX_SUBDIVIDED_PIECES`].
+pub(crate) const SUBDIVIDED_PIECES: Limit = Limit {
+    name: "MAX_SUBDIVIDED_PIECES",
+    max: MAX_SUBDIVIDED_PIECES,
+    what: "subdivided polygon count",
+};
+
 /// Every limit, in the order of the table in `docs/design.md`.
-pub const ALL: [Limit; 16] = [
+pub const ALL: [Limit; 17] = [
     POINTS,
     COCIRCULAR,
     KEYS,
@@ -283,6 +295,7 @@ pub const ALL: [Limit; 16] = [
     INTERSECTION_PAIRS,
     BASIS_TABLE,
     KNOTS,
+    SUBDIVIDED_PIECES,
 ];
 
 #[cfg(test)]

@@ -28,6 +28,7 @@
 //! | `curve.rs` | the curve traits and [`Domain`] |
 //! | [`bezier`] | Bernstein basis, [`Bezier`] and its algorithms (one per file), [`Reparametrised`], [`CompositeBezier`] and its joins, intersection, the evaluation schemes ([`BezierEvaluation`]) |
 //! | [`bspline`] | [`KnotVector`] (validation, builders, multiplicities, domain, span search, the SPL adapter), the basis ([`Basis`], [`BasisDerivatives`]), [`BSpline`] curves with de Boor's algorithm ([`DeBoorTrace`]) and Boehm's insertion |
+//! | [`beta`] | cubic Beta-splines: [`BetaParameters`] (β₁, β₂, the normaliser δ), the basis and its Bernstein matrix C, [`BetaSpline`] curves, [`SubdivisionMatrices`] S_L = C⁻¹S_Lᴮ C and S_R = C⁻¹S_Rᴮ C at any c, recursive subdivision, the β-continuity check [`is_beta_continuous`] |
 //! | [`rational`] | [`RationalBezier`] and [`Nurbs`] in homogeneous coordinates (de Casteljau, de Boor, insertion, derivatives by the quotient rule), exact conics ([`Nurbs::circle`], [`RationalBezier::circular_arc`], [`ConicKind`]) |
 //! | [`interpolate`] | polynomial, Lagrange/Aitken, Newton and Hermite interpolation, cubic and quadratic splines, least squares, parameterisations |
 //! | `frenet.rs` | [`FrenetFrame`], [`frenet_frame`], [`bezier_frenet`], [`curvature_vector`], G² checks [`is_g2_join`], [`is_g2`] |
@@ -37,8 +38,10 @@
 //!
 //! Sources are cited as `[KEY, §section]`: PPB is M. Paluszny, H. Prautzsch, W. Boehm,
 //! *Métodos de Bézier y B-splines*; SPL the lecture notes *Curvas spline*; RD I. Ruiz
-//! Donaire, *Resumen de la asignatura Geometría Aplicada*.
+//! Donaire, *Resumen de la asignatura Geometría Aplicada*; CCKS L. Castro, S. Castro,
+//! S. Kahnert, D. Salgado, *Matrices de subdivisión para curvas Beta-spline cúbicas*.
 
+pub mod beta;
 pub mod bezier;
 pub mod bspline;
 mod curve;
@@ -56,9 +59,11 @@ pub(crate) fn declarations() -> impl Iterator<Item = &'static crate::complexity:
         .chain(interpolate::DECLARATIONS)
         .chain(bspline::DECLARATIONS)
         .chain(rational::DECLARATIONS)
+        .chain(beta::DECLARATIONS)
         .chain([&frenet::FRENET])
 }
 
+pub use beta::{is_beta_continuous, BetaParameters, BetaSpline, Matrix4, SubdivisionMatrices};
 pub use bezier::{
     bernstein, bernstein_all, bernstein_derivative, c1_partition, intersections, Bezier,
     CompositeBezier, Evaluation as BezierEvaluation, Intersection, Join, Reparametrised,

@@ -148,6 +148,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(hull::entries());
     all.extend(spline::entries());
     all.extend(bspline::entries());
+    all.extend(beta::entries());
     all.extend(surface::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
@@ -188,6 +189,7 @@ where
         .collect()
 }
 
+mod beta;
 mod bspline;
 mod delaunay;
 mod graph;
