@@ -42,6 +42,7 @@ macro_rules! by_scalar_and_dimension {
     };
 }
 
+mod beta;
 mod bezier;
 mod bspline;
 mod delaunay;
@@ -105,6 +106,8 @@ enum Command {
     Bspline(bspline::BsplineArgs),
     /// NURBS curves: evaluate, insert knots, elevate, rational Bézier pieces
     Nurbs(nurbs::NurbsArgs),
+    /// Cubic Beta-splines: evaluate, subdivision matrices at any c, recursive subdivision
+    Beta(beta::BetaArgs),
     /// Interpolation: cubic Hermite, C² cubic spline, Lagrange or Newton, in f64 or exact
     Interpolate(interpolate::InterpolateArgs),
     /// Delaunay triangulation of a point set: CCW triangles, hull, merged duplicates
@@ -152,6 +155,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Bezier(args) => bezier::run(args),
         Command::Bspline(args) => bspline::run(args),
         Command::Nurbs(args) => nurbs::run(args),
+        Command::Beta(args) => beta::run(args),
         Command::Interpolate(args) => interpolate::run(args),
         Command::Delaunay(args) => delaunay::run(args),
         Command::Voronoi(args) => proximity::run_voronoi(args),
@@ -255,7 +259,7 @@ mod tests {
             "{top}"
         );
         assert!(!top.contains("help"), "{top}");
-        for group in ["bezier", "bspline", "interpolate", "nurbs"] {
+        for group in ["bezier", "beta", "bspline", "interpolate", "nurbs"] {
             let text = missing_subcommand(&args(&["compgeo", group]));
             assert!(text.contains(&format!("`compgeo {group}`")), "{text}");
         }

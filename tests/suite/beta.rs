@@ -157,7 +157,7 @@ fn matrices(line: &str) -> Vec<Matrix4<Q>> {
 
 /// The examples of the fixture: (β₁, β₂, c) from each `Matrices[b1,b2,c]` call and the two
 /// printed matrices after it.
-fn printed_examples() -> Vec<([Q; 3], Matrix4<Q>, Matrix4<Q>)> {
+pub fn printed_examples() -> Vec<([Q; 3], Matrix4<Q>, Matrix4<Q>)> {
     let text = include_str!("../fixtures/seed004_beta_subdivision_matrices.txt");
     let mut params: Option<[Q; 3]> = None;
     let mut out = Vec::new();

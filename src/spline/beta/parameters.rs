@@ -56,8 +56,8 @@ impl<S: Scalar> BetaParameters<S> {
             return Err(Error::InvalidParameter {
                 name: "beta2",
                 reason: format!(
-                    "the tension β₂ must be non-negative, got {} (use \
-                     allowing_negative_tension to reproduce the seed's β₂ < 0 example)",
+                    "the tension β₂ must be non-negative, got {} (negative values need \
+                     BetaParameters::allowing_negative_tension, or --allow-negative-tension)",
                     beta2.to_f64()
                 ),
             });
