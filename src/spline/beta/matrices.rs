@@ -56,9 +56,12 @@ pub(crate) const MATRICES: Declaration = Declaration {
 ///
 /// ```
 /// use compgeo::spline::BetaParameters;
+/// use num_rational::BigRational as Q;
 ///
-/// let m = BetaParameters::new(1.0, 0.0)?.subdivision_matrices(&0.5)?;
-/// assert_eq!(m.left()[1], [0.125, 0.75, 0.125, 0.0]); // the cubic B-spline's mask
+/// let q = |n: i64, d: i64| Q::new(n.into(), d.into());
+/// let m = BetaParameters::new(q(1, 1), q(0, 1))?.subdivision_matrices(&q(1, 2))?;
+/// // The cubic B-spline's mask, exactly (in f64 it is right to rounding).
+/// assert_eq!(m.left()[1], [q(1, 8), q(3, 4), q(1, 8), q(0, 1)]);
 /// assert!(m.keeps_convex_hull());
 /// # Ok::<(), compgeo::Error>(())
 /// ```
@@ -262,12 +265,14 @@ impl<S: Scalar> SubdivisionMatrices<S> {
     ///
     /// ```
     /// use compgeo::spline::{BetaParameters, Point};
+    /// use num_rational::BigRational as Q;
     ///
-    /// let m = BetaParameters::new(1.0, 0.0)?.subdivision_matrices(&0.5)?;
-    /// let p = [0.0, 8.0, 16.0, 24.0].map(|x| Point::new([x]));
+    /// let q = |n: i64| Q::from_integer(n.into());
+    /// let m = BetaParameters::new(q(1), q(0))?.subdivision_matrices(&(q(1) / q(2)))?;
+    /// let p = [0, 8, 16, 24].map(|x| Point::new([q(x)]));
     /// let (l, r) = m.split(&p);
-    /// assert_eq!(l, [4.0, 8.0, 12.0, 16.0].map(|x| Point::new([x])));
-    /// assert_eq!(r, [8.0, 12.0, 16.0, 20.0].map(|x| Point::new([x])));
+    /// assert_eq!(l, [4, 8, 12, 16].map(|x| Point::new([q(x)])));
+    /// assert_eq!(r, [8, 12, 16, 20].map(|x| Point::new([q(x)])));
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn split<const D: usize>(
