@@ -20,6 +20,7 @@
 //! | [`BSpline`] | [t_d, t_n] | [`BSpline`] (degree d − 1) | [`BSpline`] (cut ends clamped) |
 //! | [`RationalBezier`] | [0, 1] | [`RationalBezier`] (degree 2n) | not yet |
 //! | [`Nurbs`] | [t_d, t_n] | [`NurbsDerivative`] (by the quotient rule) | [`Nurbs`] (cut ends clamped) |
+//! | [`BetaSpline`] | [0, m], m = n − 3 segments | not yet (segment derivatives: [`BetaSpline::segment_derivatives`]) | not yet (subdivision: [`BetaSpline::subdivide`]) |
 //!
 //! | module or file | what it holds |
 //! |---|---|

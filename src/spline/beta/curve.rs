@@ -22,6 +22,7 @@
 use super::{is_beta_continuous, BetaParameters};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
+use crate::spline::curve::{Curve, Domain};
 use crate::spline::scalar::{validate_parameter, validate_points, Point, Scalar};
 use crate::{Error, Result};
 
@@ -265,5 +266,28 @@ impl<S: Scalar, const D: usize> BetaSpline<S, D> {
         let left = self.segment_derivatives(self.segments() - 1, &S::one())?;
         let right = next.segment_derivatives(0, &S::zero())?;
         Ok(is_beta_continuous(&left, &right, &self.parameters))
+    }
+}
+
+/// The curve traits' view: the domain [0, m] and [`BetaSpline::eval`].
+///
+/// ```
+/// use compgeo::spline::{BetaParameters, BetaSpline, Curve, Domain, Point};
+///
+/// let p = BetaParameters::new(1.0, 1.0)?;
+/// let s = BetaSpline::new(p, (0..6).map(|i| Point::new([i as f64, 0.0])).collect())?;
+/// assert_eq!(Curve::domain(&s), Domain::Interval { start: 0.0, end: 3.0 });
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+impl<S: Scalar, const D: usize> Curve<S, D> for BetaSpline<S, D> {
+    fn domain(&self) -> Domain<S> {
+        Domain::Interval {
+            start: S::zero(),
+            end: S::from_i64(self.segments() as i64),
+        }
+    }
+
+    fn eval(&self, t: &S) -> Result<Point<S, D>> {
+        BetaSpline::eval(self, t)
     }
 }
