@@ -147,6 +147,10 @@ pub const MAX_KNOTS: usize = 1 << 26;
 /// otherwise ask for any amount of memory; the rounds are refused before the first one runs.
 /// 256 MiB of planar `f64` points at the limit (exact rationals take several times more).
 pub const MAX_SUBDIVISION_POINTS: usize = 1 << 24;
+/// The most control polygons [`BetaSpline::subdivide`](crate::spline::BetaSpline::subdivide)
+/// returns: m·2ᵏ for m segments and k rounds, 2^20. The round count is a number, and each
+/// round doubles the output; four points a polygon, 64 MiB of planar `f64` points at the limit.
+pub const MAX_SUBDIVIDED_PIECES: usize = 1 << 20;
 
 /// One limit: its constant's name, its value and what it bounds, as the error message and
 /// the table in `docs/design.md` say them.
@@ -282,8 +286,15 @@ pub(crate) const SUBDIVISION_POINTS: Limit = Limit {
     what: "subdivided polygon point count",
 };
 
+/// [`MAX_SUBDIVIDED_PIECES`].
+pub(crate) const SUBDIVIDED_PIECES: Limit = Limit {
+    name: "MAX_SUBDIVIDED_PIECES",
+    max: MAX_SUBDIVIDED_PIECES,
+    what: "subdivided polygon count",
+};
+
 /// Every limit, in the order of the table in `docs/design.md`.
-pub const ALL: [Limit; 17] = [
+pub const ALL: [Limit; 18] = [
     POINTS,
     COCIRCULAR,
     KEYS,
@@ -301,6 +312,7 @@ pub const ALL: [Limit; 17] = [
     BASIS_TABLE,
     KNOTS,
     SUBDIVISION_POINTS,
+    SUBDIVIDED_PIECES,
 ];
 
 #[cfg(test)]

@@ -42,6 +42,7 @@ macro_rules! by_scalar_and_dimension {
     };
 }
 
+mod beta;
 mod bezier;
 mod bspline;
 mod delaunay;
@@ -111,6 +112,8 @@ enum Command {
     Surface(surface::SurfaceArgs),
     /// Uniform subdivision of a polygon: Lane–Riesenfeld of any degree, Chaikin, four-point
     Subdivide(subdivide::SubdivideArgs),
+    /// Cubic Beta-splines: evaluate, subdivision matrices at any c, recursive subdivision
+    Beta(beta::BetaArgs),
     /// Interpolation: cubic Hermite, C² cubic spline, Lagrange or Newton, in f64 or exact
     Interpolate(interpolate::InterpolateArgs),
     /// Delaunay triangulation of a point set: CCW triangles, hull, merged duplicates
@@ -160,6 +163,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Nurbs(args) => nurbs::run(args),
         Command::Surface(args) => surface::run(args),
         Command::Subdivide(args) => subdivide::run(args),
+        Command::Beta(args) => beta::run(args),
         Command::Interpolate(args) => interpolate::run(args),
         Command::Delaunay(args) => delaunay::run(args),
         Command::Voronoi(args) => proximity::run_voronoi(args),
@@ -263,7 +267,7 @@ mod tests {
             "{top}"
         );
         assert!(!top.contains("help"), "{top}");
-        for group in ["bezier", "bspline", "interpolate", "nurbs"] {
+        for group in ["bezier", "beta", "bspline", "interpolate", "nurbs"] {
             let text = missing_subcommand(&args(&["compgeo", group]));
             assert!(text.contains(&format!("`compgeo {group}`")), "{text}");
         }

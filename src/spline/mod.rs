@@ -20,6 +20,7 @@
 //! | [`BSpline`] | [t_d, t_n] | [`BSpline`] (degree d − 1) | [`BSpline`] (cut ends clamped) |
 //! | [`RationalBezier`] | [0, 1] | [`RationalBezier`] (degree 2n) | not yet |
 //! | [`Nurbs`] | [t_d, t_n] | [`NurbsDerivative`] (by the quotient rule) | [`Nurbs`] (cut ends clamped) |
+//! | [`BetaSpline`] | [0, m], m = n − 3 segments | not yet (segment derivatives: [`BetaSpline::segment_derivatives`]) | not yet (subdivision: [`BetaSpline::subdivide`]) |
 //!
 //! | module or file | what it holds |
 //! |---|---|
@@ -28,6 +29,7 @@
 //! | `curve.rs` | the curve traits and [`Domain`] |
 //! | [`bezier`] | Bernstein basis, [`Bezier`] and its algorithms (one per file), [`Reparametrised`], [`CompositeBezier`] and its joins, intersection, the evaluation schemes ([`BezierEvaluation`]) |
 //! | [`bspline`] | [`KnotVector`] (validation, builders, multiplicities, domain, span search, the SPL adapter), the basis ([`Basis`], [`BasisDerivatives`]), [`BSpline`] curves with de Boor's algorithm ([`DeBoorTrace`]) and Boehm's insertion |
+//! | [`beta`] | cubic Beta-splines: [`BetaParameters`] (β₁, β₂, the normaliser δ), the basis and its Bernstein matrix C, [`BetaSpline`] curves, [`SubdivisionMatrices`] S_L = C⁻¹S_Lᴮ C and S_R = C⁻¹S_Rᴮ C at any c, recursive subdivision, the β-continuity check [`is_beta_continuous`] |
 //! | [`rational`] | [`RationalBezier`] and [`Nurbs`] in homogeneous coordinates (de Casteljau, de Boor, insertion, derivatives by the quotient rule), exact conics ([`Nurbs::circle`], [`RationalBezier::circular_arc`], [`ConicKind`]) |
 //! | [`interpolate`] | polynomial, Lagrange/Aitken, Newton and Hermite interpolation, cubic and quadratic splines, least squares, parameterisations |
 //! | [`subdivision`] | uniform subdivision of open and closed polygons: [`lane_riesenfeld`] of any degree ([`chaikin`] is degree 2), the [`four_point`] scheme, subdivision masks ([`Mask`]) with their difference schemes, [`limit_points`] |
@@ -38,8 +40,10 @@
 //!
 //! Sources are cited as `[KEY, §section]`: PPB is M. Paluszny, H. Prautzsch, W. Boehm,
 //! *Métodos de Bézier y B-splines*; SPL the lecture notes *Curvas spline*; RD I. Ruiz
-//! Donaire, *Resumen de la asignatura Geometría Aplicada*.
+//! Donaire, *Resumen de la asignatura Geometría Aplicada*; CCKS L. Castro, S. Castro,
+//! S. Kahnert, D. Salgado, *Matrices de subdivisión para curvas Beta-spline cúbicas*.
 
+pub mod beta;
 pub mod bezier;
 pub mod bspline;
 mod curve;
@@ -59,9 +63,11 @@ pub(crate) fn declarations() -> impl Iterator<Item = &'static crate::complexity:
         .chain(bspline::DECLARATIONS)
         .chain(rational::DECLARATIONS)
         .chain(subdivision::DECLARATIONS)
+        .chain(beta::DECLARATIONS)
         .chain([&frenet::FRENET])
 }
 
+pub use beta::{is_beta_continuous, BetaParameters, BetaSpline, Matrix4, SubdivisionMatrices};
 pub use bezier::{
     bernstein, bernstein_all, bernstein_derivative, c1_partition, intersections, Bezier,
     CompositeBezier, Evaluation as BezierEvaluation, Intersection, Join, Reparametrised,

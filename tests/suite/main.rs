@@ -12,6 +12,8 @@ mod strategies;
 mod attack_cli;
 mod attack_degenerate;
 mod attack_readers;
+mod beta;
+mod beta_cli;
 mod bezier;
 mod bezier_eval;
 mod bspline_basis;

@@ -149,6 +149,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(spline::entries());
     all.extend(bspline::entries());
     all.extend(subdivision::entries());
+    all.extend(beta::entries());
     all.extend(surface::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
@@ -189,6 +190,7 @@ where
         .collect()
 }
 
+mod beta;
 mod bspline;
 mod delaunay;
 mod graph;

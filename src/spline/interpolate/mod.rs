@@ -27,7 +27,7 @@ mod cubic_spline;
 mod hermite;
 mod lagrange;
 mod least_squares;
-mod linear;
+pub(crate) mod linear;
 mod newton;
 mod parameterise;
 mod polynomial;
