@@ -46,6 +46,7 @@ mod proximity;
 mod registry;
 mod sort;
 mod surface_bezier;
+mod surface_bezier_examples;
 mod surface_mesh;
 mod voronoi;
 mod voronoi_clip;
