@@ -36,7 +36,7 @@ pub(crate) const NORMAL: Declaration = Declaration {
     function: "surface::normal",
     file: "src/surface/normal.rs",
     summary: "c_u × c_v, or the first-order terms of the normal where it vanishes",
-    time: "Θ(E) for E the cost of a partial derivative",
+    time: "Θ(E) for E the cost of one partial derivative",
     space: "O(1)",
     operation: Some(Operation::ArithmeticOperations),
     counts: "one per partial derivative taken: exactly 2 at a regular point, 5 at a degenerate one",

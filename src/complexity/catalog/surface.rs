@@ -76,8 +76,8 @@ pub(super) fn entries() -> Vec<Entry> {
     ];
     all.extend(operations.into_iter().map(|(declaration, op)| {
         Entry::declared(declaration, RANDOM_BIDEGREE, Operate(op))
-            .quick(4, 32)
-            .full(4, 64)
+            .quick(4, 64)
+            .full(4, 128)
     }));
     all
 }
