@@ -733,3 +733,34 @@ fn bad_input_to_the_operations_is_a_named_error() {
         Err(Error::Overflow { .. })
     ));
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    #[test]
+    fn f64_operations_agree_with_exact_and_the_rounded_join_check_takes_a_tolerance(
+        s in patch(),
+        (a, b) in interval(),
+        r in 0usize..=4,
+    ) {
+        let (m, n) = s.bidegree();
+        let sf = BezierPatch::new(s.net().to_f64()).unwrap();
+        let (af, bf) = (a.to_f64(), b.to_f64());
+        // Coordinates up to 20 and intervals within [−1, 2]: errors far below 1e-9.
+        let close = |x: &BezierPatch<f64, 3>, y: &BezierPatch<Q, 3>| {
+            x.net().points().iter().zip(y.net().points()).all(|(p, q)| {
+                let q = q.to_f64();
+                (0..3).all(|k| (p[k] - q[k]).abs() <= 1e-9 * (1.0 + q[k].abs()))
+            })
+        };
+        prop_assert!(close(&sf.restrict(&af, &bf, &af, &bf).unwrap(), &s.restrict(&a, &b, &a, &b).unwrap()));
+        prop_assert!(close(&sf.elevate_to(m + 2, n + 1).unwrap(), &s.elevate_to(m + 2, n + 1).unwrap()));
+        prop_assert!(close(&sf.twist_net().unwrap(), &s.twist_net().unwrap()));
+        if r <= m {
+            let knots = [0.0, 1.0, 2.5];
+            let free = sf.net().to_rows()[r + 1..].to_vec();
+            let next = sf.extend_cr_u(r, &knots, &free).unwrap();
+            prop_assert!(sf.join_u(&next, &knots, &1e-9).unwrap() >= Some(r));
+        }
+    }
+}
