@@ -431,8 +431,30 @@ impl<S: Scalar, const D: usize> BezierPatch<S, D> {
         Bezier::derived(control, "isoparametric curve")
     }
 
+    /// The patch of `rows` × `columns` points computed from a valid patch (row after row):
+    /// [`Error::Overflow`] naming `what` if, with `f64`, a point came out non-finite.
+    pub(super) fn derived(
+        rows: usize,
+        columns: usize,
+        points: Vec<Point<S, D>>,
+        what: &'static str,
+    ) -> Result<Self> {
+        if !points.iter().all(Point::is_finite) {
+            return Err(Error::Overflow { what });
+        }
+        BezierPatch::new(ControlNet::from_rows(rows, columns, points)?)
+    }
+
+    /// The curves of the columns, c_{0,j}, …, c_{m,j} as Bézier curves in u (each a valid
+    /// polygon: finite, of degree m within the limit).
+    pub(super) fn column_curves(&self) -> Vec<Bezier<S, D>> {
+        (0..self.net.columns())
+            .map(|j| Bezier::new(self.net.column(j)).expect("a column of a valid net"))
+            .collect()
+    }
+
     /// The curves of the rows, c_{i,0}, …, c_{i,n} as Bézier curves in v.
-    fn row_curves(&self) -> Result<Vec<Bezier<S, D>>> {
+    pub(super) fn row_curves(&self) -> Result<Vec<Bezier<S, D>>> {
         (0..self.net.rows())
             .map(|i| Bezier::new(self.net.row(i).to_vec()))
             .collect()

@@ -17,6 +17,14 @@
 //! | `traits.rs` | [`Surface`] (a [`SurfaceDomain`] and evaluation), [`SurfaceDerivative`] (partial derivatives of any orders) |
 //! | `net.rs` | [`ControlNet`]: a rectangular grid of finite points, validated once |
 //! | `bezier.rs` | [`BezierPatch`]: evaluation rows first, columns first and by the tensor de Casteljau algorithm, isoparametric curves, partial derivatives through the curve code [FJ-surfaces, §2, §5], [PPB, §9.2, §9.5] |
+//! | `blossom.rs` | [`BezierPatch::blossom`]: the tensor polar form b[u₁…u_m; v₁…v_n] [PPB, §9.3], [FJ-surfaces, §4] |
+//! | `subdivide.rs` | [`BezierPatch::restrict`] to [a, b] × [c, d], [`BezierPatch::split_u`], [`BezierPatch::split_v`], [`BezierPatch::split`] into four, by the curve code's subdivision [FJ-surfaces, §4], [PPB, §9.5] |
+//! | `elevate.rs` | [`BezierPatch::elevate_u`], [`BezierPatch::elevate_v`], [`BezierPatch::elevate_to`] [FJ-surfaces, §5], [PPB, §3.12] |
+//! | `derivative.rs` | [`BezierPatch::derivative_net`], [`BezierPatch::twist_net`]: the hodograph nets m!n!/((m − r)!(n − s)!) Δ^{r,s}c [FJ-surfaces, §6], [PPB, §9.6] |
+//! | `normal.rs` | [`normal`] of any [`SurfaceDerivative`] in R³: c_u × c_v, or [`Normal::Degenerate`] with the first-order terms where it vanishes [FJ-surfaces, §6] |
+//! | `monomial.rs` | [`BezierPatch::to_monomial`], [`BezierPatch::from_monomial`] [PPB, §9.4] |
+//! | `bounds.rs` | [`BezierPatch::bounding_box`] of the net [PPB, §9.2, Obs. 4] |
+//! | `join.rs` | [`BezierPatch::join_u`], [`BezierPatch::join_v`] (Cʳ checks), [`BezierPatch::extend_cr_u`], [`BezierPatch::extend_cr_v`] (Cʳ continuations) [FJ-surfaces, §6], [PPB, §9.7] |
 //! | `tessellate.rs` | [`tessellate`], [`tessellate_at_with`]: any surface in R³ as a [`TriangleMesh`] with unit normals |
 //! | `export.rs` | [`TriangleMesh::write_obj`] (Wavefront OBJ), [`TriangleMesh::write_stl`] (ASCII STL) |
 //!
@@ -25,26 +33,58 @@
 //! *Métodos de Bézier y B-splines*.
 
 mod bezier;
+mod blossom;
+mod bounds;
+mod derivative;
+mod elevate;
 mod export;
+mod join;
+mod monomial;
 mod net;
+mod normal;
+mod subdivide;
 mod tessellate;
 mod traits;
 
 /// The surface algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 4] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 19] = [
     &bezier::ROWS_FIRST,
     &bezier::COLUMNS_FIRST,
     &bezier::TENSOR_DE_CASTELJAU,
+    &blossom::BLOSSOM,
+    &subdivide::RESTRICT,
+    &subdivide::SPLIT_U,
+    &subdivide::SPLIT_V,
+    &subdivide::SPLIT,
+    &elevate::ELEVATE_TO,
+    &derivative::DERIVATIVE_NET,
+    &monomial::TO_MONOMIAL,
+    &monomial::FROM_MONOMIAL,
+    &bounds::BOUNDING_BOX,
+    &join::JOIN_U,
+    &join::JOIN_V,
+    &join::EXTEND_CR_U,
+    &join::EXTEND_CR_V,
+    &normal::NORMAL,
     &tessellate::TESSELLATE,
 ];
 
 /// The declarations the catalog's entries measure, by name.
 pub(crate) mod declarations {
     pub(crate) use super::bezier::{COLUMNS_FIRST, ROWS_FIRST, TENSOR_DE_CASTELJAU};
+    pub(crate) use super::blossom::BLOSSOM;
+    pub(crate) use super::bounds::BOUNDING_BOX;
+    pub(crate) use super::derivative::DERIVATIVE_NET;
+    pub(crate) use super::elevate::ELEVATE_TO;
+    pub(crate) use super::join::{EXTEND_CR_U, EXTEND_CR_V, JOIN_U, JOIN_V};
+    pub(crate) use super::monomial::{FROM_MONOMIAL, TO_MONOMIAL};
+    pub(crate) use super::normal::NORMAL;
+    pub(crate) use super::subdivide::{RESTRICT, SPLIT, SPLIT_U, SPLIT_V};
     pub(crate) use super::tessellate::TESSELLATE;
 }
 
 pub use bezier::BezierPatch;
 pub use net::ControlNet;
+pub use normal::{normal, normal_with, Normal};
 pub use tessellate::{tessellate, tessellate_at_with, TriangleMesh};
 pub use traits::{Surface, SurfaceDerivative, SurfaceDomain};

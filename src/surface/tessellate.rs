@@ -19,6 +19,7 @@
 //! Θ(N·E) time for N = (number of u samples)·(number of v samples) vertices and E the cost of
 //! one evaluation and two partial derivatives, Θ(N) space for the mesh.
 
+use super::normal::cross;
 use super::traits::{SurfaceDerivative, SurfaceDomain};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
@@ -245,12 +246,6 @@ fn check_samples<S: Scalar>(samples: &[S], which: &str) -> Result<()> {
         }
     }
     Ok(())
-}
-
-/// a × b, exactly in `S`.
-fn cross<S: Scalar>(a: &Point<S, 3>, b: &Point<S, 3>) -> Point<S, 3> {
-    let p = |i: usize, j: usize| a[i].clone() * &b[j] - a[j].clone() * &b[i];
-    Point::new([p(1, 2), p(2, 0), p(0, 1)])
 }
 
 /// The unit vector of `n` in `f64`, or zero when `n` is exactly zero. The vector is scaled by

@@ -51,6 +51,7 @@ mod subdivision;
 mod subdivision_cli;
 mod surface_bezier;
 mod surface_cli;
+mod surface_bezier_examples;
 mod surface_mesh;
 mod voronoi;
 mod voronoi_clip;

@@ -200,10 +200,21 @@ pub(crate) fn check_degree(points: usize) -> Result<()> {
 pub(crate) fn bounding_box_of<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
 ) -> (Point<S, D>, Point<S, D>) {
+    bounding_box_counted(points, &mut crate::count::NoCount)
+}
+
+/// [`bounding_box_of`], counting two [`comparison`](crate::count::Counter::comparison)s per
+/// coordinate of every point after the first: exactly 2D(N − 1) for N points.
+pub(crate) fn bounding_box_counted<S: Scalar, const D: usize, C: crate::count::Counter>(
+    points: &[Point<S, D>],
+    counter: &mut C,
+) -> (Point<S, D>, Point<S, D>) {
     let mut lo = points[0].clone();
     let mut hi = points[0].clone();
     for p in &points[1..] {
         for j in 0..D {
+            counter.comparison();
+            counter.comparison();
             if p[j] < lo[j] {
                 lo[j] = p[j].clone();
             }

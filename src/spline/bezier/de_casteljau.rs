@@ -280,6 +280,13 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
 
     /// The split without validation (c finite).
     pub(crate) fn split_unchecked(&self, c: &S) -> (Self, Self) {
+        self.split_counted(c, &mut NoCount)
+    }
+
+    /// The split without validation (c finite), counting its n(n + 1)/2 affine combinations
+    /// (one de Casteljau triangle). The pieces may have non-finite points if, with `f64`, c
+    /// is far outside [0, 1]: the caller checks.
+    pub(crate) fn split_counted<C: Counter>(&self, c: &S, counter: &mut C) -> (Self, Self) {
         let n = self.degree();
         let mut q = self.control().to_vec();
         let mut left = Vec::with_capacity(n + 1);
@@ -287,12 +294,29 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         left.push(q[0].clone());
         right.push(q[n].clone());
         for k in 1..=n {
-            de_casteljau_levels(&mut q[..=n - k + 1], [c], &mut NoCount);
+            de_casteljau_levels(&mut q[..=n - k + 1], [c], counter);
             left.push(q[0].clone());
             right.push(q[n - k].clone());
         }
         right.reverse();
         (Bezier::with_control(left), Bezier::with_control(right))
+    }
+
+    /// The control points over [a, b] (a < b, both finite) by two subdivisions instead of
+    /// n + 1 blossoms: the right piece at a is the curve over [a, 1], whose left piece at
+    /// (b − a)/(1 − a) is the curve over [a, b] (when a = 1, the left piece at b, then its
+    /// right piece at 1/b). Exactly n(n + 1) affine combinations, counted; Θ(n²D) instead of
+    /// [`Bezier::restrict`]'s Θ(n³D). Non-finite points are the caller's to check.
+    pub(crate) fn restrict_by_splits<C: Counter>(&self, a: &S, b: &S, counter: &mut C) -> Self {
+        debug_assert!(a < b);
+        if a.clone() == S::one() {
+            let (left, _) = self.split_counted(b, counter);
+            left.split_counted(&(S::one() / b), counter).1
+        } else {
+            let (_, right) = self.split_counted(a, counter);
+            let t = (b.clone() - a) / (S::one() - a);
+            right.split_counted(&t, counter).0
+        }
     }
 
     /// The blossom without validation (`args.len() == n`, all finite).

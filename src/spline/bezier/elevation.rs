@@ -20,6 +20,7 @@
 
 use super::curve::Bezier;
 use crate::complexity::Declaration;
+use crate::count::{Counter, NoCount};
 use crate::spline::scalar::{Point, Scalar};
 use crate::{limits, Error, Result};
 
@@ -125,6 +126,19 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             });
         }
         limits::DEGREE.check(m as u128)?;
+        Bezier::derived(self.elevate_to_counted(m, &mut NoCount), "degree elevation")
+    }
+
+    /// Zhou's formula without validation (n ≤ m ≤ MAX_DEGREE), counting one
+    /// [`arithmetic_operation`](Counter::arithmetic_operation) per term bᵢ·wᵢ: each bᵢ
+    /// enters the m − n + 1 points d_i, …, d_{i+m−n}, so exactly (n + 1)(m − n + 1). The
+    /// points may be non-finite with `f64` (rounding next to ±`f64::MAX`): the caller checks.
+    pub(crate) fn elevate_to_counted<C: Counter>(
+        &self,
+        m: usize,
+        counter: &mut C,
+    ) -> Vec<Point<S, D>> {
+        let n = self.degree();
         let b = self.control();
         let mut control = Vec::with_capacity(m + 1);
         let mut weight = vec![S::zero(); n + 1];
@@ -149,9 +163,10 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             for (bi, w) in b[lo..=hi].iter().zip(&weight[lo..=hi]) {
                 d += &(bi.clone() * w.clone());
                 total += w.clone();
+                counter.arithmetic_operation();
             }
             control.push(d / &total);
         }
-        Bezier::derived(control, "degree elevation")
+        control
     }
 }

@@ -59,5 +59,8 @@ pub use intersect::{intersections, Intersection, MAX_INTERSECTION_PAIRS};
 pub use joins::{c1_partition, Join};
 pub use reparametrised::Reparametrised;
 
+pub(crate) use curve::bounding_box_counted;
 pub(crate) use de_casteljau::de_casteljau_levels;
+pub(crate) use derivative::difference;
 pub(crate) use joins::nearly_equal;
+pub(crate) use monomial::{from_monomial_counted, to_monomial_counted};

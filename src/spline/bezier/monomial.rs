@@ -15,6 +15,7 @@
 
 use super::curve::{check_degree, Bezier};
 use super::derivative::difference;
+use crate::count::{Counter, NoCount};
 use crate::spline::scalar::{binomial, validate_points, Point, Scalar};
 use crate::Result;
 
@@ -40,14 +41,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn to_monomial(&self) -> Vec<Point<S, D>> {
-        let n = self.degree();
-        let mut q = self.control().to_vec();
-        let mut out = Vec::with_capacity(n + 1);
-        for i in 0..=n {
-            out.push(q[0].clone() * binomial::<S>(n, i));
-            difference(&mut q);
-        }
-        out
+        to_monomial_counted(self.control(), &mut NoCount)
     }
 
     /// The Bézier curve of the power form `Σᵢ aᵢ tⁱ` (degree n = `coefficients.len() − 1`):
@@ -78,21 +72,57 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         // Before the Θ(n²) conversion, not after it.
         check_degree(coefficients.len())?;
         validate_points(coefficients, "monomial coefficients")?;
-        let n = coefficients.len() - 1;
-        let scaled: Vec<Point<S, D>> = coefficients
-            .iter()
-            .enumerate()
-            .map(|(i, a)| a.clone() / binomial::<S>(n, i))
-            .collect();
-        let control = (0..=n)
-            .map(|j| {
-                let mut b = Point::zero();
-                for (i, a) in scaled.iter().enumerate().take(j + 1) {
-                    b += &(a.clone() * binomial::<S>(j, i));
-                }
-                b
-            })
-            .collect();
+        let control = from_monomial_counted(coefficients, &mut NoCount);
         Bezier::derived(control, "conversion from the monomial form")
     }
+}
+
+/// The power-form coefficients of the polygon `control` (not empty), counting one
+/// [`arithmetic_operation`](Counter::arithmetic_operation) per difference or scaling of a
+/// point: exactly n(n + 1)/2 + n + 1 for n + 1 points.
+pub(crate) fn to_monomial_counted<S: Scalar, const D: usize, C: Counter>(
+    control: &[Point<S, D>],
+    counter: &mut C,
+) -> Vec<Point<S, D>> {
+    let n = control.len() - 1;
+    let mut q = control.to_vec();
+    let mut out = Vec::with_capacity(n + 1);
+    for i in 0..=n {
+        out.push(q[0].clone() * binomial::<S>(n, i));
+        counter.arithmetic_operation();
+        for _ in 1..q.len() {
+            counter.arithmetic_operation();
+        }
+        difference(&mut q);
+    }
+    out
+}
+
+/// The Bézier points of the power form with these coefficients (not empty, finite),
+/// counting one [`arithmetic_operation`](Counter::arithmetic_operation) per scaling or
+/// multiply-add of a point: exactly (n + 1) + (n + 1)(n + 2)/2. The points may be non-finite
+/// with `f64`: the caller checks.
+pub(crate) fn from_monomial_counted<S: Scalar, const D: usize, C: Counter>(
+    coefficients: &[Point<S, D>],
+    counter: &mut C,
+) -> Vec<Point<S, D>> {
+    let n = coefficients.len() - 1;
+    let scaled: Vec<Point<S, D>> = coefficients
+        .iter()
+        .enumerate()
+        .map(|(i, a)| {
+            counter.arithmetic_operation();
+            a.clone() / binomial::<S>(n, i)
+        })
+        .collect();
+    (0..=n)
+        .map(|j| {
+            let mut b = Point::zero();
+            for (i, a) in scaled.iter().enumerate().take(j + 1) {
+                b += &(a.clone() * binomial::<S>(j, i));
+                counter.arithmetic_operation();
+            }
+            b
+        })
+        .collect()
 }
