@@ -84,6 +84,7 @@ pub use interpolate::{
     parameterise, quadratic_spline, vandermonde, vandermonde_hermite, EndCondition, FitOptions,
     HermiteNode, LagrangeForm, NewtonForm, Parameterisation, Polynomial,
 };
+#[cfg(feature = "cli")]
 pub(crate) use parse::{parse_f64, parse_f64_or_word, read_scalar};
 pub use parse::{parse_scalar, ParseScalar, MAX_EXACT_DIGITS, MAX_EXACT_EXPONENT};
 pub use rational::{ConicKind, Nurbs, NurbsDerivative, RationalBezier};
@@ -91,5 +92,4 @@ pub use scalar::{binomial, validate_parameter, validate_points, Finite, Point, S
 pub use subdivision::{
     chaikin, four_point, lane_riesenfeld, limit_points, limit_stencil, Mask, Topology,
 };
-#[cfg(feature = "cli")]
 pub(crate) use scalar::{falling_factorial, power};
