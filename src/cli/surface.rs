@@ -1,22 +1,26 @@
-//! `compgeo surface eval|derivative|tessellate`: one operation on a tensor-product Bézier
-//! patch given by its control net, in `f64` or (with `--exact`) in exact rationals.
+//! `compgeo surface eval|derivative|normal|restrict|elevate|tessellate`: one operation on a
+//! tensor-product Bézier patch given by its control net, in `f64` or (with `--exact`) in
+//! exact rationals.
 //!
 //! The net is JSON `[[[x, y, z], ...], ...]`: a list of rows, row i holding the points
 //! c_{i,0}, …, c_{i,n} (so m + 1 rows of n + 1 points give bidegree (m, n)), in any
 //! dimension from 1 to 4; numbers are JSON numbers or strings such as `"47/18"`, read as
 //! `bezier` reads them (with `--exact`, `0.1` is 1/10 and every number prints as a string).
 //! Errors name the row, the column and the coordinate that is wrong, or the parameter.
-//! `tessellate` needs points in three dimensions and writes the mesh as Wavefront OBJ
-//! (`--obj`) and ASCII STL (`--stl`), printing its size, or prints the mesh itself.
+//! Patches print as `{"bidegree": [m, n], "net": [[[x, y, z], ...], ...]}`. `normal` and
+//! `tessellate` need points in three dimensions; `tessellate` writes the mesh as Wavefront
+//! OBJ (`--obj`) and ASCII STL (`--stl`), printing its size, or prints the mesh itself.
 
-use super::bezier::{point, JsonScalar};
+use super::bezier::{point, points, JsonScalar};
 use super::input::{parse_number_grid, read_text};
 use super::interpolate::to_points;
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
 use crate::spline::{parse_scalar, Point};
-use crate::surface::{tessellate, BezierPatch, ControlNet, SurfaceDerivative, TriangleMesh};
+use crate::surface::{
+    normal, tessellate, BezierPatch, ControlNet, Normal, SurfaceDerivative, TriangleMesh,
+};
 use clap::{Args, Subcommand, ValueEnum};
 use num_rational::BigRational;
 use serde_json::{json, Value};
@@ -64,6 +68,46 @@ enum Op {
         /// The order s in v
         #[arg(long, default_value_t = 0)]
         order_v: usize,
+    },
+    /// The normal c_u × c_v at (u, v) (not normalised), or its first-order behaviour where
+    /// it vanishes
+    Normal {
+        #[command(flatten)]
+        surface: NetArgs,
+        /// The parameter u
+        #[arg(long = "u", value_name = "U", allow_hyphen_values = true)]
+        u: String,
+        /// The parameter v
+        #[arg(long = "v", value_name = "V", allow_hyphen_values = true)]
+        v: String,
+    },
+    /// The same surface over [u0, u1] × [v0, v1], as a patch on [0, 1]²
+    Restrict {
+        #[command(flatten)]
+        surface: NetArgs,
+        /// The start of the u interval
+        #[arg(long, value_name = "U0", allow_hyphen_values = true)]
+        u0: String,
+        /// The end of the u interval, above u0
+        #[arg(long, value_name = "U1", allow_hyphen_values = true)]
+        u1: String,
+        /// The start of the v interval
+        #[arg(long, value_name = "V0", allow_hyphen_values = true)]
+        v0: String,
+        /// The end of the v interval, above v0
+        #[arg(long, value_name = "V1", allow_hyphen_values = true)]
+        v1: String,
+    },
+    /// The same surface with its degrees raised by --by-u and --by-v
+    Elevate {
+        #[command(flatten)]
+        surface: NetArgs,
+        /// How many degrees to raise in u
+        #[arg(long, default_value_t = 1)]
+        by_u: usize,
+        /// How many degrees to raise in v
+        #[arg(long, default_value_t = 1)]
+        by_v: usize,
     },
     /// A triangle mesh with unit normals on a uniform grid over the domain ([0, 1]² for a
     /// Bézier patch), written as OBJ and/or STL
@@ -113,6 +157,9 @@ pub(super) fn run(args: SurfaceArgs) -> Result<(), CliError> {
     let net = match &args.op {
         Op::Eval { surface, .. }
         | Op::Derivative { surface, .. }
+        | Op::Normal { surface, .. }
+        | Op::Restrict { surface, .. }
+        | Op::Elevate { surface, .. }
         | Op::Tessellate { surface, .. } => surface,
     };
     let text = if net.net == "-" {
@@ -141,6 +188,19 @@ pub(super) fn run(args: SurfaceArgs) -> Result<(), CliError> {
             mesh::<f64>(&grid, *u_segments, *v_segments)?
         };
         return print_json(&write_mesh(&mesh, obj.as_deref(), stl.as_deref())?);
+    }
+    if let Op::Normal { u, v, .. } = &args.op {
+        if d != 3 {
+            return Err(CliError::Shape(format!(
+                "a normal needs points in three dimensions; the net's have {d}"
+            )));
+        }
+        let value = if net.exact {
+            normal_json::<BigRational>(&grid, u, v)?
+        } else {
+            normal_json::<f64>(&grid, u, v)?
+        };
+        return print_json(&value);
     }
     let value =
         by_scalar_and_dimension!(net.exact, d, "control points", run_typed(&args.op, &grid))?;
@@ -197,7 +257,53 @@ fn run_typed<S: JsonScalar, const D: usize>(
                 "bidegree": [m, n],
             })
         }
-        Op::Tessellate { .. } => unreachable!("tessellate runs in three dimensions before"),
+        Op::Restrict { u0, u1, v0, v1, .. } => {
+            let [a, b, c, d] = [(u0, "u0"), (u1, "u1"), (v0, "v0"), (v1, "v1")]
+                .map(|(text, name)| parse_scalar::<S>(text, name));
+            let mut counts = Counts::default();
+            let r = patch.restrict_with(&a?, &b?, &c?, &d?, &mut counts)?;
+            let mut out = patch_json(&r)?;
+            out["counts"] = json!(counts);
+            out
+        }
+        Op::Elevate { by_u, by_v, .. } => {
+            let (p, q) = (m.saturating_add(*by_u), n.saturating_add(*by_v));
+            let mut counts = Counts::default();
+            let r = patch.elevate_to_with(p, q, &mut counts)?;
+            let mut out = patch_json(&r)?;
+            out["counts"] = json!(counts);
+            out
+        }
+        Op::Normal { .. } | Op::Tessellate { .. } => {
+            unreachable!("normal and tessellate run in three dimensions before")
+        }
+    })
+}
+
+/// A patch as printed: its bidegree and its net, row by row.
+fn patch_json<S: JsonScalar, const D: usize>(p: &BezierPatch<S, D>) -> Result<Value, CliError> {
+    let net = p.net();
+    let rows = (0..net.rows())
+        .map(|i| points(net.row(i), &format!("net[{i}]")))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(json!({"bidegree": p.bidegree(), "net": rows}))
+}
+
+/// `normal`: the normal at (u, v), or its derivatives where it vanishes.
+fn normal_json<S: JsonScalar>(
+    grid: &[Vec<Vec<String>>],
+    u: &str,
+    v: &str,
+) -> Result<Value, CliError> {
+    let patch = patch_of::<S, 3>(grid)?;
+    let (u, v): (S, S) = (parse_scalar(u, "u")?, parse_scalar(v, "v")?);
+    Ok(match normal(&patch, &u, &v)? {
+        Normal::Regular(n) => json!({"regular": true, "normal": point(&n, "normal")?}),
+        Normal::Degenerate { along_u, along_v } => json!({
+            "regular": false,
+            "along_u": point(&along_u, "along_u")?,
+            "along_v": point(&along_v, "along_v")?,
+        }),
     })
 }
 

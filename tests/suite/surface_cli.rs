@@ -7,7 +7,9 @@
 use crate::common::{assert_rejected, run_json};
 use crate::spline_common::{q, Q};
 use compgeo::spline::Point;
-use compgeo::surface::{tessellate, BezierPatch, ControlNet, Surface, SurfaceDerivative};
+use compgeo::surface::{
+    normal, tessellate, BezierPatch, ControlNet, Normal, Surface, SurfaceDerivative,
+};
 use serde_json::Value;
 
 /// A bidegree (2, 3) net in R³ with fractions, as the command reads it.
@@ -102,6 +104,97 @@ fn eval_and_derivatives_match_the_library_exactly() {
                 "order ({r}, {t})"
             );
         }
+    }
+}
+
+/// A printed patch: its bidegree and net.
+fn patch_of(out: &Value) -> BezierPatch<Q, 3> {
+    let rows = out["net"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|row| row.as_array().unwrap().iter().map(point3).collect())
+        .collect();
+    let p = BezierPatch::new(ControlNet::new(rows).unwrap()).unwrap();
+    let bidegree: (usize, usize) = serde_json::from_value(out["bidegree"].clone()).unwrap();
+    assert_eq!(p.bidegree(), bidegree);
+    p
+}
+
+#[test]
+fn restrict_elevate_and_normal_match_the_library_exactly() {
+    let s = patch();
+    let out = run_json(
+        &[
+            "surface", "restrict", "--net", NET, "--u0", "1/4", "--u1", "2", "--v0", "-1/3",
+            "--v1", "1/2", "--exact",
+        ],
+        None,
+    );
+    let r = patch_of(&out);
+    assert_eq!(
+        r,
+        s.restrict(&q(1, 4), &q(2, 1), &q(-1, 3), &q(1, 2)).unwrap()
+    );
+    // The restricted patch at (0, 1) is the surface at (1/4, 1/2).
+    assert_eq!(
+        r.eval(&q(0, 1), &q(1, 1)).unwrap(),
+        s.eval(&q(1, 4), &q(1, 2)).unwrap()
+    );
+    let out = run_json(
+        &[
+            "surface", "elevate", "--net", NET, "--by-u", "2", "--by-v", "1", "--exact",
+        ],
+        None,
+    );
+    let e = patch_of(&out);
+    assert_eq!(e.bidegree(), (4, 4));
+    assert_eq!(e, s.elevate_to(4, 4).unwrap());
+    for (u, v) in [(q(1, 3), q(2, 7)), (q(3, 2), q(-1, 5))] {
+        assert_eq!(e.eval(&u, &v).unwrap(), s.eval(&u, &v).unwrap());
+        let out = run_json(
+            &[
+                "surface",
+                "normal",
+                "--net",
+                NET,
+                "--u",
+                &u.to_string(),
+                "--v",
+                &v.to_string(),
+                "--exact",
+            ],
+            None,
+        );
+        assert_eq!(out["regular"], true);
+        assert_eq!(
+            Normal::Regular(point3(&out["normal"])),
+            normal(&s, &u, &v).unwrap()
+        );
+    }
+    // A collapsed edge: the row u = 0 is one point, so c_v vanishes there.
+    let collapsed = "[[[0,0,0],[0,0,0]],[[1,0,0],[1,1,1]]]";
+    let out = run_json(
+        &[
+            "surface", "normal", "--net", collapsed, "--u", "0", "--v", "1/2", "--exact",
+        ],
+        None,
+    );
+    assert_eq!(out["regular"], false);
+    let rows = vec![
+        vec![Point::new([q(0, 1), q(0, 1), q(0, 1)]); 2],
+        vec![
+            Point::new([q(1, 1), q(0, 1), q(0, 1)]),
+            Point::new([q(1, 1), q(1, 1), q(1, 1)]),
+        ],
+    ];
+    let c = BezierPatch::new(ControlNet::new(rows).unwrap()).unwrap();
+    match normal(&c, &q(0, 1), &q(1, 2)).unwrap() {
+        Normal::Degenerate { along_u, along_v } => {
+            assert_eq!(point3(&out["along_u"]), along_u);
+            assert_eq!(point3(&out["along_v"]), along_v);
+        }
+        other => panic!("{other:?}"),
     }
 }
 
@@ -270,6 +363,33 @@ fn bad_nets_and_parameters_exit_2_naming_the_problem() {
         (
             vec!["surface", "tessellate", "--net", "[[[0,0],[1,1]]]"],
             "three dimensions",
+        ),
+        (
+            vec![
+                "surface",
+                "normal",
+                "--net",
+                "[[[0,0],[1,1]]]",
+                "--u",
+                "0",
+                "--v",
+                "0",
+            ],
+            "three dimensions",
+        ),
+        (
+            vec![
+                "surface", "restrict", "--net", NET, "--u0", "1", "--u1", "0", "--v0", "0", "--v1",
+                "1",
+            ],
+            "a < b",
+        ),
+        (
+            vec![
+                "surface", "restrict", "--net", NET, "--u0", "0", "--u1", "1", "--v0", "0", "--v1",
+                "inf",
+            ],
+            "v1",
         ),
         (
             vec!["surface", "tessellate", "--net", NET, "--u-segments", "0"],
