@@ -89,7 +89,7 @@ pub(crate) use parse::{parse_f64, parse_f64_or_word, read_scalar};
 pub use parse::{parse_scalar, ParseScalar, MAX_EXACT_DIGITS, MAX_EXACT_EXPONENT};
 pub use rational::{ConicKind, Nurbs, NurbsDerivative, RationalBezier};
 pub use scalar::{binomial, validate_parameter, validate_points, Finite, Point, Scalar};
+pub(crate) use scalar::{falling_factorial, power};
 pub use subdivision::{
     chaikin, four_point, lane_riesenfeld, limit_points, limit_stencil, Mask, Topology,
 };
-pub(crate) use scalar::{falling_factorial, power};
