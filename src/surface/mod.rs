@@ -25,26 +25,49 @@
 //! *Métodos de Bézier y B-splines*.
 
 mod bezier;
+mod bezier_grid;
+mod bspline;
+mod bspline_elevate;
+mod bspline_insert;
+mod bspline_iso;
+mod bspline_to_bezier;
+mod direction;
 mod export;
 mod net;
+mod nurbs;
 mod tessellate;
 mod traits;
 
 /// The surface algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 4] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 11] = [
     &bezier::ROWS_FIRST,
     &bezier::COLUMNS_FIRST,
     &bezier::TENSOR_DE_CASTELJAU,
     &tessellate::TESSELLATE,
+    &bspline::TENSOR_DE_BOOR,
+    &bspline_insert::SURFACE_INSERT,
+    &bspline_insert::SURFACE_REFINE,
+    &bspline_to_bezier::SURFACE_TO_BEZIER,
+    &bspline_elevate::SURFACE_ELEVATE,
+    &bspline_iso::SURFACE_ISOCURVE,
+    &nurbs::NURBS_SURFACE_EVAL,
 ];
 
 /// The declarations the catalog's entries measure, by name.
 pub(crate) mod declarations {
     pub(crate) use super::bezier::{COLUMNS_FIRST, ROWS_FIRST, TENSOR_DE_CASTELJAU};
+    pub(crate) use super::bspline::TENSOR_DE_BOOR;
+    pub(crate) use super::bspline_elevate::SURFACE_ELEVATE;
+    pub(crate) use super::bspline_insert::SURFACE_INSERT;
+    pub(crate) use super::bspline_to_bezier::SURFACE_TO_BEZIER;
     pub(crate) use super::tessellate::TESSELLATE;
 }
 
 pub use bezier::BezierPatch;
+pub use bezier_grid::BezierPatchGrid;
+pub use bspline::BSplineSurface;
+pub use direction::Direction;
 pub use net::ControlNet;
+pub use nurbs::NurbsSurface;
 pub use tessellate::{tessellate, tessellate_at_with, TriangleMesh};
 pub use traits::{Surface, SurfaceDerivative, SurfaceDomain};
