@@ -25,6 +25,7 @@
 //! *Métodos de Bézier y B-splines*.
 
 mod bezier;
+mod bicubic;
 mod bezier_grid;
 mod bspline;
 mod bspline_elevate;
@@ -33,13 +34,16 @@ mod bspline_iso;
 mod bspline_to_bezier;
 mod direction;
 mod export;
+mod interpolate;
+mod least_squares;
+mod loft;
 mod net;
 mod nurbs;
 mod tessellate;
 mod traits;
 
 /// The surface algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 11] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 15] = [
     &bezier::ROWS_FIRST,
     &bezier::COLUMNS_FIRST,
     &bezier::TENSOR_DE_CASTELJAU,
@@ -51,6 +55,10 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 11] = [
     &bspline_elevate::SURFACE_ELEVATE,
     &bspline_iso::SURFACE_ISOCURVE,
     &nurbs::NURBS_SURFACE_EVAL,
+    &interpolate::SURFACE_INTERPOLATE,
+    &least_squares::SURFACE_FIT,
+    &loft::LOFT,
+    &bicubic::BICUBIC_C1,
 ];
 
 /// The declarations the catalog's entries measure, by name.
