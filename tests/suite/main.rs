@@ -46,6 +46,8 @@ mod proximity;
 mod registry;
 mod sort;
 mod surface_bezier;
+mod surface_bspline;
+mod surface_construct;
 mod surface_mesh;
 mod voronoi;
 mod voronoi_clip;
