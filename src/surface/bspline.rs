@@ -88,7 +88,11 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
     /// # Complexity
     ///
     /// Θ(MN·D) time and space (the rows are kept as curves).
-    pub fn new(net: ControlNet<S, D>, u_knots: KnotVector<S>, v_knots: KnotVector<S>) -> Result<Self> {
+    pub fn new(
+        net: ControlNet<S, D>,
+        u_knots: KnotVector<S>,
+        v_knots: KnotVector<S>,
+    ) -> Result<Self> {
         rename(u_knots.check_control_points(net.rows()), "u knots")?;
         rename(v_knots.check_control_points(net.columns()), "v knots")?;
         let rows = (0..net.rows())
@@ -161,10 +165,7 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
         debug_assert!(curves.iter().all(|c| *c.knots() == knots));
         let count = curves.len();
         let width = knots.control_points();
-        let points: Vec<Point<S, D>> = curves
-            .into_iter()
-            .flat_map(|c| c.into_parts().0)
-            .collect();
+        let points: Vec<Point<S, D>> = curves.into_iter().flat_map(|c| c.into_parts().0).collect();
         match direction {
             Direction::V => {
                 let net = ControlNet::from_rows(count, width, points)?;
@@ -269,7 +270,11 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
         let knots = |t: &KnotVector<S>| {
             KnotVector::new(t.degree(), t.knots().iter().map(Scalar::to_f64).collect())
         };
-        BSplineSurface::new(self.net.to_f64(), knots(&self.u_knots)?, knots(self.v_knots())?)
+        BSplineSurface::new(
+            self.net.to_f64(),
+            knots(&self.u_knots)?,
+            knots(self.v_knots())?,
+        )
     }
 }
 

@@ -29,7 +29,11 @@ pub(crate) const SURFACE_ELEVATE: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "M times the curve elevation's in v (N times in u)",
     source: "[PPB, §6.4–6.5, §9.1]",
-    claims: &[on("random-net", Bound::Linear, Operation::ArithmeticOperations)],
+    claims: &[on(
+        "random-net",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
@@ -44,7 +48,8 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ(M(N + Q·t)(q + t)²·D) in v; in u the roles exchanged plus Θ(MN·D).
+    /// Θ(M(N + Q·t)(q + t)²·D) in v; in u the roles exchanged plus Θ(MN·D). Θ(M(N + Q·t)D)
+    /// space in v.
     pub fn elevate(&self, direction: Direction, times: usize) -> Result<Self> {
         self.elevate_with(direction, times, &mut NoCount)
     }

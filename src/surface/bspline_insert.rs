@@ -29,9 +29,14 @@ pub(crate) const SURFACE_INSERT: Declaration = Declaration {
     time: "Θ(M(N + q + rq)D) in v",
     space: "Θ(M(N + r)D)",
     operation: Some(Operation::ArithmeticOperations),
-    counts: "M times the curve's r(q − s) − r(r − 1)/2 affine combinations in v (N times, with p, in u)",
+    counts:
+        "M times the curve's r(q − s) − r(r − 1)/2 affine combinations in v (N times, with p, in u)",
     source: "[PPB, §6.1, §9.1]",
-    claims: &[on("random-net", Bound::Linear, Operation::ArithmeticOperations)],
+    claims: &[on(
+        "random-net",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// Knot refinement of a B-spline surface, declared.
@@ -63,7 +68,7 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ(M(N + q + rq)D) in v, Θ(N(M + p + rp)D + MN·D) in u.
+    /// Θ(M(N + q + rq)D) in v, Θ(N(M + p + rp)D + MN·D) in u; Θ(M(N + r)D) space in v.
     pub fn insert(&self, direction: Direction, t: &S, times: usize) -> Result<Self> {
         self.insert_with(direction, t, times, &mut NoCount)
     }
@@ -126,7 +131,7 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
     /// # Complexity
     ///
     /// O(M(m log m + log N + (N + m + mq)D)) in v for m new knots; in u the roles exchanged
-    /// plus Θ(MN·D).
+    /// plus Θ(MN·D); Θ(M(N + m)D) space in v.
     pub fn refine(&self, direction: Direction, new_knots: &[S]) -> Result<Self> {
         self.refine_with(direction, new_knots, &mut NoCount)
     }

@@ -46,7 +46,8 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ(p² + p·N·D) for u fixed, Θ(M·q²·D) for v fixed, after the span searches.
+    /// Θ(M·q²·D) at v₀, Θ(p² + p·N·D) at u₀, after the span searches; Θ(M·D) or Θ(N·D)
+    /// space.
     pub fn isocurve(&self, fixed: Direction, value: &S) -> Result<BSpline<S, D>> {
         self.isocurve_with(fixed, value, &mut NoCount)
     }

@@ -27,13 +27,19 @@ pub(crate) const SURFACE_TO_BEZIER: Declaration = Declaration {
     name: "to-bezier",
     function: "surface::BSplineSurface::to_bezier",
     file: "src/surface/bspline_to_bezier.rs",
-    summary: "every row to Bézier pieces in v, then every column of each piece to Bézier pieces in u",
+    summary:
+        "every row to Bézier pieces in v, then every column of each piece to Bézier pieces in u",
     time: "O((M·N·q² + Q·q·M·p²)D)",
     space: "Θ(P·Q·(p + 1)(q + 1)D)",
     operation: Some(Operation::ArithmeticOperations),
-    counts: "those of the curve conversion on the M rows, then on the Q(q + 1) columns of the pieces",
+    counts:
+        "those of the curve conversion on the M rows, then on the Q(q + 1) columns of the pieces",
     source: "[PPB, §5.10, §9.2]",
-    claims: &[on("random-net", Bound::Linear, Operation::ArithmeticOperations)],
+    claims: &[on(
+        "random-net",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
@@ -126,7 +132,11 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
                 let points = (0..=p)
                     .flat_map(|i| per_column.iter().map(move |col| col[a][i].clone()))
                     .collect();
-                row.push(BezierPatch::new(ControlNet::from_rows(p + 1, q + 1, points)?)?);
+                row.push(BezierPatch::new(ControlNet::from_rows(
+                    p + 1,
+                    q + 1,
+                    points,
+                )?)?);
             }
             patches.push(row);
         }

@@ -39,7 +39,11 @@ pub(crate) const SURFACE_INTERPOLATE: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "those of the M curve interpolations in v and the N in u",
     source: "[FJ-surfaces, §7], [PPB, §6.7, §9.1]",
-    claims: &[on("random-grid", Bound::Linear, Operation::ArithmeticOperations)],
+    claims: &[on(
+        "random-grid",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
@@ -132,7 +136,8 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
         // C̃: every data row interpolated in v.
         let mut tilde = Vec::with_capacity(m * n);
         for i in 0..m {
-            let row = BSpline::interpolate_at_with(data.row(i), v_params, v_knots.clone(), counter)?;
+            let row =
+                BSpline::interpolate_at_with(data.row(i), v_params, v_knots.clone(), counter)?;
             tilde.extend(row.into_parts().0);
         }
         let tilde = ControlNet::from_rows(m, n, tilde)?;
@@ -266,7 +271,10 @@ pub(crate) fn check_parameters<S: Scalar>(
     if params.len() != count {
         return Err(Error::InvalidParameter {
             name,
-            reason: format!("{} parameters for {count} rows or columns of data", params.len()),
+            reason: format!(
+                "{} parameters for {count} rows or columns of data",
+                params.len()
+            ),
         });
     }
     check_partition(params, 1, name)

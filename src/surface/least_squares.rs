@@ -177,14 +177,15 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
                 ),
             });
         }
-        let control = solve_dense_with(normal, rhs, counter).ok_or_else(|| Error::InvalidParameter {
-            name: "params",
-            reason: format!(
-                "the fit is not unique: the {} data give a collocation matrix of rank below \
+        let control =
+            solve_dense_with(normal, rhs, counter).ok_or_else(|| Error::InvalidParameter {
+                name: "params",
+                reason: format!(
+                    "the fit is not unique: the {} data give a collocation matrix of rank below \
                  the {m} × {n} control points (the normal equations are singular)",
-                points.len()
-            ),
-        })?;
+                    points.len()
+                ),
+            })?;
         if !control.iter().all(Point::is_finite) {
             return Err(Error::Overflow {
                 what: "least-squares surface fit",
@@ -267,7 +268,11 @@ impl<S: Scalar, const D: usize> BezierPatch<S, D> {
 }
 
 /// Every parameter finite and in the knots' domain, the first bad one named by its index.
-fn check_in_domain<S: Scalar>(params: &[S], knots: &KnotVector<S>, name: &'static str) -> Result<()> {
+fn check_in_domain<S: Scalar>(
+    params: &[S],
+    knots: &KnotVector<S>,
+    name: &'static str,
+) -> Result<()> {
     let domain = knots.domain();
     for (k, t) in params.iter().enumerate() {
         if domain.check(t, name).is_err() {

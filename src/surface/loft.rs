@@ -96,7 +96,7 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ(N·K(p² + pD)) after making the curves compatible.
+    /// Θ(N·K(p² + pD)) after making the curves compatible, Θ(K·N·D) space.
     pub fn loft(
         curves: &[BSpline<S, D>],
         placed: Direction,

@@ -134,7 +134,8 @@ impl<S: Scalar, const D: usize> NurbsSurface<S, D> {
             });
         }
         validate_weights(&weights, control.len())?;
-        let net = ControlNet::from_rows(numerator.net().rows(), numerator.net().columns(), control)?;
+        let net =
+            ControlNet::from_rows(numerator.net().rows(), numerator.net().columns(), control)?;
         Ok(NurbsSurface {
             net,
             weights,
@@ -184,7 +185,7 @@ impl<S: Scalar, const D: usize> NurbsSurface<S, D> {
     ///
     /// # Complexity
     ///
-    /// Θ((p² + p·q²)D) time after the span searches.
+    /// Θ((p² + p·q²)D) time after the span searches, O((p + q)D) space.
     pub fn de_boor(&self, u: &S, v: &S) -> Result<Point<S, D>> {
         self.de_boor_with(u, v, &mut NoCount)
     }

@@ -17,7 +17,13 @@ use proptest::prelude::*;
 /// A knot vector of degree 1..=3 for `count` control points on [0, 6]: clamped with interior
 /// knots from the distinct sorted values `interior` of {1, …, 5}, the first one doubled when
 /// `repeat` and the degree allows it; or uniform (unclamped) on [0, count].
-fn knots(degree: usize, count: usize, interior: &[i64], clamped: bool, repeat: bool) -> KnotVector<Q> {
+fn knots(
+    degree: usize,
+    count: usize,
+    interior: &[i64],
+    clamped: bool,
+    repeat: bool,
+) -> KnotVector<Q> {
     if !clamped {
         return KnotVector::uniform(degree, count, qi(0), qi(count as i64)).unwrap();
     }
@@ -35,7 +41,13 @@ fn knots(degree: usize, count: usize, interior: &[i64], clamped: bool, repeat: b
 /// A B-spline surface of bidegree (1..=3, 1..=3) with up to three interior knots per
 /// direction and integer points in R³.
 fn surface() -> impl Strategy<Value = BSplineSurface<Q, 3>> {
-    (1usize..=3, 1usize..=3, 0usize..=3, 0usize..=3, any::<[bool; 4]>())
+    (
+        1usize..=3,
+        1usize..=3,
+        0usize..=3,
+        0usize..=3,
+        any::<[bool; 4]>(),
+    )
         .prop_flat_map(|(p, qd, eu, ev, flags)| {
             let (m, n) = (p + 1 + eu, qd + 1 + ev);
             (
@@ -58,7 +70,9 @@ fn surface() -> impl Strategy<Value = BSplineSurface<Q, 3>> {
 /// Every knot of the domain and a few rationals across it.
 fn samples(t: &KnotVector<Q>) -> Vec<Q> {
     let (a, b) = (t.bounds().0.clone(), t.bounds().1.clone());
-    let mut out: Vec<Q> = (0..=3).map(|k| a.clone() + (b.clone() - &a) * q(k, 3)).collect();
+    let mut out: Vec<Q> = (0..=3)
+        .map(|k| a.clone() + (b.clone() - &a) * q(k, 3))
+        .collect();
     out.push(a.clone() + (b.clone() - &a) * q(5, 17));
     out.extend(t.knots().iter().filter(|k| **k >= a && **k <= b).cloned());
     out
@@ -87,7 +101,13 @@ fn same_surface<A: Surface<Q, 3>, B: Surface<Q, 3>>(
 ) -> Result<(), TestCaseError> {
     for u in us {
         for v in vs {
-            prop_assert_eq!(a.eval(u, v).unwrap(), b.eval(u, v).unwrap(), "at ({}, {})", u, v);
+            prop_assert_eq!(
+                a.eval(u, v).unwrap(),
+                b.eval(u, v).unwrap(),
+                "at ({}, {})",
+                u,
+                v
+            );
         }
     }
     Ok(())
@@ -253,7 +273,10 @@ fn nurbs_twist_satisfies_the_product_rule() {
         let d = |r, k| s.partial_at(&u, &v, r, k).unwrap();
         let wd = |r, k| w.partial_at(&u, &v, r, k).unwrap()[0].clone();
         let lhs = a.partial_at(&u, &v, 1, 1).unwrap();
-        let rhs = d(0, 0) * &wd(1, 1) + &(d(0, 1) * &wd(1, 0)) + &(d(1, 0) * &wd(0, 1)) + &(d(1, 1) * &wd(0, 0));
+        let rhs = d(0, 0) * &wd(1, 1)
+            + &(d(0, 1) * &wd(1, 0))
+            + &(d(1, 0) * &wd(0, 1))
+            + &(d(1, 1) * &wd(0, 0));
         assert_eq!(lhs, rhs, "at ({u}, {v})");
     }
 }
@@ -262,7 +285,11 @@ fn nurbs_twist_satisfies_the_product_rule() {
 fn f64_surface_is_near_the_exact_one() {
     let net = ControlNet::new(
         (0..4)
-            .map(|i| (0..3).map(|j| Point::new([i as f64, j as f64, ((i * 7 + j * 3) % 5) as f64])).collect())
+            .map(|i| {
+                (0..3)
+                    .map(|j| Point::new([i as f64, j as f64, ((i * 7 + j * 3) % 5) as f64]))
+                    .collect()
+            })
             .collect(),
     )
     .unwrap();
@@ -271,15 +298,38 @@ fn f64_surface_is_near_the_exact_one() {
     let s = BSplineSurface::new(net, tu, tv).unwrap();
     let exact = {
         let conv = |t: &KnotVector<f64>| {
-            KnotVector::new(t.degree(), t.knots().iter().map(|k| <Q as Scalar>::from_f64(*k).unwrap()).collect()).unwrap()
+            KnotVector::new(
+                t.degree(),
+                t.knots()
+                    .iter()
+                    .map(|k| <Q as Scalar>::from_f64(*k).unwrap())
+                    .collect(),
+            )
+            .unwrap()
         };
-        let pts = s.net().points().iter().map(|p| Point::from_f64(p).unwrap()).collect();
-        BSplineSurface::new(ControlNet::from_rows(4, 3, pts).unwrap(), conv(s.u_knots()), conv(s.v_knots())).unwrap()
+        let pts = s
+            .net()
+            .points()
+            .iter()
+            .map(|p| Point::from_f64(p).unwrap())
+            .collect();
+        BSplineSurface::new(
+            ControlNet::from_rows(4, 3, pts).unwrap(),
+            conv(s.u_knots()),
+            conv(s.v_knots()),
+        )
+        .unwrap()
     };
     for k in 0..=10 {
         let (u, v) = (k as f64 / 10.0, (10 - k) as f64 / 10.0);
         let got = s.eval(&u, &v).unwrap();
-        let want = exact.eval(&<Q as Scalar>::from_f64(u).unwrap(), &<Q as Scalar>::from_f64(v).unwrap()).unwrap().to_f64();
+        let want = exact
+            .eval(
+                &<Q as Scalar>::from_f64(u).unwrap(),
+                &<Q as Scalar>::from_f64(v).unwrap(),
+            )
+            .unwrap()
+            .to_f64();
         for c in 0..3 {
             assert!((got[c] - want[c]).abs() < 1e-12, "{got:?} vs {want:?}");
         }
@@ -302,24 +352,52 @@ fn bad_input_gives_named_errors() {
         ControlNet::new(vec![vec![p(0.0, 0.0), p(1.0, 0.0)], vec![p(0.0, 1.0)]]),
         Err(Error::InvalidParameter { name: "net", .. })
     ));
-    let net = ControlNet::new(vec![vec![p(0.0, 0.0), p(0.0, 1.0)], vec![p(1.0, 0.0), p(1.0, 1.0)]]).unwrap();
+    let net = ControlNet::new(vec![
+        vec![p(0.0, 0.0), p(0.0, 1.0)],
+        vec![p(1.0, 0.0), p(1.0, 1.0)],
+    ])
+    .unwrap();
     let t1 = KnotVector::clamped_uniform(1, 2, 0.0, 1.0).unwrap();
     let t3 = KnotVector::clamped_uniform(1, 3, 0.0, 1.0).unwrap();
     // Knot counts that do not match the net.
-    assert_eq!(invalid_name(BSplineSurface::new(net.clone(), t3.clone(), t1.clone()).unwrap_err()), "u knots");
-    assert_eq!(invalid_name(BSplineSurface::new(net.clone(), t1.clone(), t3.clone()).unwrap_err()), "v knots");
+    assert_eq!(
+        invalid_name(BSplineSurface::new(net.clone(), t3.clone(), t1.clone()).unwrap_err()),
+        "u knots"
+    );
+    assert_eq!(
+        invalid_name(BSplineSurface::new(net.clone(), t1.clone(), t3.clone()).unwrap_err()),
+        "v knots"
+    );
     let s = BSplineSurface::new(net.clone(), t1.clone(), t1.clone()).unwrap();
     // Parameters outside the domain, NaN, infinite.
     assert_eq!(invalid_name(s.eval(&1.5, &0.5).unwrap_err()), "u");
     assert_eq!(invalid_name(s.eval(&0.5, &-0.1).unwrap_err()), "v");
     assert_eq!(invalid_name(s.eval(&f64::NAN, &0.5).unwrap_err()), "u");
-    assert_eq!(invalid_name(s.partial_at(&0.5, &f64::INFINITY, 1, 0).unwrap_err()), "v");
-    assert_eq!(invalid_name(s.isocurve(Direction::U, &2.0).unwrap_err()), "u");
-    assert_eq!(invalid_name(s.insert(Direction::V, &f64::NAN, 1).unwrap_err()), "v");
-    assert_eq!(invalid_name(s.insert(Direction::U, &0.5, 5).unwrap_err()), "u");
+    assert_eq!(
+        invalid_name(s.partial_at(&0.5, &f64::INFINITY, 1, 0).unwrap_err()),
+        "v"
+    );
+    assert_eq!(
+        invalid_name(s.isocurve(Direction::U, &2.0).unwrap_err()),
+        "u"
+    );
+    assert_eq!(
+        invalid_name(s.insert(Direction::V, &f64::NAN, 1).unwrap_err()),
+        "v"
+    );
+    assert_eq!(
+        invalid_name(s.insert(Direction::U, &0.5, 5).unwrap_err()),
+        "u"
+    );
     // Weights: zero, negative, NaN, infinite, too few.
     for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-        let e = NurbsSurface::new(net.clone(), vec![1.0, bad, 1.0, 1.0], t1.clone(), t1.clone()).unwrap_err();
+        let e = NurbsSurface::new(
+            net.clone(),
+            vec![1.0, bad, 1.0, 1.0],
+            t1.clone(),
+            t1.clone(),
+        )
+        .unwrap_err();
         assert_eq!(invalid_name(e), "weights");
     }
     let e = NurbsSurface::new(net.clone(), vec![1.0; 3], t1.clone(), t1.clone()).unwrap_err();

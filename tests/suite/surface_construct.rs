@@ -9,14 +9,18 @@
 use crate::spline_common::{q, qi, Q};
 use compgeo::spline::{BSpline, Curve, CurveDerivative, KnotVector, Parameterisation, Point};
 use compgeo::surface::{
-    BSplineSurface, BezierPatch, BezierPatchGrid, ControlNet, Direction, Surface,
-    SurfaceDerivative,
+    BSplineSurface, BezierPatch, BezierPatchGrid, ControlNet, Direction, Surface, SurfaceDerivative,
 };
 use compgeo::Error;
 use proptest::prelude::*;
 
 fn fixture(name: &str) -> String {
-    std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures").join(name)).unwrap()
+    std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/fixtures")
+            .join(name),
+    )
+    .unwrap()
 }
 
 fn rational(s: &str) -> Q {
@@ -33,14 +37,20 @@ fn point3(words: &[&str]) -> Point<Q, 3> {
 /// The lines of a fixture starting with `tag`, split into words after the tag.
 fn lines<'a>(text: &'a str, tag: &str) -> Vec<Vec<&'a str>> {
     text.lines()
-        .filter_map(|l| l.strip_prefix(tag).map(|rest| rest.split_whitespace().collect()))
+        .filter_map(|l| {
+            l.strip_prefix(tag)
+                .map(|rest| rest.split_whitespace().collect())
+        })
         .collect()
 }
 
 #[test]
 fn worked_example_of_tensor_interpolation() {
     let text = fixture("fj_surfaces_interpolation_2_3.txt");
-    let (us, vs) = ([q(0, 1), q(1, 2), q(1, 1)], [q(0, 1), q(1, 3), q(2, 3), q(1, 1)]);
+    let (us, vs) = (
+        [q(0, 1), q(1, 2), q(1, 1)],
+        [q(0, 1), q(1, 3), q(2, 3), q(1, 1)],
+    );
     let mut data = vec![vec![Point::zero(); 4]; 3];
     let conditions = lines(&text, "at ");
     assert_eq!(conditions.len(), 12);
@@ -52,7 +62,12 @@ fn worked_example_of_tensor_interpolation() {
     }
     let want: Vec<Vec<Point<Q, 3>>> = lines(&text, "net ")
         .iter()
-        .map(|w| w.join(" ").split('|').map(|p| point3(&p.split_whitespace().collect::<Vec<_>>())).collect())
+        .map(|w| {
+            w.join(" ")
+                .split('|')
+                .map(|p| point3(&p.split_whitespace().collect::<Vec<_>>()))
+                .collect()
+        })
         .collect();
     let data = ControlNet::new(data).unwrap();
     let patch = BezierPatch::interpolate(&data, &us, &vs).unwrap();
@@ -64,9 +79,11 @@ fn worked_example_of_tensor_interpolation() {
     // And the printed parametrisation's z at a point off the grid: c(u, v)_z with u = 1/4,
     // v = 1/2 from 27/2(uv³ − uv²) + 9v³ + 18(u²v² − v² − u²v³) + 3uv + 8v + 4(u − u² − u²v).
     let (u, v) = (q(1, 4), q(1, 2));
-    let z = q(27, 2) * (u.clone() * v.pow(3) - u.clone() * v.pow(2)) + qi(9) * v.pow(3)
+    let z = q(27, 2) * (u.clone() * v.pow(3) - u.clone() * v.pow(2))
+        + qi(9) * v.pow(3)
         + qi(18) * (u.pow(2) * v.pow(2) - v.pow(2) - u.pow(2) * v.pow(3))
-        + qi(3) * &u * &v + qi(8) * &v
+        + qi(3) * &u * &v
+        + qi(8) * &v
         + qi(4) * (u.clone() - u.pow(2) - u.pow(2) * &v);
     assert_eq!(patch.eval(&u, &v).unwrap()[2], z);
 }
@@ -98,14 +115,21 @@ fn grid() -> impl Strategy<Value = (ControlNet<Q, 3>, Vec<Q>, Vec<Q>)> {
             )
         })
         .prop_map(|(pts, (m, n), iu, iv)| {
-            let points = pts.into_iter().map(|(x, y, z)| Point::new([qi(x), qi(y), qi(z)])).collect();
+            let points = pts
+                .into_iter()
+                .map(|(x, y, z)| Point::new([qi(x), qi(y), qi(z)]))
+                .collect();
             let params = |inner: std::collections::BTreeSet<i64>| {
                 let mut p = vec![qi(0)];
                 p.extend(inner.into_iter().map(|k| q(k, 24)));
                 p.push(qi(1));
                 p
             };
-            (ControlNet::from_rows(m, n, points).unwrap(), params(iu), params(iv))
+            (
+                ControlNet::from_rows(m, n, points).unwrap(),
+                params(iu),
+                params(iv),
+            )
         })
 }
 
@@ -252,10 +276,18 @@ fn bilinear_patch_is_the_formula_of_the_notes() {
     // [0, 1]².
     let z = [qi(2), q(-1, 3), qi(5), q(7, 2)]; // z00, z01, z10, z11
     let p = |x: i64, y: i64, z: &Q| Point::new([qi(x), qi(y), z.clone()]);
-    let s = BezierPatch::bilinear(p(0, 0, &z[0]), p(0, 1, &z[1]), p(1, 0, &z[2]), p(1, 1, &z[3])).unwrap();
+    let s = BezierPatch::bilinear(
+        p(0, 0, &z[0]),
+        p(0, 1, &z[1]),
+        p(1, 0, &z[2]),
+        p(1, 1, &z[3]),
+    )
+    .unwrap();
     for x in (0..=5).map(|k| q(k, 5)) {
         for y in (0..=3).map(|k| q(k, 3)) {
-            let want = z[0].clone() + (z[2].clone() - &z[0]) * &x + (z[1].clone() - &z[0]) * &y
+            let want = z[0].clone()
+                + (z[2].clone() - &z[0]) * &x
+                + (z[1].clone() - &z[0]) * &y
                 + (z[0].clone() - &z[1] - &z[2] + &z[3]) * &x * &y;
             let got = s.eval(&x, &y).unwrap();
             assert_eq!(got, Point::new([x.clone(), y.clone(), want]));
@@ -267,18 +299,31 @@ fn bilinear_patch_is_the_formula_of_the_notes() {
 fn lofted_curves_stay_the_curves_after_compatibility() {
     // A quadratic with an interior knot and a line: the loft's u curves share one degree and
     // knot vector, and the isoparametric curves at the parameters are the given curves.
-    let line = BSpline::new(vec![Point::new([qi(0)]), Point::new([qi(6)])], KnotVector::clamped_uniform(1, 2, qi(0), qi(6)).unwrap()).unwrap();
+    let line = BSpline::new(
+        vec![Point::new([qi(0)]), Point::new([qi(6)])],
+        KnotVector::clamped_uniform(1, 2, qi(0), qi(6)).unwrap(),
+    )
+    .unwrap();
     let t = KnotVector::new(2, [0, 0, 0, 2, 6, 6, 6].map(qi).to_vec()).unwrap();
     let quad = BSpline::new([1, 5, -3, 2].map(|x| Point::new([qi(x)])).to_vec(), t).unwrap();
     let params = [qi(0), qi(1)];
-    let s = BSplineSurface::loft(&[line.clone(), quad.clone()], Direction::V, &params, KnotVector::clamped_uniform(1, 2, qi(0), qi(1)).unwrap()).unwrap();
+    let s = BSplineSurface::loft(
+        &[line.clone(), quad.clone()],
+        Direction::V,
+        &params,
+        KnotVector::clamped_uniform(1, 2, qi(0), qi(1)).unwrap(),
+    )
+    .unwrap();
     assert_eq!(s.bidegree(), (2, 1));
     assert_eq!(s.u_knots().knots(), [0, 0, 0, 2, 6, 6, 6].map(qi));
     for (c, v) in [(&line, &params[0]), (&quad, &params[1])] {
         let iso = s.isocurve(Direction::V, v).unwrap();
         for u in (0..=12).map(|k| q(k, 2)) {
             assert_eq!(iso.eval(&u).unwrap(), c.eval(&u).unwrap());
-            assert_eq!(iso.derivative_at(&u, 1).unwrap(), c.derivative_at(&u, 1).unwrap());
+            assert_eq!(
+                iso.derivative_at(&u, 1).unwrap(),
+                c.derivative_at(&u, 1).unwrap()
+            );
         }
     }
 }
@@ -292,11 +337,21 @@ fn invalid_name(e: Error) -> &'static str {
 
 #[test]
 fn bad_construction_input_gives_named_errors() {
-    let data = ControlNet::new((0..3).map(|i| (0..3).map(|j| Point::new([i as f64, j as f64])).collect()).collect()).unwrap();
+    let data = ControlNet::new(
+        (0..3)
+            .map(|i| (0..3).map(|j| Point::new([i as f64, j as f64])).collect())
+            .collect(),
+    )
+    .unwrap();
     let t = KnotVector::clamped_uniform(2, 3, 0.0, 1.0).unwrap();
     let ok = [0.0, 0.5, 1.0];
     // Repeated, decreasing, NaN, outside the domain, wrong count.
-    for bad in [[0.0, 0.0, 1.0], [0.0, 0.7, 0.5], [0.0, f64::NAN, 1.0], [0.0, 0.5, 1.5]] {
+    for bad in [
+        [0.0, 0.0, 1.0],
+        [0.0, 0.7, 0.5],
+        [0.0, f64::NAN, 1.0],
+        [0.0, 0.5, 1.5],
+    ] {
         let e = BSplineSurface::interpolate_at(&data, &bad, &ok, t.clone(), t.clone()).unwrap_err();
         assert_eq!(invalid_name(e), "u parameters", "{bad:?}");
         let e = BezierPatch::interpolate(&data, &ok, &bad).unwrap_err();
@@ -308,39 +363,87 @@ fn bad_construction_input_gives_named_errors() {
     let e = BSplineSurface::interpolate_at(&data, &ok, &ok, t4.clone(), t.clone()).unwrap_err();
     assert_eq!(invalid_name(e), "u knots");
     // Schoenberg–Whitney: a cubic's parameters crowded into one span.
-    let data4 = ControlNet::new((0..4).map(|i| (0..3).map(|j| Point::new([i as f64, j as f64])).collect()).collect()).unwrap();
+    let data4 = ControlNet::new(
+        (0..4)
+            .map(|i| (0..3).map(|j| Point::new([i as f64, j as f64])).collect())
+            .collect(),
+    )
+    .unwrap();
     let tw = KnotVector::new(1, vec![0.0, 0.0, 0.5, 0.75, 1.0, 1.0]).unwrap();
-    let e = BSplineSurface::interpolate_at(&data4, &[0.0, 0.1, 0.2, 1.0], &ok, tw, t.clone()).unwrap_err();
+    let e = BSplineSurface::interpolate_at(&data4, &[0.0, 0.1, 0.2, 1.0], &ok, tw, t.clone())
+        .unwrap_err();
     assert_eq!(invalid_name(e), "u parameters");
     // Least squares: mismatched counts, outside the domain, NaN data, too few data.
     let pts = vec![Point::new([0.0, 0.0]); 4];
     let e = BSplineSurface::fit(&pts, &[0.0; 3], &[0.0; 4], t.clone(), t.clone()).unwrap_err();
     assert_eq!(invalid_name(e), "params");
-    let e = BSplineSurface::fit(&pts, &[0.0, 0.5, 2.0, 1.0], &[0.0; 4], t.clone(), t.clone()).unwrap_err();
+    let e = BSplineSurface::fit(&pts, &[0.0, 0.5, 2.0, 1.0], &[0.0; 4], t.clone(), t.clone())
+        .unwrap_err();
     assert_eq!(invalid_name(e), "u parameters");
     let mut nan = pts.clone();
     nan[1] = Point::new([f64::NAN, 0.0]);
-    assert!(matches!(BSplineSurface::fit(&nan, &[0.0; 4], &[0.0; 4], t.clone(), t.clone()), Err(Error::NonFinite { index: 1, .. })));
-    let e = BSplineSurface::fit(&pts, &[0.0, 0.5, 1.0, 0.25], &[0.0, 0.5, 1.0, 0.25], t.clone(), t.clone()).unwrap_err();
+    assert!(matches!(
+        BSplineSurface::fit(&nan, &[0.0; 4], &[0.0; 4], t.clone(), t.clone()),
+        Err(Error::NonFinite { index: 1, .. })
+    ));
+    let e = BSplineSurface::fit(
+        &pts,
+        &[0.0, 0.5, 1.0, 0.25],
+        &[0.0, 0.5, 1.0, 0.25],
+        t.clone(),
+        t.clone(),
+    )
+    .unwrap_err();
     assert_eq!(invalid_name(e), "params");
-    assert!(e_contains(BSplineSurface::fit(&pts, &[0.0, 0.5, 1.0, 0.25], &[0.0, 0.5, 1.0, 0.25], t.clone(), t.clone()).unwrap_err(), "not unique"));
+    assert!(e_contains(
+        BSplineSurface::fit(
+            &pts,
+            &[0.0, 0.5, 1.0, 0.25],
+            &[0.0, 0.5, 1.0, 0.25],
+            t.clone(),
+            t.clone()
+        )
+        .unwrap_err(),
+        "not unique"
+    ));
     // A rank-deficient fit whose every basis function sees data: bilinear, data at the
     // corners (0, 0) and (1, 1) and twice at the centre; c_{0,1} and c_{1,0} only meet the
     // centre, with equal weights, so their columns of the collocation matrix coincide.
     let tl = KnotVector::clamped_uniform(1, 2, 0.0, 1.0).unwrap();
     let pts3 = vec![Point::new([0.0, 0.0]); 4];
-    let e = BSplineSurface::fit(&pts3, &[0.0, 1.0, 0.5, 0.5], &[0.0, 1.0, 0.5, 0.5], tl.clone(), tl.clone()).unwrap_err();
+    let e = BSplineSurface::fit(
+        &pts3,
+        &[0.0, 1.0, 0.5, 0.5],
+        &[0.0, 1.0, 0.5, 0.5],
+        tl.clone(),
+        tl.clone(),
+    )
+    .unwrap_err();
     assert!(e_contains(e, "rank"));
     // Lofting: different domains, repeated parameters.
-    let c = |end: f64| BSpline::new(vec![Point::new([0.0]), Point::new([1.0])], KnotVector::clamped_uniform(1, 2, 0.0, end).unwrap()).unwrap();
-    let e = BSplineSurface::loft(&[c(1.0), c(2.0)], Direction::V, &[0.0, 1.0], tl.clone()).unwrap_err();
+    let c = |end: f64| {
+        BSpline::new(
+            vec![Point::new([0.0]), Point::new([1.0])],
+            KnotVector::clamped_uniform(1, 2, 0.0, end).unwrap(),
+        )
+        .unwrap()
+    };
+    let e =
+        BSplineSurface::loft(&[c(1.0), c(2.0)], Direction::V, &[0.0, 1.0], tl.clone()).unwrap_err();
     assert_eq!(invalid_name(e), "curves");
-    let e = BSplineSurface::loft(&[c(1.0), c(1.0)], Direction::U, &[0.0, 0.0], tl.clone()).unwrap_err();
+    let e =
+        BSplineSurface::loft(&[c(1.0), c(1.0)], Direction::U, &[0.0, 0.0], tl.clone()).unwrap_err();
     assert_eq!(invalid_name(e), "u parameters");
-    assert!(matches!(BSplineSurface::<f64, 1>::loft(&[], Direction::U, &[], tl), Err(Error::Empty { .. })));
+    assert!(matches!(
+        BSplineSurface::<f64, 1>::loft(&[], Direction::U, &[], tl),
+        Err(Error::Empty { .. })
+    ));
     // Bicubic: too few rows, repeated parameters.
     let row = ControlNet::new(vec![vec![Point::new([0.0]), Point::new([1.0])]]).unwrap();
-    assert!(matches!(BezierPatchGrid::bicubic_c1(&row, &[0.0], &[0.0, 1.0]), Err(Error::TooFew { .. })));
+    assert!(matches!(
+        BezierPatchGrid::bicubic_c1(&row, &[0.0], &[0.0, 1.0]),
+        Err(Error::TooFew { .. })
+    ));
     let e = BezierPatchGrid::bicubic_c1(&data, &ok, &[0.0, 1.0, 1.0]).unwrap_err();
     assert_eq!(invalid_name(e), "v parameters");
 }

@@ -149,6 +149,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(spline::entries());
     all.extend(bspline::entries());
     all.extend(surface::entries());
+    all.extend(surface_spline::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
     all
@@ -196,6 +197,7 @@ mod proximity;
 mod sort;
 mod spline;
 mod surface;
+mod surface_spline;
 
 /// The result of one counted run.
 pub(crate) struct Counted {
