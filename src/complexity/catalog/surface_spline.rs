@@ -40,15 +40,15 @@ pub(super) fn entries() -> Vec<Entry> {
             "random-bidegree",
             Evaluate { nurbs: false },
         )
-        .quick(4, 32)
-        .full(4, 64),
+        .quick(2, 32)
+        .full(2, 64),
         Entry::declared(
             &s::NURBS_SURFACE_EVAL,
             "random-bidegree",
             Evaluate { nurbs: true },
         )
-        .quick(4, 32)
-        .full(4, 64),
+        .quick(2, 32)
+        .full(2, 64),
         net(&s::SURFACE_INSERT, Run::Insert),
         net(&s::SURFACE_TO_BEZIER, Run::ToBezier),
         net(&s::SURFACE_ELEVATE, Run::Elevate),
