@@ -156,7 +156,7 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
     /// The surface whose curves in `direction` (see [`BSplineSurface::curves`]) are
     /// `curves`, all on the same knots, and whose knots in the other direction are this
     /// surface's: the way back from a curve operation run on every row or column.
-    pub(crate) fn from_curves(
+    pub(crate) fn with_curves(
         &self,
         direction: Direction,
         curves: Vec<BSpline<S, D>>,

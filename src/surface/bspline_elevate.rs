@@ -94,6 +94,6 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
             .iter()
             .map(|c| c.elevate_with(times, counter))
             .collect::<Result<Vec<_>>>()?;
-        self.from_curves(direction, curves)
+        self.with_curves(direction, curves)
     }
 }

@@ -117,7 +117,7 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
             .iter()
             .map(|c| rename(c.insert_with(t, times, counter), direction.name()))
             .collect::<Result<Vec<_>>>()?;
-        self.from_curves(direction, curves)
+        self.with_curves(direction, curves)
     }
 
     /// The same surface with the knots `new_knots` (sorted or not, repeats allowed) inserted
@@ -178,6 +178,6 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
             .iter()
             .map(|c| rename(c.refine_with(new_knots, counter), direction.name()))
             .collect::<Result<Vec<_>>>()?;
-        self.from_curves(direction, curves)
+        self.with_curves(direction, curves)
     }
 }

@@ -114,7 +114,7 @@ fn same_surface<A: Surface<Q, 3>, B: Surface<Q, 3>>(
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(ProptestConfig::with_cases(16))]
 
     #[test]
     fn eval_is_the_double_sum_and_the_isoparametric_curves(s in surface()) {

@@ -134,7 +134,7 @@ fn grid() -> impl Strategy<Value = (ControlNet<Q, 3>, Vec<Q>, Vec<Q>)> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(ProptestConfig::with_cases(16))]
 
     #[test]
     fn interpolation_reproduces_its_data((data, us, vs) in grid(), p in 1usize..=3, qd in 1usize..=3) {
