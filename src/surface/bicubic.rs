@@ -41,7 +41,7 @@ pub(crate) const BICUBIC_C1: Declaration = Declaration {
 };
 
 impl<S: Scalar, const D: usize> BezierPatchGrid<S, D> {
-    /// The piecewise bicubic C¹ surface through `data` at (`u_params`[i], `v_params`[j]). See
+    /// The piecewise bicubic C¹ surface through `data` at (`u_params[i]`, `v_params[j]`). See
     /// [`BezierPatchGrid::bicubic_c1_with`].
     ///
     /// # Errors

@@ -45,7 +45,7 @@ pub(crate) const SURFACE_FIT: Declaration = Declaration {
 
 impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
     /// The least-squares surface on `u_knots` × `v_knots` for the data `points` at the
-    /// parameters (`u_params`[k], `v_params`[k]). See [`BSplineSurface::fit_with`].
+    /// parameters (`u_params[k]`, `v_params[k]`). See [`BSplineSurface::fit_with`].
     ///
     /// # Errors
     ///
@@ -197,7 +197,7 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
 
 impl<S: Scalar, const D: usize> BezierPatch<S, D> {
     /// The least-squares Bézier patch of bidegree (m, n) for the data `points` at the
-    /// parameters (`u_params`[k], `v_params`[k]) in [0, 1]². See [`BezierPatch::fit_with`].
+    /// parameters (`u_params[k]`, `v_params[k]`) in [0, 1]². See [`BezierPatch::fit_with`].
     ///
     /// # Errors
     ///
