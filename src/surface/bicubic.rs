@@ -23,7 +23,7 @@ use super::net::ControlNet;
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::{estimate_tangents, hermite, Point, Scalar};
-use crate::{Error, Result};
+use crate::{limits, Error, Result};
 
 /// Piecewise bicubic C¹ interpolation, declared.
 pub(crate) const BICUBIC_C1: Declaration = Declaration {
@@ -48,8 +48,9 @@ impl<S: Scalar, const D: usize> BezierPatchGrid<S, D> {
     ///
     /// [`Error::TooFew`] for fewer than two rows or columns; [`Error::InvalidParameter`] named
     /// `"u parameters"` or `"v parameters"` for another number of parameters, a NaN or
-    /// infinite one, or one not above its predecessor; [`Error::Overflow`] if, with `f64`, a
-    /// Bézier point is beyond the double range.
+    /// infinite one, or one not above its predecessor; [`Error::LimitExceeded`] if the
+    /// (3m + 1)(3n + 1) Bézier points exceed [`MAX_POINTS`](crate::limits::MAX_POINTS);
+    /// [`Error::Overflow`] if, with `f64`, a Bézier point is beyond the double range.
     ///
     /// # Complexity
     ///
@@ -108,6 +109,8 @@ impl<S: Scalar, const D: usize> BezierPatchGrid<S, D> {
         check_parameters(u_params, rows, "u parameters")?;
         check_parameters(v_params, columns, "v parameters")?;
         let (m, n) = (rows - 1, columns - 1);
+        // The Bézier points are about nine times the data: refuse before allocating them.
+        limits::POINTS.check((3 * m as u128 + 1) * (3 * n as u128 + 1))?;
         // A: column j of the data through the scheme in u, 3m + 1 Bézier points each.
         let mut a_columns = Vec::with_capacity(columns);
         for j in 0..columns {
