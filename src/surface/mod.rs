@@ -11,6 +11,9 @@
 //! | type | domain | what it is |
 //! |---|---|---|
 //! | [`BezierPatch`] | the whole plane (the net describes [0, 1]²) | Σ c_{i,j} Bᵢᵐ(u) Bⱼⁿ(v) [FJ-surfaces, §2], [PPB, §9.2] |
+//! | [`BezierPatchGrid`] | the rectangle of its grid | Bézier patches over the cells of a grid (the Bézier form of a spline surface) |
+//! | [`BSplineSurface`] | the rectangle of the knot vectors' domains | Σ c_{i,j} Nᵢᵖ(u) Nⱼ^q(v) [PPB, §9.1] |
+//! | [`NurbsSurface`] | the same | Σ w_{i,j} c_{i,j} NᵢNⱼ / Σ w_{i,j} NᵢNⱼ [SPL, §14] |
 //!
 //! | file | what it holds |
 //! |---|---|
@@ -25,29 +28,54 @@
 //! | `monomial.rs` | [`BezierPatch::to_monomial`], [`BezierPatch::from_monomial`] [PPB, §9.4] |
 //! | `bounds.rs` | [`BezierPatch::bounding_box`] of the net [PPB, §9.2, Obs. 4] |
 //! | `join.rs` | [`BezierPatch::join_u`], [`BezierPatch::join_v`] (Cʳ checks), [`BezierPatch::extend_cr_u`], [`BezierPatch::extend_cr_v`] (Cʳ continuations) [FJ-surfaces, §6], [PPB, §9.7] |
+//! | `direction.rs` | [`Direction`]: u or v, for the operations in one parameter |
+//! | `bezier_grid.rs` | [`BezierPatchGrid`]: patches over grid cells, evaluation and derivatives by the chain rule |
+//! | `bspline.rs` | [`BSplineSurface`]: validation, evaluation by de Boor on the rows, partial derivatives [PPB, §9.1] |
+//! | `bspline_insert.rs` | [`BSplineSurface::insert`], [`BSplineSurface::refine`]: Boehm's insertion on every row or column [PPB, §6.1] |
+//! | `bspline_to_bezier.rs` | [`BSplineSurface::to_bezier`]: rows, then columns, to Bézier pieces [PPB, §5.10] |
+//! | `bspline_elevate.rs` | [`BSplineSurface::elevate`]: the curves' elevation on every row or column [PPB, §6.4–6.5] |
+//! | `bspline_iso.rs` | [`BSplineSurface::isocurve`]: the isoparametric curves as B-splines |
+//! | `nurbs.rs` | [`NurbsSurface`]: the homogeneous form, every operation on both halves, the quotient rule [SPL, §14] |
+//! | `interpolate.rs` | [`BSplineSurface::interpolate_at`], [`BSplineSurface::interpolate`], [`BezierPatch::interpolate`]: rows, then columns [FJ-surfaces, §7] |
+//! | `least_squares.rs` | [`BSplineSurface::fit`], [`BezierPatch::fit`]: normal equations with a rank check [FJ-surfaces, §7] |
+//! | `loft.rs` | [`BezierPatch::bilinear`], [`BSplineSurface::loft`]: through compatible curves [RD, §3.3] |
+//! | `bicubic.rs` | [`BezierPatchGrid::bicubic_c1`]: piecewise bicubic C¹ interpolation [PPB, §9.8] |
 //! | `tessellate.rs` | [`tessellate`], [`tessellate_at_with`]: any surface in R³ as a [`TriangleMesh`] with unit normals |
 //! | `export.rs` | [`TriangleMesh::write_obj`] (Wavefront OBJ), [`TriangleMesh::write_stl`] (ASCII STL) |
 //!
 //! Sources are cited as `[KEY, §section]` (see `docs/references.md`): FJ-surfaces is
 //! L. Fernández Jambrina, *Tema 5: Superficies*; PPB is M. Paluszny, H. Prautzsch, W. Boehm,
-//! *Métodos de Bézier y B-splines*.
+//! *Métodos de Bézier y B-splines*; SPL the lecture notes *Curvas spline*; RD is I. Ruiz
+//! Donaire, *Resumen de la asignatura Geometría Aplicada*.
 
 mod bezier;
+mod bezier_grid;
+mod bicubic;
 mod blossom;
 mod bounds;
+mod bspline;
+mod bspline_elevate;
+mod bspline_insert;
+mod bspline_iso;
+mod bspline_to_bezier;
 mod derivative;
+mod direction;
 mod elevate;
 mod export;
+mod interpolate;
 mod join;
+mod least_squares;
+mod loft;
 mod monomial;
 mod net;
 mod normal;
+mod nurbs;
 mod subdivide;
 mod tessellate;
 mod traits;
 
 /// The surface algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 19] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 30] = [
     &bezier::ROWS_FIRST,
     &bezier::COLUMNS_FIRST,
     &bezier::TENSOR_DE_CASTELJAU,
@@ -67,24 +95,48 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 19] = [
     &join::EXTEND_CR_V,
     &normal::NORMAL,
     &tessellate::TESSELLATE,
+    &bspline::TENSOR_DE_BOOR,
+    &bspline_insert::SURFACE_INSERT,
+    &bspline_insert::SURFACE_REFINE,
+    &bspline_to_bezier::SURFACE_TO_BEZIER,
+    &bspline_elevate::SURFACE_ELEVATE,
+    &bspline_iso::SURFACE_ISOCURVE,
+    &nurbs::NURBS_SURFACE_EVAL,
+    &interpolate::SURFACE_INTERPOLATE,
+    &least_squares::SURFACE_FIT,
+    &loft::LOFT,
+    &bicubic::BICUBIC_C1,
 ];
 
 /// The declarations the catalog's entries measure, by name.
 pub(crate) mod declarations {
     pub(crate) use super::bezier::{COLUMNS_FIRST, ROWS_FIRST, TENSOR_DE_CASTELJAU};
+    pub(crate) use super::bicubic::BICUBIC_C1;
     pub(crate) use super::blossom::BLOSSOM;
     pub(crate) use super::bounds::BOUNDING_BOX;
+    pub(crate) use super::bspline::TENSOR_DE_BOOR;
+    pub(crate) use super::bspline_elevate::SURFACE_ELEVATE;
+    pub(crate) use super::bspline_insert::SURFACE_INSERT;
+    pub(crate) use super::bspline_to_bezier::SURFACE_TO_BEZIER;
     pub(crate) use super::derivative::DERIVATIVE_NET;
     pub(crate) use super::elevate::ELEVATE_TO;
+    pub(crate) use super::interpolate::SURFACE_INTERPOLATE;
     pub(crate) use super::join::{EXTEND_CR_U, EXTEND_CR_V, JOIN_U, JOIN_V};
+    pub(crate) use super::least_squares::SURFACE_FIT;
+    pub(crate) use super::loft::LOFT;
     pub(crate) use super::monomial::{FROM_MONOMIAL, TO_MONOMIAL};
     pub(crate) use super::normal::NORMAL;
+    pub(crate) use super::nurbs::NURBS_SURFACE_EVAL;
     pub(crate) use super::subdivide::{RESTRICT, SPLIT, SPLIT_U, SPLIT_V};
     pub(crate) use super::tessellate::TESSELLATE;
 }
 
 pub use bezier::BezierPatch;
+pub use bezier_grid::BezierPatchGrid;
+pub use bspline::BSplineSurface;
+pub use direction::Direction;
 pub use net::ControlNet;
 pub use normal::{normal, normal_with, Normal};
+pub use nurbs::NurbsSurface;
 pub use tessellate::{tessellate, tessellate_at_with, TriangleMesh};
 pub use traits::{Surface, SurfaceDerivative, SurfaceDomain};

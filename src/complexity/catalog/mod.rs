@@ -151,6 +151,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(subdivision::entries());
     all.extend(beta::entries());
     all.extend(surface::entries());
+    all.extend(surface_spline::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
     all
@@ -200,6 +201,7 @@ mod sort;
 mod spline;
 mod subdivision;
 mod surface;
+mod surface_spline;
 
 /// The result of one counted run.
 pub(crate) struct Counted {

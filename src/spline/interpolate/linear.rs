@@ -16,8 +16,19 @@ use crate::spline::scalar::{Point, Scalar};
 /// Exact scalars pivot on the first nonzero entry of the column; rounded ones on the entry of
 /// largest magnitude (partial pivoting).
 pub(crate) fn solve_dense<S: Scalar, const D: usize>(
+    a: Vec<Vec<S>>,
+    b: Vec<Point<S, D>>,
+) -> Option<Vec<Point<S, D>>> {
+    solve_dense_with(a, b, &mut NoCount)
+}
+
+/// [`solve_dense`], counting one [`arithmetic_operation`](Counter::arithmetic_operation) per
+/// entry a row operation changes (the matrix's and the right-hand side's) and per term of the
+/// back substitution.
+pub(crate) fn solve_dense_with<S: Scalar, const D: usize, C: Counter>(
     mut a: Vec<Vec<S>>,
     mut b: Vec<Point<S, D>>,
+    counter: &mut C,
 ) -> Option<Vec<Point<S, D>>> {
     let n = a.len();
     for col in 0..n {
@@ -27,6 +38,9 @@ pub(crate) fn solve_dense<S: Scalar, const D: usize>(
         eliminate_below(&mut a, col, |row, factor| {
             let delta = b[col].clone() * factor;
             b[row] -= &delta;
+            for _ in col..=n {
+                counter.arithmetic_operation();
+            }
         });
     }
     for col in (0..n).rev() {
@@ -34,8 +48,10 @@ pub(crate) fn solve_dense<S: Scalar, const D: usize>(
         for k in col + 1..n {
             let delta = b[k].clone() * &a[col][k];
             x -= &delta;
+            counter.arithmetic_operation();
         }
         b[col] = x / &a[col][col];
+        counter.arithmetic_operation();
     }
     Some(b)
 }

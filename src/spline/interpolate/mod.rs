@@ -69,5 +69,5 @@ pub use parameterise::{estimate_tangents, parameterise, Parameterisation};
 pub use polynomial::{vandermonde, vandermonde_hermite, HermiteNode, Polynomial};
 pub use quadratic_spline::{closed_quadratic_spline, quadratic_spline};
 
-pub(crate) use linear::{eliminate_below, pivot};
+pub(crate) use linear::{eliminate_below, pivot, solve_dense_with};
 pub(crate) use validate::check_partition;

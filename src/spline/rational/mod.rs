@@ -46,7 +46,7 @@ mod conic;
 mod linear;
 mod nurbs;
 mod quotient;
-mod weights;
+pub(crate) mod weights;
 
 /// The rational curve algorithms, declared.
 pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 6] = [

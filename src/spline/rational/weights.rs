@@ -19,10 +19,10 @@ use crate::{Error, Result};
 
 /// The homogeneous control points of a rational curve: `points[i] = s·wᵢ·cᵢ` and
 /// `weights[i] = s·wᵢ` with the scale s of the module docs.
-pub(super) struct Homogeneous<S, const D: usize> {
-    pub(super) points: Vec<Point<S, D>>,
-    pub(super) weights: Vec<Point<S, 1>>,
-    pub(super) scale: S,
+pub(crate) struct Homogeneous<S, const D: usize> {
+    pub(crate) points: Vec<Point<S, D>>,
+    pub(crate) weights: Vec<Point<S, 1>>,
+    pub(crate) scale: S,
 }
 
 /// Checks that there is one weight per control point and that every weight is finite and
@@ -32,7 +32,7 @@ pub(super) struct Homogeneous<S, const D: usize> {
 ///
 /// [`Error::InvalidParameter`] named `"weights"`: naming both counts if they differ, or the
 /// index and value of the first weight that is NaN, infinite, zero or negative.
-pub(super) fn validate_weights<S: Scalar>(weights: &[S], points: usize) -> Result<()> {
+pub(crate) fn validate_weights<S: Scalar>(weights: &[S], points: usize) -> Result<()> {
     if weights.len() != points {
         return Err(Error::InvalidParameter {
             name: "weights",
@@ -64,7 +64,7 @@ pub(super) fn validate_weights<S: Scalar>(weights: &[S], points: usize) -> Resul
 /// [`Error::Overflow`] if, with `f64`, a weighted coordinate is beyond the double range (a
 /// coordinate above 2^1023 in absolute value) or the weights span so many orders of magnitude
 /// that the smallest, scaled, is zero (a ratio beyond 2^1074).
-pub(super) fn homogeneous<S: Scalar, const D: usize>(
+pub(crate) fn homogeneous<S: Scalar, const D: usize>(
     control: &[Point<S, D>],
     weights: &[S],
 ) -> Result<Homogeneous<S, D>> {
@@ -95,7 +95,7 @@ pub(super) fn homogeneous<S: Scalar, const D: usize>(
 }
 
 /// The control points cᵢ = (wᵢ·cᵢ)/wᵢ of homogeneous points with positive weights.
-pub(super) fn project<S: Scalar, const D: usize>(
+pub(crate) fn project<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
     weights: &[Point<S, 1>],
 ) -> Vec<Point<S, D>> {
