@@ -35,6 +35,7 @@
 //! | `bspline_to_bezier.rs` | [`BSplineSurface::to_bezier`]: rows, then columns, to Bézier pieces [PPB, §5.10] |
 //! | `bspline_elevate.rs` | [`BSplineSurface::elevate`]: the curves' elevation on every row or column [PPB, §6.4–6.5] |
 //! | `bspline_iso.rs` | [`BSplineSurface::isocurve`]: the isoparametric curves as B-splines |
+//! | `tensor_grid.rs` | [`BSplineSurface::eval_grid`], [`NurbsSurface::eval_grid`]: every pair of two parameter lists, each basis once [FJ-surfaces, §1–2] |
 //! | `nurbs.rs` | [`NurbsSurface`]: the homogeneous form, every operation on both halves, the quotient rule [SPL, §14] |
 //! | `interpolate.rs` | [`BSplineSurface::interpolate_at`], [`BSplineSurface::interpolate`], [`BezierPatch::interpolate`]: rows, then columns [FJ-surfaces, §7] |
 //! | `least_squares.rs` | [`BSplineSurface::fit`], [`BezierPatch::fit`]: normal equations with a rank check [FJ-surfaces, §7] |
@@ -71,11 +72,12 @@ mod net;
 mod normal;
 mod nurbs;
 mod subdivide;
+mod tensor_grid;
 mod tessellate;
 mod traits;
 
 /// The surface algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 30] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 32] = [
     &bezier::ROWS_FIRST,
     &bezier::COLUMNS_FIRST,
     &bezier::TENSOR_DE_CASTELJAU,
@@ -102,6 +104,8 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 30] = [
     &bspline_elevate::SURFACE_ELEVATE,
     &bspline_iso::SURFACE_ISOCURVE,
     &nurbs::NURBS_SURFACE_EVAL,
+    &tensor_grid::BSPLINE_GRID,
+    &tensor_grid::NURBS_GRID,
     &interpolate::SURFACE_INTERPOLATE,
     &least_squares::SURFACE_FIT,
     &loft::LOFT,
@@ -128,6 +132,7 @@ pub(crate) mod declarations {
     pub(crate) use super::normal::NORMAL;
     pub(crate) use super::nurbs::NURBS_SURFACE_EVAL;
     pub(crate) use super::subdivide::{RESTRICT, SPLIT, SPLIT_U, SPLIT_V};
+    pub(crate) use super::tensor_grid::{BSPLINE_GRID, NURBS_GRID};
     pub(crate) use super::tessellate::TESSELLATE;
 }
 

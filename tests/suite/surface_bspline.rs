@@ -218,6 +218,28 @@ proptest! {
     }
 
     #[test]
+    fn grid_evaluation_is_the_double_sum_at_every_pair(s in surface(), ws in prop::collection::vec(1i64..=6, 49)) {
+        // The parameters out of order and repeated: the grid does not care.
+        let mut us = samples(s.u_knots());
+        us.reverse();
+        let vs = samples(s.v_knots());
+        let grid = s.eval_grid(&us, &vs).unwrap();
+        prop_assert_eq!(grid.len(), us.len() * vs.len());
+        let count = s.net().points().len();
+        let weights: Vec<Q> = ws[..count].iter().map(|w| q(*w, 3)).collect();
+        let n = NurbsSurface::new(s.net().clone(), weights, s.u_knots().clone(), s.v_knots().clone()).unwrap();
+        let rational = n.eval_grid(&us, &vs).unwrap();
+        for (i, u) in us.iter().enumerate() {
+            for (j, v) in vs.iter().enumerate() {
+                prop_assert_eq!(&grid[i * vs.len() + j], &double_sum(&s, u, v));
+                prop_assert_eq!(&rational[i * vs.len() + j], &n.eval(u, v).unwrap());
+            }
+        }
+        let outside = s.v_knots().bounds().1.clone() + qi(1);
+        prop_assert!(s.eval_grid(&us, &[outside]).is_err());
+    }
+
+    #[test]
     fn nurbs_is_the_homogeneous_projection(s in surface(), ws in prop::collection::vec(1i64..=6, 49), t in 1usize..=1) {
         let count = s.net().points().len();
         let weights: Vec<Q> = ws[..count].iter().map(|w| q(*w, 2)).collect();

@@ -17,6 +17,9 @@
 //! `random-curves`: n cubic curves with 8 control points on the same knots, lofted by a cubic
 //! in the lofting direction: linear in n.
 //!
+//! `grid-rows`: a bicubic surface of 8 × 8 points (B-spline, or NURBS with weights 1, 2, 3)
+//! on the grid of n uniform u parameters by 8 uniform v parameters: linear in n.
+//!
 //! Points are uniform in the unit cube (x and y from one seeded point set, z from a second).
 
 use crate::complexity::{Declaration, Entry, Workload};
@@ -68,6 +71,12 @@ pub(super) fn entries() -> Vec<Entry> {
         Entry::declared(&s::LOFT, "random-curves", Loft)
             .quick(16, 1024)
             .full(16, 8192),
+        Entry::declared(&s::BSPLINE_GRID, "grid-rows", GridRows { nurbs: false })
+            .quick(16, 4096)
+            .full(16, 65536),
+        Entry::declared(&s::NURBS_GRID, "grid-rows", GridRows { nurbs: true })
+            .quick(16, 4096)
+            .full(16, 65536),
     ]
 }
 
@@ -136,6 +145,48 @@ impl Workload for Evaluate {
             Some(n) => n.de_boor_with(u, v, c),
             None => s.de_boor_with(u, v, c),
         }
+    }
+}
+
+/// A bicubic surface of 8 × 8 points on the grid of n × 8 uniform parameters.
+struct GridRows {
+    nurbs: bool,
+}
+
+impl Workload for GridRows {
+    type Input = (NurbsSurface<f64, 3>, Vec<f64>, Vec<f64>);
+    /// The sum of the points' z coordinates.
+    type Output = f64;
+
+    fn prepare(&self, n: usize, seed: u64) -> Result<Self::Input> {
+        let s = random_surface(8, 8, (3, 3), seed)?;
+        let weights = (0..64)
+            .map(|k| {
+                if self.nurbs {
+                    1.0 + (k % 3) as f64
+                } else {
+                    1.0
+                }
+            })
+            .collect();
+        let nurbs = NurbsSurface::new(
+            s.net().clone(),
+            weights,
+            s.u_knots().clone(),
+            s.v_knots().clone(),
+        )?;
+        let uniform = |k: usize| (0..k).map(|i| i as f64 / (k - 1) as f64).collect();
+        Ok((nurbs, uniform(n.max(2)), uniform(8)))
+    }
+
+    fn run<C: Counter>(&self, input: &mut Self::Input, c: &mut C) -> Result<Self::Output> {
+        let (s, us, vs) = input;
+        let grid = if self.nurbs {
+            s.eval_grid_with(us, vs, c)?
+        } else {
+            s.homogeneous().0.eval_grid_with(us, vs, c)?
+        };
+        Ok(grid.iter().map(|p| p[2]).sum())
     }
 }
 
