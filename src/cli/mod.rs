@@ -108,7 +108,8 @@ enum Command {
     Bspline(bspline::BsplineArgs),
     /// NURBS curves: evaluate, insert knots, elevate, rational Bézier pieces
     Nurbs(nurbs::NurbsArgs),
-    /// Tensor-product Bézier patches: evaluate, differentiate, tessellate into OBJ/STL meshes
+    /// Surfaces (Bézier, B-spline, NURBS): evaluate, differentiate, normals, restrict, elevate,
+    /// interpolate, fit, loft, tessellate into OBJ/STL meshes
     Surface(surface::SurfaceArgs),
     /// Uniform subdivision of a polygon: Lane–Riesenfeld of any degree, Chaikin, four-point
     Subdivide(subdivide::SubdivideArgs),

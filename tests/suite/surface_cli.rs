@@ -6,9 +6,10 @@
 
 use crate::common::{assert_rejected, run_json};
 use crate::spline_common::{q, Q};
-use compgeo::spline::Point;
+use compgeo::spline::{BSpline, Curve, KnotVector, Parameterisation, Point};
 use compgeo::surface::{
-    normal, tessellate, BezierPatch, ControlNet, Normal, Surface, SurfaceDerivative,
+    normal, tessellate, BSplineSurface, BezierPatch, ControlNet, Normal, NurbsSurface, Surface,
+    SurfaceDerivative,
 };
 use serde_json::Value;
 
@@ -198,6 +199,222 @@ fn restrict_elevate_and_normal_match_the_library_exactly() {
     }
 }
 
+/// A printed B-spline surface.
+fn spline_of(out: &Value) -> BSplineSurface<Q, 3> {
+    let rows = out["net"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|row| row.as_array().unwrap().iter().map(point3).collect())
+        .collect();
+    let (p, q): (usize, usize) = serde_json::from_value(out["bidegree"].clone()).unwrap();
+    let knots = |name: &str, d: usize| {
+        let t: Vec<Q> = out[name].as_array().unwrap().iter().map(number).collect();
+        KnotVector::new(d, t).unwrap()
+    };
+    BSplineSurface::new(
+        ControlNet::new(rows).unwrap(),
+        knots("knots_u", p),
+        knots("knots_v", q),
+    )
+    .unwrap()
+}
+
+#[test]
+fn spline_surfaces_and_constructions_match_the_library_exactly() {
+    let net = patch().net().clone();
+    let tu = KnotVector::new(2, [0, 0, 0, 1, 1, 1].map(crate::spline_common::qi).to_vec()).unwrap();
+    let tv = KnotVector::new(
+        2,
+        vec![
+            q(0, 1),
+            q(0, 1),
+            q(0, 1),
+            q(1, 3),
+            q(1, 1),
+            q(1, 1),
+            q(1, 1),
+        ],
+    )
+    .unwrap();
+    let s = BSplineSurface::new(net.clone(), tu.clone(), tv.clone()).unwrap();
+    let weights: Vec<Q> = (0..12).map(|k| q(k % 3 + 1, 2)).collect();
+    let n = NurbsSurface::new(net, weights, tu, tv).unwrap();
+    let spline_args = [
+        "--degree-u",
+        "2",
+        "--degree-v",
+        "2",
+        "--knots-v",
+        "[0,0,0,\"1/3\",1,1,1]",
+    ];
+    let weights_json =
+        "[[\"1/2\",1,\"3/2\",\"1/2\"],[1,\"3/2\",\"1/2\",1],[\"3/2\",\"1/2\",1,\"3/2\"]]";
+    for (u, v) in [(q(1, 3), q(1, 2)), (q(1, 1), q(1, 3)), (q(0, 1), q(1, 1))] {
+        let (us, vs) = (u.to_string(), v.to_string());
+        let mut args = vec![
+            "surface", "eval", "--net", NET, "--u", &us, "--v", &vs, "--exact",
+        ];
+        args.extend(spline_args);
+        let out = run_json(&args, None);
+        assert_eq!(point3(&out["point"]), s.eval(&u, &v).unwrap());
+        args.extend(["--weights", weights_json]);
+        let out = run_json(&args, None);
+        assert_eq!(point3(&out["point"]), n.eval(&u, &v).unwrap());
+        let mut args = vec![
+            "surface",
+            "derivative",
+            "--net",
+            NET,
+            "--u",
+            &us,
+            "--v",
+            &vs,
+        ];
+        args.extend([
+            "--order-u",
+            "1",
+            "--order-v",
+            "1",
+            "--exact",
+            "--weights",
+            weights_json,
+        ]);
+        args.extend(spline_args);
+        let out = run_json(&args, None);
+        assert_eq!(
+            point3(&out["derivative"]),
+            n.partial_at(&u, &v, 1, 1).unwrap()
+        );
+    }
+    // Elevation keeps the surface.
+    let mut args = vec![
+        "surface", "elevate", "--net", NET, "--by-u", "1", "--by-v", "2", "--exact",
+    ];
+    args.extend(spline_args);
+    let e = spline_of(&run_json(&args, None));
+    assert_eq!(e.bidegree(), (3, 4));
+    for (u, v) in [(q(1, 5), q(2, 3)), (q(7, 8), q(1, 9))] {
+        assert_eq!(e.eval(&u, &v).unwrap(), s.eval(&u, &v).unwrap());
+    }
+
+    // Interpolation: the library's surface, through every data point at uniform parameters.
+    let out = run_json(
+        &[
+            "surface",
+            "interpolate",
+            "--points",
+            NET,
+            "--degree-u",
+            "2",
+            "--degree-v",
+            "2",
+            "--parameterisation",
+            "uniform",
+            "--exact",
+        ],
+        None,
+    );
+    let i = spline_of(&out);
+    assert_eq!(
+        i,
+        BSplineSurface::interpolate(patch().net(), (2, 2), Parameterisation::Uniform).unwrap()
+    );
+    for r in 0..3 {
+        for c in 0..4 {
+            assert_eq!(
+                &i.eval(&q(r, 2), &q(c, 3)).unwrap(),
+                patch().net().get(r as usize, c as usize)
+            );
+        }
+    }
+
+    // Least squares on samples of a bilinear patch gives the patch back.
+    let bilinear = BezierPatch::new(
+        ControlNet::new(vec![
+            vec![
+                Point::new([q(0, 1), q(0, 1), q(1, 1)]),
+                Point::new([q(0, 1), q(1, 1), q(2, 1)]),
+            ],
+            vec![
+                Point::new([q(1, 1), q(0, 1), q(3, 1)]),
+                Point::new([q(1, 1), q(1, 1), q(-1, 1)]),
+            ],
+        ])
+        .unwrap(),
+    )
+    .unwrap();
+    let params: Vec<(Q, Q)> = [(0, 0), (1, 0), (0, 1), (1, 1), (1, 2), (2, 1)]
+        .iter()
+        .map(|&(a, b)| (q(a, 2), q(b, 2)))
+        .collect();
+    let json_list = |v: Vec<String>| format!("[{}]", v.join(","));
+    let pts = json_list(
+        params
+            .iter()
+            .map(|(u, v)| {
+                let p = bilinear.eval(u, v).unwrap();
+                json_list(p.coords().iter().map(|x| format!("\"{x}\"")).collect())
+            })
+            .collect(),
+    );
+    let uv = json_list(
+        params
+            .iter()
+            .map(|(u, v)| format!("[\"{u}\",\"{v}\"]"))
+            .collect(),
+    );
+    let out = run_json(
+        &[
+            "surface",
+            "fit",
+            "--points",
+            &pts,
+            "--params",
+            &uv,
+            "--control-u",
+            "2",
+            "--control-v",
+            "2",
+            "--degree-u",
+            "1",
+            "--degree-v",
+            "1",
+            "--exact",
+        ],
+        None,
+    );
+    let fitted = spline_of(&out);
+    assert_eq!(fitted.net(), bilinear.net());
+
+    // Lofting: the surface passes through every curve at its parameter.
+    let out = run_json(
+        &[
+            "surface",
+            "loft",
+            "--curves",
+            NET,
+            "--degree-u",
+            "2",
+            "--degree-v",
+            "3",
+            "--exact",
+        ],
+        None,
+    );
+    let l = spline_of(&out);
+    for (k, row) in patch().net().to_rows().into_iter().enumerate() {
+        let t = KnotVector::clamped_uniform(3, 4, q(0, 1), q(1, 1)).unwrap();
+        let curve = BSpline::new(row, t).unwrap();
+        for v in [q(0, 1), q(2, 7), q(1, 1)] {
+            assert_eq!(
+                l.eval(&q(k as i64, 2), &v).unwrap(),
+                curve.eval(&v).unwrap()
+            );
+        }
+    }
+}
+
 #[test]
 fn tessellate_prints_the_librarys_mesh_and_writes_files_viewers_read() {
     // With --exact both compute in rationals and round once: the same doubles.
@@ -363,6 +580,136 @@ fn bad_nets_and_parameters_exit_2_naming_the_problem() {
         (
             vec!["surface", "tessellate", "--net", "[[[0,0],[1,1]]]"],
             "three dimensions",
+        ),
+        (
+            vec![
+                "surface",
+                "eval",
+                "--net",
+                NET,
+                "--weights",
+                "[[1,1,1,1],[1,0,1,1],[1,1,1,1]]",
+                "--u",
+                "0",
+                "--v",
+                "0",
+            ],
+            "weight",
+        ),
+        (
+            vec![
+                "surface",
+                "eval",
+                "--net",
+                NET,
+                "--weights",
+                "[[1,1,1,1],[1,1,1]]",
+                "--u",
+                "0",
+                "--v",
+                "0",
+            ],
+            "weights must form a grid",
+        ),
+        (
+            vec![
+                "surface",
+                "eval",
+                "--net",
+                NET,
+                "--degree-u",
+                "2",
+                "--knots-u",
+                "[0,0,0,1,1,1,1]",
+                "--u",
+                "0",
+                "--v",
+                "0",
+            ],
+            "knots",
+        ),
+        (
+            vec![
+                "surface",
+                "eval",
+                "--net",
+                NET,
+                "--degree-u",
+                "2",
+                "--u",
+                "2",
+                "--v",
+                "0",
+            ],
+            "outside",
+        ),
+        (
+            vec![
+                "surface",
+                "eval",
+                "--net",
+                NET,
+                "--degree-u",
+                "2",
+                "--u",
+                "0",
+                "--v",
+                "0",
+                "--algorithm",
+                "rows-first",
+            ],
+            "de Boor",
+        ),
+        (
+            vec![
+                "surface",
+                "restrict",
+                "--net",
+                NET,
+                "--degree-u",
+                "2",
+                "--u0",
+                "0",
+                "--u1",
+                "1",
+                "--v0",
+                "0",
+                "--v1",
+                "1",
+            ],
+            "Bézier patches",
+        ),
+        (
+            vec![
+                "surface",
+                "interpolate",
+                "--points",
+                "[[[0,0,0],[0,0,0]],[[1,0,0],[1,1,1]]]",
+                "--degree-u",
+                "1",
+                "--degree-v",
+                "1",
+            ],
+            "coincide",
+        ),
+        (
+            vec![
+                "surface",
+                "fit",
+                "--points",
+                "[[0,0,0]]",
+                "--params",
+                "[[0,0],[1,1]]",
+                "--control-u",
+                "2",
+                "--control-v",
+                "2",
+                "--degree-u",
+                "1",
+                "--degree-v",
+                "1",
+            ],
+            "params",
         ),
         (
             vec![
