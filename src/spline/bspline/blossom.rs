@@ -31,7 +31,7 @@
 use super::BSpline;
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::spline::bspline::basis::ratios;
+use crate::spline::bspline::basis::affine;
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
 use crate::{Error, Result};
 
@@ -291,8 +291,7 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
             // Going down, each combination reads level k − 1 (as de_boor_level does).
             for j in (k..=d).rev() {
                 let i = span - d + j;
-                let (right, left) = ratios(&t[i], u, &t[i + d + 1 - k]);
-                q[j] = Point::combine(&q[j - 1], &right, &q[j], &left);
+                q[j] = affine(&q[j - 1], &t[i], u, &t[i + d + 1 - k], &q[j]);
                 counter.arithmetic_operation();
             }
         }

@@ -26,7 +26,7 @@
 use super::BSpline;
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::spline::bspline::basis::ratios;
+use crate::spline::bspline::basis::affine;
 use crate::spline::scalar::{Point, Scalar};
 use crate::Result;
 
@@ -348,8 +348,7 @@ pub(super) fn de_boor_level<S: Scalar, const D: usize, C: Counter>(
     for j in (k..q.len()).rev() {
         let i = span - d + j;
         let (lo, hi) = (&t[i], &t[i + d + 1 - k]);
-        let (right, left) = ratios(lo, u, hi);
-        q[j] = Point::combine(&q[j - 1], &right, &q[j], &left);
+        q[j] = affine(&q[j - 1], lo, u, hi, &q[j]);
         counter.arithmetic_operation();
     }
 }
