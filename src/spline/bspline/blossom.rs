@@ -203,7 +203,10 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// weights are ratios of knot distances as in [`BSpline::de_boor_with`], but outside
     /// [0, 1] when an argument is outside the support (the polar form extends the piece to
     /// all real arguments). The arguments need not be sorted, nor lie in the span or the
-    /// domain. Unlike evaluation, no level is skipped when an argument is a knot, so the
+    /// domain. With `f64`, a weight that overflows (an argument far beyond a support of
+    /// subnormal width) is not multiplied: that coordinate is recomputed as
+    /// a + (u − tᵢ)(b − a)/(t_j − tᵢ) on mantissas and exponents, so a zero stays zero
+    /// instead of ∞·0 = NaN, and only a value truly beyond the range is an overflow. Unlike evaluation, no level is skipped when an argument is a knot, so the
     /// count is always d(d + 1)/2.
     ///
     /// Follows [PPB, §5.5, Obs. 5] and [SPL, §6–7].

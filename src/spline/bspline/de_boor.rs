@@ -186,7 +186,9 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// t_μ, 0 if u is not a knot, at most d) and replace them level by level by the affine
     /// combinations c_i^k = (1 − α) c_{i−1}^{k−1} + α c_i^{k−1} with
     /// α = (u − tᵢ)/(t_{i+d+1−k} − tᵢ), each weight computed as its own ratio of two knot
-    /// distances (both in [0, 1], so knots a subnormal distance apart do not overflow). At
+    /// distances (both in [0, 1], so knots a subnormal distance apart do not overflow). With
+    /// `f64` a combination of two coordinates near `f64::MAX` that rounds past it is clamped
+    /// back between them, where the exact value lies, so the point is always finite. At
     /// the end of the domain the last non-empty span is used (the closed last interval), and
     /// at an interior knot the span on its right (right-continuous).
     ///
