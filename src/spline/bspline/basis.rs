@@ -691,6 +691,47 @@ mod tests {
     }
 
     #[test]
+    fn mul_div_rounds_once_where_the_steps_would_underflow_or_overflow() {
+        use num_rational::BigRational;
+        let cases = [
+            (-9.9911551518932e307, 5e-324, 4.0),
+            (1e-200, 1e-200, 5e-324),
+            (1e300, 1e300, 1e300),
+            (3.0, 7e-310, 1e-320),
+        ];
+        for (p, q, w) in cases {
+            let exact = BigRational::from_float(p).unwrap() * BigRational::from_float(q).unwrap()
+                / BigRational::from_float(w).unwrap();
+            let got = BigRational::from_float(mul_div(p, q, w)).unwrap();
+            let err = (got - &exact).abs();
+            let want = exact.to_f64();
+            assert!(
+                err <= BigRational::from_float(4.0 * f64::EPSILON * want.abs()).unwrap(),
+                "{p}·{q}/{w}"
+            );
+        }
+        assert_eq!(mul_div(0.0, 1e308, 5e-324), 0.0);
+        assert_eq!(mul_div(1e308, 1e308, 1.0), f64::INFINITY);
+    }
+
+    #[test]
+    fn affine_keeps_a_constant_beyond_a_subnormal_width() {
+        let a = Point::new([3.0, 0.0]);
+        // The weights (1e-323 − 0.5)/5e-324 and (0.5 − 5e-324)/5e-324 overflow.
+        assert_eq!(affine(&a, &5e-324, &0.5, &1e-323, &a), a);
+        let b = Point::new([3.0, 5e-324]);
+        let p = affine(&a, &5e-324, &1e-323f64.next_up(), &1e-323, &b);
+        assert_eq!(p, Point::new([3.0, 1e-323]));
+        let m = Point::new([f64::MAX, -f64::MAX]);
+        for k in 1..10 {
+            let x = f64::from(k) / 10.0;
+            assert!(affine(&m, &0.0, &x, &1.0, &m).is_finite(), "{x}");
+        }
+        let (r, l) = split_value(&0.0, &5e-324, &0.5, &1e-323);
+        assert_eq!((r, l), (0.0, 0.0));
+    }
+
+    #[test]
     fn ratios_survive_widths_beyond_the_double_range() {
         let m = f64::MAX;
         let (right, left) = ratios(&-m, &0.0, &m);
