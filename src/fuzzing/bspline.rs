@@ -715,11 +715,12 @@ impl<'a> Checker<'a> {
         let g = match got {
             Ok(g) => g,
             Err(Error::Overflow { .. }) => {
-                // Only where a weighted point is beyond the range, scaled or not.
-                let big = &self.m * &wmax / &wmin;
+                // Only where the weights' ratio is beyond the range (the smallest underflows
+                // once the largest is scaled into [1, 2)) or a weighted point is.
+                let big = &self.m * &ratio;
                 assert!(
-                    magnitude(&big) >= f64::MAX / 4.0,
-                    "Nurbs::new overflows at {:e}",
+                    magnitude(&ratio) >= f64::MAX / 4.0 || magnitude(&big) >= f64::MAX / 4.0,
+                    "Nurbs::new overflows at {:e}, weights {weights:?}",
                     magnitude(&big)
                 );
                 return;
