@@ -18,6 +18,7 @@
 //! | `voronoi` | the Voronoi diagram | structure against the exact triangulation; vertices against exact circumcentres |
 //! | `predicates` | `orient2d`, `incircle`, `cmp_dist`, `cross_sign` | the sign of the exact rational expression |
 //! | `bezier` | Bézier eval, split, elevation, derivatives in `f64` | the `BigRational` back end, within rounding bounds |
+//! | `bspline` | every B-spline operation and NURBS eval, insert, elevate in `f64` | the `BigRational` back end, within rounding bounds; overflow only near `f64::MAX` |
 //!
 //! Every function returns normally on inputs it does not apply to (invalid UTF-8 for a text
 //! reader); an error the library returns is checked, not a failure in itself.
@@ -28,10 +29,12 @@
 //! function naming the stored input, and it goes with the fix.
 
 mod bezier;
+mod bspline;
 mod geometry;
 mod readers;
 
 pub use bezier::bezier;
+pub use bspline::bspline;
 pub use geometry::{delaunay, hull, predicates, voronoi};
 pub use readers::{csv_points, exact_decimal, graph_json, json_points, number_arrays};
 

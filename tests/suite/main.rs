@@ -22,6 +22,7 @@ mod bspline_cli;
 mod bspline_convert;
 mod bspline_curve;
 mod bspline_fit;
+mod bspline_hostile;
 mod bspline_knot_ops;
 mod calipers;
 mod cli;

@@ -30,7 +30,7 @@
 use super::KnotVector;
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::spline::scalar::Scalar;
+use crate::spline::scalar::{Point, Scalar};
 use crate::{limits, Error, Result};
 
 /// The d + 1 basis functions N_{μ−d}, …, N_μ that do not vanish at a parameter u of span μ:
@@ -480,6 +480,145 @@ pub(super) fn quotient<S: Scalar>(x: S, lo: &S, hi: &S) -> S {
     x * &half / width
 }
 
+/// The affine combination ((hi − x)·a + (x − lo)·b)/(hi − lo) of two points, for lo < hi and
+/// any finite x (outside [lo, hi] it extrapolates: the blossoms and degree elevation).
+///
+/// The weights are [`ratios`], as everywhere in this module, and where that gives finite
+/// coordinates (always with rationals) it is the result. With `f64` a coordinate can come
+/// out infinite or NaN although its exact value is in range: inside [lo, hi] a convex
+/// combination of two coordinates near `f64::MAX` can round past it, and outside, a weight
+/// overflows where the width hi − lo is subnormal (∞·0 = NaN for a zero coordinate). Such a
+/// coordinate is recomputed: inside, clamped between the two coordinates (where the exact
+/// value lies); outside, as a + (x − lo)(b − a)/(hi − lo) with the product and quotient
+/// taken on mantissas and exponents ([`mul_div`]), so that only a value truly beyond the
+/// range comes out infinite (and a constant stays exactly constant).
+pub(super) fn affine<S: Scalar, const D: usize>(
+    a: &Point<S, D>,
+    lo: &S,
+    x: &S,
+    hi: &S,
+    b: &Point<S, D>,
+) -> Point<S, D> {
+    let (right, left) = ratios(lo, x, hi);
+    let p = Point::combine(a, &right, b, &left);
+    if p.is_finite() {
+        return p;
+    }
+    let inside = lo <= x && x <= hi;
+    let (lo, x, hi) = (lo.to_f64(), x.to_f64(), hi.to_f64());
+    Point::new(std::array::from_fn(|j| {
+        if p[j].is_finite() {
+            return p[j].clone();
+        }
+        let (aj, bj) = (a[j].to_f64(), b[j].to_f64());
+        let v = if aj == bj {
+            aj
+        } else if inside {
+            if p[j] > S::zero() {
+                aj.max(bj)
+            } else {
+                aj.min(bj)
+            }
+        } else {
+            // Beyond both points: a difference out of range puts the value out of range too.
+            let (_, from_lo, width) = distances(lo, x, hi);
+            let diff = bj - aj;
+            if diff.is_finite() {
+                aj + mul_div(from_lo, diff, width)
+            } else {
+                diff
+            }
+        };
+        S::from_f64(v).unwrap_or_else(|| p[j].clone())
+    }))
+}
+
+/// ((hi − x)·v/(hi − lo), (x − lo)·v/(hi − lo)): the value v split by the [`ratios`], for
+/// lo < hi and any finite x (the discrete B-splines of the Oslo algorithm). Where a product
+/// is not finite (a ratio overflows for x far outside a subnormal width), both are taken by
+/// [`mul_div`], so that a zero v splits into zeros rather than ∞·0 = NaN and only a value
+/// truly beyond the range is infinite.
+pub(super) fn split_value<S: Scalar>(v: &S, lo: &S, x: &S, hi: &S) -> (S, S) {
+    let (right, left) = ratios(lo, x, hi);
+    let (r, l) = (right * v, left * v);
+    if r.is_finite() && l.is_finite() {
+        return (r, l);
+    }
+    let (to_hi, from_lo, width) = distances(lo.to_f64(), x.to_f64(), hi.to_f64());
+    let v = v.to_f64();
+    let back = |y: f64, fallback: S| S::from_f64(y).unwrap_or(fallback);
+    (
+        back(mul_div(to_hi, v, width), r),
+        back(mul_div(from_lo, v, width), l),
+    )
+}
+
+/// x·y/z for z ≠ 0: exact with rationals; with `f64` rounded once at the end ([`mul_div`]),
+/// so that neither y/z nor x·y underflows or overflows on the way (the integral's
+/// c·(t_{i+d+1} − tᵢ)/(d + 1) with a subnormal width beside a coordinate near 1e308).
+pub(super) fn product_quotient<S: Scalar>(x: &S, y: &S, z: &S) -> S {
+    let naive = || x.clone() * y / z;
+    if S::EXACT {
+        return naive();
+    }
+    let (x, y, z) = (x.to_f64(), y.to_f64(), z.to_f64());
+    let v = if y.is_finite() && x.is_finite() {
+        mul_div(x, y, z)
+    } else {
+        f64::NAN
+    };
+    S::from_f64(v).unwrap_or_else(naive)
+}
+
+/// (hi − x, x − lo, hi − lo), all three halved first if one of them overflows (the ratios
+/// stay the same; halving is exact for the normal numbers such distances come from).
+fn distances(lo: f64, x: f64, hi: f64) -> (f64, f64, f64) {
+    let d = (hi - x, x - lo, hi - lo);
+    if d.0.is_finite() && d.1.is_finite() && d.2.is_finite() {
+        return d;
+    }
+    (hi / 2.0 - x / 2.0, x / 2.0 - lo / 2.0, hi / 2.0 - lo / 2.0)
+}
+
+/// p·q/w for finite p, q and a finite non-zero w, rounded once at the end (and twice on the
+/// mantissas): no intermediate overflows or underflows, so the result is infinite only
+/// when the value is beyond the double range.
+fn mul_div(p: f64, q: f64, w: f64) -> f64 {
+    if p == 0.0 || q == 0.0 {
+        return 0.0;
+    }
+    let ((mp, ep), (mq, eq), (mw, ew)) = (frexp(p), frexp(q), frexp(w));
+    ldexp(mp * mq / mw, ep + eq - ew)
+}
+
+/// (m, e) with x = m·2^e and 1/2 ≤ |m| < 1, for a finite non-zero x (subnormals included).
+fn frexp(x: f64) -> (f64, i32) {
+    let (x, shift) = if x.abs() < f64::MIN_POSITIVE {
+        (x * ldexp(1.0, 64), -64)
+    } else {
+        (x, 0)
+    };
+    let bits = x.to_bits();
+    let e = ((bits >> 52) & 0x7ff) as i32 - 1022;
+    let m = f64::from_bits((bits & !(0x7ff << 52)) | (1022 << 52));
+    (m, e + shift)
+}
+
+/// m·2^e by steps of normal powers of two, in one direction (so a result in the normal
+/// range is exact, and one below it rounds at most twice).
+fn ldexp(mut m: f64, mut e: i32) -> f64 {
+    let power = |e: i32| f64::from_bits(((e + 1023) as u64) << 52);
+    while e > 1000 {
+        m *= power(1000);
+        e -= 1000;
+    }
+    while e < -1000 {
+        m *= power(-1000);
+        e += 1000;
+    }
+    m * power(e)
+}
+
 /// The basis, declared.
 pub(crate) const BASIS: Declaration = Declaration {
     problem: "bspline",
@@ -549,6 +688,47 @@ mod tests {
             (der.order(2), der.order(3)),
             (&[0.0, 0.0][..], &[0.0, 0.0][..])
         );
+    }
+
+    #[test]
+    fn mul_div_rounds_once_where_the_steps_would_underflow_or_overflow() {
+        use num_rational::BigRational;
+        let cases = [
+            (-9.9911551518932e307, 5e-324, 4.0),
+            (1e-200, 1e-200, 5e-324),
+            (1e300, 1e300, 1e300),
+            (3.0, 7e-310, 1e-320),
+        ];
+        for (p, q, w) in cases {
+            let exact = BigRational::from_float(p).unwrap() * BigRational::from_float(q).unwrap()
+                / BigRational::from_float(w).unwrap();
+            let got = BigRational::from_float(mul_div(p, q, w)).unwrap();
+            let err = (got - &exact).abs();
+            let want = exact.to_f64();
+            assert!(
+                err <= BigRational::from_float(4.0 * f64::EPSILON * want.abs()).unwrap(),
+                "{p}·{q}/{w}"
+            );
+        }
+        assert_eq!(mul_div(0.0, 1e308, 5e-324), 0.0);
+        assert_eq!(mul_div(1e308, 1e308, 1.0), f64::INFINITY);
+    }
+
+    #[test]
+    fn affine_keeps_a_constant_beyond_a_subnormal_width() {
+        let a = Point::new([3.0, 0.0]);
+        // The weights (1e-323 − 0.5)/5e-324 and (0.5 − 5e-324)/5e-324 overflow.
+        assert_eq!(affine(&a, &5e-324, &0.5, &1e-323, &a), a);
+        let b = Point::new([3.0, 5e-324]);
+        let p = affine(&a, &5e-324, &1e-323f64.next_up(), &1e-323, &b);
+        assert_eq!(p, Point::new([3.0, 1e-323]));
+        let m = Point::new([f64::MAX, -f64::MAX]);
+        for k in 1..10 {
+            let x = f64::from(k) / 10.0;
+            assert!(affine(&m, &0.0, &x, &1.0, &m).is_finite(), "{x}");
+        }
+        let (r, l) = split_value(&0.0, &5e-324, &0.5, &1e-323);
+        assert_eq!((r, l), (0.0, 0.0));
     }
 
     #[test]

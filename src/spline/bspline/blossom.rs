@@ -31,7 +31,7 @@
 use super::BSpline;
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::spline::bspline::basis::ratios;
+use crate::spline::bspline::basis::affine;
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
 use crate::{Error, Result};
 
@@ -203,7 +203,10 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// weights are ratios of knot distances as in [`BSpline::de_boor_with`], but outside
     /// [0, 1] when an argument is outside the support (the polar form extends the piece to
     /// all real arguments). The arguments need not be sorted, nor lie in the span or the
-    /// domain. Unlike evaluation, no level is skipped when an argument is a knot, so the
+    /// domain. With `f64`, a weight that overflows (an argument far beyond a support of
+    /// subnormal width) is not multiplied: that coordinate is recomputed as
+    /// a + (u − tᵢ)(b − a)/(t_j − tᵢ) on mantissas and exponents, so a zero stays zero
+    /// instead of ∞·0 = NaN, and only a value truly beyond the range is an overflow. Unlike evaluation, no level is skipped when an argument is a knot, so the
     /// count is always d(d + 1)/2.
     ///
     /// Follows [PPB, §5.5, Obs. 5] and [SPL, §6–7].
@@ -291,8 +294,7 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
             // Going down, each combination reads level k − 1 (as de_boor_level does).
             for j in (k..=d).rev() {
                 let i = span - d + j;
-                let (right, left) = ratios(&t[i], u, &t[i + d + 1 - k]);
-                q[j] = Point::combine(&q[j - 1], &right, &q[j], &left);
+                q[j] = affine(&q[j - 1], &t[i], u, &t[i + d + 1 - k], &q[j]);
                 counter.arithmetic_operation();
             }
         }

@@ -26,7 +26,7 @@
 use super::BSpline;
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::spline::bspline::basis::ratios;
+use crate::spline::bspline::basis::affine;
 use crate::spline::scalar::{Point, Scalar};
 use crate::Result;
 
@@ -186,7 +186,9 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// t_μ, 0 if u is not a knot, at most d) and replace them level by level by the affine
     /// combinations c_i^k = (1 − α) c_{i−1}^{k−1} + α c_i^{k−1} with
     /// α = (u − tᵢ)/(t_{i+d+1−k} − tᵢ), each weight computed as its own ratio of two knot
-    /// distances (both in [0, 1], so knots a subnormal distance apart do not overflow). At
+    /// distances (both in [0, 1], so knots a subnormal distance apart do not overflow). With
+    /// `f64` a combination of two coordinates near `f64::MAX` that rounds past it is clamped
+    /// back between them, where the exact value lies, so the point is always finite. At
     /// the end of the domain the last non-empty span is used (the closed last interval), and
     /// at an interior knot the span on its right (right-continuous).
     ///
@@ -348,8 +350,7 @@ pub(super) fn de_boor_level<S: Scalar, const D: usize, C: Counter>(
     for j in (k..q.len()).rev() {
         let i = span - d + j;
         let (lo, hi) = (&t[i], &t[i + d + 1 - k]);
-        let (right, left) = ratios(lo, u, hi);
-        q[j] = Point::combine(&q[j - 1], &right, &q[j], &left);
+        q[j] = affine(&q[j - 1], lo, u, hi, &q[j]);
         counter.arithmetic_operation();
     }
 }

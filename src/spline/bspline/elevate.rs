@@ -51,11 +51,11 @@
 //! at every parameter, the knot multiplicities are as stated, elevating a B-spline without
 //! interior knots is Bézier elevation, and elevating by t at once equals t elevations by one.
 
-use super::basis::ratios;
+use super::basis::affine;
 use super::{BSpline, KnotVector};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::spline::scalar::{Point, Scalar};
+use crate::spline::scalar::Scalar;
 use crate::{Error, Result};
 
 /// Degree elevation, declared.
@@ -201,9 +201,8 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
             let (start, end) = (&tau[i], &tau[i + 1]);
             let mut q = pieces[i].control().to_vec();
             for (k, x) in a[j + 1..=j + degree].iter().enumerate() {
-                let (right, left) = ratios(start, x, end);
                 for l in 0..degree - k {
-                    q[l] = Point::combine(&q[l], &right, &q[l + 1], &left);
+                    q[l] = affine(&q[l], start, x, end, &q[l + 1]);
                     counter.arithmetic_operation();
                 }
             }

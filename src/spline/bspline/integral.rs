@@ -22,6 +22,7 @@
 //! curve, it is zero at t_d, and its value at t_n is the sum of the integrals of the Bézier
 //! pieces (an independent oracle).
 
+use super::basis::product_quotient;
 use super::{BSpline, KnotVector};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
@@ -126,13 +127,17 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         for (i, c) in self.control().iter().enumerate() {
             // ∫ N_i = (t_{i+d+1} − tᵢ)/(d + 1); halves first where the width overflows.
             let (lo, hi) = (&t[i], &t[i + d + 1]);
+            // c·width/(d + 1) rounded once: width/(d + 1) alone underflows for subnormal widths.
             let width = hi.clone() - lo;
             let step = if width.is_finite() {
-                c.clone() * &(width / &order)
+                Point::new(std::array::from_fn(|j| {
+                    product_quotient(&c[j], &width, &order)
+                }))
             } else {
                 let half = S::from_ratio(1, 2);
                 let w = hi.clone() * &half - &(lo.clone() * &half);
-                c.clone() * &(w / &order) * S::from_i64(2)
+                Point::new(std::array::from_fn(|j| product_quotient(&c[j], &w, &order)))
+                    * S::from_i64(2)
             };
             let next = sums[i].clone() + &step;
             counter.arithmetic_operation();

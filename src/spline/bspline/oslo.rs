@@ -44,7 +44,7 @@
 //! Invariants the tests check (exactly on rationals): the result equals the knots inserted one
 //! by one with [`BSpline::insert`], and the curve is unchanged at every parameter.
 
-use super::basis::ratios;
+use super::basis::split_value;
 use super::refine::checked_new_knots;
 use super::{BSpline, KnotVector};
 use crate::complexity::{on, Bound, Declaration};
@@ -183,16 +183,43 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
             }
             let mu = widest_span(knots, &tau[j], &tau[j + d + 1], counter);
             discrete_bsplines(t, d, mu, &tau[j + 1..=j + d], &mut weights, counter);
+            let window = &old[mu - d..=mu];
             let mut p = Point::zero();
-            for (w, c) in weights.iter().zip(&old[mu - d..=mu]) {
+            for (w, c) in weights.iter().zip(window) {
                 p += &(c.clone() * w);
                 counter.arithmetic_operation();
+            }
+            if !p.is_finite() {
+                // With f64 near f64::MAX: the weights are convex, so the exact coordinate lies
+                // between the window's extremes, where it is clamped back to.
+                p = clamp_to_window(p, window);
             }
             control.push(p);
         }
         let refined = KnotVector::valid_by_construction(d, tau);
         BSpline::derived(control, refined, "Oslo refinement")
     }
+}
+
+/// Each non-finite coordinate of `p` (a convex combination of `window` that rounded past
+/// the double range) replaced by the window's largest coordinate (for +∞) or smallest.
+fn clamp_to_window<S: Scalar, const D: usize>(
+    p: Point<S, D>,
+    window: &[Point<S, D>],
+) -> Point<S, D> {
+    Point::new(std::array::from_fn(|j| {
+        if p[j].is_finite() {
+            return p[j].clone();
+        }
+        let up = p[j] > S::zero();
+        let mut best = window[0][j].clone();
+        for c in &window[1..] {
+            if (up && c[j] > best) || (!up && c[j] < best) {
+                best = c[j].clone();
+            }
+        }
+        best
+    }))
 }
 
 /// The widest non-empty span [t_μ, t_{μ+1}) of the domain that meets [lo, hi), starting from
@@ -247,10 +274,10 @@ fn discrete_bsplines<S: Scalar, C: Counter>(
         let mut saved = S::zero();
         for r in 0..k {
             let (lo, hi) = (&t[mu + r + 1 - k], &t[mu + r + 1]);
-            let (right, left) = ratios(lo, xk, hi);
             let v = std::mem::replace(&mut weights[r], S::zero());
-            weights[r] = saved + right * &v;
-            saved = left * &v;
+            let (right, left) = split_value(&v, lo, xk, hi);
+            weights[r] = saved + right;
+            saved = left;
             counter.arithmetic_operation();
         }
         weights.push(saved);

@@ -35,7 +35,7 @@
 //! by one with [`BSpline::insert`] and the Oslo algorithm's result, and the curve is unchanged
 //! at every parameter.
 
-use super::basis::ratios;
+use super::basis::{affine, ratios};
 use super::{BSpline, KnotVector};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
@@ -178,7 +178,13 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
                 } else {
                     // α = (hi − xj)/(hi − lo) weighs ĉ_{j−1}; its complement ĉ_j.
                     let (alpha, beta) = local_coordinates(lo, xj, hi);
-                    q[j - 1] = Point::combine(&q[j - 1], &alpha, &q[j], &beta);
+                    let p = Point::combine(&q[j - 1], &alpha, &q[j], &beta);
+                    // Near f64::MAX a convex combination can round past it: recomputed.
+                    q[j - 1] = if p.is_finite() {
+                        p
+                    } else {
+                        affine(&q[j - 1], lo, xj, hi, &q[j])
+                    };
                     counter.arithmetic_operation();
                 }
             }
