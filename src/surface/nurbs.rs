@@ -358,8 +358,19 @@ impl<S: Scalar, const D: usize> Surface<S, D> for NurbsSurface<S, D> {
         self.numerator.domain()
     }
 
+    /// The quotient of the homogeneous form's two points, each the sum of its non-zero
+    /// basis products (the same point as [`NurbsSurface::de_boor`], with less work).
     fn eval(&self, u: &S, v: &S) -> Result<Point<S, D>> {
-        self.de_boor(u, v)
+        let a = self.numerator.eval(u, v)?;
+        let w = self.denominator.eval(u, v)?;
+        let p = a / &w[0];
+        if p.is_finite() {
+            Ok(p)
+        } else {
+            Err(Error::Overflow {
+                what: "NURBS surface point",
+            })
+        }
     }
 }
 
