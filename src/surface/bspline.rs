@@ -301,7 +301,8 @@ impl<S: Scalar, const D: usize> Surface<S, D> for BSplineSurface<S, D> {
     /// [`BSplineSurface::de_boor`], a third of its work for bicubics).
     fn eval(&self, u: &S, v: &S) -> Result<Point<S, D>> {
         self.domain().check(u, v)?;
-        let p = super::tensor_grid::tensor_point(self.net(), &self.u_knots, self.v_knots(), u, v)?;
+        let (bu, bv) = (self.u_knots.basis(u)?, self.v_knots().basis(v)?);
+        let p = super::tensor_grid::tensor_point(self.net(), &bu, &bv);
         if p.is_finite() {
             Ok(p)
         } else {

@@ -24,6 +24,7 @@ use super::bezier_grid::BezierPatchGrid;
 use super::bspline::BSplineSurface;
 use super::direction::Direction;
 use super::net::ControlNet;
+use super::tensor_grid::tensor_point;
 use super::traits::{Surface, SurfaceDerivative, SurfaceDomain};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
@@ -359,10 +360,14 @@ impl<S: Scalar, const D: usize> Surface<S, D> for NurbsSurface<S, D> {
     }
 
     /// The quotient of the homogeneous form's two points, each the sum of its non-zero
-    /// basis products (the same point as [`NurbsSurface::de_boor`], with less work).
+    /// basis products from one pair of bases (the same point as [`NurbsSurface::de_boor`],
+    /// with less work).
     fn eval(&self, u: &S, v: &S) -> Result<Point<S, D>> {
-        let a = self.numerator.eval(u, v)?;
-        let w = self.denominator.eval(u, v)?;
+        // One pair of bases serves both halves: they share their knots.
+        self.domain().check(u, v)?;
+        let (bu, bv) = (self.u_knots().basis(u)?, self.v_knots().basis(v)?);
+        let a = tensor_point(self.numerator.net(), &bu, &bv);
+        let w = tensor_point(self.denominator.net(), &bu, &bv);
         let p = a / &w[0];
         if p.is_finite() {
             Ok(p)

@@ -266,34 +266,26 @@ pub(crate) fn tensor_grid_with<S: Scalar, const E: usize, C: Counter>(
     Ok(out)
 }
 
-/// The tensor-product spline at one pair (u, v): Σₖ Σₗ Nₖ(u) Mₗ(v) c_{k,l} over the
-/// (p + 1)(q + 1) terms that do not vanish, from the two bases; what `eval` of the B-spline
-/// and NURBS surfaces runs (their declared algorithm, de Boor on the rows, costs a triangle
-/// of affine combinations per row instead of one multiply-add per term).
-///
-/// # Errors
-///
-/// As [`KnotVector::basis`]: a parameter NaN, infinite or outside its domain (both named
-/// `"u"`).
+/// The tensor-product spline at one pair (u, v) from the bases `bu` of u and `bv` of v:
+/// Σₖ Σₗ Nₖ(u) Mₗ(v) c_{k,l} over the (p + 1)(q + 1) terms that do not vanish; what `eval`
+/// of the B-spline and NURBS surfaces runs (their declared algorithm, de Boor on the rows,
+/// costs a triangle of affine combinations per row instead of one multiply-add per term).
 ///
 /// # Complexity
 ///
-/// Θ((p + 1)(q + 1)D + p² + q²) after the two span searches, O(p + q + D) space.
+/// Θ((p + 1)(q + 1)D) time, O(D) space.
 pub(crate) fn tensor_point<S: Scalar, const E: usize>(
     net: &ControlNet<S, E>,
-    ku: &KnotVector<S>,
-    kv: &KnotVector<S>,
-    u: &S,
-    v: &S,
-) -> Result<Point<S, E>> {
-    let (bu, bv) = (ku.basis(u)?, kv.basis(v)?);
+    bu: &Basis<S>,
+    bv: &Basis<S>,
+) -> Point<S, E> {
     let mut sum = Point::<S, E>::zero();
     for (k, nk) in bu.values().iter().enumerate() {
         let row = net.row(bu.first() + k);
         let q = weighted_sum(bv.values(), bv.first(), |l| &row[l], &mut NoCount);
         sum += &(q * nk);
     }
-    Ok(sum)
+    sum
 }
 
 /// Σₖ wₖ · point(first + k), one counted multiply-add per term.
