@@ -17,8 +17,8 @@
 //!
 //! # Complexity
 //!
-//! For bidegree (m, n) in R^D: [`Surface::eval`] Θ(mn·D) (the Horner-type scheme of the
-//! curves per row, then once in u); rows first by de Casteljau Θ((m + 1)n² + m²)·D, columns
+//! For bidegree (m, n) in R^D: [`Surface::eval`] is the tensor de Casteljau algorithm; rows
+//! first by de Casteljau Θ((m + 1)n² + m²)·D, columns
 //! first Θ((n + 1)m² + n²)·D, the tensor de Casteljau Θ(mn·min(m, n) + |m − n|²)·D; O((m +
 //! n)D) auxiliary space beyond a copy of the net.
 //!
@@ -461,9 +461,8 @@ impl<S: Scalar, const D: usize> BezierPatch<S, D> {
     }
 }
 
-/// A polynomial patch evaluates on the whole plane; [`Surface::eval`] evaluates each row's
-/// curve at v by the curves' own scheme ([`Curve::eval`] of [`Bezier`]: the Horner-type
-/// scheme, Θ(n) per row), then the curve of the row values at u: Θ(mn·D).
+/// A polynomial patch evaluates on the whole plane; [`Surface::eval`] is the tensor de
+/// Casteljau algorithm, Θ((mn·min(m, n) + |m − n|²)D).
 impl<S: Scalar, const D: usize> Surface<S, D> for BezierPatch<S, D> {
     fn domain(&self) -> SurfaceDomain<S> {
         SurfaceDomain {
