@@ -59,8 +59,9 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// [`Error::InvalidParameter`] named `"u"` if `u` is NaN, infinite or outside the domain;
     /// [`Error::InvalidParameter`] named `"times"` if the multiplicity of `u` would exceed the
     /// degree (naming both); [`Error::LimitExceeded`] beyond
-    /// [`MAX_KNOTS`](crate::limits::MAX_KNOTS); [`Error::Overflow`] if, with `f64`, a new
-    /// control point rounds beyond the double range.
+    /// [`MAX_KNOTS`](crate::limits::MAX_KNOTS). No overflow: every new control point is a
+    /// convex combination of old ones, and with `f64` one that would round past `f64::MAX`
+    /// is clamped between its two points, where the exact value lies.
     ///
     /// # Complexity
     ///

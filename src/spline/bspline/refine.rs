@@ -67,7 +67,8 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// outside the domain [t_d, t_n] (naming its index and value), or for a knot whose
     /// multiplicity would exceed the degree (naming the knot and the multiplicity);
     /// [`Error::LimitExceeded`] beyond [`MAX_KNOTS`](crate::limits::MAX_KNOTS);
-    /// [`Error::Overflow`] if, with `f64`, a new control point rounds beyond the double range.
+    /// No overflow: every new control point is a convex combination of old ones, and with
+    /// `f64` one that would round past `f64::MAX` is clamped between its two points.
     ///
     /// # Complexity
     ///
