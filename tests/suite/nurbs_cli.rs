@@ -4,28 +4,9 @@
 #![cfg(all(feature = "cli", feature = "exact"))]
 
 use crate::common::{assert_rejected, run_json};
-use crate::spline_common::{q, qi, Q};
+use crate::spline_common::{json_list, json_points, q, qi, Q};
 use compgeo::spline::{Curve, KnotVector, Nurbs, Point};
 use serde_json::Value;
-
-fn list(v: &Value) -> Vec<Q> {
-    v.as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_str().unwrap().parse().unwrap())
-        .collect()
-}
-
-fn pts(v: &Value) -> Vec<Point<Q, 2>> {
-    v.as_array()
-        .unwrap()
-        .iter()
-        .map(|p| {
-            let c = list(p);
-            Point::new([c[0].clone(), c[1].clone()])
-        })
-        .collect()
-}
 
 const QUARTER: &str = "[[1,0],[1,1],[0,1]]";
 const WEIGHTS: &str = "[1,1,2]";
@@ -55,7 +36,7 @@ fn the_quarter_circle_is_exact_and_matches_the_library() {
             ],
             None,
         );
-        let p = &pts(&Value::Array(vec![out["point"].clone()]))[0];
+        let p = &json_points(&Value::Array(vec![out["point"].clone()]))[0];
         assert_eq!(p, &s.eval(&u).unwrap());
         assert_eq!(p[0].clone() * &p[0] + p[1].clone() * &p[1], qi(1), "at {u}");
     }
@@ -79,20 +60,20 @@ fn insert_elevate_and_pieces_match_the_library() {
     };
     let out = args("insert", &["--u", "1/3"]);
     let want = s.insert(&q(1, 3), 1).unwrap();
-    assert_eq!(pts(&out["control"]), want.control().to_vec());
-    assert_eq!(list(&out["weights"]), want.weights().to_vec());
+    assert_eq!(json_points(&out["control"]), want.control().to_vec());
+    assert_eq!(json_list(&out["weights"]), want.weights().to_vec());
     let out = args("elevate", &[]);
     let want = s.elevate(1).unwrap();
-    assert_eq!(pts(&out["control"]), want.control().to_vec());
-    assert_eq!(list(&out["weights"]), want.weights().to_vec());
+    assert_eq!(json_points(&out["control"]), want.control().to_vec());
+    assert_eq!(json_list(&out["weights"]), want.weights().to_vec());
     let out = args("to-bezier", &[]);
     let (breaks, pieces) = s.to_bezier().unwrap();
-    assert_eq!(list(&out["breakpoints"]), breaks);
+    assert_eq!(json_list(&out["breakpoints"]), breaks);
     let printed = out["pieces"].as_array().unwrap();
     assert_eq!(printed.len(), pieces.len());
     for (got, b) in printed.iter().zip(&pieces) {
-        assert_eq!(pts(&got["control"]), b.control().to_vec());
-        assert_eq!(list(&got["weights"]), b.weights().to_vec());
+        assert_eq!(json_points(&got["control"]), b.control().to_vec());
+        assert_eq!(json_list(&got["weights"]), b.weights().to_vec());
     }
 }
 

@@ -4,29 +4,9 @@
 #![cfg(all(feature = "cli", feature = "exact"))]
 
 use crate::common::{assert_rejected, run_json};
-use crate::spline_common::{q, qi, Q};
+use crate::spline_common::{json_list, json_points, q, qi, Q};
 use compgeo::spline::subdivision::{four_point, lane_riesenfeld, limit_points, Mask, Topology};
 use compgeo::spline::Point;
-use serde_json::Value;
-
-fn list(v: &Value) -> Vec<Q> {
-    v.as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_str().unwrap().parse().unwrap())
-        .collect()
-}
-
-fn pts(v: &Value) -> Vec<Point<Q, 2>> {
-    v.as_array()
-        .unwrap()
-        .iter()
-        .map(|p| {
-            let c = list(p);
-            Point::new([c[0].clone(), c[1].clone()])
-        })
-        .collect()
-}
 
 const POLYGON: &str = r#"[[0, 0], [4, 1], ["7/2", 5], [-1, 3], [0, "1/3"]]"#;
 
@@ -76,13 +56,13 @@ fn lane_riesenfeld_and_chaikin_print_the_library_results() {
             Topology::Open
         };
         let b = lane_riesenfeld(&polygon(), degree, rounds, topology).unwrap();
-        assert_eq!(pts(&out["points"]), b, "{args:?}");
+        assert_eq!(json_points(&out["points"]), b, "{args:?}");
         assert_eq!(
-            pts(&out["limit"]),
+            json_points(&out["limit"]),
             limit_points(&b, degree, topology).unwrap()
         );
         let mask = Mask::<Q>::lane_riesenfeld(degree).unwrap();
-        assert_eq!(list(&out["mask"]["coefficients"]), mask.coefficients());
+        assert_eq!(json_list(&out["mask"]["coefficients"]), mask.coefficients());
         assert_eq!(out["mask"]["start"], 0);
         assert_eq!(out["degree"], degree);
         assert_eq!(out["closed"], closed);
@@ -121,7 +101,7 @@ fn four_point_prints_the_library_result_from_stdin_too() {
             Topology::Open
         };
         assert_eq!(
-            pts(&out["points"]),
+            json_points(&out["points"]),
             four_point(&polygon(), &w, 2, topology).unwrap()
         );
         assert_eq!(out["tension"].as_str().unwrap().parse::<Q>().unwrap(), w);

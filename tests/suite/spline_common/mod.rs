@@ -22,6 +22,30 @@ pub fn qi(n: i64) -> Q {
     q(n, 1)
 }
 
+/// The exact numbers of a JSON list the command line printed with `--exact` (strings such
+/// as "47/18").
+#[cfg(feature = "cli")]
+pub fn json_list(v: &serde_json::Value) -> Vec<Q> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_str().unwrap().parse().unwrap())
+        .collect()
+}
+
+/// The exact plane points of a JSON list of pairs printed with `--exact`.
+#[cfg(feature = "cli")]
+pub fn json_points(v: &serde_json::Value) -> Vec<Point<Q, 2>> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|p| {
+            let c = json_list(p);
+            Point::new([c[0].clone(), c[1].clone()])
+        })
+        .collect()
+}
+
 /// A point of the plane with rational coordinates.
 pub fn p2(x: Q, y: Q) -> Point<Q, 2> {
     Point::new([x, y])
