@@ -18,22 +18,22 @@
 //! Each group first checks that the libraries agree within 1e-9, so the times compare the
 //! same work. Run one group with e.g. `cargo bench --bench surface -- surface/nurbs-grid`.
 //!
-//! Point estimates (2026-12-03, the 2-core machine, load about 1–2; the eval groups after
-//! the basis-product `eval`, the tessellation at the commit that added this file):
+//! Point estimates (2026-12-03, the 2-core machine, load about 1–2; each group at its
+//! latest change):
 //!
 //! | group | compgeo | truck-geometry | curvo | ours/truck | ours/curvo |
 //! |---|---|---|---|---|---|
 //! | NURBS, 10⁶ calls | `eval` 164 ms | `subs` 484 ms | `point_at` 142 ms | 0.34 | 1.16 |
 //! | NURBS, 1000 × 1000 grid | `eval_grid` 19.3 ms | `subs` 457 ms | `regular_sample_points` 24.9 ms | 0.042 | 0.78 |
 //! | Bézier bicubic, 10⁶ calls | `eval` 76.7 ms, `de_casteljau` 75.5 ms | `subs` 113 ms | `point_at` 71.0 ms | 0.68 | 1.08 |
-//! | tessellate, 101 × 101 vertices | `tessellate` 55.2 ms | (none) | `regular_tessellate` 4.13 ms | | 13 |
+//! | tessellate, 101 × 101 vertices | `tessellate` 0.82 ms | (none) | `regular_tessellate` 4.09 ms | | 0.20 |
 //!
 //! The target of issue 16 holds: the grid at 0.042× truck's per-point time and below curvo's
 //! grid sampling. One call per point stays near curvo's (each call computes both bases in
-//! fresh vectors). `tessellate` is generic over any surface and evaluates the point and both
-//! partials per vertex by the surface's own `partial_at` (the quotient rule, exactly, for
-//! NURBS), where curvo samples points and normals on its precomputed bases: the gap a grid
-//! path for the partials would close.
+//! fresh vectors). `tessellate` asks the surface for its points and first partials on the
+//! whole grid (`SurfaceDerivative::first_partials_on_grid`), which spline surfaces answer
+//! from each parameter's basis and derivative computed once: 55 ms before, when every
+//! vertex ran `eval` and two `partial_at` (the exact quotient rule for NURBS).
 
 use compgeo::gen::{points, PointKind};
 use compgeo::spline::{KnotVector, Point};

@@ -338,4 +338,8 @@ impl<S: Scalar, const D: usize> SurfaceDerivative<S, D> for BSplineSurface<S, D>
             })
         }
     }
+
+    fn first_partials_on_grid(&self, us: &[S], vs: &[S]) -> Result<Vec<[Point<S, D>; 3]>> {
+        self.first_partials_grid(us, vs)
+    }
 }

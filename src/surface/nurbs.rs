@@ -417,4 +417,8 @@ impl<S: Scalar, const D: usize> SurfaceDerivative<S, D> for NurbsSurface<S, D> {
             })
         }
     }
+
+    fn first_partials_on_grid(&self, us: &[S], vs: &[S]) -> Result<Vec<[Point<S, D>; 3]>> {
+        self.first_partials_grid(us, vs)
+    }
 }

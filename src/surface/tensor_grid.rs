@@ -10,7 +10,7 @@
 //! a point costs d_v + 1 multiply-adds of points; a row of the grid adds the isoparametric
 //! curve's n_v(d_u + 1).
 
-use super::{BSplineSurface, ControlNet, NurbsSurface};
+use super::{BSplineSurface, ControlNet, NurbsSurface, Surface};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::{Basis, KnotVector, Point, Scalar};
@@ -264,6 +264,108 @@ pub(crate) fn tensor_grid_with<S: Scalar, const E: usize, C: Counter>(
         }
     }
     Ok(out)
+}
+
+/// The tensor-product spline and its first partials `[c, c_u, c_v]` at every pair of `us`
+/// × `vs`, row-major, from each parameter's basis and first derivatives computed once; the
+/// same scheme as [`tensor_grid_with`], with the derivative rows beside the value rows.
+///
+/// # Errors
+///
+/// As [`KnotVector::basis_derivatives`] (a parameter NaN, infinite or outside its domain);
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) beyond
+/// [`MAX_SAMPLES`](crate::limits::MAX_SAMPLES) points, before anything is allocated.
+///
+/// # Complexity
+///
+/// Θ((N_u·N_v·(q + 1) + N_u·N·(p + 1))D + N_u·p² + N_v·q²) time, Θ(N_u·N_v·D) space.
+pub(crate) fn tensor_grid_first_partials<S: Scalar, const E: usize>(
+    net: &ControlNet<S, E>,
+    ku: &KnotVector<S>,
+    kv: &KnotVector<S>,
+    us: &[S],
+    vs: &[S],
+) -> Result<Vec<[Point<S, E>; 3]>> {
+    limits::SAMPLES.check(us.len() as u128 * vs.len() as u128)?;
+    let v_bases = vs
+        .iter()
+        .map(|v| kv.basis_derivatives(v, 1))
+        .collect::<Result<Vec<_>>>()?;
+    let mut out = Vec::with_capacity(us.len() * vs.len());
+    let mut values = vec![Point::<S, E>::zero(); net.columns()];
+    let mut slopes = values.clone();
+    for u in us {
+        let b = ku.basis_derivatives(u, 1)?;
+        for l in 0..net.columns() {
+            let column = |k: usize| net.get(k, l);
+            values[l] = weighted_sum(b.order(0), b.first(), column, &mut NoCount);
+            slopes[l] = weighted_sum(b.order(1), b.first(), column, &mut NoCount);
+        }
+        for m in &v_bases {
+            let (m0, m1, first) = (m.order(0), m.order(1), m.first());
+            out.push([
+                weighted_sum(m0, first, |l| &values[l], &mut NoCount),
+                weighted_sum(m0, first, |l| &slopes[l], &mut NoCount),
+                weighted_sum(m1, first, |l| &values[l], &mut NoCount),
+            ]);
+        }
+    }
+    Ok(out)
+}
+
+/// Checks every parameter of a grid against the surface's domain, naming it `"u"` or `"v"`.
+fn check_grid<S: Scalar>(domain: &super::SurfaceDomain<S>, us: &[S], vs: &[S]) -> Result<()> {
+    let (Some(u0), Some(v0)) = (us.first(), vs.first()) else {
+        return Ok(());
+    };
+    us.iter().try_for_each(|u| domain.check(u, v0))?;
+    vs.iter().try_for_each(|v| domain.check(u0, v))
+}
+
+impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
+    /// [`SurfaceDerivative::first_partials_on_grid`] by the bases and first derivatives of
+    /// every parameter, once.
+    pub(super) fn first_partials_grid(&self, us: &[S], vs: &[S]) -> Result<Vec<[Point<S, D>; 3]>> {
+        check_grid(&self.domain(), us, vs)?;
+        let grid = tensor_grid_first_partials(self.net(), self.u_knots(), self.v_knots(), us, vs)?;
+        if grid.iter().flatten().all(Point::is_finite) {
+            Ok(grid)
+        } else {
+            Err(Error::Overflow {
+                what: "B-spline surface point or partial",
+            })
+        }
+    }
+}
+
+impl<S: Scalar, const D: usize> NurbsSurface<S, D> {
+    /// [`SurfaceDerivative::first_partials_on_grid`] by the quotient rule on the grids of the
+    /// homogeneous form: c = a/w, c_u = (a_u − w_u·c)/w, c_v = (a_v − w_v·c)/w [SPL, §14].
+    pub(super) fn first_partials_grid(&self, us: &[S], vs: &[S]) -> Result<Vec<[Point<S, D>; 3]>> {
+        let (numerator, denominator) = self.homogeneous();
+        check_grid(&numerator.domain(), us, vs)?;
+        let a =
+            tensor_grid_first_partials(numerator.net(), self.u_knots(), self.v_knots(), us, vs)?;
+        let w =
+            tensor_grid_first_partials(denominator.net(), self.u_knots(), self.v_knots(), us, vs)?;
+        let grid: Vec<[Point<S, D>; 3]> = a
+            .into_iter()
+            .zip(&w)
+            .map(|([a, a_u, a_v], [w, w_u, w_v])| {
+                let c = a / &w[0];
+                let c_u = (a_u - &(c.clone() * &w_u[0])) / &w[0];
+                let c_v = (a_v - &(c.clone() * &w_v[0])) / &w[0];
+                [c, c_u, c_v]
+            })
+            .collect();
+        if grid.iter().flatten().all(Point::is_finite) {
+            Ok(grid)
+        } else {
+            Err(Error::Overflow {
+                what: "NURBS surface point or partial",
+            })
+        }
+    }
 }
 
 /// The tensor-product spline at one pair (u, v) from the bases `bu` of u and `bv` of v:

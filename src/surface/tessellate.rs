@@ -156,22 +156,20 @@ pub fn tessellate_at_with<S: Scalar, F: SurfaceDerivative<S, 3>, C: Counter>(
     let (nu, nv) = (us.len(), vs.len());
     let mut positions = Vec::with_capacity(nu * nv);
     let mut normals = Vec::with_capacity(nu * nv);
-    for u in us {
-        for v in vs {
-            let p = surface.eval(u, v)?.to_f64();
-            if !p.is_finite() {
-                return Err(Error::Overflow {
-                    what: "tessellation vertex",
-                });
-            }
-            let du = surface.partial_at(u, v, 1, 0)?;
-            let dv = surface.partial_at(u, v, 0, 1)?;
-            counter.arithmetic_operation();
-            counter.arithmetic_operation();
-            counter.arithmetic_operation();
-            positions.push(*p.coords());
-            normals.push(unit(&cross(&du, &dv)));
+    // The surface's own grid of points and partials: spline surfaces compute each
+    // parameter's basis once for the whole grid.
+    for [p, du, dv] in surface.first_partials_on_grid(us, vs)? {
+        let p = p.to_f64();
+        if !p.is_finite() {
+            return Err(Error::Overflow {
+                what: "tessellation vertex",
+            });
         }
+        counter.arithmetic_operation();
+        counter.arithmetic_operation();
+        counter.arithmetic_operation();
+        positions.push(*p.coords());
+        normals.push(unit(&cross(&du, &dv)));
     }
     let index = |i: usize, j: usize| i * nv + j;
     let mut triangles = Vec::with_capacity(2 * (nu - 1) * (nv - 1));

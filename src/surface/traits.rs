@@ -81,4 +81,31 @@ pub trait SurfaceDerivative<S: Scalar, const D: usize>: Surface<S, D> {
     /// As [`Surface::eval`]; [`Error::Overflow`](crate::Error::Overflow) if, with `f64`, the
     /// derivative is beyond the double range.
     fn partial_at(&self, u: &S, v: &S, r: usize, s: usize) -> Result<Point<S, D>>;
+
+    /// The point and the first partials `[c, c_u, c_v]` at every pair of `us` × `vs`,
+    /// row-major (entry i·|vs| + j at (uᵢ, vⱼ)): what [`tessellate`](super::tessellate)
+    /// needs. The default calls [`Surface::eval`] and [`SurfaceDerivative::partial_at`] at
+    /// every pair; the B-spline and NURBS surfaces compute each parameter's basis and its
+    /// derivative once for the whole grid.
+    ///
+    /// # Errors
+    ///
+    /// As [`SurfaceDerivative::partial_at`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(N·E) for N pairs and E the cost of one evaluation (the default), Θ(N·D) space.
+    fn first_partials_on_grid(&self, us: &[S], vs: &[S]) -> Result<Vec<[Point<S, D>; 3]>> {
+        let mut out = Vec::with_capacity(us.len().saturating_mul(vs.len()));
+        for u in us {
+            for v in vs {
+                out.push([
+                    self.eval(u, v)?,
+                    self.partial_at(u, v, 1, 0)?,
+                    self.partial_at(u, v, 0, 1)?,
+                ]);
+            }
+        }
+        Ok(out)
+    }
 }

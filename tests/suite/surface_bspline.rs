@@ -218,7 +218,7 @@ proptest! {
     }
 
     #[test]
-    fn grid_evaluation_is_the_double_sum_at_every_pair(s in surface(), ws in prop::collection::vec(1i64..=6, 49)) {
+    fn grid_evaluation_is_the_double_sum_and_eval_at_every_pair(s in surface(), ws in prop::collection::vec(1i64..=6, 49)) {
         // The parameters out of order and repeated: the grid does not care.
         let mut us = samples(s.u_knots());
         us.reverse();
@@ -235,8 +235,24 @@ proptest! {
                 prop_assert_eq!(&rational[i * vs.len() + j], &n.eval(u, v).unwrap());
             }
         }
+        // The points and first partials on the grid (what tessellation uses) are eval's and
+        // partial_at's, for both surfaces.
+        let partials = s.first_partials_on_grid(&us, &vs).unwrap();
+        let rational_partials = n.first_partials_on_grid(&us, &vs).unwrap();
+        for (i, u) in us.iter().enumerate() {
+            for (j, v) in vs.iter().enumerate() {
+                let k = i * vs.len() + j;
+                prop_assert_eq!(&partials[k][0], &s.eval(u, v).unwrap());
+                prop_assert_eq!(&partials[k][1], &s.partial_at(u, v, 1, 0).unwrap());
+                prop_assert_eq!(&partials[k][2], &s.partial_at(u, v, 0, 1).unwrap());
+                prop_assert_eq!(&rational_partials[k][0], &n.eval(u, v).unwrap());
+                prop_assert_eq!(&rational_partials[k][1], &n.partial_at(u, v, 1, 0).unwrap());
+                prop_assert_eq!(&rational_partials[k][2], &n.partial_at(u, v, 0, 1).unwrap());
+            }
+        }
         let outside = s.v_knots().bounds().1.clone() + qi(1);
-        prop_assert!(s.eval_grid(&us, &[outside]).is_err());
+        prop_assert!(s.eval_grid(&us, std::slice::from_ref(&outside)).is_err());
+        prop_assert!(n.first_partials_on_grid(&us, &[outside]).is_err());
     }
 
     #[test]
