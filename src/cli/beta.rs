@@ -11,7 +11,7 @@
 //! `--rounds` rounds at `--c`.
 
 use super::bezier::{point, points, scalars, JsonScalar};
-use super::input::{parse_number_arrays, read_text};
+use super::input::{inline_or_stdin, parse_number_arrays};
 use super::interpolate::to_points;
 use super::output::print_json;
 use super::CliError;
@@ -20,7 +20,6 @@ use crate::spline::{parse_scalar, BetaParameters, BetaSpline, Matrix4};
 use clap::{Args, Subcommand};
 use num_rational::BigRational;
 use serde_json::{json, Value};
-use std::path::Path;
 
 /// Arguments of `compgeo beta`.
 #[derive(Debug, Args)]
@@ -123,11 +122,7 @@ pub(super) fn run(args: BetaArgs) -> Result<(), CliError> {
             }
         }
         Op::Eval { shape, control, .. } | Op::Subdivide { shape, control, .. } => {
-            let text = if control.control == "-" {
-                read_text(Path::new("-"))?
-            } else {
-                control.control.clone()
-            };
+            let text = inline_or_stdin(&control.control)?;
             let rows = parse_number_arrays(&text)?;
             let d = rows[0].len();
             by_scalar_and_dimension!(

@@ -10,7 +10,7 @@
 //! is 0 without `--exact` and an error with it). Errors name the control point and
 //! coordinate, or the entry of the result, that is wrong.
 
-use super::input::{parse_number_arrays, read_text};
+use super::input::{inline_or_stdin, parse_number_arrays};
 use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
@@ -21,7 +21,6 @@ use crate::spline::{
 use clap::{Args, Subcommand};
 use num_rational::BigRational;
 use serde_json::{json, Value};
-use std::path::Path;
 
 /// Arguments of `compgeo bezier`.
 #[derive(Debug, Args)]
@@ -93,11 +92,7 @@ pub(super) fn run(args: BezierArgs) -> Result<(), CliError> {
         | Op::Elevate { curve, .. }
         | Op::Derivative { curve, .. } => curve,
     };
-    let text = if curve.control == "-" {
-        read_text(Path::new("-"))?
-    } else {
-        curve.control.clone()
-    };
+    let text = inline_or_stdin(&curve.control)?;
     let rows = parse_number_arrays(&text)?;
     let d = rows[0].len();
     let value =

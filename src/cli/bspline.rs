@@ -15,7 +15,7 @@
 //! coordinate, the knot, or the parameter that is wrong, with its value.
 
 use super::bezier::{point, points, scalars, JsonScalar};
-use super::input::{parse_number_arrays, parse_number_list, read_text};
+use super::input::{inline_or_stdin, parse_number_arrays, parse_number_list};
 use super::interpolate::{read_scalars, to_points, Knots};
 use super::output::print_json;
 use super::CliError;
@@ -24,7 +24,6 @@ use crate::spline::{parameterise, parse_scalar, BSpline, CurveDerivative, KnotVe
 use clap::{Args, Subcommand};
 use num_rational::BigRational;
 use serde_json::{json, Value};
-use std::path::Path;
 
 /// Arguments of `compgeo bspline`.
 #[derive(Debug, Args)]
@@ -227,11 +226,7 @@ pub(super) fn run(args: BsplineArgs) -> Result<(), CliError> {
             return print_json(&value);
         }
     };
-    let text = if curve.control == "-" {
-        read_text(Path::new("-"))?
-    } else {
-        curve.control.clone()
-    };
+    let text = inline_or_stdin(&curve.control)?;
     let rows = parse_number_arrays(&text)?;
     let d = rows[0].len();
     let value = by_scalar_and_dimension!(

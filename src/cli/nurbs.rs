@@ -9,7 +9,7 @@
 
 use super::bezier::{point, points, scalars, JsonScalar};
 use super::bspline::{curve_of, CurveArgs};
-use super::input::{parse_number_arrays, read_text};
+use super::input::{inline_or_stdin, parse_number_arrays};
 use super::interpolate::read_scalars;
 use super::output::print_json;
 use super::CliError;
@@ -17,7 +17,6 @@ use crate::count::Counts;
 use crate::spline::{parse_scalar, Nurbs};
 use clap::{Args, Subcommand};
 use serde_json::{json, Value};
-use std::path::Path;
 
 /// Arguments of `compgeo nurbs`.
 #[derive(Debug, Args)]
@@ -82,11 +81,7 @@ pub(super) fn run(args: NurbsArgs) -> Result<(), CliError> {
         | Op::Elevate { curve, .. }
         | Op::ToBezier { curve } => curve,
     };
-    let text = if rational.curve.control == "-" {
-        read_text(Path::new("-"))?
-    } else {
-        rational.curve.control.clone()
-    };
+    let text = inline_or_stdin(&rational.curve.control)?;
     let rows = parse_number_arrays(&text)?;
     let d = rows[0].len();
     let value = by_scalar_and_dimension!(

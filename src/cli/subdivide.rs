@@ -11,7 +11,7 @@
 //! scheme or a degree other than 2 with Chaikin) are errors, not silently ignored.
 
 use super::bezier::{points, scalars, JsonScalar};
-use super::input::{parse_number_arrays, read_text};
+use super::input::{inline_or_stdin, parse_number_arrays};
 use super::interpolate::to_points;
 use super::output::print_json;
 use super::CliError;
@@ -22,7 +22,6 @@ use crate::spline::subdivision::{
 use crate::spline::{parse_scalar, Point};
 use clap::{Args, ValueEnum};
 use serde_json::{json, Value};
-use std::path::Path;
 
 /// Arguments of `compgeo subdivide`.
 #[derive(Debug, Args)]
@@ -64,11 +63,7 @@ enum Scheme {
 /// Runs `compgeo subdivide`.
 pub(super) fn run(args: SubdivideArgs) -> Result<(), CliError> {
     check_options(&args)?;
-    let text = if args.points == "-" {
-        read_text(Path::new("-"))?
-    } else {
-        args.points.clone()
-    };
+    let text = inline_or_stdin(&args.points)?;
     let rows = parse_number_arrays(&text)?;
     let d = rows[0].len();
     let value = by_scalar_and_dimension!(args.exact, d, "points", run_typed(&args, &rows))?;

@@ -19,7 +19,7 @@
 //! OBJ (`--obj`) and ASCII STL (`--stl`), printing its size, or prints the mesh itself.
 
 use super::bezier::{point, points, read_number, scalars, JsonScalar};
-use super::input::{parse_number_arrays, parse_number_grid, read_text};
+use super::input::{inline_or_stdin, parse_number_arrays, parse_number_grid};
 use super::interpolate::{read_scalars, to_points, Knots};
 use super::output::print_json;
 use super::CliError;
@@ -252,7 +252,7 @@ pub(super) fn run(args: SurfaceArgs) -> Result<(), CliError> {
         | Op::Elevate { surface, .. }
         | Op::Tessellate { surface, .. } => surface,
         Op::Interpolate { points, data, .. } => {
-            let grid = parse_number_grid(&stdin_or(points)?)?;
+            let grid = parse_number_grid(&inline_or_stdin(points)?)?;
             let d = grid[0][0].len();
             let value =
                 by_scalar_and_dimension!(data.exact, d, "points", construct(&args.op, &grid))?;
@@ -278,7 +278,7 @@ pub(super) fn run(args: SurfaceArgs) -> Result<(), CliError> {
             return print_json(&value);
         }
     };
-    let grid = parse_number_grid(&stdin_or(&net.net)?)?;
+    let grid = parse_number_grid(&inline_or_stdin(&net.net)?)?;
     let d = grid[0][0].len();
     if let Op::Tessellate {
         u_segments,
@@ -324,15 +324,6 @@ pub(super) fn run(args: SurfaceArgs) -> Result<(), CliError> {
         run_typed(&args.op, net, &grid)
     )?;
     print_json(&value)
-}
-
-/// The text of a `--net`/`--points` argument, or standard input for `-`.
-fn stdin_or(text: &str) -> Result<String, CliError> {
-    if text == "-" {
-        read_text(Path::new("-"))
-    } else {
-        Ok(text.to_string())
-    }
 }
 
 /// Any of the surfaces the command reads, behind the surface traits.

@@ -117,6 +117,19 @@ impl GraphInput {
     }
 }
 
+/// The JSON given inline on the command line, or all of standard input for `-` (the curve
+/// and surface commands' `--control`, `--points`, `--net`).
+///
+/// # Errors
+/// As [`read_text`] for `-`.
+pub fn inline_or_stdin(text: &str) -> Result<String, CliError> {
+    if text == "-" {
+        read_text(Path::new("-"))
+    } else {
+        Ok(text.to_string())
+    }
+}
+
 /// Reads all of `path` (or stdin for `-`) as UTF-8 text.
 ///
 /// # Errors
