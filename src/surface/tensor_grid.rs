@@ -13,7 +13,7 @@
 use super::{BSplineSurface, ControlNet, NurbsSurface, Surface};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
-use crate::spline::{Basis, KnotVector, Point, Scalar};
+use crate::spline::{Basis, BasisDerivatives, KnotVector, Point, Scalar};
 use crate::{limits, Error, Result};
 
 /// [`BSplineSurface::eval_grid`], declared.
@@ -267,41 +267,31 @@ pub(crate) fn tensor_grid_with<S: Scalar, const E: usize, C: Counter>(
 }
 
 /// The tensor-product spline and its first partials `[c, c_u, c_v]` at every pair of `us`
-/// × `vs`, row-major, from each parameter's basis and first derivatives computed once; the
-/// same scheme as [`tensor_grid_with`], with the derivative rows beside the value rows.
-///
-/// # Errors
-///
-/// As [`KnotVector::basis_derivatives`] (a parameter NaN, infinite or outside its domain);
-/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) beyond
-/// [`MAX_SAMPLES`](crate::limits::MAX_SAMPLES) points, before anything is allocated.
+/// × `vs`, row-major, from each parameter's basis and first derivatives (`bases`, computed
+/// once); the same scheme as [`tensor_grid_with`], with the derivative rows beside the
+/// value rows.
 ///
 /// # Complexity
 ///
 /// Θ((N_u·N_v·(q + 1) + N_u·N·(p + 1))D + N_u·p² + N_v·q²) time, Θ(N_u·N_v·D) space.
 pub(crate) fn tensor_grid_first_partials<S: Scalar, const E: usize>(
     net: &ControlNet<S, E>,
-    ku: &KnotVector<S>,
-    kv: &KnotVector<S>,
-    us: &[S],
-    vs: &[S],
-) -> Result<Vec<[Point<S, E>; 3]>> {
-    limits::SAMPLES.check(us.len() as u128 * vs.len() as u128)?;
-    let v_bases = vs
-        .iter()
-        .map(|v| kv.basis_derivatives(v, 1))
-        .collect::<Result<Vec<_>>>()?;
-    let mut out = Vec::with_capacity(us.len() * vs.len());
+    bases: &FirstDerivativeBases<S>,
+) -> Vec<[Point<S, E>; 3]> {
+    let FirstDerivativeBases {
+        u: u_bases,
+        v: v_bases,
+    } = bases;
+    let mut out = Vec::with_capacity(u_bases.len() * v_bases.len());
     let mut values = vec![Point::<S, E>::zero(); net.columns()];
     let mut slopes = values.clone();
-    for u in us {
-        let b = ku.basis_derivatives(u, 1)?;
+    for b in u_bases {
         for l in 0..net.columns() {
             let column = |k: usize| net.get(k, l);
             values[l] = weighted_sum(b.order(0), b.first(), column, &mut NoCount);
             slopes[l] = weighted_sum(b.order(1), b.first(), column, &mut NoCount);
         }
-        for m in &v_bases {
+        for m in v_bases {
             let (m0, m1, first) = (m.order(0), m.order(1), m.first());
             out.push([
                 weighted_sum(m0, first, |l| &values[l], &mut NoCount),
@@ -310,7 +300,36 @@ pub(crate) fn tensor_grid_first_partials<S: Scalar, const E: usize>(
             ]);
         }
     }
-    Ok(out)
+    out
+}
+
+/// The values and first derivatives of the non-zero basis functions at every parameter of
+/// a grid, computed once and shared by the two halves of a NURBS surface's homogeneous form.
+pub(crate) struct FirstDerivativeBases<S> {
+    u: Vec<BasisDerivatives<S>>,
+    v: Vec<BasisDerivatives<S>>,
+}
+
+impl<S: Scalar> FirstDerivativeBases<S> {
+    /// The bases of `us` on `ku` and of `vs` on `kv`.
+    ///
+    /// # Errors
+    ///
+    /// As [`KnotVector::basis_derivatives`];
+    /// [`Error::LimitExceeded`](crate::Error::LimitExceeded) beyond
+    /// [`MAX_SAMPLES`](crate::limits::MAX_SAMPLES) grid points, before anything is allocated.
+    fn new(ku: &KnotVector<S>, kv: &KnotVector<S>, us: &[S], vs: &[S]) -> Result<Self> {
+        limits::SAMPLES.check(us.len() as u128 * vs.len() as u128)?;
+        let of = |t: &KnotVector<S>, xs: &[S]| {
+            xs.iter()
+                .map(|x| t.basis_derivatives(x, 1))
+                .collect::<Result<Vec<_>>>()
+        };
+        Ok(FirstDerivativeBases {
+            u: of(ku, us)?,
+            v: of(kv, vs)?,
+        })
+    }
 }
 
 /// Checks every parameter of a grid against the surface's domain, naming it `"u"` or `"v"`.
@@ -327,7 +346,8 @@ impl<S: Scalar, const D: usize> BSplineSurface<S, D> {
     /// every parameter, once.
     pub(super) fn first_partials_grid(&self, us: &[S], vs: &[S]) -> Result<Vec<[Point<S, D>; 3]>> {
         check_grid(&self.domain(), us, vs)?;
-        let grid = tensor_grid_first_partials(self.net(), self.u_knots(), self.v_knots(), us, vs)?;
+        let bases = FirstDerivativeBases::new(self.u_knots(), self.v_knots(), us, vs)?;
+        let grid = tensor_grid_first_partials(self.net(), &bases);
         if grid.iter().flatten().all(Point::is_finite) {
             Ok(grid)
         } else {
@@ -344,10 +364,10 @@ impl<S: Scalar, const D: usize> NurbsSurface<S, D> {
     pub(super) fn first_partials_grid(&self, us: &[S], vs: &[S]) -> Result<Vec<[Point<S, D>; 3]>> {
         let (numerator, denominator) = self.homogeneous();
         check_grid(&numerator.domain(), us, vs)?;
-        let a =
-            tensor_grid_first_partials(numerator.net(), self.u_knots(), self.v_knots(), us, vs)?;
-        let w =
-            tensor_grid_first_partials(denominator.net(), self.u_knots(), self.v_knots(), us, vs)?;
+        // One set of bases serves both halves: they share their knots.
+        let bases = FirstDerivativeBases::new(self.u_knots(), self.v_knots(), us, vs)?;
+        let a = tensor_grid_first_partials(numerator.net(), &bases);
+        let w = tensor_grid_first_partials(denominator.net(), &bases);
         let grid: Vec<[Point<S, D>; 3]> = a
             .into_iter()
             .zip(&w)
