@@ -46,6 +46,7 @@
 //! | `predicate/cmp-lex`: [`geometry::cmp_lex`] | O(1) | O(1) | comparisons: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
 //! | `predicate/cmp-line-dist`: [`geometry::cmp_line_dist`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/products.rs` |
 //! | `predicate/cmp-rect-area`: [`geometry::cmp_rect_area`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/products.rs` |
+//! | `predicate/cmp-rect-perimeter`: [`geometry::cmp_rect_perimeter`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/products.rs` |
 //! | `sort/bubble`: [`sort::bubble_sort`] | Θ(n²) | O(1) | comparisons: exactly n(n − 1)/2 comparisons | [RD, §2.1] | `src/sort/bubble.rs` |
 //! | `sort/selection`: [`sort::selection_sort`] | Θ(n²) | O(1) | comparisons: exactly n(n − 1)/2 comparisons | [RD, §2.1] | `src/sort/selection.rs` |
 //! | `sort/insertion`: [`sort::insertion_sort`] | Θ(n²) in the worst case and Θ(n) on sorted input | O(1) | comparisons: at most n(n − 1)/2 comparisons, n − 1 on sorted input | [RD, §2.1] | `src/sort/insertion.rs` |
@@ -79,6 +80,7 @@
 //! | `antipodal-pairs/calipers`: [`calipers::ConvexPolygon::antipodal_pairs`] | Θ(h) | O(h) | orientation tests: at most h, one exact direction test per step; at most 3h/2 pairs | [RD, §2.3] | `src/calipers/antipodal.rs` |
 //! | `width/calipers`: [`calipers::ConvexPolygon::width`] | Θ(h) after the hull | O(1) | orientation tests: at most 9h for the calipers, and h − 1 exact distance comparisons | [RD, §2.3] | `src/calipers/width.rs` |
 //! | `min-area-rectangle/calipers`: [`calipers::ConvexPolygon::min_area_rectangle`] | Θ(h) after the hull | O(1) | orientation tests: at most 9h for the calipers, and h − 1 exact area comparisons | [RD, §2.3] | `src/calipers/rectangle.rs` |
+//! | `min-perimeter-rectangle/calipers`: [`calipers::ConvexPolygon::min_perimeter_rectangle`] | Θ(h) after the hull | O(1) | orientation tests: at most 9h for the calipers, and h − 1 exact perimeter comparisons | [RD, §2.3] | `src/calipers/perimeter_rectangle.rs` |
 //! | `delaunay/incremental`: [`delaunay::incremental`] | O(n log n) expected on every input | O(n) | incircle tests: about 9 in-circle and 7 orientation tests per point on uniform input | [RD, §2.4] | `src/delaunay/incremental.rs` |
 //! | `delaunay/divide-and-conquer`: [`delaunay::divide_and_conquer`] | O(n log n) in the worst case | O(n) | incircle tests: about 29 in-circle tests per point at 10⁵ uniform points | [RD, §2.4] | `src/delaunay/divide_conquer.rs` |
 //! | `delaunay/lawson`: [`delaunay::lawson`] | O(n²) in the worst case | O(n) | incircle tests: one per edge check, Θ(n²) on a parabola | [RD, §2.4] | `src/delaunay/lawson.rs` |

@@ -100,7 +100,7 @@ enum Command {
     /// Convex hull of a point set: vertex indices counter-clockwise from the lexicographically smallest
     Hull(hull::HullArgs),
     /// Diameter of a point set (the farthest pair, by rotating calipers or brute force), its
-    /// width and minimum-area rectangle
+    /// width and minimum-area and minimum-perimeter rectangles
     Diameter(diameter::DiameterArgs),
     /// Bézier curves: evaluate, split, elevate or differentiate, in f64 or exact rationals
     Bezier(bezier::BezierArgs),
