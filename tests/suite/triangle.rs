@@ -1,0 +1,497 @@
+//! Triangular Bézier patches, checked exactly on the rational back end against independent
+//! oracles: the Bernstein basis against the trinomial expansion (it sums to 1); de Casteljau
+//! against the Bernstein sum; the exact counts; bad input as named errors.
+
+use crate::spline_common::{q, qi, Q};
+use compgeo::count::Counts;
+use compgeo::spline::Point;
+use compgeo::surface::triangle::{bernstein_basis, multi_indices, storage_index};
+use compgeo::surface::{Barycentric, BarycentricVector, Surface, TriangularPatch};
+use compgeo::Error;
+use proptest::prelude::*;
+
+/// A small rational, also negative and above one.
+fn rational() -> impl Strategy<Value = Q> {
+    (-12i64..=12, 1i64..=6).prop_map(|(n, d)| q(n, d))
+}
+
+/// A point of the plane of the reference triangle (inside or outside it).
+fn point() -> impl Strategy<Value = Barycentric<Q>> {
+    (rational(), rational()).prop_map(|(u, v)| Barycentric::from_uv(u, v).unwrap())
+}
+
+/// A direction of the plane.
+fn direction() -> impl Strategy<Value = BarycentricVector<Q>> {
+    (rational(), rational()).prop_map(|(du, dv)| BarycentricVector::from_uv(du, dv).unwrap())
+}
+
+/// A patch of degree `degrees` with small integer points in R³.
+fn patch_of(
+    degrees: std::ops::RangeInclusive<usize>,
+) -> impl Strategy<Value = TriangularPatch<Q, 3>> {
+    degrees
+        .prop_flat_map(|n| {
+            prop::collection::vec((-9i64..=9, -9i64..=9, -9i64..=9), (n + 1) * (n + 2) / 2)
+        })
+        .prop_map(|pts| {
+            TriangularPatch::new(
+                pts.into_iter()
+                    .map(|(x, y, z)| Point::new([qi(x), qi(y), qi(z)]))
+                    .collect(),
+            )
+            .unwrap()
+        })
+}
+
+fn patch() -> impl Strategy<Value = TriangularPatch<Q, 3>> {
+    patch_of(0..=6)
+}
+
+/// n!/(i! j! k!) as a rational.
+fn multinomial(i: usize, j: usize, k: usize) -> Q {
+    let fact = |m: usize| (1..=m as i64).fold(qi(1), |f, x| f * qi(x));
+    fact(i + j + k) / (fact(i) * fact(j) * fact(k))
+}
+
+fn pow(x: &Q, e: usize) -> Q {
+    (0..e).fold(qi(1), |p, _| p * x)
+}
+
+/// B^n_{ijk}(x) from its definition, an oracle independent of the library's ratios.
+fn bernstein(n: usize, [i, j, k]: [usize; 3], x: &Barycentric<Q>) -> Q {
+    let [u, v, w] = x.coords();
+    debug_assert_eq!(i + j + k, n);
+    multinomial(i, j, k) * pow(u, i) * pow(v, j) * pow(w, k)
+}
+
+/// Σ b_{ijk} B^n_{ijk}(x) from the definition.
+fn bernstein_sum(b: &TriangularPatch<Q, 3>, x: &Barycentric<Q>) -> Point<Q, 3> {
+    let n = b.degree();
+    multi_indices(n).fold(Point::zero(), |acc, i| {
+        acc + b.get(i[0], i[1], i[2]).unwrap().clone() * bernstein(n, i, x)
+    })
+}
+
+fn c3(n: usize) -> u64 {
+    (n * (n + 1) * (n + 2) / 6) as u64
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    #[test]
+    fn the_basis_is_the_trinomial_expansion_and_sums_to_one(n in 0usize..=6, x in point()) {
+        let basis = bernstein_basis(n, &x).unwrap();
+        prop_assert_eq!(basis.len(), (n + 1) * (n + 2) / 2);
+        for (at, i) in multi_indices(n).enumerate() {
+            prop_assert_eq!(storage_index(n, i), Some(at));
+            prop_assert_eq!(&basis[at], &bernstein(n, i, &x));
+        }
+        prop_assert_eq!(basis.iter().fold(qi(0), |s, b| s + b), qi(1));
+    }
+
+    #[test]
+    fn de_casteljau_is_the_bernstein_sum(b in patch(), x in point()) {
+        let n = b.degree();
+        let want = bernstein_sum(&b, &x);
+        let mut c = Counts::default();
+        prop_assert_eq!(b.de_casteljau_with(&x, &mut c), want.clone());
+        prop_assert_eq!(c.arithmetic_operations, c3(n));
+        let mut c = Counts::default();
+        prop_assert_eq!(b.bernstein_sum_with(&x, &mut c), want.clone());
+        prop_assert_eq!(c.arithmetic_operations, ((n + 1) * (n + 2) / 2) as u64);
+        // The surface in (u, v) with w = 1 − u − v.
+        let [u, v, _] = x.coords();
+        prop_assert_eq!(b.eval(u, v).unwrap(), want);
+    }
+
+    #[test]
+    fn f64_evaluation_is_close_to_exact(b in patch(), x in point()) {
+        let exact = b.de_casteljau(&x).to_f64();
+        let [u, v, _] = x.coords().clone().map(|c| compgeo::spline::Scalar::to_f64(&c));
+        let xf = Barycentric::from_uv(u, v).unwrap();
+        let bf = b.to_f64();
+        let scale = 1.0 + exact.coords().iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        for got in [bf.de_casteljau(&xf), bf.bernstein_sum(&xf)] {
+            for (g, w) in got.coords().iter().zip(exact.coords()) {
+                prop_assert!((g - w).abs() <= 1e-9 * scale * 1e4, "{} vs {}", g, w);
+            }
+        }
+    }
+}
+
+#[test]
+fn the_vertices_are_the_corner_points() {
+    // [PPB, §10.2]: b(p) = b_{n00}, b(q) = b_{0n0}, b(r) = b_{00n}.
+    let n = 3;
+    let b: TriangularPatch<Q, 3> = TriangularPatch::new(
+        multi_indices(n)
+            .map(|[i, j, k]| {
+                Point::new([
+                    qi(i as i64 * 7 - 3),
+                    qi(j as i64 * j as i64),
+                    qi(k as i64 - 5),
+                ])
+            })
+            .collect(),
+    )
+    .unwrap();
+    for (t, corner) in [[3, 0, 0], [0, 3, 0], [0, 0, 3]].into_iter().enumerate() {
+        let x = Barycentric::vertex(t);
+        assert_eq!(
+            &b.de_casteljau(&x),
+            b.get(corner[0], corner[1], corner[2]).unwrap()
+        );
+        let basis = bernstein_basis(n, &x).unwrap();
+        let at = storage_index(n, corner).unwrap();
+        for (k, value) in basis.iter().enumerate() {
+            assert_eq!(*value, if k == at { qi(1) } else { qi(0) });
+        }
+    }
+}
+
+#[test]
+fn bad_input_is_a_named_error() {
+    let p = |x: f64| Point::new([x, 0.0, 0.0]);
+    assert!(matches!(
+        TriangularPatch::<f64, 3>::new(vec![]),
+        Err(Error::Empty { .. })
+    ));
+    for count in [2, 4, 5, 7, 11] {
+        assert!(matches!(
+            TriangularPatch::new(vec![p(0.0); count]),
+            Err(Error::InvalidParameter {
+                name: "control points",
+                ..
+            })
+        ));
+    }
+    assert!(matches!(
+        TriangularPatch::with_degree(2, vec![p(0.0); 10]),
+        Err(Error::InvalidParameter {
+            name: "control points",
+            ..
+        })
+    ));
+    assert!(matches!(
+        TriangularPatch::new(vec![p(0.0), p(1.0), p(f64::NAN)]),
+        Err(Error::NonFinite { index: 2, .. })
+    ));
+    assert!(matches!(
+        TriangularPatch::new(vec![p(f64::INFINITY), p(1.0), p(0.0)]),
+        Err(Error::NonFinite { index: 0, .. })
+    ));
+    for n in [usize::MAX, 1 << 40, (1 << 16) + 1, 20_000] {
+        assert!(matches!(
+            TriangularPatch::with_degree(n, vec![p(0.0)]),
+            Err(Error::LimitExceeded { .. })
+        ));
+        assert!(matches!(
+            bernstein_basis(n, &Barycentric::<f64>::vertex(0)),
+            Err(Error::LimitExceeded { .. })
+        ));
+    }
+    // Barycentric coordinates sum to exactly one, directions to exactly zero.
+    let name = |e: Error| match e {
+        Error::InvalidParameter { name, .. } => name,
+        other => panic!("{other}"),
+    };
+    assert_eq!(
+        name(Barycentric::new(0.5, 0.5, 0.5).unwrap_err()),
+        "barycentric"
+    );
+    assert_eq!(
+        name(Barycentric::new(0.7, 0.2, 0.1).unwrap_err()),
+        "barycentric"
+    ); // rounds to 1 − 2⁻⁵³
+    assert_eq!(
+        name(Barycentric::new(q(1, 10), q(2, 10), q(6, 10)).unwrap_err()),
+        "barycentric"
+    );
+    assert!(Barycentric::new(q(1, 10), q(2, 10), q(7, 10)).is_ok());
+    assert_eq!(
+        name(Barycentric::new(f64::NAN, 0.5, 0.5).unwrap_err()),
+        "barycentric"
+    );
+    assert_eq!(
+        name(Barycentric::from_uv(f64::INFINITY, 0.0).unwrap_err()),
+        "barycentric"
+    );
+    assert_eq!(
+        name(Barycentric::from_uv(f64::MAX, -f64::MAX).unwrap_err()),
+        "barycentric"
+    );
+    assert_eq!(
+        name(BarycentricVector::new(1.0, 1.0, -1.0).unwrap_err()),
+        "direction"
+    );
+    assert_eq!(
+        name(BarycentricVector::new(f64::NAN, 1.0, -1.0).unwrap_err()),
+        "direction"
+    );
+    assert_eq!(
+        name(BarycentricVector::from_uv(f64::MAX, f64::MAX).unwrap_err()),
+        "direction"
+    );
+    // The surface traits name u and v.
+    let b = TriangularPatch::new(vec![p(0.0), p(1.0), p(2.0)]).unwrap();
+    assert_eq!(name(b.eval(&f64::NAN, &0.0).unwrap_err()), "u");
+    assert_eq!(name(b.eval(&0.0, &f64::INFINITY).unwrap_err()), "v");
+}
+
+#[test]
+fn f64_beyond_the_range_is_infinite_not_a_panic() {
+    let p = |x: f64| Point::new([x]);
+    let b = TriangularPatch::new(vec![p(f64::MAX), p(-f64::MAX), p(f64::MAX)]).unwrap();
+    let x = Barycentric::from_uv(1e10, -1e10).unwrap();
+    assert!(!b.de_casteljau(&x).is_finite());
+}
+
+/// x + d, a point.
+fn shifted(x: &Barycentric<Q>, d: &BarycentricVector<Q>) -> Barycentric<Q> {
+    let [u, v, w] = x.coords();
+    let [du, dv, dw] = d.coords();
+    Barycentric::new(u.clone() + du, v.clone() + dv, w.clone() + dw).unwrap()
+}
+
+/// α·x + (1 − α)·y.
+fn affine(alpha: &Q, x: &Barycentric<Q>, y: &Barycentric<Q>) -> Barycentric<Q> {
+    let c: Vec<Q> = (0..3)
+        .map(|t| alpha.clone() * &x.coords()[t] + (qi(1) - alpha) * &y.coords()[t])
+        .collect();
+    Barycentric::new(c[0].clone(), c[1].clone(), c[2].clone()).unwrap()
+}
+
+/// D_{d₁} ⋯ D_{d_r} b(x) term by term: ∂B^n_i/∂u_t = n B^{n−1}_{i−e_t} [PPB, §10.5], so the
+/// derivative of the sum is n!/(n − r)! Σ_i b_i Σ_{t₁…t_r} d₁_{t₁} ⋯ d_r_{t_r}
+/// B^{n−r}_{i − e_{t₁} − ⋯ − e_{t_r}}.
+fn derivative_of_the_sum(
+    b: &TriangularPatch<Q, 3>,
+    x: &Barycentric<Q>,
+    directions: &[BarycentricVector<Q>],
+) -> Point<Q, 3> {
+    let n = b.degree();
+    let r = directions.len();
+    if r > n {
+        return Point::zero();
+    }
+    let factor = (0..r).fold(qi(1), |f, s| f * qi((n - s) as i64));
+    let mut total = Point::zero();
+    for i in multi_indices(n) {
+        let mut weight = qi(0);
+        for tuple in 0..3usize.pow(r as u32) {
+            let mut e = i;
+            let mut coefficient = qi(1);
+            let mut rest = tuple;
+            let mut inside = true;
+            for d in directions {
+                let t = rest % 3;
+                rest /= 3;
+                coefficient = coefficient * &d.coords()[t];
+                if e[t] == 0 {
+                    inside = false;
+                    break;
+                }
+                e[t] -= 1;
+            }
+            if inside {
+                weight += coefficient * bernstein(n - r, e, x);
+            }
+        }
+        total = total + b.get(i[0], i[1], i[2]).unwrap().clone() * weight;
+    }
+    total * factor
+}
+
+/// b[d₁, …, d_r, x, …, x] by inclusion and exclusion over the affine arguments:
+/// Σ_{S ⊆ {1..r}} (−1)^{r − |S|} b[y₁, …, y_r, x, …, x], y_s = x + d_s for s ∈ S, else x.
+fn blossom_with_directions(
+    b: &TriangularPatch<Q, 3>,
+    x: &Barycentric<Q>,
+    directions: &[BarycentricVector<Q>],
+) -> Point<Q, 3> {
+    let n = b.degree();
+    let r = directions.len();
+    let mut total = Point::zero();
+    for subset in 0..1usize << r {
+        let mut args: Vec<Barycentric<Q>> = directions
+            .iter()
+            .enumerate()
+            .map(|(s, d)| {
+                if subset >> s & 1 == 1 {
+                    shifted(x, d)
+                } else {
+                    x.clone()
+                }
+            })
+            .collect();
+        args.extend(std::iter::repeat_n(x.clone(), n - r));
+        let value = b.blossom(&args).unwrap();
+        if (r - subset.count_ones() as usize) % 2 == 0 {
+            total = total + value;
+        } else {
+            total = total - value;
+        }
+    }
+    total
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    #[test]
+    fn the_blossom_is_symmetric_multi_affine_and_the_patch_on_its_diagonal(
+        b in patch_of(1..=5),
+        xs in prop::collection::vec(point(), 5),
+        y in point(),
+        alpha in rational(),
+        rotate in 0usize..5,
+    ) {
+        let n = b.degree();
+        let args = xs[..n].to_vec();
+        let mut c = Counts::default();
+        let value = b.blossom_with(&args, &mut c).unwrap();
+        prop_assert_eq!(c.arithmetic_operations, c3(n));
+        // Symmetric: any rotation and the reversal of the arguments.
+        let mut turned = args.clone();
+        turned.rotate_left(rotate % n);
+        prop_assert_eq!(b.blossom(&turned).unwrap(), value.clone());
+        turned.reverse();
+        prop_assert_eq!(b.blossom(&turned).unwrap(), value.clone());
+        // Affine in the first argument (hence in every one).
+        let mut at_y = args.clone();
+        at_y[0] = y.clone();
+        let mut mixed = args.clone();
+        mixed[0] = affine(&alpha, &args[0], &y);
+        let want = value.clone() * alpha.clone() + b.blossom(&at_y).unwrap() * (qi(1) - &alpha);
+        prop_assert_eq!(b.blossom(&mixed).unwrap(), want);
+        // The diagonal.
+        let x = &args[0];
+        prop_assert_eq!(b.blossom(&vec![x.clone(); n]).unwrap(), b.de_casteljau(x));
+    }
+
+    #[test]
+    fn the_blossom_at_the_vertices_is_the_net(b in patch_of(0..=5)) {
+        let n = b.degree();
+        for i in multi_indices(n) {
+            let args: Vec<Barycentric<Q>> = (0..3)
+                .flat_map(|t| std::iter::repeat_n(Barycentric::vertex(t), i[t]))
+                .collect();
+            prop_assert_eq!(&b.blossom(&args).unwrap(), b.get(i[0], i[1], i[2]).unwrap());
+        }
+    }
+
+    #[test]
+    fn derivatives_are_the_derivatives_of_the_bernstein_sum(
+        b in patch_of(0..=5),
+        x in point(),
+        directions in prop::collection::vec(direction(), 0..=4),
+    ) {
+        let n = b.degree();
+        let r = directions.len();
+        let mut c = Counts::default();
+        let got = b.directional_derivative_with(&x, &directions, &mut c);
+        prop_assert_eq!(&got, &derivative_of_the_sum(&b, &x, &directions));
+        let want_counts = match r {
+            0 => c3(n),
+            r if r <= n => c3(n) + 1,
+            _ => 0,
+        };
+        prop_assert_eq!(c.arithmetic_operations, want_counts);
+        if r <= n {
+            // n!/(n − r)! b[d₁ … d_r x … x] [PPB, §11.6], the blossom taken at points only.
+            let factor = (0..r).fold(qi(1), |f, s| f * qi((n - s) as i64));
+            prop_assert_eq!(&got, &(blossom_with_directions(&b, &x, &directions) * factor));
+        }
+        // Directions commute.
+        let mut reversed = directions.clone();
+        reversed.reverse();
+        prop_assert_eq!(b.directional_derivative(&x, &reversed), got);
+    }
+
+    #[test]
+    fn the_partials_in_u_and_v_are_derivatives_along_p_minus_r_and_q_minus_r(
+        b in patch_of(0..=5),
+        x in point(),
+        r in 0usize..=3,
+        s in 0usize..=3,
+    ) {
+        use compgeo::surface::SurfaceDerivative;
+        let du = BarycentricVector::new(qi(1), qi(0), qi(-1)).unwrap();
+        let dv = BarycentricVector::new(qi(0), qi(1), qi(-1)).unwrap();
+        let mut directions = vec![du; r];
+        directions.extend(std::iter::repeat_n(dv, s));
+        let [u, v, _] = x.coords();
+        prop_assert_eq!(
+            b.partial_at(u, v, r, s).unwrap(),
+            derivative_of_the_sum(&b, &x, &directions)
+        );
+        if r + s == 0 {
+            let grid = b.first_partials_on_grid(&[u.clone()], &[v.clone()]).unwrap();
+            prop_assert_eq!(&grid[0][0], &b.de_casteljau(&x));
+            prop_assert_eq!(&grid[0][1], &b.partial_at(u, v, 1, 0).unwrap());
+            prop_assert_eq!(&grid[0][2], &b.partial_at(u, v, 0, 1).unwrap());
+        }
+    }
+
+    #[test]
+    fn the_three_pieces_of_a_subdivision_reproduce_the_patch(
+        b in patch(),
+        x in point(),
+        y in point(),
+    ) {
+        let n = b.degree();
+        let mut c = Counts::default();
+        let pieces = b.subdivide_with(&x, &mut c).unwrap();
+        prop_assert_eq!(c.arithmetic_operations, c3(n));
+        for (t, piece) in pieces.iter().enumerate() {
+            // y in piece t is y_t·x + Σ_{s ≠ t} y_s e_s in p q r.
+            let mapped: Vec<Q> = (0..3)
+                .map(|s| {
+                    let own = if s == t { qi(0) } else { y.coords()[s].clone() };
+                    own + y.coords()[t].clone() * &x.coords()[s]
+                })
+                .collect();
+            let mapped = Barycentric::new(mapped[0].clone(), mapped[1].clone(), mapped[2].clone()).unwrap();
+            prop_assert_eq!(piece.de_casteljau(&y), b.de_casteljau(&mapped));
+            // Its net is the blossom at its vertices [PPB, §11.2].
+            let corners: Vec<Barycentric<Q>> = (0..3)
+                .map(|s| if s == t { x.clone() } else { Barycentric::vertex(s) })
+                .collect();
+            for i in multi_indices(n) {
+                let args: Vec<Barycentric<Q>> = (0..3)
+                    .flat_map(|s| std::iter::repeat_n(corners[s].clone(), i[s]))
+                    .collect();
+                prop_assert_eq!(&b.blossom(&args).unwrap(), piece.get(i[0], i[1], i[2]).unwrap());
+            }
+        }
+    }
+
+    #[test]
+    fn the_four_way_split_reproduces_the_patch(b in patch(), y in point()) {
+        let n = b.degree();
+        let mut c = Counts::default();
+        let pieces = b.split_four_with(&mut c).unwrap();
+        prop_assert_eq!(c.arithmetic_operations, 6 * c3(n));
+        let half = q(1, 2);
+        let at = |coords: Vec<Q>| Barycentric::new(coords[0].clone(), coords[1].clone(), coords[2].clone()).unwrap();
+        for t in 0..3 {
+            // Corner t at y is the patch at (y + e_t)/2.
+            let mapped = at((0..3)
+                .map(|s| (y.coords()[s].clone() + if s == t { qi(1) } else { qi(0) }) * &half)
+                .collect());
+            prop_assert_eq!(pieces[t].de_casteljau(&y), b.de_casteljau(&mapped));
+        }
+        // The middle at y is the patch at (1 − y)/2.
+        let mapped = at((0..3).map(|s| (qi(1) - &y.coords()[s]) * &half).collect());
+        prop_assert_eq!(pieces[3].de_casteljau(&y), b.de_casteljau(&mapped));
+        // Its vertices are the midpoints of the edges opposite p, q and r.
+        let mids = [[0, 1, 1], [1, 0, 1], [1, 1, 0]].map(|m| at(m.iter().map(|&c| q(c, 2)).collect()));
+        for i in multi_indices(n) {
+            let args: Vec<Barycentric<Q>> = (0..3)
+                .flat_map(|s| std::iter::repeat_n(mids[s].clone(), i[s]))
+                .collect();
+            prop_assert_eq!(&b.blossom(&args).unwrap(), pieces[3].get(i[0], i[1], i[2]).unwrap());
+        }
+    }
+}
