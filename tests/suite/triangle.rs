@@ -218,7 +218,7 @@ fn bad_input_is_a_named_error() {
         "barycentric"
     );
     assert_eq!(
-        name(Barycentric::from_uv(f64::MAX, -f64::MAX).unwrap_err()),
+        name(Barycentric::from_uv(-f64::MAX, -f64::MAX).unwrap_err()),
         "barycentric"
     );
     assert_eq!(
@@ -494,4 +494,250 @@ proptest! {
             prop_assert_eq!(&b.blossom(&args).unwrap(), pieces[3].get(i[0], i[1], i[2]).unwrap());
         }
     }
+}
+
+/// The multinomial n!/(i! j! k!) of a multi-index.
+fn multinomial_of(i: [usize; 3]) -> Q {
+    multinomial(i[0], i[1], i[2])
+}
+
+/// Zhou's formula [PPB, §11.9]: d_k = Σ_i b_i C(n; i) C(m − n; k − i)/C(m; k).
+fn zhou(b: &TriangularPatch<Q, 3>, m: usize) -> Vec<Point<Q, 3>> {
+    let n = b.degree();
+    multi_indices(m)
+        .map(|k| {
+            multi_indices(n)
+                .filter(|i| (0..3).all(|t| i[t] <= k[t]))
+                .fold(Point::zero(), |acc, i| {
+                    let rest = [k[0] - i[0], k[1] - i[1], k[2] - i[2]];
+                    let beta = multinomial_of(i) * multinomial_of(rest) / multinomial_of(k);
+                    acc + b.get(i[0], i[1], i[2]).unwrap().clone() * beta
+                })
+        })
+        .collect()
+}
+
+/// A far vertex s across p q: any point whose w-coordinate is negative.
+fn far_vertex() -> impl Strategy<Value = Barycentric<Q>> {
+    (rational(), rational(), 1i64..=6, 1i64..=4).prop_map(|(u, v, a, d)| {
+        let w = q(-a, d);
+        let rest = qi(1) - &w - &u;
+        let _ = v;
+        Barycentric::new(u, rest, w).unwrap()
+    })
+}
+
+/// The coordinates over q p s of the point or vector with coordinates `x` over p q r.
+fn across(x: &[Q; 3], s: &Barycentric<Q>) -> [Q; 3] {
+    let [s0, s1, s2] = s.coords();
+    let gamma = x[2].clone() / s2;
+    [
+        x[1].clone() - gamma.clone() * s1,
+        x[0].clone() - gamma.clone() * s0,
+        gamma,
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    #[test]
+    fn elevation_keeps_the_polynomial_and_is_zhous_formula(
+        b in patch_of(0..=5),
+        by in 0usize..=3,
+        x in point(),
+    ) {
+        let n = b.degree();
+        let m = n + by;
+        let mut c = Counts::default();
+        let e = b.elevate_to_with(m, &mut c).unwrap();
+        prop_assert_eq!(e.degree(), m);
+        prop_assert_eq!(c.arithmetic_operations, c3(m + 1) - c3(n + 1));
+        prop_assert_eq!(e.de_casteljau(&x), b.de_casteljau(&x));
+        let want = zhou(&b, m);
+        prop_assert_eq!(e.points(), want.as_slice());
+        if by == 1 {
+            prop_assert_eq!(b.elevate().unwrap(), e);
+        }
+    }
+
+    #[test]
+    fn a_continuation_joins_with_its_order_and_a_perturbed_one_does_not(
+        b in patch_of(1..=5),
+        s in far_vertex(),
+        r in 0usize..=5,
+        free_seed in prop::collection::vec(-9i64..=9, 21),
+        t in rational(),
+        d in direction(),
+    ) {
+        let n = b.degree();
+        let r = r.min(n);
+        let count = (n - r) * (n - r + 1) / 2;
+        let free: Vec<Point<Q, 3>> = free_seed[..count]
+            .iter()
+            .map(|&z| Point::new([qi(z), qi(z * z), qi(1 - z)]))
+            .collect();
+        let mut counts = Counts::default();
+        let c = b.extend_cr_with(&s, r, &free, &mut counts).unwrap();
+        prop_assert_eq!(counts.arithmetic_operations, c3(n) - c3(n - r));
+        let mut counts = Counts::default();
+        let order = b.join_order_with(&c, &s, &qi(0), &mut counts).unwrap();
+        prop_assert_eq!(counts.arithmetic_operations, c3(n));
+        prop_assert!(order.is_some_and(|o| o >= r), "{:?} < {}", order, r);
+        // The derivatives across the edge agree up to order r: at y = (t, 1 − t, 0) on p q,
+        // D_d^k b(y) = D_{d'}^k c(y') with y', d' the same point and vector over q p s.
+        let y = Barycentric::new(t.clone(), qi(1) - &t, qi(0)).unwrap();
+        let y_c = across(y.coords(), &s);
+        let y_c = Barycentric::new(y_c[0].clone(), y_c[1].clone(), y_c[2].clone()).unwrap();
+        let d_c = across(d.coords(), &s);
+        let d_c = BarycentricVector::new(d_c[0].clone(), d_c[1].clone(), d_c[2].clone()).unwrap();
+        for k in 0..=r {
+            prop_assert_eq!(
+                b.directional_derivative(&y, &vec![d.clone(); k]),
+                c.directional_derivative(&y_c, &vec![d_c.clone(); k])
+            );
+        }
+        // A point of row r moved: the join is C^{r−1} and no better.
+        let mut moved = c.points().to_vec();
+        let row_r = (r + 1) * (2 * n + 2 - r) / 2 - 1; // the last point of row r
+        moved[row_r][0] += qi(1);
+        let moved = TriangularPatch::new(moved).unwrap();
+        prop_assert_eq!(b.join_order(&moved, &s, &qi(0)).unwrap(), r.checked_sub(1));
+        // C^n is the same polynomial: c at z over q p s is b at the point z names.
+        let whole = b.extend_cr(&s, n, &[]).unwrap();
+        prop_assert_eq!(b.join_order(&whole, &s, &qi(0)).unwrap(), Some(n));
+        let z = Barycentric::new(q(1, 3), q(1, 2), q(1, 6)).unwrap();
+        let [a0, a1, a2] = z.coords();
+        let mapped: Vec<Q> = (0..3)
+            .map(|t| {
+                let own = match t { 0 => a1.clone(), 1 => a0.clone(), _ => qi(0) };
+                own + a2.clone() * &s.coords()[t]
+            })
+            .collect();
+        let mapped = Barycentric::new(mapped[0].clone(), mapped[1].clone(), mapped[2].clone()).unwrap();
+        prop_assert_eq!(whole.de_casteljau(&z), b.de_casteljau(&mapped));
+    }
+
+    #[test]
+    fn the_tensor_form_is_the_patch_on_the_degenerate_square(
+        b in patch(),
+        s in rational(),
+        t in rational(),
+    ) {
+        let n = b.degree();
+        let mut c = Counts::default();
+        let tensor = b.to_tensor_with(&mut c).unwrap();
+        prop_assert_eq!(tensor.bidegree(), (n, n));
+        prop_assert_eq!(c.arithmetic_operations, ((n + 1) * (n + 2) * (n + 3) / 6) as u64);
+        let x = Barycentric::new(s.clone() * (qi(1) - &t), s.clone() * &t, qi(1) - &s).unwrap();
+        prop_assert_eq!(tensor.eval(&s, &t).unwrap(), b.de_casteljau(&x));
+    }
+
+    #[test]
+    fn the_two_triangular_halves_are_the_tensor_patch(
+        (m, n, pts) in (0usize..=4, 0usize..=4).prop_flat_map(|(m, n)| {
+            (Just(m), Just(n), prop::collection::vec((-9i64..=9, -9i64..=9, -9i64..=9), (m + 1) * (n + 1)))
+        }),
+        u in rational(),
+        v in rational(),
+    ) {
+        use compgeo::surface::{BezierPatch, ControlNet};
+        let net: Vec<Point<Q, 3>> = pts.iter().map(|&(x, y, z)| Point::new([qi(x), qi(y), qi(z)])).collect();
+        let tensor = BezierPatch::new(ControlNet::from_rows(m + 1, n + 1, net).unwrap()).unwrap();
+        let mut c = Counts::default();
+        let [lower, upper] = TriangularPatch::from_tensor_with(&tensor, &mut c).unwrap();
+        let l = m + n;
+        prop_assert_eq!(lower.degree(), l);
+        // The stated count: per half, (m + 1)(n + 1)(n + 2)/2 terms and d + 2 per elevation
+        // of row i from degree d = l − i − (m − a₀), …, l − i − 1, a₀ = max(0, i − n).
+        let elevations: usize = (0..=l)
+            .map(|i| {
+                let a0 = i.saturating_sub(n);
+                (l - i - (m - a0)..l - i).map(|d| d + 2).sum::<usize>()
+            })
+            .sum();
+        let per_half = (m + 1) * (n + 1) * (n + 2) / 2 + elevations;
+        prop_assert_eq!(c.arithmetic_operations, 2 * per_half as u64);
+        // The lower half at (u, v, 1 − u − v) and the upper half at (α, β, γ) are the tensor
+        // patch at (u, v) and (β + γ, α + γ).
+        prop_assert_eq!(lower.eval(&u, &v).unwrap(), tensor.eval(&u, &v).unwrap());
+        let y = Barycentric::from_uv(u.clone(), v.clone()).unwrap();
+        let [a, b, g] = y.coords();
+        prop_assert_eq!(
+            upper.de_casteljau(&y),
+            tensor.eval(&(b.clone() + g), &(a.clone() + g)).unwrap()
+        );
+        // They meet along the diagonal as one polynomial.
+        let s = Barycentric::new(qi(1), qi(1), qi(-1)).unwrap();
+        prop_assert_eq!(lower.join_order(&upper, &s, &qi(0)).unwrap(), Some(l));
+        // The book's formula [PPB, §11.11] with δ = C(i, α) C(j, β) C(k, γ)/C(l, m) over the
+        // lower triangle p q r = (1, 0), (0, 1), (0, 0): the x arguments 1^α 0^{β+γ}, the y
+        // arguments 0^{i−α} 1^{j−β} 0^{k−γ}, so the tensor blossom is c_{α, j−β}.
+        let choose = |a: usize, b: usize| multinomial(b, a - b, 0);
+        for [i, j, k] in multi_indices(l) {
+            let mut want = Point::zero();
+            for alpha in 0..=i.min(m) {
+                for beta in 0..=j.min(m - alpha) {
+                    let gamma = m - alpha - beta;
+                    if gamma > k || j - beta > n {
+                        continue;
+                    }
+                    let delta = choose(i, alpha) * choose(j, beta) * choose(k, gamma) / choose(l, m);
+                    want = want + tensor.net().get(alpha, j - beta).clone() * delta;
+                }
+            }
+            prop_assert_eq!(lower.get(i, j, k).unwrap(), &want);
+        }
+    }
+}
+
+#[test]
+fn bad_operations_are_named_errors() {
+    let p = |x: f64| Point::new([x]);
+    let b = TriangularPatch::new((0..6).map(|k| p(k as f64)).collect()).unwrap();
+    let name = |e: Error| match e {
+        Error::InvalidParameter { name, .. } => name,
+        other => panic!("{other}"),
+    };
+    assert_eq!(
+        name(b.blossom(&[Barycentric::vertex(0)]).unwrap_err()),
+        "blossom arguments"
+    );
+    assert_eq!(name(b.elevate_to(1).unwrap_err()), "degree");
+    assert!(matches!(
+        b.elevate_to(1 << 17),
+        Err(Error::LimitExceeded { .. })
+    ));
+    assert!(matches!(
+        b.elevate_to(12_000),
+        Err(Error::LimitExceeded { .. })
+    )); // MAX_POINTS
+    let s = Barycentric::new(1.0, 1.0, -1.0).unwrap();
+    let on_pq = Barycentric::new(2.0, -1.0, 0.0).unwrap();
+    let line = TriangularPatch::new(vec![p(0.0), p(1.0), p(2.0)]).unwrap();
+    assert_eq!(name(b.join_order(&line, &s, &0.0).unwrap_err()), "other");
+    assert_eq!(name(b.join_order(&b, &on_pq, &0.0).unwrap_err()), "s");
+    assert_eq!(name(b.join_order(&b, &s, &-1.0).unwrap_err()), "tolerance");
+    assert_eq!(
+        name(b.join_order(&b, &s, &f64::NAN).unwrap_err()),
+        "tolerance"
+    );
+    assert_eq!(name(b.extend_cr(&s, 3, &[]).unwrap_err()), "r");
+    assert_eq!(name(b.extend_cr(&on_pq, 1, &[p(0.0)]).unwrap_err()), "s");
+    assert_eq!(name(b.extend_cr(&s, 1, &[]).unwrap_err()), "free");
+    assert!(matches!(
+        b.extend_cr(&s, 0, &[p(0.0), p(f64::NAN), p(1.0)]),
+        Err(Error::NonFinite { index: 1, .. })
+    ));
+    // With f64 the check takes a relative tolerance.
+    let moved =
+        TriangularPatch::new((0..6).map(|k| p(k as f64 * (1.0 + 1e-12))).collect()).unwrap();
+    let c = b.extend_cr(&s, 2, &[]).unwrap();
+    let c_moved = moved.extend_cr(&s, 2, &[]).unwrap();
+    assert_eq!(b.join_order(&c_moved, &s, &1e-9).unwrap(), Some(2));
+    assert_eq!(b.join_order(&c, &s, &0.0).unwrap(), Some(2));
+    // Results beyond f64 are errors, not infinite points.
+    let huge = TriangularPatch::new(vec![p(f64::MAX), p(-f64::MAX), p(f64::MAX)]).unwrap();
+    let far = Barycentric::from_uv(1e10, -1e10).unwrap();
+    assert!(matches!(huge.subdivide(&far), Err(Error::Overflow { .. })));
 }

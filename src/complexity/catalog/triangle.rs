@@ -8,14 +8,19 @@
 //! Evaluation by de Casteljau is Θ(n³) affine combinations, by the Bernstein sum Θ(n²)
 //! multiply-adds. The blossom takes n further points of the triangle, the derivative is the
 //! second along the direction from the evaluation point to the last of them; subdivision is
-//! at the evaluation point, the four-way split at the midpoints.
+//! at the evaluation point, the four-way split at the midpoints. Elevation goes to degree
+//! 2n; the Cʳ check compares the patch with its C^⌊n/2⌋ continuation across p q (with
+//! s = p + q − r; every row is computed before comparing), and the continuation itself is
+//! measured with the same r. The conversion to tensor form takes the patch, the conversion
+//! from it a random tensor patch of bidegree (n, n) (its points from a second seed), whose
+//! two halves have degree 2n.
 
 use crate::complexity::{Declaration, Entry, Workload};
 use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{points, PointKind};
 use crate::spline::Point;
-use crate::surface::{Barycentric, BarycentricVector, TriangularPatch};
+use crate::surface::{Barycentric, BarycentricVector, BezierPatch, ControlNet, TriangularPatch};
 
 /// The input distribution: a random patch of degree n.
 const RANDOM_DEGREE: &str = "random-degree";
@@ -23,13 +28,18 @@ const RANDOM_DEGREE: &str = "random-degree";
 /// The triangular-patch entries.
 pub(super) fn entries() -> Vec<Entry> {
     use crate::surface::triangle::declarations as t;
-    let operations: [(&'static Declaration, Op); 6] = [
+    let operations: [(&'static Declaration, Op); 11] = [
         (&t::DE_CASTELJAU, Op::DeCasteljau),
         (&t::BERNSTEIN_SUM, Op::BernsteinSum),
         (&t::BLOSSOM, Op::Blossom),
         (&t::DIRECTIONAL_DERIVATIVE, Op::Derivative),
         (&t::SUBDIVIDE, Op::Subdivide),
         (&t::SPLIT_FOUR, Op::SplitFour),
+        (&t::ELEVATE_TO, Op::ElevateTo),
+        (&t::JOIN_ORDER, Op::JoinOrder),
+        (&t::EXTEND_CR, Op::ExtendCr),
+        (&t::TO_TENSOR, Op::ToTensor),
+        (&t::FROM_TENSOR, Op::FromTensor),
     ];
     operations
         .into_iter()
@@ -50,6 +60,11 @@ enum Op {
     Derivative,
     Subdivide,
     SplitFour,
+    ElevateTo,
+    JoinOrder,
+    ExtendCr,
+    ToTensor,
+    FromTensor,
 }
 
 /// One operation on a random patch of degree n at a random point of its triangle.
@@ -62,16 +77,34 @@ struct Operate(Op);
 enum Outcome {
     Point(Point<f64, 3>),
     Patches(Vec<TriangularPatch<f64, 3>>),
+    Tensor(BezierPatch<f64, 3>),
+    Join(Option<usize>),
 }
 
 /// The input of [`Operate`]: the patch, a point inside its triangle, n points of the
-/// triangle for the blossom and a direction for the derivatives.
+/// triangle for the blossom, a direction for the derivatives, the patch's C^⌊n/2⌋
+/// continuation across p q (for the check) and a tensor patch of bidegree (n, n).
 #[derive(Clone)]
 struct OperateInput {
     patch: TriangularPatch<f64, 3>,
     at: Barycentric<f64>,
     args: Vec<Barycentric<f64>>,
     direction: BarycentricVector<f64>,
+    next: TriangularPatch<f64, 3>,
+    tensor: BezierPatch<f64, 3>,
+}
+
+/// The far vertex of the joins: s = p + q − r, across p q from r.
+fn far_vertex() -> Barycentric<f64> {
+    Barycentric::from_uv(1.0, 1.0).expect("finite")
+}
+
+/// The free points of a C^⌊n/2⌋ continuation: the patch's own last rows.
+fn free_points(patch: &TriangularPatch<f64, 3>) -> Vec<Point<f64, 3>> {
+    let n = patch.degree();
+    let r = n / 2;
+    let free = (n - r) * (n - r + 1) / 2;
+    patch.points()[patch.points().len() - free..].to_vec()
 }
 
 impl Workload for Operate {
@@ -85,11 +118,21 @@ impl Workload for Operate {
             .collect::<Result<Vec<_>>>()?;
         let first = inside[0].clone();
         let direction = first.to(&inside[n]);
+        let patch = random_patch(n, seed)?;
+        let next = patch.extend_cr(&far_vertex(), n / 2, &free_points(&patch))?;
+        let square = random_patch(2 * n + 1, seed ^ 3)?;
+        let tensor = BezierPatch::new(ControlNet::from_rows(
+            n + 1,
+            n + 1,
+            square.points()[..(n + 1) * (n + 1)].to_vec(),
+        )?)?;
         Ok(OperateInput {
-            patch: random_patch(n, seed)?,
+            patch,
             at: first,
             args: inside[1..].to_vec(),
             direction,
+            next,
+            tensor,
         })
     }
 
@@ -99,7 +142,10 @@ impl Workload for Operate {
             at,
             args,
             direction,
+            next,
+            tensor,
         } = input;
+        let n = patch.degree();
         Ok(match self.0 {
             Op::DeCasteljau => Outcome::Point(patch.de_casteljau_with(at, c)),
             Op::BernsteinSum => Outcome::Point(patch.bernstein_sum_with(at, c)),
@@ -110,6 +156,18 @@ impl Workload for Operate {
             }
             Op::Subdivide => Outcome::Patches(patch.subdivide_with(at, c)?.to_vec()),
             Op::SplitFour => Outcome::Patches(patch.split_four_with(c)?.to_vec()),
+            Op::ElevateTo => Outcome::Patches(vec![patch.elevate_to_with(2 * n, c)?]),
+            Op::JoinOrder => Outcome::Join(patch.join_order_with(next, &far_vertex(), &1e-9, c)?),
+            Op::ExtendCr => Outcome::Patches(vec![patch.extend_cr_with(
+                &far_vertex(),
+                n / 2,
+                &free_points(patch),
+                c,
+            )?]),
+            Op::ToTensor => Outcome::Tensor(patch.to_tensor_with(c)?),
+            Op::FromTensor => {
+                Outcome::Patches(TriangularPatch::from_tensor_with(tensor, c)?.to_vec())
+            }
         })
     }
 }

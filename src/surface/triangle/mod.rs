@@ -23,6 +23,10 @@
 //! | `derivative.rs` | [`TriangularPatch::directional_derivative`] of any order: n!/(n − r)! b[d₁ … d_r x … x] [PPB, §10.5, §11.6] |
 //! | `subdivide.rs` | [`TriangularPatch::subdivide`] at a point into three patches [PPB, §11.3] |
 //! | `split.rs` | [`TriangularPatch::split_four`]: the four midpoint triangles by repeated bisection [PPB, §11.5, Figs. 11.6–11.7] |
+//! | `elevate.rs` | [`TriangularPatch::elevate`], [`TriangularPatch::elevate_to`] [PPB, §11.8] |
+//! | `join.rs` | [`TriangularPatch::join_order`] (the Cʳ check across an edge), [`TriangularPatch::extend_cr`] (the Cʳ continuation) [PPB, §11.7] |
+//! | `to_tensor.rs` | [`TriangularPatch::to_tensor`]: a [`BezierPatch`](crate::surface::BezierPatch) of bidegree (n, n) over a degenerate square [PPB, §11.10] |
+//! | `from_tensor.rs` | [`TriangularPatch::from_tensor`]: the two halves of a tensor patch of bidegree (m, n), degree m + n [PPB, §11.11] |
 //!
 //! Sources are cited as `[KEY, §section]` (see `docs/references.md`); PPB is M. Paluszny,
 //! H. Prautzsch, W. Boehm, *Métodos de Bézier y B-splines*, chapters 10 and 11.
@@ -32,18 +36,27 @@ mod basis;
 mod blossom;
 mod de_casteljau;
 mod derivative;
+mod elevate;
+mod from_tensor;
+mod join;
 mod patch;
 mod split;
 mod subdivide;
+mod to_tensor;
 
 /// The triangular-patch algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 6] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 11] = [
     &de_casteljau::DE_CASTELJAU,
     &basis::BERNSTEIN_SUM,
     &blossom::BLOSSOM,
     &derivative::DIRECTIONAL_DERIVATIVE,
     &subdivide::SUBDIVIDE,
     &split::SPLIT_FOUR,
+    &elevate::ELEVATE_TO,
+    &join::JOIN_ORDER,
+    &join::EXTEND_CR,
+    &to_tensor::TO_TENSOR,
+    &from_tensor::FROM_TENSOR,
 ];
 
 /// The declarations the catalog's entries measure, by name.
@@ -52,8 +65,12 @@ pub(crate) mod declarations {
     pub(crate) use super::blossom::BLOSSOM;
     pub(crate) use super::de_casteljau::DE_CASTELJAU;
     pub(crate) use super::derivative::DIRECTIONAL_DERIVATIVE;
+    pub(crate) use super::elevate::ELEVATE_TO;
+    pub(crate) use super::from_tensor::FROM_TENSOR;
+    pub(crate) use super::join::{EXTEND_CR, JOIN_ORDER};
     pub(crate) use super::split::SPLIT_FOUR;
     pub(crate) use super::subdivide::SUBDIVIDE;
+    pub(crate) use super::to_tensor::TO_TENSOR;
 }
 
 pub use barycentric::{Barycentric, BarycentricVector};
