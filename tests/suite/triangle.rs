@@ -287,7 +287,7 @@ fn derivative_of_the_sum(
             for d in directions {
                 let t = rest % 3;
                 rest /= 3;
-                coefficient = coefficient * &d.coords()[t];
+                coefficient *= &d.coords()[t];
                 if e[t] == 0 {
                     inside = false;
                     break;
@@ -427,7 +427,7 @@ proptest! {
             derivative_of_the_sum(&b, &x, &directions)
         );
         if r + s == 0 {
-            let grid = b.first_partials_on_grid(&[u.clone()], &[v.clone()]).unwrap();
+            let grid = b.first_partials_on_grid(std::slice::from_ref(u), std::slice::from_ref(v)).unwrap();
             prop_assert_eq!(&grid[0][0], &b.de_casteljau(&x));
             prop_assert_eq!(&grid[0][1], &b.partial_at(u, v, 1, 0).unwrap());
             prop_assert_eq!(&grid[0][2], &b.partial_at(u, v, 0, 1).unwrap());
@@ -475,12 +475,12 @@ proptest! {
         prop_assert_eq!(c.arithmetic_operations, 6 * c3(n));
         let half = q(1, 2);
         let at = |coords: Vec<Q>| Barycentric::new(coords[0].clone(), coords[1].clone(), coords[2].clone()).unwrap();
-        for t in 0..3 {
+        for (t, corner) in pieces[..3].iter().enumerate() {
             // Corner t at y is the patch at (y + e_t)/2.
             let mapped = at((0..3)
                 .map(|s| (y.coords()[s].clone() + if s == t { qi(1) } else { qi(0) }) * &half)
                 .collect());
-            prop_assert_eq!(pieces[t].de_casteljau(&y), b.de_casteljau(&mapped));
+            prop_assert_eq!(corner.de_casteljau(&y), b.de_casteljau(&mapped));
         }
         // The middle at y is the patch at (1 − y)/2.
         let mapped = at((0..3).map(|s| (qi(1) - &y.coords()[s]) * &half).collect());
@@ -740,4 +740,129 @@ fn bad_operations_are_named_errors() {
     let huge = TriangularPatch::new(vec![p(f64::MAX), p(-f64::MAX), p(f64::MAX)]).unwrap();
     let far = Barycentric::from_uv(1e10, -1e10).unwrap();
     assert!(matches!(huge.subdivide(&far), Err(Error::Overflow { .. })));
+}
+
+/// A patch of degree 1..=4 over the unit triangle of the xy plane with z perturbed by at most
+/// 1/8: its partials never vanish, and coarse triangles face the way its normals do.
+fn nearly_flat() -> impl Strategy<Value = TriangularPatch<Q, 3>> {
+    (1usize..=4)
+        .prop_flat_map(|n| {
+            (
+                Just(n),
+                prop::collection::vec(-8i64..=8, (n + 1) * (n + 2) / 2),
+            )
+        })
+        .prop_map(|(n, zs)| {
+            let points = multi_indices(n)
+                .zip(zs)
+                .map(|([i, j, _], z)| {
+                    Point::new([q(i as i64, n as i64), q(j as i64, n as i64), q(z, 64)])
+                })
+                .collect();
+            TriangularPatch::new(points).unwrap()
+        })
+}
+
+fn cross_f64(a: &Point<f64, 3>, b: &Point<f64, 3>) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    #[test]
+    fn the_mesh_samples_the_patch_exactly(b in nearly_flat(), m in 1usize..=6) {
+        use compgeo::surface::SurfaceDerivative;
+        let n = b.degree();
+        let mut c = Counts::default();
+        let mesh = b.tessellate_with(m, &mut c).unwrap();
+        let vertices = (m + 1) * (m + 2) / 2;
+        prop_assert_eq!(mesh.positions.len(), vertices);
+        prop_assert_eq!(mesh.triangles.len(), m * m);
+        prop_assert_eq!(c.arithmetic_operations, (vertices as u64) * (c3(n) + 2));
+        for (k, [i, j, kk]) in multi_indices(m).enumerate() {
+            let x = Barycentric::new(q(i as i64, m as i64), q(j as i64, m as i64), q(kk as i64, m as i64)).unwrap();
+            // The vertex is the exact point, rounded once.
+            prop_assert_eq!(mesh.positions[k], *b.de_casteljau(&x).to_f64().coords());
+            let [u, v, _] = x.coords();
+            let normal = cross_f64(
+                &b.partial_at(u, v, 1, 0).unwrap().to_f64(),
+                &b.partial_at(u, v, 0, 1).unwrap().to_f64(),
+            );
+            let length = normal.iter().map(|c| c * c).sum::<f64>().sqrt();
+            for (got, want) in mesh.normals[k].iter().zip(normal) {
+                prop_assert!((got - want / length).abs() < 1e-12);
+            }
+        }
+        // Every triangle is counter-clockwise seen from its corners' normals; every vertex
+        // is used.
+        let mut used = vec![false; vertices];
+        for t in &mesh.triangles {
+            let [a, bb, cc] = t.map(|k| mesh.positions[k]);
+            let e1 = Point::new([bb[0] - a[0], bb[1] - a[1], bb[2] - a[2]]);
+            let e2 = Point::new([cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]]);
+            let face = cross_f64(&e1, &e2);
+            for &k in t {
+                let n = mesh.normals[k];
+                prop_assert!(face[0] * n[0] + face[1] * n[1] + face[2] * n[2] > 0.0);
+                used[k] = true;
+            }
+        }
+        prop_assert!(used.into_iter().all(|u| u));
+    }
+
+    #[test]
+    fn the_obj_file_reads_back_the_same_mesh(b in nearly_flat(), m in 1usize..=5) {
+        let mesh = b.to_f64().tessellate(m).unwrap();
+        let (positions, triangles) = crate::surface_mesh::read_obj(&mesh);
+        prop_assert_eq!(positions.len(), mesh.positions.len());
+        prop_assert_eq!(triangles.len(), mesh.triangles.len());
+        for (got, want) in triangles.iter().zip(&mesh.triangles) {
+            for (g, w) in got.iter().zip(want) {
+                prop_assert_eq!(positions[*g], mesh.positions[*w]);
+            }
+        }
+    }
+}
+
+#[test]
+fn a_collapsed_corner_takes_the_normals_of_its_triangles() {
+    // Degree 2 with b101 = b011 = b002: both partials vanish at r.
+    let p = |x: i64, y: i64| Point::new([q(x, 2), q(y, 2), qi(0)]);
+    let b: TriangularPatch<Q, 3> =
+        TriangularPatch::new(vec![p(2, 0), p(1, 1), p(0, 2), p(0, 0), p(0, 0), p(0, 0)]).unwrap();
+    let r = Barycentric::vertex(2);
+    let du = BarycentricVector::new(qi(1), qi(0), qi(-1)).unwrap();
+    assert_eq!(b.directional_derivative(&r, &[du]), Point::zero());
+    let mesh = b.tessellate(4).unwrap();
+    for normal in &mesh.normals {
+        assert_eq!(*normal, [0.0, 0.0, 1.0]);
+    }
+}
+
+#[test]
+fn bad_tessellations_are_named_errors() {
+    let p = |x: f64| Point::new([x, 0.0, 0.0]);
+    let b = TriangularPatch::new(vec![p(0.0), p(1.0), p(2.0)]).unwrap();
+    assert!(matches!(
+        b.tessellate(0),
+        Err(Error::InvalidParameter {
+            name: "segments",
+            ..
+        })
+    ));
+    assert!(matches!(
+        b.tessellate(1 << 14),
+        Err(Error::LimitExceeded { .. })
+    ));
+    assert!(matches!(
+        b.tessellate(usize::MAX),
+        Err(Error::LimitExceeded { .. })
+    ));
+    let huge = TriangularPatch::new(vec![p(f64::MAX), p(-f64::MAX), p(f64::MAX)]).unwrap();
+    assert!(huge.tessellate(2).is_ok()); // inside the triangle every point is in range
 }

@@ -1,5 +1,6 @@
 //! Catalog entries of [`crate::surface::triangle`]: the operations on a random triangular
-//! Bézier patch of degree n in R³ (`random-degree`), each counted exactly.
+//! Bézier patch of degree n in R³ (`random-degree`), each counted exactly, and the
+//! tessellation of a random cubic patch into about n vertices (`random-samples`, linear).
 //!
 //! The patch's (n + 1)(n + 2)/2 points are uniform in the unit cube (x and y from one seeded
 //! point set, z from a second). The evaluation point is inside the reference triangle: the
@@ -20,7 +21,9 @@ use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{points, PointKind};
 use crate::spline::Point;
-use crate::surface::{Barycentric, BarycentricVector, BezierPatch, ControlNet, TriangularPatch};
+use crate::surface::{
+    Barycentric, BarycentricVector, BezierPatch, ControlNet, TriangleMesh, TriangularPatch,
+};
 
 /// The input distribution: a random patch of degree n.
 const RANDOM_DEGREE: &str = "random-degree";
@@ -41,14 +44,39 @@ pub(super) fn entries() -> Vec<Entry> {
         (&t::TO_TENSOR, Op::ToTensor),
         (&t::FROM_TENSOR, Op::FromTensor),
     ];
-    operations
+    let mut all: Vec<Entry> = operations
         .into_iter()
         .map(|(declaration, op)| {
             Entry::declared(declaration, RANDOM_DEGREE, Operate(op))
                 .quick(4, 64)
                 .full(4, 128)
         })
-        .collect()
+        .collect();
+    all.push(
+        Entry::declared(&t::TESSELLATE, "random-samples", Tessellate)
+            .quick(64, 1 << 14)
+            .full(64, 1 << 17),
+    );
+    all
+}
+
+/// The tessellation of a random cubic patch with about n vertices: m = ⌊√(2n)⌋ segments
+/// per edge, (m + 1)(m + 2)/2 vertices.
+struct Tessellate;
+
+impl Workload for Tessellate {
+    type Input = (TriangularPatch<f64, 3>, usize);
+    type Output = TriangleMesh;
+
+    fn prepare(&self, n: usize, seed: u64) -> Result<Self::Input> {
+        let m = ((2 * n) as f64).sqrt().floor().max(1.0) as usize;
+        Ok((random_patch(3, seed)?, m))
+    }
+
+    fn run<C: Counter>(&self, input: &mut Self::Input, c: &mut C) -> Result<Self::Output> {
+        let (patch, m) = input;
+        patch.tessellate_with(*m, c)
+    }
 }
 
 /// An operation on a random patch of degree n.

@@ -176,9 +176,7 @@ pub(super) fn sub_nets<S: Scalar, const D: usize, C: Counter>(
         }
         // Net 2: (i, j, l), the whole first row, j = 0, …, m.
         let start = row_offset(n, l);
-        for j in 0..=m {
-            nets[2][start + j] = q[j].clone();
-        }
+        nets[2][start..=start + m].clone_from_slice(&q[..=m]);
         if m > 0 {
             level(&mut q, m, weights, counter);
         }

@@ -26,6 +26,7 @@
 //! | `elevate.rs` | [`TriangularPatch::elevate`], [`TriangularPatch::elevate_to`] [PPB, §11.8] |
 //! | `join.rs` | [`TriangularPatch::join_order`] (the Cʳ check across an edge), [`TriangularPatch::extend_cr`] (the Cʳ continuation) [PPB, §11.7] |
 //! | `to_tensor.rs` | [`TriangularPatch::to_tensor`]: a [`BezierPatch`](crate::surface::BezierPatch) of bidegree (n, n) over a degenerate square [PPB, §11.10] |
+//! | `tessellate.rs` | [`TriangularPatch::tessellate`]: the uniform refinement of the triangle as a [`TriangleMesh`](crate::surface::TriangleMesh) with normals, for the OBJ and STL writers [PPB, §10.3–10.5] |
 //! | `from_tensor.rs` | [`TriangularPatch::from_tensor`]: the two halves of a tensor patch of bidegree (m, n), degree m + n [PPB, §11.11] |
 //!
 //! Sources are cited as `[KEY, §section]` (see `docs/references.md`); PPB is M. Paluszny,
@@ -42,10 +43,11 @@ mod join;
 mod patch;
 mod split;
 mod subdivide;
+mod tessellate;
 mod to_tensor;
 
 /// The triangular-patch algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 11] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 12] = [
     &de_casteljau::DE_CASTELJAU,
     &basis::BERNSTEIN_SUM,
     &blossom::BLOSSOM,
@@ -57,6 +59,7 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 11] = [
     &join::EXTEND_CR,
     &to_tensor::TO_TENSOR,
     &from_tensor::FROM_TENSOR,
+    &tessellate::TESSELLATE,
 ];
 
 /// The declarations the catalog's entries measure, by name.
@@ -70,6 +73,7 @@ pub(crate) mod declarations {
     pub(crate) use super::join::{EXTEND_CR, JOIN_ORDER};
     pub(crate) use super::split::SPLIT_FOUR;
     pub(crate) use super::subdivide::SUBDIVIDE;
+    pub(crate) use super::tessellate::TESSELLATE;
     pub(crate) use super::to_tensor::TO_TENSOR;
 }
 
