@@ -98,8 +98,9 @@ impl<S: Scalar, const D: usize> TriangularPatch<S, D> {
 
     /// The two triangular halves of a tensor-product patch, counting point operations.
     ///
-    /// Idea: the formula of [PPB, §11.11] regrouped by collapsed coordinates (see the
-    /// [module docs](self)): row i of the net over the lower half is
+    /// Idea: the formula of [PPB, §11.11] regrouped by collapsed coordinates: with
+    /// v = (1 − u)t, B^{m+n}_{ijk} = B^{m+n}_i(u) B^{m+n−i}_j(t) and
+    /// B^n_b(v) = Σ_e B^n_e(u) B^{n−e}_b(t), so row i of the net over the lower half is
     /// Σ_{a+e=i} C(m, a) C(n, e)/C(l, i) · Q_{a,e} elevated to degree l − i, where Q_{a,e} is
     /// the polygon c_{a,0}, …, c_{a,n−e}; the terms are added by increasing a, one elevation by
     /// one between each. The upper half is the lower half of the net turned half a turn.

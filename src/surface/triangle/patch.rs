@@ -31,8 +31,14 @@ use crate::surface::{Surface, SurfaceDerivative, SurfaceDomain};
 use crate::{limits, Error, Result};
 
 /// A triangular Bézier patch of degree n in R^D: (n + 1)(n + 2)/2 finite control points
-/// b_{ijk}, i + j + k = n, in the storage order of the [module docs](self), defined for every
-/// point of the plane of its reference triangle p q r.
+/// b_{ijk}, i + j + k = n, defined for every point of the plane of its reference triangle
+/// p q r, b(u, v, w) = Σ b_{ijk} B^n_{ijk}(u, v, w) [PPB, §10.2].
+///
+/// The points are stored flat, row after row: the rows of constant k from k = 0 (the edge
+/// p q) to k = n (the vertex r), each by increasing j,
+/// b_{n00}, b_{n−1,1,0}, …, b_{0n0}, b_{n−1,0,1}, …, b_{0,n−1,1}, …, b_{00n}: the canonical
+/// listing of [PPB, Fig. 10.2] read from its bottom row up. b_{ijk} is at index
+/// k(2n + 3 − k)/2 + j ([`storage_index`]).
 ///
 /// It is also a [`Surface`] in the parameters (u, v) with w = 1 − u − v: over the reference
 /// triangle p = (1, 0), q = (0, 1), r = (0, 0) of the (u, v) plane, so that

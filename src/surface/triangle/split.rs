@@ -91,8 +91,10 @@ impl<S: Scalar, const D: usize> TriangularPatch<S, D> {
     ///
     /// Idea: bisection at edge midpoints [PPB, §11.5, Fig. 11.7], one de Casteljau scheme per
     /// bisection with both halves read off its faces [PPB, §11.3]: five bisections, all
-    /// convex, give the three corners; one scheme at a point outside its triangle gives the
-    /// middle (see the [module docs](self)).
+    /// convex, give the three corners (p q r at c, p c r at b, c q r at a, p q r at b, b q r
+    /// at a); the middle lies in no triangle that bisections produce, and one scheme on c a r
+    /// at b = c − a + r (weights 1, −1, 1, the one non-convex step) gives it. With `f64`
+    /// that scheme may amplify rounding by up to 3 per level.
     ///
     /// # Errors
     ///
