@@ -1,4 +1,4 @@
-//! Tensor-product surfaces, generic over the scalar (`f64`, exact rationals) and the
+//! Tensor-product and triangular surfaces, generic over the scalar (`f64`, exact rationals) and the
 //! dimension, sharing traits as the curves of [`spline`](crate::spline) do.
 //!
 //! A tensor-product surface moves the control points of a curve along curves of their own
@@ -14,6 +14,7 @@
 //! | [`BezierPatchGrid`] | the rectangle of its grid | Bézier patches over the cells of a grid (the Bézier form of a spline surface) |
 //! | [`BSplineSurface`] | the rectangle of the knot vectors' domains | Σ c_{i,j} Nᵢᵖ(u) Nⱼ^q(v) [PPB, §9.1] |
 //! | [`NurbsSurface`] | the same | Σ w_{i,j} c_{i,j} NᵢNⱼ / Σ w_{i,j} NᵢNⱼ [SPL, §14] |
+//! | [`TriangularPatch`] | the whole plane (the net describes a triangle p q r) | Σ b_{ijk} B^n_{ijk}(u, v, w) in barycentric coordinates [PPB, §10.2] |
 //!
 //! | file | what it holds |
 //! |---|---|
@@ -43,6 +44,7 @@
 //! | `bicubic.rs` | [`BezierPatchGrid::bicubic_c1`]: piecewise bicubic C¹ interpolation [PPB, §9.8] |
 //! | `tessellate.rs` | [`tessellate`], [`tessellate_at_with`]: any surface in R³ as a [`TriangleMesh`] with unit normals |
 //! | `export.rs` | [`TriangleMesh::write_obj`] (Wavefront OBJ), [`TriangleMesh::write_stl`] (ASCII STL) |
+//! | `triangle/` | [`TriangularPatch`]: triangular Bézier patches, one algorithm per file (its own table in [`triangle`]) [PPB, ch. 10–11] |
 //!
 //! Sources are cited as `[KEY, §section]` (see `docs/references.md`): FJ-surfaces is
 //! L. Fernández Jambrina, *Tema 5: Superficies*; PPB is M. Paluszny, H. Prautzsch, W. Boehm,
@@ -75,6 +77,7 @@ mod subdivide;
 mod tensor_grid;
 mod tessellate;
 mod traits;
+pub mod triangle;
 
 /// The surface algorithms, declared.
 pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 32] = [
@@ -145,3 +148,4 @@ pub use normal::{normal, normal_with, Normal};
 pub use nurbs::NurbsSurface;
 pub use tessellate::{tessellate, tessellate_at_with, TriangleMesh};
 pub use traits::{Surface, SurfaceDerivative, SurfaceDomain};
+pub use triangle::{Barycentric, BarycentricVector, TriangularPatch};

@@ -56,6 +56,8 @@ mod surface_bspline;
 mod surface_cli;
 mod surface_construct;
 mod surface_mesh;
+mod triangle;
+mod triangle_cli;
 mod voronoi;
 mod voronoi_clip;
 mod width;

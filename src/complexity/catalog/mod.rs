@@ -152,6 +152,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(beta::entries());
     all.extend(surface::entries());
     all.extend(surface_spline::entries());
+    all.extend(triangle::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
     all
@@ -202,6 +203,7 @@ mod spline;
 mod subdivision;
 mod surface;
 mod surface_spline;
+mod triangle;
 
 /// The result of one counted run.
 pub(crate) struct Counted {
