@@ -866,3 +866,15 @@ fn bad_tessellations_are_named_errors() {
     let huge = TriangularPatch::new(vec![p(f64::MAX), p(-f64::MAX), p(f64::MAX)]).unwrap();
     assert!(huge.tessellate(2).is_ok()); // inside the triangle every point is in range
 }
+
+#[test]
+fn f64_tessellation_whose_rounded_ratios_do_not_sum_to_one() {
+    // 20/22 + 1/22 + 1/22 rounds to 1 − 2⁻⁵³ in f64: the vertices take w = 1 − u − v.
+    let p = |x: f64, y: f64| Point::new([x, y, 0.0]);
+    let b = TriangularPatch::new(vec![p(1.0, 0.0), p(0.0, 1.0), p(0.0, 0.0)]).unwrap();
+    for m in [22, 49, 100] {
+        let mesh = b.tessellate(m).unwrap();
+        assert_eq!(mesh.triangles.len(), m * m);
+        assert!(mesh.normals.iter().all(|n| *n == [0.0, 0.0, 1.0]));
+    }
+}

@@ -135,8 +135,9 @@ impl<S: Scalar> TriangularPatch<S, 3> {
         let ratio = |c: usize| S::from_ratio(c as i64, m as i64);
         for k in 0..=m {
             for j in 0..=m - k {
-                let at = Barycentric::new(ratio(m - k - j), ratio(j), ratio(k))
-                    .expect("(i + j + k)/m = 1 exactly");
+                // w = 1 − u − v: with f64 the three rounded ratios need not sum to 1.
+                let at = Barycentric::from_uv(ratio(m - k - j), ratio(j))
+                    .expect("coordinates in [0, 1] are finite");
                 let [point, du, dv] = self.point_and_partials(&at, counter);
                 let point = point.to_f64();
                 if !point.is_finite() {
