@@ -182,6 +182,8 @@
 //! | `surface-construct/least-squares`: [`surface::BSplineSurface::fit`] | Θ(K(p + 1)²(q + 1)² + (MN)³ + (MN)²D) | Θ((MN)² + MN·D) | arithmetic operations: one per entry of the normal equations updated, one per entry changed by elimination and per back-substitution term | [FJ-surfaces, §7, eqs. (28)–(29)] | `src/surface/least_squares.rs` |
 //! | `surface-construct/loft`: [`surface::BSplineSurface::loft`] | Θ(N·K(p² + pD)) after making the curves compatible | Θ(K·N·D) | arithmetic operations: those of the curve interpolations in the lofting direction | [RD, §3.3] | `src/surface/loft.rs` |
 //! | `surface-construct/bicubic-c1`: [`surface::BezierPatchGrid::bicubic_c1`] | Θ(mn·D) | Θ(mn·D) | arithmetic operations: one per Bézier point the curve scheme produces, (3m + 1)(n + 1) + (3m + 1)(3n + 1) | [PPB, §9.8, §4.5] | `src/surface/bicubic.rs` |
+//! | `subdivision-surface/tensor-lane-riesenfeld`: [`surface::ControlNet::lane_riesenfeld`] | Θ((p + q)·M′N′), M′N′ ≤ MN·4^k the output size | Θ(M′N′·D) | arithmetic operations: the curve algorithm's midpoints on the M rows, then on the N′ columns: 2(2^k − 1)(qMN + pMN·2^k) on a torus | [PPB, §15.1, §8.2–8.4] | `src/surface/lane_riesenfeld.rs` |
+//! | `subdivision-surface/tensor-limit-points`: [`surface::ControlNet::limit_points`] | Θ(p² + q² + (p + q)·MN·D) | Θ(MN·D) | arithmetic operations: the curve's stencil terms on the rows, then on the columns: (2⌊q/2⌋ + 1)MN + (2⌊p/2⌋ + 1)MN on a torus | [PPB, §8.1, §15.1] | `src/surface/lane_riesenfeld.rs` |
 //! <!-- /algorithms -->
 //!
 //! ## A first example

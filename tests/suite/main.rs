@@ -56,6 +56,7 @@ mod surface_bspline;
 mod surface_cli;
 mod surface_construct;
 mod surface_mesh;
+mod surface_subdivision;
 mod voronoi;
 mod voronoi_clip;
 mod width;

@@ -152,6 +152,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(beta::entries());
     all.extend(surface::entries());
     all.extend(surface_spline::entries());
+    all.extend(subdivision_surface::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
     all
@@ -200,6 +201,7 @@ mod proximity;
 mod sort;
 mod spline;
 mod subdivision;
+mod subdivision_surface;
 mod surface;
 mod surface_spline;
 
