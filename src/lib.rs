@@ -11,7 +11,7 @@
 //! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) | `src/count.rs` |
 //! | [`error`] | the crate's [`Error`] and [`Result`] | `src/error.rs` |
 //! | [`limits`] | every size limit (degrees, vertex and edge counts, generated sizes), checked before allocating | `src/limits.rs` |
-//! | [`gen`] | seeded workload generators: point sets, graphs, number sequences | `src/gen/` |
+//! | [`gen`] | seeded workload generators: point sets, graphs, number sequences, polygon meshes | `src/gen/` |
 //! | [`complexity`] | every algorithm's [`Declaration`](complexity::Declaration), stated bounds, the catalog, measurement, fits and verdicts | `src/complexity/` |
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces | `src/sort/`, one file per sort |
 //! | [`graph`] | CSR graphs and their edge lists, BFS/DFS, colourings, minimum spanning trees | `src/graph/`: `colouring/` and `mst/` one file per algorithm |
@@ -21,6 +21,7 @@
 //! | [`proximity`] | closest pair (on the Delaunay triangulation, by divide and conquer), nearest search, all nearest neighbours, Euclidean MST, largest empty circle | `src/proximity/`, one file per problem |
 //! | [`spline`] | curves, generic over the scalar (`f64`, exact rationals) and the dimension: the curve traits, [`spline::bezier`] (Bernstein basis, Bézier, reparametrised and composite curves, one algorithm per file), [`spline::bspline`] (knot vectors, the basis, de Boor, derivatives, blossoms, insertion, refinement, Oslo, removal, elevation, interpolation and fitting), [`spline::rational`] (rational Bézier curves, NURBS, exact conics), [`spline::interpolate`] (polynomial, Hermite and spline interpolation, least squares), [`spline::subdivision`] (Lane–Riesenfeld and Chaikin, the four-point scheme, masks and difference schemes, limit points), [`spline::beta`] (cubic Beta-splines: basis with the corrected normaliser, subdivision matrices at any c, recursive subdivision, β-continuity), Frenet frames | `src/spline/`: `bezier/`, `bspline/`, `rational/`, `interpolate/`, `subdivision/` and `beta/` one algorithm per file |
 //! | [`surface`] | tensor-product surfaces sharing traits ([`Surface`](surface::Surface), [`SurfaceDerivative`](surface::SurfaceDerivative)): the validated [`ControlNet`](surface::ControlNet), [`BezierPatch`](surface::BezierPatch) evaluated in either order or by the tensor de Casteljau algorithm, isoparametric curves, partial derivatives, the blossom, restriction, subdivision, elevation, derivative nets, monomial form, bounding box and Cʳ joins; [`BSplineSurface`](surface::BSplineSurface) and [`NurbsSurface`](surface::NurbsSurface) (insertion, elevation, Bézier patches through the curve code); tensor interpolation, least squares, lofting, bicubic C¹ interpolation; [`normal`](surface::normal) of any surface, [`tessellate`](surface::tessellate) into a [`TriangleMesh`](surface::TriangleMesh) written as OBJ or STL | `src/surface/`, one algorithm per file |
+//! | [`mesh`] | polygon meshes generic over the scalar and the dimension: the validated [`PolygonMesh`](mesh::PolygonMesh) (oriented manifolds with boundary, every violation a named [`MeshError`](mesh::MeshError) with the face), its half-edge [`MeshTopology`](mesh::MeshTopology) (one-rings, valence, boundary loops, Euler characteristic), Wavefront OBJ reading and writing | `src/mesh/`, one algorithm per file |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command | `src/cli/` |
 //!
 //! Every algorithm's own file is in the table below.
@@ -233,6 +234,7 @@ pub mod geometry;
 pub mod graph;
 pub mod hull;
 pub mod limits;
+pub mod mesh;
 pub mod proximity;
 pub mod sort;
 pub mod spline;

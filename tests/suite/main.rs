@@ -41,6 +41,7 @@ mod hull;
 mod interpolate;
 mod interpolate_cli;
 mod limits;
+mod mesh;
 mod nurbs;
 mod nurbs_cli;
 mod overflow;
