@@ -185,6 +185,10 @@
 //! | `surface-construct/bicubic-c1`: [`surface::BezierPatchGrid::bicubic_c1`] | Θ(mn·D) | Θ(mn·D) | arithmetic operations: one per Bézier point the curve scheme produces, (3m + 1)(n + 1) + (3m + 1)(3n + 1) | [PPB, §9.8, §4.5] | `src/surface/bicubic.rs` |
 //! | `subdivision-surface/tensor-lane-riesenfeld`: [`surface::ControlNet::lane_riesenfeld`] | Θ((p + q)·M′N′), M′N′ ≤ MN·4^k the output size | Θ(M′N′·D) | arithmetic operations: the curve algorithm's midpoints on the M rows, then on the N′ columns: 2(2^k − 1)(qMN + pMN·2^k) on a torus | [PPB, §15.1, §8.2–8.4] | `src/surface/lane_riesenfeld.rs` |
 //! | `subdivision-surface/tensor-limit-points`: [`surface::ControlNet::limit_points`] | Θ(p² + q² + (p + q)·MN·D) | Θ(MN·D) | arithmetic operations: the curve's stencil terms on the rows, then on the columns: (2⌊q/2⌋ + 1)MN + (2⌊p/2⌋ + 1)MN on a torus | [PPB, §8.1, §15.1] | `src/surface/lane_riesenfeld.rs` |
+//! | `mesh-subdivision/loop`: [`mesh::loop_subdivision`] | Θ(F·4^k·D) for F triangles | Θ(F·4^k·D) | arithmetic operations: one per stencil term: n + 1 per inner vertex of valence n, 3 per boundary vertex, 4 per inner edge, 2 per boundary edge; V + 6E per round on a closed mesh | [PPB, §15.7–15.8, §16.8–16.9] | `src/mesh/loop_subdivision.rs` |
+//! | `mesh-subdivision/loop-limit`: [`mesh::loop_limit_points`] | Θ((V + F)·D) | Θ(V·D) | arithmetic operations: one per stencil term: n + 1 per inner vertex of valence n, 3 per boundary vertex | [PPB, §16.4–16.6, §16.9] | `src/mesh/loop_subdivision.rs` |
+//! | `mesh-subdivision/doo-sabin`: [`mesh::doo_sabin`] | Θ(4ᵏ·H·D) for k rounds on H corners | Θ(4ᵏ·H·D) | arithmetic operations: one per stencil term: m per face for its centroid and 4 per corner, 5H per round | [PPB, §16.1, §16.4 (b = 2 + 4/m, erratum)] | `src/mesh/doo_sabin.rs` |
+//! | `mesh-subdivision/doo-sabin-limit`: [`mesh::doo_sabin_limit_points`] | Θ(H·D) | Θ(F·D) | arithmetic operations: one per corner: H | [PPB, §16.1, §16.4] | `src/mesh/doo_sabin.rs` |
 //! <!-- /algorithms -->
 //!
 //! ## A first example

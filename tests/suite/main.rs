@@ -42,6 +42,8 @@ mod interpolate;
 mod interpolate_cli;
 mod limits;
 mod mesh;
+mod mesh_doo_sabin;
+mod mesh_loop;
 mod nurbs;
 mod nurbs_cli;
 mod overflow;
