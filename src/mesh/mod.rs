@@ -21,14 +21,40 @@
 //! | `topology.rs` | [`MeshTopology`]: the half-edge arrays, their validation and their invariant checker [`MeshTopology::check`], one-ring walks ([`OneRing`]), valence, boundary loops, Euler characteristic |
 //! | `polygon_mesh.rs` | [`PolygonMesh`]: positions and topology |
 //! | `obj.rs` | [`read_obj`], [`write_obj`]: Wavefront OBJ text |
+//! | `quad_split.rs` | the connectivity of one round of quad refinement (every n-gon into n quadrilaterals), by index arithmetic on the coarse arrays |
+//! | `catmull_clark.rs` | [`catmull_clark`]: k rounds on faces of any size, crease rules on the boundary [PPB, §16.1] |
+//! | `midpoint_cubic.rs` | [`midpoint_cubic`]: the midpoint scheme M₃ = A²R, which differs from Catmull–Clark at extraordinary vertices [PPB, §16.1] |
+//! | `scheme.rs` | [`Scheme`]: the schemes by name (`--scheme`), [`subdivide`] |
+//! | `catmull_clark_limit.rs` | [`catmull_clark_limit`]: limit positions in closed form [PPB, §16.4] |
 //!
 //! Seeded meshes for tests and benchmarks (grids, a cube, tori, an irregular mesh with
 //! extraordinary vertices) are in [`gen`](crate::gen) ([`gen::mesh`](crate::gen::mesh)).
 
+mod catmull_clark;
+mod catmull_clark_limit;
 mod error;
+mod midpoint_cubic;
 mod obj;
 mod polygon_mesh;
+mod quad_split;
+mod scheme;
 mod topology;
+
+/// The mesh algorithms outside the [`Scheme`] family, declared.
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 1] =
+    [&catmull_clark_limit::CATMULL_CLARK_LIMIT];
+
+/// The declarations the catalog's entries measure, by name.
+pub(crate) mod declarations {
+    pub(crate) use super::catmull_clark::CATMULL_CLARK;
+    pub(crate) use super::catmull_clark_limit::CATMULL_CLARK_LIMIT;
+    pub(crate) use super::midpoint_cubic::MIDPOINT_CUBIC;
+}
+
+pub use catmull_clark::{catmull_clark, catmull_clark_with};
+pub use catmull_clark_limit::{catmull_clark_limit, catmull_clark_limit_with};
+pub use midpoint_cubic::{midpoint_cubic, midpoint_cubic_with};
+pub use scheme::{subdivide, subdivide_with, Scheme};
 
 pub use error::{MeshError, ObjProblem};
 pub use obj::{read_obj, write_obj};

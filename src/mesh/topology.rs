@@ -168,10 +168,9 @@ impl MeshTopology {
         Ok(t)
     }
 
-    /// The connectivity from arrays a subdivision scheme built by index arithmetic: the
-    /// edges' half-edges are re-derived when `edge_halfedges` is empty, and the boundary
-    /// loops are found. Nothing is validated (the scheme's construction guarantees the
-    /// invariants); debug builds run [`check`](Self::check).
+    /// The connectivity from arrays a subdivision scheme built by index arithmetic; the
+    /// boundary loops are found here. Nothing is validated (the scheme's construction
+    /// guarantees the invariants); debug builds run [`check`](Self::check).
     #[allow(clippy::too_many_arguments)]
     #[allow(dead_code)] // the subdivision schemes build their refined meshes with it
     pub(crate) fn from_parts_unchecked(
@@ -197,6 +196,37 @@ impl MeshTopology {
             boundary_halfedges: Vec::new(),
         };
         t.find_boundary_loops();
+        debug_assert_eq!(t.check(), Ok(()));
+        t
+    }
+
+    /// [`from_parts_unchecked`](Self::from_parts_unchecked) with the boundary loops too
+    /// (a scheme derives them from the coarse loops without a pass over all half-edges).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn from_parts_with_boundary_unchecked(
+        vertex_count: usize,
+        face_offsets: Vec<u32>,
+        corners: Vec<u32>,
+        twins: Vec<u32>,
+        halfedge_faces: Vec<u32>,
+        halfedge_edges: Vec<u32>,
+        edge_halfedges: Vec<u32>,
+        outgoing: Vec<u32>,
+        boundary_offsets: Vec<u32>,
+        boundary_halfedges: Vec<u32>,
+    ) -> MeshTopology {
+        let t = MeshTopology {
+            vertex_count,
+            face_offsets,
+            corners,
+            twins,
+            halfedge_faces,
+            halfedge_edges,
+            edge_halfedges,
+            outgoing,
+            boundary_offsets,
+            boundary_halfedges,
+        };
         debug_assert_eq!(t.check(), Ok(()));
         t
     }

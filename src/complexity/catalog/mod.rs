@@ -154,6 +154,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(surface_spline::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
+    all.extend(mesh::entries());
     all
 }
 
@@ -196,6 +197,7 @@ mod bspline;
 mod delaunay;
 mod graph;
 mod hull;
+mod mesh;
 mod proximity;
 mod sort;
 mod spline;
