@@ -61,7 +61,7 @@
 //! bounded meshes; the half-edge invariants of every result; face centroids are kept.
 
 use super::polygon_mesh::PolygonMesh;
-use super::topology::{MeshTopology, NONE};
+use super::topology::{edges_of_twins, MeshTopology, NONE};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::{Point, Scalar};
@@ -474,20 +474,7 @@ fn dual_split(t: &MeshTopology) -> Result<MeshTopology> {
             }
         })
         .collect();
-    // Edges in the order of their stored half-edges (the boundary one or the smaller).
-    let mut halfedge_edges = vec![NONE; total];
-    let mut child_edge_halfedges = Vec::with_capacity(total / 2 + 1);
-    for h in 0..total {
-        let tw = child_twins[h];
-        if tw == NONE || (h as u32) < tw {
-            let e = child_edge_halfedges.len() as u32;
-            child_edge_halfedges.push(h as u32);
-            halfedge_edges[h] = e;
-            if tw != NONE {
-                halfedge_edges[tw as usize] = e;
-            }
-        }
-    }
+    let (halfedge_edges, child_edge_halfedges) = edges_of_twins(&child_twins);
     Ok(MeshTopology::from_parts_unchecked(
         h_count,
         face_offsets,

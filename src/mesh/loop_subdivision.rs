@@ -184,7 +184,8 @@ fn cos_two_pi_over<S: Scalar>(n: usize) -> S {
     }
 }
 
-/// `rounds` rounds of Loop subdivision of a triangle mesh. See [`loop_subdivision_with`].
+/// `rounds` rounds of Loop subdivision of a triangle mesh with Loop's weights. See
+/// [`loop_subdivision_weighted_with`] (the algorithm, with the weights chosen).
 ///
 /// The child of a round has the coarse vertices' new points first (vertex v stays v), then
 /// one point per coarse edge (edge e becomes vertex V + e); its triangles are, for each
@@ -203,7 +204,7 @@ fn cos_two_pi_over<S: Scalar>(n: usize) -> S {
 /// Θ(F·4^k·D) for F triangles; Θ(F·4^k·D) space.
 ///
 /// ```
-/// use compgeo::mesh::{loop_subdivision, LoopWeights, PolygonMesh};
+/// use compgeo::mesh::{loop_subdivision, PolygonMesh};
 /// use compgeo::spline::Point;
 ///
 /// // A tetrahedron: 4 triangles, every vertex of valence 3.
@@ -212,24 +213,82 @@ fn cos_two_pi_over<S: Scalar>(n: usize) -> S {
 ///     vec![p(0.0, 0.0, 0.0), p(16.0, 0.0, 0.0), p(0.0, 16.0, 0.0), p(0.0, 0.0, 16.0)],
 ///     &[[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
 /// )?;
-/// let once = loop_subdivision(&tetra, 1, LoopWeights::Loop)?;
+/// let once = loop_subdivision(&tetra, 1)?;
 /// assert_eq!((once.vertex_count(), once.face_count()), (4 + 6, 16));
 /// // Vertex 0 of valence 3: (1 − 3·3/16)·(0, 0, 0) + 3/16·((16, 0, 0) + (0, 16, 0) + (0, 0, 16)).
 /// assert_eq!(once.position(0), &p(3.0, 3.0, 3.0));
-/// let twice = loop_subdivision(&tetra, 2, LoopWeights::Loop)?;
+/// let twice = loop_subdivision(&tetra, 2)?;
 /// assert_eq!((twice.face_count(), twice.euler_characteristic()), (64, 2));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn loop_subdivision<S: Scalar, const D: usize>(
     mesh: &PolygonMesh<S, D>,
     rounds: usize,
-    weights: LoopWeights,
 ) -> Result<PolygonMesh<S, D>> {
-    loop_subdivision_with(mesh, rounds, weights, &mut NoCount)
+    loop_subdivision_weighted_with(mesh, rounds, LoopWeights::Loop, &mut NoCount)
 }
 
-/// [`loop_subdivision`], counting one [`arithmetic_operation`](Counter::arithmetic_operation)
-/// per stencil term.
+/// [`loop_subdivision`] (Loop's weights), counting as [`loop_subdivision_weighted_with`].
+///
+/// # Errors
+///
+/// As [`loop_subdivision`].
+///
+/// # Complexity
+///
+/// Θ(F·4^k·D) for F triangles; Θ(F·4^k·D) space.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::gen::triangle_torus;
+/// use compgeo::mesh::loop_subdivision_with;
+///
+/// let torus = triangle_torus(4, 5)?; // 20 vertices, 60 edges, 40 triangles
+/// let mut c = Counts::default();
+/// let once = loop_subdivision_with(&torus, 1, &mut c)?;
+/// assert_eq!(c.arithmetic_operations, 20 + 6 * 60);
+/// assert_eq!((once.vertex_count(), once.edge_count(), once.face_count()), (80, 240, 160));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn loop_subdivision_with<S: Scalar, const D: usize, C: Counter>(
+    mesh: &PolygonMesh<S, D>,
+    rounds: usize,
+    counter: &mut C,
+) -> Result<PolygonMesh<S, D>> {
+    loop_subdivision_weighted_with(mesh, rounds, LoopWeights::Loop, counter)
+}
+
+/// `rounds` rounds of Loop subdivision with the vertex weights `weights`. See
+/// [`loop_subdivision_weighted_with`].
+///
+/// # Errors
+///
+/// As [`loop_subdivision`].
+///
+/// # Complexity
+///
+/// Θ(F·4^k·D) for F triangles; Θ(F·4^k·D) space.
+///
+/// ```
+/// use compgeo::gen::triangle_torus;
+/// use compgeo::mesh::{loop_subdivision, loop_subdivision_weighted, LoopWeights};
+///
+/// // Every vertex of valence 6: Warren's β(6) = 1/16 is Loop's.
+/// let torus = triangle_torus(4, 5)?;
+/// let warren = loop_subdivision_weighted(&torus, 2, LoopWeights::Warren)?;
+/// assert_eq!(warren, loop_subdivision(&torus, 2)?);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn loop_subdivision_weighted<S: Scalar, const D: usize>(
+    mesh: &PolygonMesh<S, D>,
+    rounds: usize,
+    weights: LoopWeights,
+) -> Result<PolygonMesh<S, D>> {
+    loop_subdivision_weighted_with(mesh, rounds, weights, &mut NoCount)
+}
+
+/// [`loop_subdivision_weighted`], counting one
+/// [`arithmetic_operation`](Counter::arithmetic_operation) per stencil term.
 ///
 /// Idea [PPB, §15.7, §16.9]: the new points from the coarse mesh's half-edge arrays (one
 /// sweep over the half-edges sums every vertex's neighbours; one pass over the edges makes
@@ -251,17 +310,18 @@ pub fn loop_subdivision<S: Scalar, const D: usize>(
 ///
 /// ```
 /// use compgeo::count::Counts;
-/// use compgeo::gen::triangle_torus;
-/// use compgeo::mesh::{loop_subdivision_with, LoopWeights};
+/// use compgeo::gen::triangle_grid;
+/// use compgeo::mesh::{loop_subdivision_weighted_with, LoopWeights};
 ///
-/// let torus = triangle_torus(4, 5)?; // 20 vertices, 60 edges, 40 triangles
+/// // 2 × 2 squares cut into 8 triangles: 9 vertices (1 inner of valence 6), 16 edges
+/// // (8 inner).
+/// let grid = triangle_grid(2, 2)?;
 /// let mut c = Counts::default();
-/// let once = loop_subdivision_with(&torus, 1, LoopWeights::Loop, &mut c)?;
-/// assert_eq!(c.arithmetic_operations, 20 + 6 * 60);
-/// assert_eq!((once.vertex_count(), once.edge_count(), once.face_count()), (80, 240, 160));
+/// loop_subdivision_weighted_with(&grid, 1, LoopWeights::Warren, &mut c)?;
+/// assert_eq!(c.arithmetic_operations, 7 + 8 * 3 + 8 * 4 + 8 * 2);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn loop_subdivision_with<S: Scalar, const D: usize, C: Counter>(
+pub fn loop_subdivision_weighted_with<S: Scalar, const D: usize, C: Counter>(
     mesh: &PolygonMesh<S, D>,
     rounds: usize,
     weights: LoopWeights,
@@ -296,7 +356,7 @@ pub fn loop_subdivision_with<S: Scalar, const D: usize, C: Counter>(
 /// let limits = loop_limit_points(&torus, LoopWeights::Loop)?;
 /// assert_eq!(limits.len(), 20);
 /// // A vertex keeps its limit position through a round (up to rounding in f64).
-/// let once = loop_subdivision(&torus, 1, LoopWeights::Loop)?;
+/// let once = loop_subdivision(&torus, 1)?;
 /// let again = loop_limit_points(&once, LoopWeights::Loop)?;
 /// for v in 0..20 {
 ///     for i in 0..3 {

@@ -129,7 +129,6 @@ impl<S: Scalar, const D: usize> PolygonMesh<S, D> {
 
     /// A mesh from positions and connectivity a scheme built (no validation; debug builds
     /// check the sizes agree).
-    #[allow(dead_code)] // the subdivision schemes build their refined meshes with it
     pub(crate) fn from_parts_unchecked(
         positions: Vec<Point<S, D>>,
         topology: MeshTopology,

@@ -168,10 +168,9 @@ impl MeshTopology {
         Ok(t)
     }
 
-    /// The connectivity from arrays a subdivision scheme built by index arithmetic: the
-    /// edges' half-edges are re-derived when `edge_halfedges` is empty, and the boundary
-    /// loops are found. Nothing is validated (the scheme's construction guarantees the
-    /// invariants); debug builds run [`check`](Self::check).
+    /// The connectivity from arrays a subdivision scheme built by index arithmetic; the
+    /// boundary loops are found here. Nothing is validated (the scheme's construction
+    /// guarantees the invariants); debug builds run [`check`](Self::check).
     #[allow(clippy::too_many_arguments)]
     #[allow(dead_code)] // the subdivision schemes build their refined meshes with it
     pub(crate) fn from_parts_unchecked(
@@ -197,6 +196,37 @@ impl MeshTopology {
             boundary_halfedges: Vec::new(),
         };
         t.find_boundary_loops();
+        debug_assert_eq!(t.check(), Ok(()));
+        t
+    }
+
+    /// [`from_parts_unchecked`](Self::from_parts_unchecked) with the boundary loops too
+    /// (a scheme derives them from the coarse loops without a pass over all half-edges).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn from_parts_with_boundary_unchecked(
+        vertex_count: usize,
+        face_offsets: Vec<u32>,
+        corners: Vec<u32>,
+        twins: Vec<u32>,
+        halfedge_faces: Vec<u32>,
+        halfedge_edges: Vec<u32>,
+        edge_halfedges: Vec<u32>,
+        outgoing: Vec<u32>,
+        boundary_offsets: Vec<u32>,
+        boundary_halfedges: Vec<u32>,
+    ) -> MeshTopology {
+        let t = MeshTopology {
+            vertex_count,
+            face_offsets,
+            corners,
+            twins,
+            halfedge_faces,
+            halfedge_edges,
+            edge_halfedges,
+            outgoing,
+            boundary_offsets,
+            boundary_halfedges,
+        };
         debug_assert_eq!(t.check(), Ok(()));
         t
     }
@@ -643,22 +673,7 @@ impl MeshTopology {
     /// Numbers the edges in the order of their stored half-edges (the boundary one or the
     /// smaller index).
     fn number_edges(&mut self) {
-        let h_count = self.corners.len();
-        let mut halfedge_edges = vec![NONE; h_count];
-        let mut edge_halfedges = Vec::with_capacity(h_count / 2 + 1);
-        for h in 0..h_count {
-            let t = self.twins[h];
-            if t == NONE || (h as u32) < t {
-                let e = edge_halfedges.len() as u32;
-                edge_halfedges.push(h as u32);
-                halfedge_edges[h] = e;
-                if t != NONE {
-                    halfedge_edges[t as usize] = e;
-                }
-            }
-        }
-        self.halfedge_edges = halfedge_edges;
-        self.edge_halfedges = edge_halfedges;
+        (self.halfedge_edges, self.edge_halfedges) = edges_of_twins(&self.twins);
     }
 
     /// Picks each vertex's outgoing half-edge (its boundary one, or its first) and checks
@@ -782,6 +797,26 @@ impl Vec2 {
     fn first(&self) -> Option<&u32> {
         self.items[..self.len].first()
     }
+}
+
+/// The edge of every half-edge and the stored half-edge of every edge, numbered in the
+/// order of their stored half-edges (the boundary one, or the smaller index of a pair), from
+/// the twins alone: the numbering of a validated mesh, shared by the schemes that build
+/// their twins first (Doo–Sabin).
+pub(crate) fn edges_of_twins(twins: &[u32]) -> (Vec<u32>, Vec<u32>) {
+    let mut halfedge_edges = vec![NONE; twins.len()];
+    let mut edge_halfedges = Vec::with_capacity(twins.len() / 2 + 1);
+    for (h, &t) in twins.iter().enumerate() {
+        if t == NONE || (h as u32) < t {
+            let e = edge_halfedges.len() as u32;
+            edge_halfedges.push(h as u32);
+            halfedge_edges[h] = e;
+            if t != NONE {
+                halfedge_edges[t as usize] = e;
+            }
+        }
+    }
+    (halfedge_edges, edge_halfedges)
 }
 
 fn mesh_error(e: MeshError) -> Error {

@@ -26,6 +26,7 @@
 //!
 //! Θ(H) time and space.
 
+use super::quad_split::stored;
 use super::topology::{MeshTopology, NONE};
 
 /// The first half of coarse half-edge `h` (at its origin), in the corner triangle of h.
@@ -58,12 +59,6 @@ fn prev(h: usize) -> usize {
 #[inline(always)]
 fn second_half(h: usize) -> u32 {
     first_half(next(h)) + 2
-}
-
-/// `true` if `h` is the stored half-edge of its edge: its twin is missing or larger.
-#[inline(always)]
-fn stored(h: usize, twin: u32) -> bool {
-    twin == NONE || (h as u32) < twin
 }
 
 /// The child connectivity of one round of a triangle mesh (see the module docs for the
@@ -133,8 +128,15 @@ pub(crate) fn triangle_split(t: &MeshTopology) -> MeshTopology {
     // From an edge point, the second half of the stored half-edge: the boundary one on a
     // boundary edge.
     outgoing.extend(t.edge_halfedges().iter().map(|&s| second_half(s as usize)));
+    // Each coarse boundary half-edge h becomes its two halves, in the same loop.
+    let mut boundary = Vec::with_capacity(2 * t.boundary_halfedges.len());
+    for &h in &t.boundary_halfedges {
+        boundary.push(first_half(h as usize));
+        boundary.push(second_half(h as usize));
+    }
+    let boundary_offsets = t.boundary_offsets.iter().map(|&o| 2 * o).collect();
     let face_offsets = (0..=4 * f_count as u32).map(|g| 3 * g).collect();
-    MeshTopology::from_parts_unchecked(
+    MeshTopology::from_parts_with_boundary_unchecked(
         v_count + e_count,
         face_offsets,
         corners,
@@ -143,6 +145,8 @@ pub(crate) fn triangle_split(t: &MeshTopology) -> MeshTopology {
         child_edges,
         edge_halfedges,
         outgoing,
+        boundary_offsets,
+        boundary,
     )
 }
 

@@ -25,6 +25,7 @@ mod bspline_fit;
 mod bspline_hostile;
 mod bspline_knot_ops;
 mod calipers;
+mod catmull_clark;
 mod cli;
 mod complexity;
 mod constructions;

@@ -12,8 +12,8 @@ use crate::surface_subdivision::{lattice_net, quartic_box_spline_round, Grid};
 use compgeo::count::Counts;
 use compgeo::gen::{irregular_disk, irregular_torus, quad_grid, triangle_torus};
 use compgeo::mesh::{
-    loop_limit_points, loop_limit_points_with, loop_subdivision, loop_subdivision_with,
-    LoopWeights, MeshError, PolygonMesh,
+    loop_limit_points, loop_limit_points_with, loop_subdivision, loop_subdivision_weighted,
+    loop_subdivision_with, LoopWeights, MeshError, PolygonMesh,
 };
 use compgeo::spline::subdivision::{lane_riesenfeld, Topology};
 use compgeo::spline::{Point, Scalar};
@@ -81,7 +81,7 @@ fn loop_on_a_regular_triangular_torus_is_the_quartic_box_spline() {
         let mut index: Vec<(usize, usize)> = (0..20).map(|v| (v / 5, v % 5)).collect();
         let start = mesh.clone();
         for round in 1..=3 {
-            let child = loop_subdivision(&mesh, 1, weights).unwrap();
+            let child = loop_subdivision_weighted(&mesh, 1, weights).unwrap();
             grid = quartic_box_spline_round(&grid);
             let t = mesh.topology();
             let (v_count, (m2, n2)) = (mesh.vertex_count(), (2 * gm, 2 * gn));
@@ -135,7 +135,7 @@ fn loop_on_a_regular_triangular_torus_is_the_quartic_box_spline() {
             (gm, gn) = (m2, n2);
         }
         // k rounds at once are the rounds one by one.
-        assert_eq!(loop_subdivision(&start, 3, weights).unwrap(), mesh);
+        assert_eq!(loop_subdivision_weighted(&start, 3, weights).unwrap(), mesh);
     }
 }
 
@@ -192,7 +192,7 @@ fn counts_euler_characteristic_and_half_edges_per_round() {
         let mut mesh = start.clone();
         for round in 1..=3 {
             let mut c = Counts::default();
-            let child = loop_subdivision_with(&mesh, 1, LoopWeights::Loop, &mut c).unwrap();
+            let child = loop_subdivision_with(&mesh, 1, &mut c).unwrap();
             let (v, e, f) = (mesh.vertex_count(), mesh.edge_count(), mesh.face_count());
             assert_eq!(
                 (child.vertex_count(), child.edge_count(), child.face_count()),
@@ -277,7 +277,7 @@ fn the_boundary_is_subdivided_as_a_closed_cubic_b_spline() {
         let mut mesh = exact(&fans(&irregular_disk(30, seed).unwrap()));
         for round in 1..=2 {
             for weights in WEIGHTS {
-                let child = loop_subdivision(&mesh, 1, weights).unwrap();
+                let child = loop_subdivision_weighted(&mesh, 1, weights).unwrap();
                 let (t, ct) = (mesh.topology(), child.topology());
                 assert_eq!(ct.boundary_loop_count(), t.boundary_loop_count());
                 for i in 0..t.boundary_loop_count() {
@@ -303,7 +303,7 @@ fn the_boundary_is_subdivided_as_a_closed_cubic_b_spline() {
                     );
                 }
             }
-            mesh = loop_subdivision(&mesh, 1, LoopWeights::Loop).unwrap();
+            mesh = loop_subdivision_weighted(&mesh, 1, LoopWeights::Loop).unwrap();
         }
     }
 }
@@ -324,7 +324,7 @@ fn limit_positions_are_fixed_by_a_round() {
         );
         for weights in WEIGHTS {
             let before = loop_limit_points(&mesh, weights).unwrap();
-            let child = loop_subdivision(&mesh, 1, weights).unwrap();
+            let child = loop_subdivision_weighted(&mesh, 1, weights).unwrap();
             let after = loop_limit_points(&child, weights).unwrap();
             assert_eq!(after[..mesh.vertex_count()], before[..], "{weights:?}");
         }
@@ -355,10 +355,7 @@ fn bad_meshes_and_round_counts_are_named_errors() {
         face: 0,
         corners: 4,
     });
-    assert_eq!(
-        loop_subdivision(&quads, 1, LoopWeights::Loop).unwrap_err(),
-        e
-    );
+    assert_eq!(loop_subdivision(&quads, 1).unwrap_err(), e);
     assert_eq!(loop_limit_points(&quads, LoopWeights::Loop).unwrap_err(), e);
     let p = |x: f64, y: f64| Point::new([x, y, 0.0]);
     let mixed = PolygonMesh::new(
@@ -374,18 +371,18 @@ fn bad_meshes_and_round_counts_are_named_errors() {
     )
     .unwrap();
     assert_eq!(
-        loop_subdivision(&mixed, 1, LoopWeights::Warren).unwrap_err(),
+        loop_subdivision_weighted(&mixed, 1, LoopWeights::Warren).unwrap_err(),
         Error::Mesh(MeshError::NotATriangle {
             face: 2,
             corners: 4
         })
     );
     // Zero rounds of a quad mesh are still refused: the scheme does not apply.
-    assert!(loop_subdivision(&quads, 0, LoopWeights::Loop).is_err());
+    assert!(loop_subdivision_weighted(&quads, 0, LoopWeights::Loop).is_err());
     let torus = triangle_torus(4, 5).unwrap();
     for rounds in [12, 64, usize::MAX] {
         assert!(matches!(
-            loop_subdivision(&torus, rounds, LoopWeights::Loop),
+            loop_subdivision(&torus, rounds),
             Err(Error::LimitExceeded { .. })
         ));
     }
@@ -399,7 +396,7 @@ fn bad_meshes_and_round_counts_are_named_errors() {
     )
     .unwrap();
     assert!(matches!(
-        loop_subdivision(&huge, 1, LoopWeights::Loop),
+        loop_subdivision(&huge, 1),
         Err(Error::Overflow { .. })
     ));
 }
@@ -412,11 +409,11 @@ proptest! {
     #[test]
     fn random_disks_subdivide_to_valid_meshes(seed in 0u64..1000, points in 8usize..40) {
         let mesh = fans(&irregular_disk(points, seed).unwrap());
-        let child = loop_subdivision(&mesh, 2, LoopWeights::Loop).unwrap();
+        let child = loop_subdivision_weighted(&mesh, 2, LoopWeights::Loop).unwrap();
         prop_assert_eq!(child.topology().check(), Ok(()));
         prop_assert_eq!(child.face_count(), 16 * mesh.face_count());
         prop_assert_eq!(child.euler_characteristic(), 1);
-        let exact_child = loop_subdivision(&exact(&mesh), 2, LoopWeights::Loop).unwrap();
+        let exact_child = loop_subdivision_weighted(&exact(&mesh), 2, LoopWeights::Loop).unwrap();
         for (a, b) in child.positions().iter().zip(exact_child.positions()) {
             for k in 0..3 {
                 prop_assert!((a[k] - b[k].to_f64()).abs() <= 1e-12 * (1.0 + a[k].abs()));

@@ -155,6 +155,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(subdivision_surface::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
+    all.extend(mesh::entries());
     all
 }
 
@@ -197,6 +198,7 @@ mod bspline;
 mod delaunay;
 mod graph;
 mod hull;
+mod mesh;
 mod proximity;
 mod sort;
 mod spline;

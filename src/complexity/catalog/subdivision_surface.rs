@@ -111,12 +111,7 @@ impl Workload for Mesh {
     fn run<C: Counter>(&self, input: &mut Self::Input, c: &mut C) -> Result<Self::Output> {
         let weights = LoopWeights::Loop;
         Ok(match self.run {
-            Run::Loop => Outcome::Mesh(Box::new(loop_subdivision_with(
-                input,
-                MESH_ROUNDS,
-                weights,
-                c,
-            )?)),
+            Run::Loop => Outcome::Mesh(Box::new(loop_subdivision_with(input, MESH_ROUNDS, c)?)),
             Run::LoopLimit => Outcome::Points(loop_limit_points_with(input, weights, c)?),
             Run::DooSabin => Outcome::Mesh(Box::new(doo_sabin_with(input, MESH_ROUNDS, c)?)),
             Run::DooSabinLimit => Outcome::Points(doo_sabin_limit_points_with(input, c)?),
