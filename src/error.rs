@@ -86,6 +86,10 @@ pub enum Error {
         /// Why it is invalid, with the value.
         reason: String,
     },
+    /// A polygon mesh that is not a valid oriented manifold (the violation names the face,
+    /// vertex or edge), or Wavefront OBJ text that cannot be read (the line number).
+    #[error(transparent)]
+    Mesh(#[from] crate::mesh::MeshError),
 }
 
 /// A broken invariant, found by one of the crate's checkers

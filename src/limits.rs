@@ -152,6 +152,21 @@ pub const MAX_SUBDIVISION_POINTS: usize = 1 << 24;
 /// round doubles the output; four points a polygon, 64 MiB of planar `f64` points at the limit.
 pub const MAX_SUBDIVIDED_PIECES: usize = 1 << 20;
 
+/// The most vertices a [`PolygonMesh`](crate::mesh::PolygonMesh) may have: 2^26. Vertex
+/// ids are stored in 32 bits; an OBJ file is refused at its 2^26 + 1st `v` line, before it
+/// is all read. 1.5 GiB of `f64` positions in R³ at the limit.
+pub const MAX_MESH_VERTICES: usize = 1 << 26;
+
+/// The most corners (half-edges, the sum of the face sizes) a
+/// [`PolygonMesh`](crate::mesh::PolygonMesh) may have, given or produced by subdivision:
+/// 2^26.
+///
+/// Each round of a subdivision scheme multiplies the corners by about four, so a round count
+/// (`--rounds 20`) could otherwise ask for any amount of memory; the rounds are refused
+/// before the first one runs. A half-edge takes 16 bytes of connectivity, 1 GiB at the
+/// limit, plus the positions.
+pub const MAX_MESH_CORNERS: usize = 1 << 26;
+
 /// One limit: its constant's name, its value and what it bounds, as the error message and
 /// the table in `docs/design.md` say them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -293,8 +308,22 @@ pub(crate) const SUBDIVIDED_PIECES: Limit = Limit {
     what: "subdivided polygon count",
 };
 
+/// [`MAX_MESH_VERTICES`].
+pub(crate) const MESH_VERTICES: Limit = Limit {
+    name: "MAX_MESH_VERTICES",
+    max: MAX_MESH_VERTICES,
+    what: "mesh vertex count",
+};
+
+/// [`MAX_MESH_CORNERS`].
+pub(crate) const MESH_CORNERS: Limit = Limit {
+    name: "MAX_MESH_CORNERS",
+    max: MAX_MESH_CORNERS,
+    what: "mesh corner count",
+};
+
 /// Every limit, in the order of the table in `docs/design.md`.
-pub const ALL: [Limit; 18] = [
+pub const ALL: [Limit; 20] = [
     POINTS,
     COCIRCULAR,
     KEYS,
@@ -313,6 +342,8 @@ pub const ALL: [Limit; 18] = [
     KNOTS,
     SUBDIVISION_POINTS,
     SUBDIVIDED_PIECES,
+    MESH_VERTICES,
+    MESH_CORNERS,
 ];
 
 #[cfg(test)]

@@ -1,4 +1,4 @@
-//! Seeded workload generators: point sets, graphs and number sequences.
+//! Seeded workload generators: point sets, graphs, number sequences and polygon meshes.
 //!
 //! Every generator is deterministic: the same arguments and seed give bit-identical output
 //! on every machine. Randomness comes from ChaCha8 (`rand_chacha`, seeded with
@@ -17,6 +17,7 @@
 //! | [`points`] | `Vec<Point2>` of a [`PointKind`] |
 //! | [`graph`], [`with_random_weights`] | an [`EdgeList`](crate::graph::EdgeList) of a [`GraphKind`] |
 //! | [`sequence`], [`sequence_f64`] | `i64` keys of a [`SequenceKind`], `f64` keys |
+//! | [`mesh`] (and [`quad_grid`], [`triangle_grid`], [`cube`], [`quad_torus`], [`triangle_torus`], [`irregular_torus`], [`irregular_disk`]) | a [`PolygonMesh`](crate::mesh::PolygonMesh) of a [`MeshKind`] |
 //!
 //! ```
 //! use compgeo::gen::{points, PointKind};
@@ -31,11 +32,16 @@
 mod cocircular;
 mod gaussian;
 mod graphs;
+mod meshes;
 mod points;
 mod rng;
 mod sequences;
 
 pub use graphs::{graph, with_random_weights, GraphKind};
+pub use meshes::{
+    cube, irregular_disk, irregular_torus, mesh, quad_grid, quad_torus, triangle_grid,
+    triangle_torus, MeshKind,
+};
 pub use points::{points, PointKind, MAX_COCIRCULAR};
 pub use sequences::{sequence, sequence_f64, SequenceKind, RANDOM_KEY_BOUND};
 

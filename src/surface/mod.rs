@@ -42,6 +42,7 @@
 //! | `least_squares.rs` | [`BSplineSurface::fit`], [`BezierPatch::fit`]: normal equations with a rank check [FJ-surfaces, §7] |
 //! | `loft.rs` | [`BezierPatch::bilinear`], [`BSplineSurface::loft`]: through compatible curves [RD, §3.3] |
 //! | `bicubic.rs` | [`BezierPatchGrid::bicubic_c1`]: piecewise bicubic C¹ interpolation [PPB, §9.8] |
+//! | `lane_riesenfeld.rs` | [`ControlNet::lane_riesenfeld`]: k rounds of tensor Lane–Riesenfeld subdivision of bidegree (p, q) on a regular net, the curve algorithm on the rows then the columns; [`ControlNet::limit_points`] [PPB, §15.1–15.2] |
 //! | `tessellate.rs` | [`tessellate`], [`tessellate_at_with`]: any surface in R³ as a [`TriangleMesh`] with unit normals |
 //! | `export.rs` | [`TriangleMesh::write_obj`] (Wavefront OBJ), [`TriangleMesh::write_stl`] (ASCII STL) |
 //! | `triangle/` | [`TriangularPatch`]: triangular Bézier patches, one algorithm per file (its own table in [`triangle`]) [PPB, ch. 10–11] |
@@ -67,6 +68,7 @@ mod elevate;
 mod export;
 mod interpolate;
 mod join;
+mod lane_riesenfeld;
 mod least_squares;
 mod loft;
 mod monomial;
@@ -80,7 +82,7 @@ mod traits;
 pub mod triangle;
 
 /// The surface algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 32] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 34] = [
     &bezier::ROWS_FIRST,
     &bezier::COLUMNS_FIRST,
     &bezier::TENSOR_DE_CASTELJAU,
@@ -113,6 +115,8 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 32] = [
     &least_squares::SURFACE_FIT,
     &loft::LOFT,
     &bicubic::BICUBIC_C1,
+    &lane_riesenfeld::NET_LANE_RIESENFELD,
+    &lane_riesenfeld::NET_LIMIT_POINTS,
 ];
 
 /// The declarations the catalog's entries measure, by name.
@@ -129,6 +133,7 @@ pub(crate) mod declarations {
     pub(crate) use super::elevate::ELEVATE_TO;
     pub(crate) use super::interpolate::SURFACE_INTERPOLATE;
     pub(crate) use super::join::{EXTEND_CR_U, EXTEND_CR_V, JOIN_U, JOIN_V};
+    pub(crate) use super::lane_riesenfeld::{NET_LANE_RIESENFELD, NET_LIMIT_POINTS};
     pub(crate) use super::least_squares::SURFACE_FIT;
     pub(crate) use super::loft::LOFT;
     pub(crate) use super::monomial::{FROM_MONOMIAL, TO_MONOMIAL};

@@ -153,8 +153,10 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(surface::entries());
     all.extend(surface_spline::entries());
     all.extend(triangle::entries());
+    all.extend(subdivision_surface::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
+    all.extend(mesh::entries());
     all
 }
 
@@ -197,10 +199,12 @@ mod bspline;
 mod delaunay;
 mod graph;
 mod hull;
+mod mesh;
 mod proximity;
 mod sort;
 mod spline;
 mod subdivision;
+mod subdivision_surface;
 mod surface;
 mod surface_spline;
 mod triangle;
