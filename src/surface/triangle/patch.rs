@@ -43,7 +43,9 @@ use crate::{limits, Error, Result};
 /// It is also a [`Surface`] in the parameters (u, v) with w = 1 − u − v: over the reference
 /// triangle p = (1, 0), q = (0, 1), r = (0, 0) of the (u, v) plane, so that
 /// [`SurfaceDerivative::partial_at`] gives ∂/∂u = D_{p−r} and ∂/∂v = D_{q−r}, and the
-/// crate's [`normal`](crate::surface::normal) applies.
+/// crate's [`normal`](crate::surface::normal) applies. (The generic
+/// [`tessellate`](crate::surface::tessellate) samples the square [0, 1]² of that plane, half
+/// of it beyond the edge p q; [`TriangularPatch::tessellate`] samples the triangle.)
 ///
 /// ```
 /// use compgeo::spline::Point;
