@@ -43,6 +43,7 @@ mod interpolate;
 mod interpolate_cli;
 mod limits;
 mod mesh;
+mod mesh_cli;
 mod mesh_doo_sabin;
 mod mesh_loop;
 mod nurbs;
