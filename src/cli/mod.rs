@@ -54,6 +54,7 @@ mod hull;
 // The fuzz checks (`crate::fuzzing`) call the readers directly.
 pub(crate) mod input;
 mod interpolate;
+mod mesh;
 mod nurbs;
 mod output;
 mod proximity;
@@ -129,6 +130,8 @@ enum Command {
     Emst(proximity::PointsArgs),
     /// Largest empty circle centred in the convex hull
     EmptyCircle(proximity::PointsArgs),
+    /// Polygon meshes from OBJ: k rounds of a subdivision scheme (Catmull–Clark, ...)
+    Mesh(mesh::MeshArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -172,6 +175,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Nearest(args) => proximity::run_nearest(args),
         Command::Emst(args) => proximity::run_emst(args),
         Command::EmptyCircle(args) => proximity::run_empty_circle(args),
+        Command::Mesh(args) => mesh::run(args),
     }
 }
 

@@ -43,6 +43,8 @@ mod interpolate;
 mod interpolate_cli;
 mod limits;
 mod mesh;
+mod mesh_cli;
+mod mesh_cli_schemes;
 mod mesh_doo_sabin;
 mod mesh_loop;
 mod nurbs;
