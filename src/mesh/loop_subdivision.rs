@@ -51,7 +51,7 @@
 //! # Complexity
 //!
 //! One round of a mesh with V vertices, E edges and F triangles: Θ((V + E + F)·D) time and
-//! space; k rounds Θ(F·4^k·D), the last round dominating (F·4^k triangles). The connectivity
+//! space; k rounds Θ(4ᵏ·F·D), the last round dominating (4ᵏ·F triangles). The connectivity
 //! is built by index arithmetic from the coarse half-edges (`triangle_split.rs`).
 //!
 //! Invariants the tests check (exactly, on rationals): on a periodic regular triangular grid
@@ -76,8 +76,8 @@ pub(crate) const LOOP: Declaration = Declaration {
     function: "mesh::loop_subdivision",
     file: "src/mesh/loop_subdivision.rs",
     summary: "k rounds of Loop's scheme on a triangle mesh: every triangle into four, edge points ⅜, ⅜, ⅛, ⅛ and vertex points (1 − nβ)v + βΣvᵢ",
-    time: "Θ(F·4^k·D) for F triangles",
-    space: "Θ(F·4^k·D)",
+    time: "Θ(4ᵏ·F·D) for k rounds on F triangles",
+    space: "Θ(4ᵏ·F·D)",
     operation: Some(Operation::ArithmeticOperations),
     counts: "one per stencil term: n + 1 per inner vertex of valence n, 3 per boundary vertex, 4 per inner edge, 2 per boundary edge; V + 6E per round on a closed mesh",
     source: "[PPB, §15.7–15.8, §16.8–16.9]",
@@ -201,7 +201,7 @@ fn cos_two_pi_over<S: Scalar>(n: usize) -> S {
 ///
 /// # Complexity
 ///
-/// Θ(F·4^k·D) for F triangles; Θ(F·4^k·D) space.
+/// Θ(4ᵏ·F·D) for k rounds on F triangles; Θ(4ᵏ·F·D) space.
 ///
 /// ```
 /// use compgeo::mesh::{loop_subdivision, PolygonMesh};
@@ -236,7 +236,7 @@ pub fn loop_subdivision<S: Scalar, const D: usize>(
 ///
 /// # Complexity
 ///
-/// Θ(F·4^k·D) for F triangles; Θ(F·4^k·D) space.
+/// Θ(4ᵏ·F·D) for k rounds on F triangles; Θ(4ᵏ·F·D) space.
 ///
 /// ```
 /// use compgeo::count::Counts;
@@ -267,7 +267,7 @@ pub fn loop_subdivision_with<S: Scalar, const D: usize, C: Counter>(
 ///
 /// # Complexity
 ///
-/// Θ(F·4^k·D) for F triangles; Θ(F·4^k·D) space.
+/// Θ(4ᵏ·F·D) for k rounds on F triangles; Θ(4ᵏ·F·D) space.
 ///
 /// ```
 /// use compgeo::gen::triangle_torus;
@@ -301,7 +301,7 @@ pub fn loop_subdivision_weighted<S: Scalar, const D: usize>(
 ///
 /// # Complexity
 ///
-/// Θ(F·4^k·D) for F triangles; Θ(F·4^k·D) space.
+/// Θ(4ᵏ·F·D) for k rounds on F triangles; Θ(4ᵏ·F·D) space.
 ///
 /// # Counts
 ///

@@ -44,6 +44,7 @@ mod interpolate_cli;
 mod limits;
 mod mesh;
 mod mesh_cli;
+mod mesh_cli_schemes;
 mod mesh_doo_sabin;
 mod mesh_loop;
 mod nurbs;
