@@ -1,5 +1,6 @@
 //! Rotating calipers over a convex polygon: the antipodal pairs, the diameter, the width and
-//! the minimum-area enclosing rectangle; and the diameter of a point set by brute force.
+//! the minimum-area and minimum-perimeter enclosing rectangles; and the diameter of a point
+//! set by brute force.
 //!
 //! The course ([RD, §2.3], "Cálculo del diámetro de una nube de puntos") proves that the
 //! diameter is attained by two hull vertices that are antipodal (they admit parallel
@@ -9,10 +10,13 @@
 //! [`cross_sign`](crate::geometry::cross_sign) of the two edge directions, exact.
 //!
 //! The same calipers give the width (the smallest distance between two parallel supporting
-//! lines) and the minimum-area enclosing rectangle: both are attained with one side on a hull
-//! edge, so four calipers, one per side, rotate once around the hull and each edge is scored
-//! with an exact comparison ([`cmp_line_dist`](crate::geometry::cmp_line_dist),
-//! [`cmp_rect_area`](crate::geometry::cmp_rect_area)) instead of a rounded distance or area.
+//! lines) and the minimum-area and minimum-perimeter enclosing rectangles: all are attained
+//! with one side on a hull edge, so four calipers, one per side, rotate once around the hull
+//! and each edge is scored with an exact comparison
+//! ([`cmp_line_dist`](crate::geometry::cmp_line_dist),
+//! [`cmp_rect_area`](crate::geometry::cmp_rect_area),
+//! [`cmp_rect_perimeter`](crate::geometry::cmp_rect_perimeter)) instead of a rounded
+//! distance, area or perimeter.
 //!
 //! # One hull, every caliper
 //!
@@ -25,7 +29,8 @@
 //! | [`ConvexPolygon::antipodal_pairs`] | every antipodal pair of vertices | `antipodal.rs` |
 //! | [`ConvexPolygon::diameter`] | the farthest pair | `diameter.rs` |
 //! | [`ConvexPolygon::width`] | the closest pair of parallel supporting lines | `width.rs` |
-//! | [`ConvexPolygon::min_area_rectangle`] | the smallest enclosing rectangle | `rectangle.rs` |
+//! | [`ConvexPolygon::min_area_rectangle`] | the enclosing rectangle of least area | `rectangle.rs` |
+//! | [`ConvexPolygon::min_perimeter_rectangle`] | the enclosing rectangle of least perimeter | `perimeter_rectangle.rs` |
 //!
 //! [`diameter`] chooses between the calipers and brute force ([`DiameterAlgorithm`]) on a
 //! point set, as the other algorithm families do.
@@ -48,6 +53,7 @@
 
 mod antipodal;
 mod diameter;
+mod perimeter_rectangle;
 mod rectangle;
 mod sides;
 mod width;
@@ -68,11 +74,12 @@ use crate::hull::{akl_toussaint_with, check_strictly_convex_ccw, HullOptions};
 pub(crate) const ANTIPODAL_PAIRS: &Declaration = &antipodal::DECLARATION;
 
 /// The caliper algorithms that are not a choice among alternatives: the antipodal pairs, the
-/// width and the minimum-area rectangle.
-pub(crate) const DECLARATIONS: [&Declaration; 3] = [
+/// width and the minimum-area and minimum-perimeter rectangles.
+pub(crate) const DECLARATIONS: [&Declaration; 4] = [
     ANTIPODAL_PAIRS,
     &width::DECLARATION,
     &rectangle::DECLARATION,
+    &perimeter_rectangle::DECLARATION,
 ];
 
 /// A strictly convex polygon: the vertices, counter-clockwise, as indices into a validated

@@ -1,5 +1,7 @@
 //! The minimum-area rectangle enclosing a convex polygon: one side along an edge, four
-//! calipers rotated once around it, the areas compared exactly.
+//! calipers rotated once around it, the areas compared exactly. The rectangle type and the
+//! sweep that scores each edge's rectangle are shared with the minimum-perimeter rectangle
+//! (`perimeter_rectangle.rs`).
 
 use super::sides::{four_calipers, Sides};
 use super::ConvexPolygon;
@@ -7,7 +9,10 @@ use crate::complexity::Declaration;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::construct::rectangle_corner;
-use crate::geometry::{rect_area, ConstructedPoint, CountedPredicates, WideFloat};
+use crate::geometry::{
+    rect_area, rect_perimeter, ConstructedPoint, CountedPredicates, Point2, WideFloat,
+};
+use std::cmp::Ordering;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -24,8 +29,9 @@ pub(super) const DECLARATION: Declaration = Declaration {
     claims: &[],
 };
 
-/// A minimum-area enclosing rectangle: the polygon edge one side lies on, the vertices that
-/// touch the other three sides, and the corners.
+/// An enclosing rectangle with a side on a polygon edge (the minimum-area or the
+/// minimum-perimeter one): the edge, the vertices that touch the other three sides, the
+/// corners, the area and the perimeter.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Rectangle {
@@ -61,6 +67,67 @@ pub struct Rectangle {
     ///
     /// 0 for collinear input.
     pub area: WideFloat,
+    /// The perimeter, twice height plus length (`2 (|(j − i) × (top − i)| + |(j − i) ·
+    /// (right − left)|) / |j − i|`), with relative error below 2^-50 for every finite input:
+    /// the sum and the squared length are exact, each rounded once, then a square root and
+    /// a division. Twice the segment's length for collinear input, 0 for a single point.
+    pub perimeter: WideFloat,
+}
+
+/// The five points that fix the rectangle of a caliper position, in the order of
+/// [`cmp_rect_area`](crate::geometry::cmp_rect_area): the edge's ends, the top, the left and
+/// the right vertex.
+pub(super) type RectangleKey = [Point2; 5];
+
+impl ConvexPolygon<'_> {
+    /// The enclosing rectangle with a side on an edge that `better` prefers: rotates four
+    /// calipers once and keeps the first edge counter-clockwise whose rectangle no later one
+    /// beats (`better(new, best) == Less` replaces the best).
+    pub(super) fn best_rectangle_with<C: Counter>(
+        &self,
+        counter: &mut C,
+        better: impl Fn(&mut C, RectangleKey, RectangleKey) -> Ordering,
+    ) -> Result<Rectangle> {
+        let hull = self.vertices();
+        let h = hull.len();
+        match h {
+            0 => return Err(ConvexPolygon::empty()),
+            1 | 2 => {
+                let (i, j) = (hull[0], hull[h - 1]);
+                let (a, b) = (self.points[i], self.points[j]);
+                return Ok(Rectangle {
+                    edge: [i, j],
+                    support: [j, i, i],
+                    corners: [a, b, b, a].map(ConstructedPoint::from),
+                    area: WideFloat::ZERO,
+                    perimeter: WideFloat::distance(a, b).scale_pow2(1),
+                });
+            }
+            _ => {}
+        }
+        let v = |k: usize| self.at(k);
+        let key = |s: Sides| [v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)];
+        let mut best: Option<Sides> = None;
+        four_calipers(self, counter, |s, counter| {
+            if best.is_none_or(|b| better(counter, key(s), key(b)) == Ordering::Less) {
+                best = Some(s);
+            }
+        });
+        let s = best.expect("a polygon has edges");
+        let (a, b) = (v(s.edge), v(s.edge + 1));
+        let (top, left, right) = (v(s.top), v(s.left), v(s.right));
+        // The sides' lines: the edge's, the parallel through `top`, the perpendiculars
+        // through `left` and `right`.
+        let corners = [(left, a), (right, a), (right, top), (left, top)]
+            .map(|(p, q)| rectangle_corner(a, b, p, q));
+        Ok(Rectangle {
+            edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
+            support: [s.right, s.top, s.left].map(|k| hull[k % h]),
+            corners,
+            area: rect_area(key(s)),
+            perimeter: rect_perimeter(key(s)),
+        })
+    }
 }
 
 impl ConvexPolygon<'_> {
@@ -134,44 +201,6 @@ impl ConvexPolygon<'_> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn min_area_rectangle_with<C: Counter>(&self, counter: &mut C) -> Result<Rectangle> {
-        let hull = self.vertices();
-        let h = hull.len();
-        match h {
-            0 => return Err(ConvexPolygon::empty()),
-            1 | 2 => {
-                let (i, j) = (hull[0], hull[h - 1]);
-                let (a, b) = (self.points[i], self.points[j]);
-                return Ok(Rectangle {
-                    edge: [i, j],
-                    support: [j, i, i],
-                    corners: [a, b, b, a].map(ConstructedPoint::from),
-                    area: WideFloat::ZERO,
-                });
-            }
-            _ => {}
-        }
-        let v = |k: usize| self.at(k);
-        let key = |s: Sides| [v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)];
-        let mut best: Option<Sides> = None;
-        four_calipers(self, counter, |s, counter| {
-            if best
-                .is_none_or(|b| counter.cmp_rect_area(key(s), key(b)) == std::cmp::Ordering::Less)
-            {
-                best = Some(s);
-            }
-        });
-        let s = best.expect("a polygon has edges");
-        let (a, b) = (v(s.edge), v(s.edge + 1));
-        let (top, left, right) = (v(s.top), v(s.left), v(s.right));
-        // The sides' lines: the edge's, the parallel through `top`, the perpendiculars
-        // through `left` and `right`.
-        let corners = [(left, a), (right, a), (right, top), (left, top)]
-            .map(|(p, q)| rectangle_corner(a, b, p, q));
-        Ok(Rectangle {
-            edge: [hull[s.edge % h], hull[(s.edge + 1) % h]],
-            support: [s.right, s.top, s.left].map(|k| hull[k % h]),
-            corners,
-            area: rect_area([v(s.edge), v(s.edge + 1), v(s.top), v(s.left), v(s.right)]),
-        })
+        self.best_rectangle_with(counter, |c, new, best| c.cmp_rect_area(new, best))
     }
 }

@@ -1,6 +1,6 @@
 //! `compgeo diameter`: the two points farthest apart (by rotating calipers over the hull, or
-//! by brute force) and the counts; the antipodal pairs, the width and the minimum-area
-//! enclosing rectangle from the same calipers. The hull is computed once.
+//! by brute force) and the counts; the antipodal pairs, the width and the minimum-area and
+//! minimum-perimeter enclosing rectangles from the same calipers. The hull is computed once.
 
 use super::input::PointInput;
 use super::output::print_json;
@@ -24,9 +24,10 @@ pub(super) struct DiameterArgs {
 /// `{"algorithm": "...", "pair": [a, b], "points": [[x, y], [x, y]], "distance": d,
 /// "antipodal_pairs": [[i, j], ...], "counts": {...}, "width": {"edge": [i, j], "vertex": k,
 /// "width": w}, "rectangle": {"edge": [i, j], "support": [right, top, left], "corners":
-/// [{"x": .., "y": ..}, ...], "area": a}}`, a corner's coordinate beyond the range of `f64` as
-/// a JSON string holding its decimal value. The counts are the diameter's (with the calipers,
-/// the hull's and theirs); the antipodal pairs, width and rectangle come from the same hull
+/// [{"x": .., "y": ..}, ...], "area": a, "perimeter": p}, "perimeter_rectangle": {the same
+/// keys}}`, a corner's coordinate beyond the range of `f64` as a JSON string holding its
+/// decimal value. The counts are the diameter's (with the calipers, the hull's and theirs);
+/// the antipodal pairs, width and rectangles come from the same hull
 /// (ARCHITECTURE's contract: `pair`, `distance`, `antipodal_pairs`).
 #[derive(Debug, Serialize)]
 struct DiameterOutput {
@@ -38,6 +39,7 @@ struct DiameterOutput {
     counts: Counts,
     width: Width,
     rectangle: Rectangle,
+    perimeter_rectangle: Rectangle,
 }
 
 /// Runs `compgeo diameter`.
@@ -64,5 +66,6 @@ pub(super) fn run(args: DiameterArgs) -> Result<(), CliError> {
         counts,
         width: hull.width()?,
         rectangle: hull.min_area_rectangle()?,
+        perimeter_rectangle: hull.min_perimeter_rectangle()?,
     })
 }

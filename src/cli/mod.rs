@@ -63,6 +63,7 @@ mod sort;
 mod stats;
 mod subdivide;
 mod surface;
+mod triangle;
 
 use error::CliError;
 
@@ -101,7 +102,7 @@ enum Command {
     /// Convex hull of a point set: vertex indices counter-clockwise from the lexicographically smallest
     Hull(hull::HullArgs),
     /// Diameter of a point set (the farthest pair, by rotating calipers or brute force), its
-    /// width and minimum-area rectangle
+    /// width and minimum-area and minimum-perimeter rectangles
     Diameter(diameter::DiameterArgs),
     /// Bézier curves: evaluate, split, elevate or differentiate, in f64 or exact rationals
     Bezier(bezier::BezierArgs),
@@ -114,6 +115,9 @@ enum Command {
     Surface(surface::SurfaceArgs),
     /// Uniform subdivision of a polygon: Lane–Riesenfeld of any degree, Chaikin, four-point
     Subdivide(subdivide::SubdivideArgs),
+    /// Triangular Bézier patches: evaluate, subdivide (at a point or at the edge midpoints),
+    /// elevate, tessellate into OBJ/STL meshes
+    Triangle(triangle::TriangleArgs),
     /// Cubic Beta-splines: evaluate, subdivision matrices at any c, recursive subdivision
     Beta(beta::BetaArgs),
     /// Interpolation: cubic Hermite, C² cubic spline, Lagrange or Newton, in f64 or exact
@@ -167,6 +171,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Nurbs(args) => nurbs::run(args),
         Command::Surface(args) => surface::run(args),
         Command::Subdivide(args) => subdivide::run(args),
+        Command::Triangle(args) => triangle::run(args),
         Command::Beta(args) => beta::run(args),
         Command::Interpolate(args) => interpolate::run(args),
         Command::Delaunay(args) => delaunay::run(args),

@@ -655,7 +655,7 @@ fn normal_json<S: JsonScalar>(
 
 /// Writes the mesh to the files asked for and says what was written; without files, the
 /// mesh itself.
-fn write_mesh(
+pub(super) fn write_mesh(
     mesh: &TriangleMesh,
     obj: Option<&Path>,
     stl: Option<&Path>,

@@ -149,6 +149,7 @@ pub fn declarations() -> Vec<&'static Declaration> {
     );
     all.extend(crate::spline::declarations());
     all.extend(crate::surface::DECLARATIONS);
+    all.extend(crate::surface::triangle::DECLARATIONS);
     all.extend(crate::mesh::Scheme::ALL.iter().map(|a| a.declaration()));
     all.extend(crate::mesh::DECLARATIONS);
     all

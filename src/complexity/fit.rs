@@ -179,6 +179,94 @@ pub fn slope(xs: &[f64], ys: &[f64]) -> f64 {
     }
 }
 
+/// The number of bootstrap resamples behind [`exponent_interval`].
+pub const BOOTSTRAP_RESAMPLES: usize = 1000;
+
+/// A 95 % interval for the log-log slope of time, from the repetitions measured at each size.
+///
+/// `repeats[i]` holds the repeated measurements at size `sizes[i]` (the batch means of
+/// [`measure`](crate::complexity::measure), criterion's samples). The point estimate of a size
+/// is the median of its repetitions, so each of [`BOOTSTRAP_RESAMPLES`] resamples draws, at
+/// every size, as many repetitions as were measured (with replacement), takes their median and
+/// fits the slope of `ln time` against `ln n`; the interval is the 2.5th and 97.5th
+/// percentile of those slopes (the percentile bootstrap). The resampling is seeded, so one
+/// set of measurements always gives the same interval.
+///
+/// Exact operation counts need no interval: they are one deterministic run per size.
+///
+/// Returns `None` when fewer than two sizes have a positive finite repetition, or the sizes
+/// do not differ.
+///
+/// # Complexity
+///
+/// O(B · Σ rᵢ log rᵢ) time for B resamples and rᵢ repetitions at size i; O(max rᵢ + k)
+/// auxiliary space for k sizes.
+///
+/// # Example
+///
+/// ```
+/// use compgeo::complexity::exponent_interval;
+///
+/// // Time doubles with n, give or take 5 %: the interval holds 1 and is narrow.
+/// let sizes = [100.0, 200.0, 400.0, 800.0, 1600.0];
+/// let repeats: Vec<Vec<f64>> = sizes
+///     .iter()
+///     .map(|n| vec![0.95 * n, 1.0 * n, 1.05 * n, 0.98 * n, 1.02 * n])
+///     .collect();
+/// let (lo, hi) = exponent_interval(&sizes, &repeats).unwrap();
+/// assert!(lo <= 1.0 && 1.0 <= hi && hi - lo < 0.1);
+/// ```
+pub fn exponent_interval(sizes: &[f64], repeats: &[Vec<f64>]) -> Option<(f64, f64)> {
+    let usable: Vec<(f64, Vec<f64>)> = sizes
+        .iter()
+        .zip(repeats)
+        .filter(|(n, _)| n.is_finite() && **n >= 1.0)
+        .map(|(&n, r)| {
+            let positive: Vec<f64> = r
+                .iter()
+                .copied()
+                .filter(|t| t.is_finite() && *t > 0.0)
+                .collect();
+            (n.ln(), positive)
+        })
+        .filter(|(_, r)| !r.is_empty())
+        .collect();
+    if usable.len() < 2 {
+        return None;
+    }
+    let xs: Vec<f64> = usable.iter().map(|u| u.0).collect();
+    let mut rng = crate::gen::Rng::new(0x5EED_B007);
+    let mut draw = Vec::new();
+    let mut ys = vec![0.0; usable.len()];
+    let mut slopes = Vec::with_capacity(BOOTSTRAP_RESAMPLES);
+    for _ in 0..BOOTSTRAP_RESAMPLES {
+        for (y, (_, r)) in ys.iter_mut().zip(&usable) {
+            draw.clear();
+            draw.extend((0..r.len()).map(|_| r[rng.index(r.len())]));
+            *y = median_of(&mut draw).ln();
+        }
+        let s = slope(&xs, &ys);
+        if !s.is_finite() {
+            return None;
+        }
+        slopes.push(s);
+    }
+    slopes.sort_by(f64::total_cmp);
+    let at = |q: f64| slopes[((q * (slopes.len() - 1) as f64).round()) as usize];
+    Some((at(0.025), at(0.975)))
+}
+
+/// The median of `values` (sorted in place); `values` is not empty.
+pub(crate) fn median_of(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    let k = values.len();
+    if k % 2 == 1 {
+        values[k / 2]
+    } else {
+        (values[k / 2 - 1] + values[k / 2]) / 2.0
+    }
+}
+
 impl Verdict {
     /// `"consistent"` or `"exceeds"`, as written in `results.json`.
     pub fn name(self) -> &'static str {

@@ -17,7 +17,9 @@
 use std::time::Duration;
 
 use crate::complexity::catalog::{Entry, Info, Prepared, Profile};
-use crate::complexity::fit::{fit, Fit, Observation, COUNT_TOLERANCE, TIME_TOLERANCE};
+use crate::complexity::fit::{
+    exponent_interval, fit, median_of, Fit, Observation, COUNT_TOLERANCE, TIME_TOLERANCE,
+};
 use crate::complexity::Bound;
 use crate::count::Counts;
 use crate::error::Result;
@@ -33,6 +35,9 @@ pub struct Sample {
     pub m: Option<usize>,
     /// Wall time of one uncounted run, in nanoseconds (median of batch means).
     pub time_ns: f64,
+    /// The batch means the median was taken over, in nanoseconds, in the order measured:
+    /// the repetitions behind [`Measurement::time_interval`].
+    pub time_repeats_ns: Vec<f64>,
     /// Exact counts of one run.
     pub counts: Counts,
 }
@@ -74,6 +79,9 @@ pub struct Measurement {
     pub counts: Fit,
     /// Fit of wall time, with [`TIME_TOLERANCE`]: reported alongside.
     pub time: Fit,
+    /// A 95 % interval of the exponent of time, bootstrapped from the repetitions of each
+    /// size ([`exponent_interval`]); `None` with fewer than two usable sizes.
+    pub time_interval: Option<(f64, f64)>,
 }
 
 /// Measures `entry` at one size: exact counts of one run and the median time per run.
@@ -90,12 +98,13 @@ pub struct Measurement {
 pub fn measure_size(entry: &Entry, n: usize, settings: &Settings) -> Result<Sample> {
     let prepared = entry.prepare(n, settings.seed)?;
     let counted = prepared.count()?;
-    let time_ns = time_per_run(prepared.as_ref(), n, settings);
+    let time_repeats_ns = batch_means(prepared.as_ref(), n, settings);
     Ok(Sample {
         n,
         h: counted.h,
         m: counted.m,
-        time_ns,
+        time_ns: median_of(&mut time_repeats_ns.clone()),
+        time_repeats_ns,
         counts: counted.counts,
     })
 }
@@ -228,16 +237,21 @@ impl Measurement {
             COUNT_TOLERANCE,
         )?;
         let time = fit(info.bound, &observe(&|s| s.time_ns), TIME_TOLERANCE)?;
+        let sizes: Vec<f64> = samples.iter().map(|s| s.n as f64).collect();
+        let repeats: Vec<Vec<f64>> = samples.iter().map(|s| s.time_repeats_ns.clone()).collect();
+        let time_interval = exponent_interval(&sizes, &repeats);
         Ok(Measurement {
             info,
             samples,
             counts,
             time,
+            time_interval,
         })
     }
 }
 
-fn time_per_run(prepared: &dyn Prepared, n: usize, settings: &Settings) -> f64 {
+/// The mean time per run of each of `settings.batches` timed batches, in nanoseconds.
+fn batch_means(prepared: &dyn Prepared, n: usize, settings: &Settings) -> Vec<f64> {
     let cap = (settings.max_batch_elements / n.max(1)).max(1);
     let target = settings.batch_time.as_secs_f64();
     let mut k = 1usize;
@@ -253,20 +267,9 @@ fn time_per_run(prepared: &dyn Prepared, n: usize, settings: &Settings) -> f64 {
         };
         k = ((k as f64 * factor).ceil() as usize).min(cap);
     }
-    let mut means: Vec<f64> = (0..settings.batches.max(1))
+    (0..settings.batches.max(1))
         .map(|_| prepared.time(k).as_nanos() as f64 / k as f64)
-        .collect();
-    median(&mut means)
-}
-
-fn median(values: &mut [f64]) -> f64 {
-    values.sort_by(f64::total_cmp);
-    let k = values.len();
-    if k % 2 == 1 {
-        values[k / 2]
-    } else {
-        (values[k / 2 - 1] + values[k / 2]) / 2.0
-    }
+        .collect()
 }
 
 #[cfg(test)]
@@ -275,7 +278,7 @@ mod tests {
 
     #[test]
     fn median_of_odd_and_even() {
-        assert_eq!(median(&mut [3.0, 1.0, 2.0]), 2.0);
-        assert_eq!(median(&mut [4.0, 1.0, 3.0, 2.0]), 2.5);
+        assert_eq!(median_of(&mut [3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median_of(&mut [4.0, 1.0, 3.0, 2.0]), 2.5);
     }
 }

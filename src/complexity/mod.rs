@@ -29,6 +29,9 @@ pub use bound::{Bound, SecondSize};
 pub use catalog::{catalog, Entry, Info, Profile, SizeRange, Workload};
 pub(crate) use declaration::algorithm_family;
 pub use declaration::{declarations, label, on, table, Claim, Declaration};
-pub use fit::{fit, slope, Fit, Observation, Verdict, COUNT_TOLERANCE, MIN_SIZES, TIME_TOLERANCE};
+pub use fit::{
+    exponent_interval, fit, slope, Fit, Observation, Verdict, BOOTSTRAP_RESAMPLES, COUNT_TOLERANCE,
+    MIN_SIZES, TIME_TOLERANCE,
+};
 pub use machine::Machine;
 pub use measure::{measure, measure_size, Measurement, Progress, Sample, Settings};

@@ -2,8 +2,8 @@
 //! bodies hold no counting code.
 
 use super::{
-    cmp_dist, cmp_lex, cmp_line_dist, cmp_rect_area, cross_sign, incircle, orient2d, InCircle,
-    Orientation, Point2,
+    cmp_dist, cmp_lex, cmp_line_dist, cmp_rect_area, cmp_rect_perimeter, cross_sign, incircle,
+    orient2d, InCircle, Orientation, Point2,
 };
 use crate::count::Counter;
 use std::cmp::Ordering;
@@ -74,6 +74,14 @@ pub trait CountedPredicates: Counter {
     fn cmp_rect_area(&mut self, first: [Point2; 5], second: [Point2; 5]) -> Ordering {
         self.distance_evaluation();
         cmp_rect_area(first, second)
+    }
+
+    /// [`cmp_rect_perimeter`], counted as one distance evaluation (it compares sums of
+    /// lengths).
+    #[inline]
+    fn cmp_rect_perimeter(&mut self, first: [Point2; 5], second: [Point2; 5]) -> Ordering {
+        self.distance_evaluation();
+        cmp_rect_perimeter(first, second)
     }
 
     /// [`cmp_lex`], counted as one comparison.

@@ -14,6 +14,7 @@
 //! | [`cross_sign`] | does the direction `d - c` turn left or right of `b - a`? | 2 |
 //! | [`cmp_line_dist`] | is `p` closer to line `ab` than `q` to line `cd`? | 8 |
 //! | [`cmp_rect_area`] | which of two rectangles on given lines is smaller? | 6 |
+//! | [`cmp_rect_perimeter`] | which of two rectangles on given lines is shorter around? | 6 |
 //! | [`cmp_lex`] | lexicographic (x, then y) order | 1 |
 //!
 //! Crate-internal modules hold the predicates on constructed points of single algorithms:
@@ -53,7 +54,7 @@ pub use point_set::{BoundingBox, PointSet};
 pub use wide::WideFloat;
 
 /// The exact predicates, declared: O(1) each, counted as the operation each one is.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 7] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 8] = [
     &predicates::DECLARATIONS[0],
     &predicates::DECLARATIONS[1],
     &predicates::DECLARATIONS[2],
@@ -61,7 +62,8 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 7] = [
     &predicates::DECLARATIONS[4],
     &products::DECLARATIONS[0],
     &products::DECLARATIONS[1],
+    &products::DECLARATIONS[2],
 ];
 pub use predicates::{cmp_dist, cmp_lex, cross_sign, incircle, orient2d, InCircle, Orientation};
-pub use products::{cmp_line_dist, cmp_rect_area};
-pub(crate) use products::{line_distance, rect_area};
+pub use products::{cmp_line_dist, cmp_rect_area, cmp_rect_perimeter};
+pub(crate) use products::{line_distance, rect_area, rect_perimeter};

@@ -1,5 +1,5 @@
 //! Exact comparisons of products of degree-2 forms: distances from points to lines, and
-//! areas of rectangles with a side on a line.
+//! areas and perimeters of rectangles with a side on a line.
 //!
 //! Both questions compare quotients such as `cross² / |ab|²`. Clearing the denominators
 //! turns each into the sign of `P - Q`, where `P` and `Q` are products of three absolute
@@ -24,7 +24,7 @@ use crate::count::Operation;
 use std::cmp::Ordering;
 
 /// The comparisons of products of this file, declared.
-pub(super) const DECLARATIONS: [Declaration; 2] = [
+pub(super) const DECLARATIONS: [Declaration; 3] = [
     Declaration {
         problem: "predicate",
         name: "cmp-line-dist",
@@ -44,6 +44,19 @@ pub(super) const DECLARATIONS: [Declaration; 2] = [
         function: "geometry::cmp_rect_area",
         file: "src/geometry/products.rs",
         summary: "which of two rectangles on given lines is smaller",
+        time: "O(1)",
+        space: "O(1)",
+        operation: Some(Operation::DistanceEvaluations),
+        counts: "one per call",
+        source: "[Shewchuk, §4]",
+        claims: &[],
+    },
+    Declaration {
+        problem: "predicate",
+        name: "cmp-rect-perimeter",
+        function: "geometry::cmp_rect_perimeter",
+        file: "src/geometry/products.rs",
+        summary: "which of two rectangles on given lines has the shorter perimeter",
         time: "O(1)",
         space: "O(1)",
         operation: Some(Operation::DistanceEvaluations),
@@ -130,6 +143,111 @@ pub fn cmp_rect_area(first: [Point2; 5], second: [Point2; 5]) -> Ordering {
         Form::dot(a, b, a, b),
     ];
     cmp_abs_products(&lhs, &rhs)
+}
+
+/// Compares the perimeters of two rectangles, each given as `[a, b, p, l, r]` as in
+/// [`cmp_rect_area`]: a side on the line through `a` and `b`, the opposite side through `p`,
+/// the two other sides through `l` and `r`; exact for every finite input.
+///
+/// Half the perimeter is `(|(b − a) × (p − a)| + |(b − a) · (r − l)|) / |b − a|` (height
+/// plus length). Both halves are non-negative, so the predicate is the sign of the first's
+/// squared numerator times the second's squared denominator minus the other way round, a
+/// degree-6 polynomial; a degenerate line (`a = b`) gives `Ordering::Equal`. Rotating
+/// calipers use it to choose the minimum-perimeter enclosing rectangle without rounding a
+/// perimeter.
+///
+/// # Complexity
+/// O(1), as for [`cmp_rect_area`]: a floating-point filter, then exact big integers near ties
+/// and near overflow or underflow.
+///
+/// ```
+/// use compgeo::geometry::{cmp_rect_perimeter, Point2};
+/// use std::cmp::Ordering;
+///
+/// let p = |x, y| Point2::new(x, y);
+/// // A 4 × 2 box on the x-axis (perimeter 12) against a 3√2 × √2 box on the diagonal
+/// // (perimeter 8√2 ≈ 11.3): the same area 6, but the tilted one is shorter around.
+/// let flat = [p(0.0, 0.0), p(1.0, 0.0), p(0.0, 2.0), p(0.0, 0.0), p(4.0, 0.0)];
+/// let tilted = [p(0.0, 0.0), p(1.0, 1.0), p(0.0, 2.0), p(0.0, 0.0), p(3.0, 3.0)];
+/// assert_eq!(cmp_rect_perimeter(flat, tilted), Ordering::Greater);
+/// // 3 × 3 on the x-axis against 1 + 5 on the y-axis: both 12, a tie found exactly.
+/// let square = [p(0.0, 0.0), p(1.0, 0.0), p(0.0, 3.0), p(0.0, 0.0), p(3.0, 0.0)];
+/// let long = [p(0.0, 0.0), p(0.0, 1.0), p(-1.0, 0.0), p(0.0, 0.0), p(0.0, 5.0)];
+/// assert_eq!(cmp_rect_perimeter(square, long), Ordering::Equal);
+/// ```
+pub fn cmp_rect_perimeter(first: [Point2; 5], second: [Point2; 5]) -> Ordering {
+    let [a, b, p, l, r] = first;
+    let [c, d, q, l2, r2] = second;
+    let lhs = HalfPerimeter {
+        height: Form::cross(a, b, a, p),
+        length: Form::dot(a, b, l, r),
+        squared_side: Form::dot(c, d, c, d),
+    };
+    let rhs = HalfPerimeter {
+        height: Form::cross(c, d, c, q),
+        length: Form::dot(c, d, l2, r2),
+        squared_side: Form::dot(a, b, a, b),
+    };
+    lhs.filtered_cmp(&rhs)
+        .unwrap_or_else(|| lhs.exact_cmp(&rhs))
+}
+
+/// One side of [`cmp_rect_perimeter`]: `(|height| + |length|)² · squared_side`, where
+/// `squared_side` is the *other* rectangle's squared side length.
+struct HalfPerimeter {
+    height: Form,
+    length: Form,
+    squared_side: Form,
+}
+
+impl HalfPerimeter {
+    /// The product in floating point with a relative error bound, if every form is usable
+    /// by [`Form::approx`].
+    #[inline]
+    fn approx(&self) -> Option<(f64, f64)> {
+        let (h, rh) = self.height.approx()?;
+        let (w, rw) = self.length.approx()?;
+        let (s, rs) = self.squared_side.approx()?;
+        // A sum of two positive values errs relatively by at most the larger relative
+        // error, plus its own rounding; the sum is at most 2^301, so the product of three
+        // stays a normal double.
+        let sum = h + w;
+        let r_sum = rh.max(rw) + f64::EPSILON;
+        // As in `filtered`: with every relative error at most 1/8, Π(1 + rᵢ) − 1 ≤
+        // 1.5 Σ rᵢ, and the two products' roundings fit in 8 eps.
+        Some((sum * sum * s, 1.5 * (2.0 * r_sum + rs) + 8.0 * f64::EPSILON))
+    }
+
+    #[inline]
+    fn filtered_cmp(&self, other: &HalfPerimeter) -> Option<Ordering> {
+        let (p, p_rel) = self.approx()?;
+        let (q, q_rel) = other.approx()?;
+        let diff = p - q;
+        let bound = p_rel * p + q_rel * q;
+        if diff > bound {
+            Some(Ordering::Greater)
+        } else if -diff > bound {
+            Some(Ordering::Less)
+        } else {
+            None
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn exact_cmp(&self, other: &HalfPerimeter) -> Ordering {
+        let base = least_exponent(
+            [self, other]
+                .into_iter()
+                .flat_map(|s| [s.height, s.length, s.squared_side])
+                .flat_map(|f| f.points),
+        );
+        let product = |s: &HalfPerimeter| {
+            let sum = s.height.exact(base).abs().add(&s.length.exact(base).abs());
+            sum.mul(&sum).mul(&s.squared_side.exact(base).abs())
+        };
+        product(self).sub(&product(other)).signum().cmp(&0)
+    }
 }
 
 /// `(u1 - u0) x (v1 - v0)` or `(u1 - u0) · (v1 - v0)`.
@@ -278,6 +396,26 @@ pub(crate) fn rect_area([a, b, p, l, r]: [Point2; 5]) -> WideFloat {
     height
         .mul(length)
         .checked_div(squared)
+        .expect("the line's points differ")
+}
+
+/// The perimeter `2 (|(b − a) × (p − a)| + |(b − a) · (r − l)|) / |b − a|` of the rectangle
+/// of [`cmp_rect_perimeter`] (`a != b`), with relative error below 2^-50 for every finite
+/// input: the sum of the two exact forms and the squared length are exact big integers,
+/// each rounded once, then a square root and a division.
+pub(crate) fn rect_perimeter([a, b, p, l, r]: [Point2; 5]) -> WideFloat {
+    let base = least_exponent([a, b, p, l, r].into_iter());
+    let half_numerator = Form::cross(a, b, a, p)
+        .exact(base)
+        .abs()
+        .add(&Form::dot(a, b, l, r).exact(base).abs());
+    let numerator = WideFloat::from_big(&half_numerator).scale_pow2(2 * base + 1);
+    let length = Form::dot(a, b, a, b)
+        .wide(base)
+        .sqrt()
+        .expect("a squared length is not negative");
+    numerator
+        .checked_div(length)
         .expect("the line's points differ")
 }
 

@@ -110,6 +110,14 @@ pub enum MeshError {
         /// What is wrong with it.
         problem: ObjProblem,
     },
+    /// A scheme for triangle meshes (Loop's) met a face that is not a triangle.
+    #[error("face {face} has {corners} corners; this scheme needs a triangle mesh")]
+    NotATriangle {
+        /// The first face that is not a triangle.
+        face: usize,
+        /// How many corners it has.
+        corners: usize,
+    },
 }
 
 /// What is wrong with a line of Wavefront OBJ text (see [`read_obj`](super::read_obj)).

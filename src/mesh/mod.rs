@@ -22,8 +22,11 @@
 //! | `polygon_mesh.rs` | [`PolygonMesh`]: positions and topology |
 //! | `obj.rs` | [`read_obj`], [`write_obj`]: Wavefront OBJ text |
 //! | `quad_split.rs` | the connectivity of one round of quad refinement (every n-gon into n quadrilaterals), by index arithmetic on the coarse arrays |
+//! | `triangle_split.rs` | the connectivity of one round of triangle refinement (every triangle into four), by index arithmetic on the coarse arrays |
 //! | `catmull_clark.rs` | [`catmull_clark`]: k rounds on faces of any size, crease rules on the boundary [PPB, §16.1] |
 //! | `midpoint_cubic.rs` | [`midpoint_cubic`]: the midpoint scheme M₃ = A²R, which differs from Catmull–Clark at extraordinary vertices [PPB, §16.1] |
+//! | `doo_sabin.rs` | [`doo_sabin`]: k rounds of the midpoint scheme M₂ = 𝒜𝓡 (Doo–Sabin) on faces of any size, with the corrected weights [`doo_sabin_weights`] (b = 2 + 4/m, the erratum of [PPB, §16.4]); [`doo_sabin_limit_points`] [PPB, §16.1, §16.4] |
+//! | `loop_subdivision.rs` | [`loop_subdivision`]: k rounds of Loop's scheme on triangle meshes (Loop's or Warren's weights, [`LoopWeights`]), boundary as cubic B-spline curves; [`loop_limit_points`] [PPB, §15.7–15.8, §16.9] |
 //! | `scheme.rs` | [`Scheme`]: the schemes by name (`--scheme`), [`subdivide`] |
 //! | `catmull_clark_limit.rs` | [`catmull_clark_limit`]: limit positions in closed form [PPB, §16.4] |
 //!
@@ -32,27 +35,43 @@
 
 mod catmull_clark;
 mod catmull_clark_limit;
+mod doo_sabin;
 mod error;
+mod loop_subdivision;
 mod midpoint_cubic;
 mod obj;
 mod polygon_mesh;
 mod quad_split;
 mod scheme;
 mod topology;
+mod triangle_split;
 
 /// The mesh algorithms outside the [`Scheme`] family, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 1] =
-    [&catmull_clark_limit::CATMULL_CLARK_LIMIT];
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 3] = [
+    &catmull_clark_limit::CATMULL_CLARK_LIMIT,
+    &loop_subdivision::LOOP_LIMIT,
+    &doo_sabin::DOO_SABIN_LIMIT,
+];
 
 /// The declarations the catalog's entries measure, by name.
 pub(crate) mod declarations {
     pub(crate) use super::catmull_clark::CATMULL_CLARK;
     pub(crate) use super::catmull_clark_limit::CATMULL_CLARK_LIMIT;
+    pub(crate) use super::doo_sabin::{DOO_SABIN, DOO_SABIN_LIMIT};
+    pub(crate) use super::loop_subdivision::{LOOP, LOOP_LIMIT};
     pub(crate) use super::midpoint_cubic::MIDPOINT_CUBIC;
 }
 
 pub use catmull_clark::{catmull_clark, catmull_clark_with};
 pub use catmull_clark_limit::{catmull_clark_limit, catmull_clark_limit_with};
+pub use doo_sabin::{
+    doo_sabin, doo_sabin_limit_points, doo_sabin_limit_points_with, doo_sabin_weights,
+    doo_sabin_with,
+};
+pub use loop_subdivision::{
+    loop_limit_points, loop_limit_points_with, loop_subdivision, loop_subdivision_weighted,
+    loop_subdivision_weighted_with, loop_subdivision_with, LoopWeights,
+};
 pub use midpoint_cubic::{midpoint_cubic, midpoint_cubic_with};
 pub use scheme::{subdivide, subdivide_with, Scheme};
 

@@ -167,6 +167,6 @@ fn split_with<L: Layout>(t: &MeshTopology, layout: L) -> MeshTopology {
 
 /// `true` if `h` is the stored half-edge of its edge: its twin is missing or larger.
 #[inline(always)]
-fn stored(h: usize, twin: u32) -> bool {
+pub(crate) fn stored(h: usize, twin: u32) -> bool {
     twin == NONE || (h as u32) < twin
 }

@@ -2,6 +2,8 @@
 //! time (the command line's `mesh subdivide --scheme`), and [`subdivide`].
 
 use super::catmull_clark::{self, catmull_clark_with};
+use super::doo_sabin::{self, doo_sabin_with};
+use super::loop_subdivision::{self, loop_subdivision_with};
 use super::midpoint_cubic::{self, midpoint_cubic_with};
 use super::polygon_mesh::PolygonMesh;
 use crate::complexity::algorithm_family;
@@ -28,6 +30,12 @@ algorithm_family! {
         /// [`midpoint_cubic_with`](super::midpoint_cubic_with): the midpoint scheme
         /// M₃ = A²R of [PPB, §16.1].
         MidpointCubic = midpoint_cubic::MIDPOINT_CUBIC => midpoint_cubic_with,
+        /// [`doo_sabin_with`](super::doo_sabin_with): Doo–Sabin, the midpoint scheme
+        /// M₂ = AR of [PPB, §16.1], faces of any size.
+        DooSabin = doo_sabin::DOO_SABIN => doo_sabin_with,
+        /// [`loop_subdivision_with`](super::loop_subdivision_with): Loop's scheme with
+        /// Loop's weights, triangle meshes only.
+        Loop = loop_subdivision::LOOP => loop_subdivision_with,
     }
     fn run_with[S: Scalar, const D: usize, C: Counter](
         mesh: &PolygonMesh<S, D>,

@@ -673,22 +673,7 @@ impl MeshTopology {
     /// Numbers the edges in the order of their stored half-edges (the boundary one or the
     /// smaller index).
     fn number_edges(&mut self) {
-        let h_count = self.corners.len();
-        let mut halfedge_edges = vec![NONE; h_count];
-        let mut edge_halfedges = Vec::with_capacity(h_count / 2 + 1);
-        for h in 0..h_count {
-            let t = self.twins[h];
-            if t == NONE || (h as u32) < t {
-                let e = edge_halfedges.len() as u32;
-                edge_halfedges.push(h as u32);
-                halfedge_edges[h] = e;
-                if t != NONE {
-                    halfedge_edges[t as usize] = e;
-                }
-            }
-        }
-        self.halfedge_edges = halfedge_edges;
-        self.edge_halfedges = edge_halfedges;
+        (self.halfedge_edges, self.edge_halfedges) = edges_of_twins(&self.twins);
     }
 
     /// Picks each vertex's outgoing half-edge (its boundary one, or its first) and checks
@@ -812,6 +797,26 @@ impl Vec2 {
     fn first(&self) -> Option<&u32> {
         self.items[..self.len].first()
     }
+}
+
+/// The edge of every half-edge and the stored half-edge of every edge, numbered in the
+/// order of their stored half-edges (the boundary one, or the smaller index of a pair), from
+/// the twins alone: the numbering of a validated mesh, shared by the schemes that build
+/// their twins first (Doo–Sabin).
+pub(crate) fn edges_of_twins(twins: &[u32]) -> (Vec<u32>, Vec<u32>) {
+    let mut halfedge_edges = vec![NONE; twins.len()];
+    let mut edge_halfedges = Vec::with_capacity(twins.len() / 2 + 1);
+    for (h, &t) in twins.iter().enumerate() {
+        if t == NONE || (h as u32) < t {
+            let e = edge_halfedges.len() as u32;
+            edge_halfedges.push(h as u32);
+            halfedge_edges[h] = e;
+            if t != NONE {
+                halfedge_edges[t as usize] = e;
+            }
+        }
+    }
+    (halfedge_edges, edge_halfedges)
 }
 
 fn mesh_error(e: MeshError) -> Error {

@@ -1,4 +1,4 @@
-//! Tensor-product surfaces, generic over the scalar (`f64`, exact rationals) and the
+//! Tensor-product and triangular surfaces, generic over the scalar (`f64`, exact rationals) and the
 //! dimension, sharing traits as the curves of [`spline`](crate::spline) do.
 //!
 //! A tensor-product surface moves the control points of a curve along curves of their own
@@ -14,6 +14,7 @@
 //! | [`BezierPatchGrid`] | the rectangle of its grid | Bézier patches over the cells of a grid (the Bézier form of a spline surface) |
 //! | [`BSplineSurface`] | the rectangle of the knot vectors' domains | Σ c_{i,j} Nᵢᵖ(u) Nⱼ^q(v) [PPB, §9.1] |
 //! | [`NurbsSurface`] | the same | Σ w_{i,j} c_{i,j} NᵢNⱼ / Σ w_{i,j} NᵢNⱼ [SPL, §14] |
+//! | [`TriangularPatch`] | the whole plane (the net describes a triangle p q r) | Σ b_{ijk} B^n_{ijk}(u, v, w) in barycentric coordinates [PPB, §10.2] |
 //!
 //! | file | what it holds |
 //! |---|---|
@@ -41,8 +42,10 @@
 //! | `least_squares.rs` | [`BSplineSurface::fit`], [`BezierPatch::fit`]: normal equations with a rank check [FJ-surfaces, §7] |
 //! | `loft.rs` | [`BezierPatch::bilinear`], [`BSplineSurface::loft`]: through compatible curves [RD, §3.3] |
 //! | `bicubic.rs` | [`BezierPatchGrid::bicubic_c1`]: piecewise bicubic C¹ interpolation [PPB, §9.8] |
+//! | `lane_riesenfeld.rs` | [`ControlNet::lane_riesenfeld`]: k rounds of tensor Lane–Riesenfeld subdivision of bidegree (p, q) on a regular net, the curve algorithm on the rows then the columns; [`ControlNet::limit_points`] [PPB, §15.1–15.2] |
 //! | `tessellate.rs` | [`tessellate`], [`tessellate_at_with`]: any surface in R³ as a [`TriangleMesh`] with unit normals |
 //! | `export.rs` | [`TriangleMesh::write_obj`] (Wavefront OBJ), [`TriangleMesh::write_stl`] (ASCII STL) |
+//! | `triangle/` | [`TriangularPatch`]: triangular Bézier patches, one algorithm per file (its own table in [`triangle`]) [PPB, ch. 10–11] |
 //!
 //! Sources are cited as `[KEY, §section]` (see `docs/references.md`): FJ-surfaces is
 //! L. Fernández Jambrina, *Tema 5: Superficies*; PPB is M. Paluszny, H. Prautzsch, W. Boehm,
@@ -65,6 +68,7 @@ mod elevate;
 mod export;
 mod interpolate;
 mod join;
+mod lane_riesenfeld;
 mod least_squares;
 mod loft;
 mod monomial;
@@ -75,9 +79,10 @@ mod subdivide;
 mod tensor_grid;
 mod tessellate;
 mod traits;
+pub mod triangle;
 
 /// The surface algorithms, declared.
-pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 32] = [
+pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 34] = [
     &bezier::ROWS_FIRST,
     &bezier::COLUMNS_FIRST,
     &bezier::TENSOR_DE_CASTELJAU,
@@ -110,6 +115,8 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 32] = [
     &least_squares::SURFACE_FIT,
     &loft::LOFT,
     &bicubic::BICUBIC_C1,
+    &lane_riesenfeld::NET_LANE_RIESENFELD,
+    &lane_riesenfeld::NET_LIMIT_POINTS,
 ];
 
 /// The declarations the catalog's entries measure, by name.
@@ -126,6 +133,7 @@ pub(crate) mod declarations {
     pub(crate) use super::elevate::ELEVATE_TO;
     pub(crate) use super::interpolate::SURFACE_INTERPOLATE;
     pub(crate) use super::join::{EXTEND_CR_U, EXTEND_CR_V, JOIN_U, JOIN_V};
+    pub(crate) use super::lane_riesenfeld::{NET_LANE_RIESENFELD, NET_LIMIT_POINTS};
     pub(crate) use super::least_squares::SURFACE_FIT;
     pub(crate) use super::loft::LOFT;
     pub(crate) use super::monomial::{FROM_MONOMIAL, TO_MONOMIAL};
@@ -145,3 +153,4 @@ pub use normal::{normal, normal_with, Normal};
 pub use nurbs::NurbsSurface;
 pub use tessellate::{tessellate, tessellate_at_with, TriangleMesh};
 pub use traits::{Surface, SurfaceDerivative, SurfaceDomain};
+pub use triangle::{Barycentric, BarycentricVector, TriangularPatch};

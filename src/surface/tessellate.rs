@@ -248,7 +248,7 @@ fn check_samples<S: Scalar>(samples: &[S], which: &str) -> Result<()> {
 
 /// The unit vector of `n` in `f64`, or zero when `n` is exactly zero. The vector is scaled by
 /// a power of two before its length is taken, so neither huge nor tiny components overflow.
-fn unit<S: Scalar>(n: &Point<S, 3>) -> [f64; 3] {
+pub(super) fn unit<S: Scalar>(n: &Point<S, 3>) -> [f64; 3] {
     if n.coords().iter().all(Scalar::is_zero) {
         return [0.0; 3];
     }
@@ -256,7 +256,7 @@ fn unit<S: Scalar>(n: &Point<S, 3>) -> [f64; 3] {
 }
 
 /// `v / |v|`, or zero for a zero (or non-finite) vector.
-fn normalise(v: [f64; 3]) -> [f64; 3] {
+pub(super) fn normalise(v: [f64; 3]) -> [f64; 3] {
     let largest = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     if largest == 0.0 || !largest.is_finite() {
         return [0.0; 3];

@@ -239,6 +239,16 @@ fn cli_diameter_by_calipers_and_by_brute_force() {
     assert_eq!(v["width"]["width"], serde_json::json!(3.0));
     assert_eq!(v["rectangle"]["edge"], serde_json::json!([0, 1]));
     assert_eq!(v["rectangle"]["area"], serde_json::json!(12.0));
+    assert_eq!(v["rectangle"]["perimeter"], serde_json::json!(14.0));
+    // The two criteria differ on this quadrilateral (see `min_perimeter_rectangle`).
+    let v = run_json(&["diameter", "-"], Some("[[-3,0],[-2,-3],[0,0],[1,3]]"));
+    assert_eq!(v["perimeter_rectangle"]["edge"], serde_json::json!([3, 0]));
+    assert_eq!(
+        v["perimeter_rectangle"]["perimeter"],
+        serde_json::json!(18.0)
+    );
+    assert_eq!(v["rectangle"]["edge"], serde_json::json!([1, 2]));
+    let v = run_json(&["diameter", "-"], Some("[[0,0],[4,0],[4,3],[0,3],[1,1]]"));
     assert_eq!(
         v["rectangle"]["corners"][2],
         serde_json::json!({"x": 4.0, "y": 3.0})

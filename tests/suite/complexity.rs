@@ -534,6 +534,19 @@ mod report {
             assert!(svg.contains(label), "{label} on the growth chart");
         }
         assert!(html.contains("<td>exceeds</td>"));
+        assert_eq!(json["verdict_counts"]["consistent"], 1);
+        assert_eq!(json["verdict_counts"]["exceeds"], 1);
+        assert_eq!(json["verdict_counts"]["none"], 0);
+        for a in algorithms {
+            assert_eq!(a["module"], "other", "scan is not a declared problem");
+            assert_eq!(a["role"], "compgeo");
+            let samples = a["samples"].as_array().unwrap();
+            assert_eq!(
+                samples[0]["time_repeats_ns"].as_array().unwrap().len(),
+                tiny_settings().batches
+            );
+        }
+        assert!(html.contains("other &mdash; 2 rows: 1 consistent, 1 exceeds"));
     }
 
     /// Writes a criterion-0.8-style measurement: `group/function/n/new/{benchmark,estimates}.json`.
@@ -653,6 +666,165 @@ mod report {
         }
         assert!(read_criterion(&root.0.join("missing")).is_err());
     }
+
+    /// Writes criterion's `sample.json` (iteration counts and total times) next to a fixture.
+    fn sample_fixture(
+        root: &std::path::Path,
+        group: &str,
+        function: &str,
+        n: usize,
+        per_iter: &[f64],
+    ) {
+        let dir = root
+            .join(group.replace('/', "_"))
+            .join(function)
+            .join(n.to_string())
+            .join("new");
+        let iters: Vec<f64> = (1..=per_iter.len()).map(|i| i as f64).collect();
+        let times: Vec<f64> = per_iter.iter().zip(&iters).map(|(t, i)| t * i).collect();
+        let sample = serde_json::json!({"sampling_mode": "Linear", "iters": iters, "times": times});
+        std::fs::write(dir.join("sample.json"), sample.to_string()).unwrap();
+    }
+
+    #[test]
+    fn criterion_peers_are_drawn_with_ratios_to_compgeo() {
+        let root = TempDir::new("criterion-peers");
+        let ns = [64, 128, 256, 512, 1024];
+        for &n in &ns {
+            let x = n as f64;
+            fixture(&root.0, "scan", "prefix", n, 4.0 * x);
+            fixture(&root.0, "scan", "other", n, 3.0 * x * x.sqrt());
+            fixture(&root.0, "scan", "spade-bulk", n, 8.0 * x);
+            fixture(&root.0, "scan", "std", n, 2.0 * x);
+            sample_fixture(&root.0, "scan", "prefix", n, &[3.8 * x, 4.0 * x, 4.3 * x]);
+        }
+        let import = read_criterion(&root.0).unwrap();
+        let prefix = import
+            .benchmarks
+            .iter()
+            .find(|b| b.id() == "scan/prefix")
+            .unwrap();
+        assert_eq!(prefix.repeats.len(), ns.len());
+        assert_eq!(prefix.repeats[0], [3.8 * 64.0, 4.0 * 64.0, 4.3 * 64.0]);
+        assert!(compgeo::complexity::report::is_peer("spade-bulk"));
+        assert!(compgeo::complexity::report::is_peer("std"));
+        assert!(!compgeo::complexity::report::is_peer("prefix"));
+        assert!(!compgeo::complexity::report::is_peer("geodesic"));
+
+        let catalog = [Entry::new(
+            "scan/prefix",
+            Bound::Linear,
+            Operation::Comparisons,
+            PrefixScan,
+        )
+        .info];
+        let out = TempDir::new("criterion-peers-out");
+        let index =
+            write_criterion_report(&out.0, &Machine::current(), &import, &catalog, &[]).unwrap();
+        let json = read_json(&out.0.join("results.json"));
+        let algs = json["algorithms"].as_array().unwrap();
+        let by_id = |id: &str| algs.iter().find(|a| a["id"] == id).unwrap();
+        for (id, role) in [
+            ("scan/prefix", "compgeo"),
+            ("scan/other", "compgeo"),
+            ("scan/spade-bulk", "peer"),
+            ("scan/std", "peer"),
+        ] {
+            assert_eq!(by_id(id)["role"], role, "{id}");
+        }
+        // compgeo's fastest at n is min(4n, 3n^1.5) = 4n from n = 2 on.
+        for (i, &n) in ns.iter().enumerate() {
+            let x = n as f64;
+            let spade = by_id("scan/spade-bulk")["samples"][i]["ratio_to_compgeo"]
+                .as_f64()
+                .unwrap();
+            let std = by_id("scan/std")["samples"][i]["ratio_to_compgeo"]
+                .as_f64()
+                .unwrap();
+            assert!((spade - 4.0 * x / (8.0 * x)).abs() < 1e-12);
+            assert!((std - 4.0 * x / (2.0 * x)).abs() < 1e-12);
+            assert!(by_id("scan/prefix")["samples"][i]["ratio_to_compgeo"].is_null());
+        }
+        // A peer takes no bound from the catalog; the repetitions give an interval.
+        assert!(by_id("scan/spade-bulk")["bound"].is_null());
+        let interval = by_id("scan/prefix")["exponent_time_interval"]
+            .as_array()
+            .unwrap();
+        let (lo, hi) = (interval[0].as_f64().unwrap(), interval[1].as_f64().unwrap());
+        assert!(
+            lo <= 1.0 + 1e-9 && 1.0 - 1e-9 <= hi && hi - lo < 0.2,
+            "[{lo}, {hi}]"
+        );
+        assert!(
+            by_id("scan/other")["exponent_time_interval"].is_null(),
+            "no sample.json"
+        );
+        assert_eq!(json["verdict_counts"]["none"], 4);
+        let html = std::fs::read_to_string(&index).unwrap();
+        assert!(
+            html.contains("scan/spade-bulk (slope 1.00)"),
+            "ratio table header"
+        );
+        assert!(
+            html.contains("<td class=\"num\">0.50&times;</td>"),
+            "spade ratio"
+        );
+        assert!(
+            html.contains("<td class=\"num\">2.00&times;</td>"),
+            "std ratio"
+        );
+        let chart = std::fs::read_to_string(out.0.join("problem-scan.svg")).unwrap();
+        assert!(chart.contains("scan/std (peer), log-log slope 1.00"));
+    }
+}
+
+#[test]
+fn exponent_interval_brackets_the_true_exponent_and_widens_with_noise() {
+    use compgeo::complexity::exponent_interval;
+    let sizes: Vec<f64> = (6..12).map(|k| f64::from(1u32 << k)).collect();
+    // Repetitions with multiplicative noise of the given amplitude around c·n^1.5.
+    let repeats = |amplitude: f64, seed: u64| -> Vec<Vec<f64>> {
+        sizes
+            .iter()
+            .enumerate()
+            .map(|(i, n)| {
+                (0..7u64)
+                    .map(|r| {
+                        let noise = with_noise(
+                            &[Observation {
+                                n: *n,
+                                second: None,
+                                cost: 1.0,
+                            }],
+                            seed ^ (i as u64 * 31 + r),
+                            amplitude,
+                        )[0]
+                        .cost;
+                        5.0 * n.powf(1.5) * noise
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    // Identical repetitions: every resample fits the same slope.
+    let exact: Vec<Vec<f64>> = sizes.iter().map(|n| vec![n.powf(1.5); 5]).collect();
+    let (lo, hi) = exponent_interval(&sizes, &exact).unwrap();
+    assert!((lo - 1.5).abs() < 1e-12 && (hi - 1.5).abs() < 1e-12);
+    let quiet = repeats(0.05, 7);
+    let loud = repeats(0.4, 7);
+    let (qlo, qhi) = exponent_interval(&sizes, &quiet).unwrap();
+    let (llo, lhi) = exponent_interval(&sizes, &loud).unwrap();
+    assert!(qlo <= 1.5 && 1.5 <= qhi, "[{qlo}, {qhi}] misses 1.5");
+    assert!(qhi - qlo < lhi - llo, "more noise, wider interval");
+    assert_eq!(
+        exponent_interval(&sizes, &quiet),
+        Some((qlo, qhi)),
+        "seeded"
+    );
+    // One usable size, or nothing positive, gives no interval.
+    assert_eq!(exponent_interval(&sizes[..1], &quiet[..1]), None);
+    let empty: Vec<Vec<f64>> = sizes.iter().map(|_| vec![0.0, f64::NAN]).collect();
+    assert_eq!(exponent_interval(&sizes, &empty), None);
 }
 
 #[test]

@@ -4,8 +4,8 @@
 //! mixed magnitudes in one call.
 
 use compgeo::geometry::{
-    cmp_dist, cmp_lex, cmp_line_dist, cmp_rect_area, cross_sign, incircle, orient2d, InCircle,
-    Orientation, Point2,
+    cmp_dist, cmp_lex, cmp_line_dist, cmp_rect_area, cmp_rect_perimeter, cross_sign, incircle,
+    orient2d, InCircle, Orientation, Point2,
 };
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -88,6 +88,20 @@ fn exact_rect_area(first: [Point2; 5], second: [Point2; 5]) -> i32 {
         let (_, length) = exact_forms(a, b, l, r);
         let (_, norm) = exact_forms(a, b, a, b);
         (height.abs() * length.abs(), norm)
+    };
+    let ((n1, d1), (n2, d2)) = (side(first), side(second));
+    sign(&(n1 * d2 - n2 * d1))
+}
+
+/// (|cross| + |dot|)² / |ab|² for each rectangle (half the perimeter, squared),
+/// denominators cleared.
+fn exact_rect_perimeter(first: [Point2; 5], second: [Point2; 5]) -> i32 {
+    let side = |[a, b, p, l, r]: [Point2; 5]| {
+        let (height, _) = exact_forms(a, b, a, p);
+        let (_, length) = exact_forms(a, b, l, r);
+        let (_, norm) = exact_forms(a, b, a, b);
+        let half = height.abs() + length.abs();
+        (&half * &half, norm)
     };
     let ((n1, d1), (n2, d2)) = (side(first), side(second));
     sign(&(n1 * d2 - n2 * d1))
@@ -429,6 +443,80 @@ proptest! {
     ) {
         let (first, second) = (first.map(Point2::from), second.map(Point2::from));
         prop_assert_eq!(ord_sign(cmp_rect_area(first, second)), exact_rect_area(first, second));
+    }
+}
+
+proptest! {
+    #[test]
+    fn cmp_rect_perimeter_is_exact_on_mixed_magnitudes(
+        first in proptest::array::uniform5(point()), second in proptest::array::uniform5(point()),
+    ) {
+        prop_assert_eq!(ord_sign(cmp_rect_perimeter(first, second)), exact_rect_perimeter(first, second));
+    }
+
+    #[test]
+    fn cmp_rect_perimeter_is_exact_on_near_ties(
+        first in proptest::array::uniform5(point()), k in proptest::array::uniform5((-2i32..3, -2i32..3)),
+    ) {
+        let [a, b, p, l, r] = first;
+        let mirrored = [b, a, p, r, l];
+        let mut nudged = mirrored;
+        for (x, (kx, ky)) in nudged.iter_mut().zip(k) {
+            *x = Point2::new(ulps(x.x, kx), ulps(x.y, ky));
+        }
+        prop_assert_eq!(cmp_rect_perimeter(first, mirrored), Ordering::Equal);
+        prop_assert_eq!(ord_sign(cmp_rect_perimeter(first, nudged)), exact_rect_perimeter(first, nudged));
+    }
+
+    #[test]
+    fn cmp_rect_perimeter_is_exact_on_arbitrary_bit_patterns(
+        first in proptest::array::uniform5((any_finite(), any_finite())),
+        second in proptest::array::uniform5((any_finite(), any_finite())),
+    ) {
+        let (first, second) = (first.map(Point2::from), second.map(Point2::from));
+        prop_assert_eq!(ord_sign(cmp_rect_perimeter(first, second)), exact_rect_perimeter(first, second));
+    }
+}
+
+#[test]
+fn perimeter_ties_at_every_scale() {
+    // A 3 × 3 box on the x-axis and a 1 × 5 box on the y-axis: half-perimeters 6 and 6;
+    // a 4 × 2 box against a 3√2 × √2 one on the diagonal: 6 against 4√2. Powers of two
+    // scale every coordinate exactly, so the ties stay ties from subnormals to near overflow.
+    for e in [-1074, -1000, -465, 0, 50, 664, 1019] {
+        let s = 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
+        let p = |x: f64, y: f64| Point2::new(x * s, y * s);
+        let square = [
+            p(0.0, 0.0),
+            p(1.0, 0.0),
+            p(0.0, 3.0),
+            p(0.0, 0.0),
+            p(3.0, 0.0),
+        ];
+        let long = [
+            p(0.0, 0.0),
+            p(0.0, 1.0),
+            p(-1.0, 0.0),
+            p(0.0, 0.0),
+            p(0.0, 5.0),
+        ];
+        assert_eq!(cmp_rect_perimeter(square, long), Ordering::Equal, "{s:e}");
+        let flat = [
+            p(0.0, 0.0),
+            p(1.0, 0.0),
+            p(0.0, 2.0),
+            p(0.0, 0.0),
+            p(4.0, 0.0),
+        ];
+        let tilted = [
+            p(0.0, 0.0),
+            p(1.0, 1.0),
+            p(0.0, 2.0),
+            p(0.0, 0.0),
+            p(3.0, 3.0),
+        ];
+        assert_eq!(cmp_rect_perimeter(flat, tilted), Ordering::Greater, "{s:e}");
+        assert_eq!(cmp_rect_perimeter(tilted, flat), Ordering::Less, "{s:e}");
     }
 }
 

@@ -114,7 +114,7 @@ proptest! {
 }
 
 /// The positions and triangles `tobj` reads from the OBJ text of `mesh`.
-fn read_obj(mesh: &TriangleMesh) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
+pub(crate) fn read_obj(mesh: &TriangleMesh) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
     let mut text = Vec::new();
     mesh.write_obj(&mut text).unwrap();
     let options = tobj::LoadOptions {

@@ -152,6 +152,8 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(beta::entries());
     all.extend(surface::entries());
     all.extend(surface_spline::entries());
+    all.extend(triangle::entries());
+    all.extend(subdivision_surface::entries());
     all.extend(delaunay::entries());
     all.extend(proximity::entries());
     all.extend(mesh::entries());
@@ -202,8 +204,10 @@ mod proximity;
 mod sort;
 mod spline;
 mod subdivision;
+mod subdivision_surface;
 mod surface;
 mod surface_spline;
+mod triangle;
 
 /// The result of one counted run.
 pub(crate) struct Counted {

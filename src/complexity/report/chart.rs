@@ -180,20 +180,37 @@ fn draw_problem(path: &Path, problem: &str, rows: &[&Row]) -> ChartResult {
             .map(|(p, y)| (p.n as f64, y.max(if counts { 1.0 } else { 1e-3 })))
             .collect()
     };
-    let time_series: Vec<(String, Vec<(f64, f64)>)> = rows
+    // Peers (criterion imports) are dashed, and every time series shows its slope so the
+    // growth of compgeo and of its peers reads off the legend.
+    let time_series: Vec<Series> = rows
         .iter()
-        .map(|r| (r.key.clone(), series_of(r, false)))
+        .map(|r| Series {
+            label: with_slope(
+                &if r.peer {
+                    format!("{} (peer)", r.key)
+                } else {
+                    r.key.clone()
+                },
+                r.time_exponent(),
+            ),
+            points: series_of(r, false),
+            dashed: r.peer,
+        })
         .collect();
     if with_counts.is_empty() {
         panel(&root, "time per run (ns)", &time_series)?;
     } else {
         let (left, right) = root.split_horizontally(WIDTH);
         panel(&left, "time per run (ns)", &time_series)?;
-        let count_series: Vec<(String, Vec<(f64, f64)>)> = with_counts
+        let count_series: Vec<Series> = with_counts
             .iter()
             .map(|r| {
                 let op = r.operation.map_or("count", |o| o.name());
-                (format!("{} [{op}]", r.key.clone()), series_of(r, true))
+                Series {
+                    label: format!("{} [{op}]", r.key.clone()),
+                    points: series_of(r, true),
+                    dashed: false,
+                }
             })
             .collect();
         panel(&right, "counted operations", &count_series)?;
@@ -202,18 +219,26 @@ fn draw_problem(path: &Path, problem: &str, rows: &[&Row]) -> ChartResult {
     Ok(())
 }
 
+/// One line of a problem chart.
+struct Series {
+    label: String,
+    points: Vec<(f64, f64)>,
+    /// Drawn dashed (a peer crate's benchmark).
+    dashed: bool,
+}
+
 fn panel(
     area: &DrawingArea<SVGBackend<'_>, Shift>,
     y_desc: &str,
-    series: &[(String, Vec<(f64, f64)>)],
+    series: &[Series],
 ) -> ChartResult {
     let xs: Vec<f64> = series
         .iter()
-        .flat_map(|s| s.1.iter().map(|p| p.0))
+        .flat_map(|s| s.points.iter().map(|p| p.0))
         .collect();
     let ys: Vec<f64> = series
         .iter()
-        .flat_map(|s| s.1.iter().map(|p| p.1))
+        .flat_map(|s| s.points.iter().map(|p| p.1))
         .collect();
     let (x_lo, x_hi) = padded_range(&xs, 1.3);
     let (y_lo, y_hi) = padded_range(&ys, 2.0);
@@ -223,12 +248,22 @@ fn panel(
         .y_label_area_size(78)
         .build_cartesian_2d((x_lo..x_hi).log_scale().base(2.0), (y_lo..y_hi).log_scale())?;
     draw_log_mesh(&mut chart, y_desc)?;
-    for (i, (label, pts)) in series.iter().enumerate() {
+    for (i, s) in series.iter().enumerate() {
         let colour = PALETTE[i % PALETTE.len()];
-        chart.draw_series(LineSeries::new(pts.clone(), colour.stroke_width(2)))?;
+        let pts = &s.points;
+        if s.dashed {
+            chart.draw_series(DashedLineSeries::new(
+                pts.clone(),
+                8,
+                5,
+                colour.stroke_width(2),
+            ))?;
+        } else {
+            chart.draw_series(LineSeries::new(pts.clone(), colour.stroke_width(2)))?;
+        }
         chart
             .draw_series(pts.iter().map(|&p| Circle::new(p, 3, colour.filled())))?
-            .label(label.clone())
+            .label(s.label.clone())
             .legend(move |(x, y)| {
                 PathElement::new(vec![(x, y), (x + 24, y)], colour.stroke_width(3))
             });

@@ -6,7 +6,13 @@
 //! iteration in nanoseconds (`median.point_estimate`, `mean.point_estimate`, ...). The import
 //! takes the median (robust to outliers; the mean when there is no median), reads n from
 //! `value_str` (else the throughput's element count, else the directory name) and groups the
-//! sizes of one `group/function` into one series.
+//! sizes of one `group/function` into one series. `sample.json` next to it holds criterion's
+//! repetitions (`times[i] / iters[i]` nanoseconds per iteration), from which the report
+//! bootstraps an interval for the exponent of time.
+//!
+//! Benchmarks of peer crates ([`PEERS`]) measured in the same group as compgeo's are drawn
+//! on the group's chart with their exponents, and every size gets the ratio of compgeo's
+//! fastest time in the group to the peer's time.
 
 use std::io;
 use std::path::{Path, PathBuf};
@@ -14,8 +20,10 @@ use std::str::FromStr;
 
 use serde_json::Value;
 
-use super::{bare_exponent, write_rows, Point, Row};
-use crate::complexity::{fit, Bound, Info, Machine, Observation, TIME_TOLERANCE};
+use super::{bare_exponent, module_of, write_rows, Point, Row};
+use crate::complexity::{
+    exponent_interval, fit, Bound, Info, Machine, Observation, TIME_TOLERANCE,
+};
 use crate::error::Error;
 
 /// One criterion benchmark function measured at several sizes.
@@ -27,6 +35,44 @@ pub struct CriterionBenchmark {
     pub function: Option<String>,
     /// `(n, nanoseconds per iteration)`, increasing n.
     pub samples: Vec<(usize, f64)>,
+    /// criterion's repetitions at each size of `samples` (nanoseconds per iteration of
+    /// each sample), empty where `sample.json` is missing.
+    pub repeats: Vec<Vec<f64>>,
+}
+
+/// Benchmark function names that measure a peer crate rather than compgeo: a function id
+/// that starts with one of these, followed by nothing or a non-alphanumeric character
+/// (`spade-bulk-load`, `geo-convex-hull`, `truck_subs`, `spade+petgraph-kruskal`), is a peer.
+pub const PEERS: [&str; 18] = [
+    "curvo",
+    "delaunator",
+    "geo",
+    "glam",
+    "kiddo",
+    "kurbo",
+    "lyon",
+    "lyon_geom",
+    "nalgebra",
+    "ndarray",
+    "opensubdiv",
+    "petgraph",
+    "robust",
+    "rstar",
+    "spade",
+    "splines",
+    "std",
+    "truck",
+];
+
+/// Whether the benchmark function `function` measures a peer crate (see [`PEERS`]).
+pub fn is_peer(function: &str) -> bool {
+    PEERS.iter().any(|p| {
+        function.strip_prefix(p).is_some_and(|rest| {
+            rest.chars()
+                .next()
+                .is_none_or(|c| !c.is_ascii_alphanumeric())
+        })
+    })
 }
 
 /// What [`read_criterion`] found.
@@ -70,16 +116,21 @@ pub fn read_criterion(dir: &Path) -> io::Result<CriterionImport> {
     for new_dir in found {
         match read_one(dir, &new_dir) {
             Ok((group, function, n, ns)) => {
+                let repeats = read_repeats(&new_dir);
                 match import
                     .benchmarks
                     .iter_mut()
                     .find(|b| b.group == group && b.function == function)
                 {
-                    Some(b) => b.samples.push((n, ns)),
+                    Some(b) => {
+                        b.samples.push((n, ns));
+                        b.repeats.push(repeats);
+                    }
                     None => import.benchmarks.push(CriterionBenchmark {
                         group,
                         function,
                         samples: vec![(n, ns)],
+                        repeats: vec![repeats],
                     }),
                 }
             }
@@ -87,7 +138,13 @@ pub fn read_criterion(dir: &Path) -> io::Result<CriterionImport> {
         }
     }
     for b in &mut import.benchmarks {
-        b.samples.sort_by_key(|s| s.0);
+        let mut both: Vec<((usize, f64), Vec<f64>)> = b
+            .samples
+            .drain(..)
+            .zip(std::mem::take(&mut b.repeats))
+            .collect();
+        both.sort_by_key(|s| s.0 .0);
+        (b.samples, b.repeats) = both.into_iter().unzip();
     }
     import.benchmarks.sort_by_key(CriterionBenchmark::id);
     Ok(import)
@@ -112,25 +169,29 @@ pub fn write_criterion_report(
     catalog: &[Info],
     user: &[UserBound],
 ) -> io::Result<PathBuf> {
-    let rows: Vec<Row> = import
+    let mut rows: Vec<Row> = import
         .benchmarks
         .iter()
         .map(|b| {
             let id = b.id();
             let matched = b.matching(catalog);
+            let peer = b.function.as_deref().is_some_and(is_peer);
             let bound = user
                 .iter()
                 .find(|u| id.contains(&u.pattern))
                 .map(|u| u.bound)
-                .or(matched.map(|i| i.bound));
+                .or(matched.filter(|_| !peer).map(|i| i.bound));
             let points: Vec<Point> = b
                 .samples
                 .iter()
-                .map(|&(n, ns)| Point {
+                .enumerate()
+                .map(|(i, &(n, ns))| Point {
                     n,
                     h: None,
                     m: None,
                     time_ns: ns,
+                    time_repeats_ns: b.repeats.get(i).cloned().unwrap_or_default(),
+                    ratio_to_compgeo: None,
                     counts: None,
                 })
                 .collect();
@@ -146,14 +207,23 @@ pub fn write_criterion_report(
                     .collect();
                 fit(bound, &obs, TIME_TOLERANCE).ok()
             });
+            let sizes: Vec<f64> = points.iter().map(|p| p.n as f64).collect();
+            let repeats: Vec<Vec<f64>> = points.iter().map(|p| p.time_repeats_ns.clone()).collect();
+            let module = match (matched, peer) {
+                (Some(i), false) => module_of(&i.id, &i.problem),
+                _ => module_of(&id, &b.group),
+            };
             Row {
                 problem: b.group.clone(),
+                module,
+                peer,
                 input: matched
-                    .filter(|i| b.names_input(&i.input))
+                    .filter(|i| !peer && b.names_input(&i.input))
                     .map(|i| i.input.clone()),
                 bound,
                 operation: None,
                 bare_time_exponent: bare_exponent(&points),
+                time_interval: exponent_interval(&sizes, &repeats),
                 points,
                 counts_fit: None,
                 time_fit,
@@ -162,7 +232,28 @@ pub fn write_criterion_report(
             }
         })
         .collect();
+    set_ratios_to_compgeo(&mut rows);
     write_rows(out, machine, "criterion", &rows)
+}
+
+/// Sets every peer point's [`Point::ratio_to_compgeo`]: compgeo's fastest time at that size
+/// in the same group (over every compgeo row that has the size) over the peer's time.
+fn set_ratios_to_compgeo(rows: &mut [Row]) {
+    let compgeo: Vec<(String, usize, f64)> = rows
+        .iter()
+        .filter(|r| !r.peer)
+        .flat_map(|r| r.points.iter().map(|p| (r.problem.clone(), p.n, p.time_ns)))
+        .collect();
+    for row in rows.iter_mut().filter(|r| r.peer) {
+        for p in &mut row.points {
+            let fastest = compgeo
+                .iter()
+                .filter(|(g, n, _)| g == &row.problem && *n == p.n)
+                .map(|c| c.2)
+                .min_by(f64::total_cmp);
+            p.ratio_to_compgeo = fastest.map(|t| t / p.time_ns);
+        }
+    }
 }
 
 impl CriterionBenchmark {
@@ -304,6 +395,26 @@ fn read_one(root: &Path, new_dir: &Path) -> Result<(String, Option<String>, usiz
     Ok((group, function, n, ns))
 }
 
+/// criterion's repetitions in `new_dir/sample.json` as nanoseconds per iteration; empty
+/// when the file is missing or unreadable (the median alone is still usable).
+fn read_repeats(new_dir: &Path) -> Vec<f64> {
+    let Ok(sample) = read_json(&new_dir.join("sample.json")) else {
+        return Vec::new();
+    };
+    let numbers = |key: &str| -> Vec<f64> {
+        sample[key]
+            .as_array()
+            .map(|a| a.iter().filter_map(Value::as_f64).collect())
+            .unwrap_or_default()
+    };
+    numbers("times")
+        .iter()
+        .zip(numbers("iters"))
+        .filter(|(t, i)| t.is_finite() && i.is_finite() && *i > 0.0)
+        .map(|(t, i)| t / i)
+        .collect()
+}
+
 fn parse_size(text: &str) -> Option<usize> {
     text.trim().parse::<usize>().ok().filter(|&n| n >= 1)
 }
@@ -340,6 +451,7 @@ mod tests {
             group: g.to_string(),
             function: Some(f.to_string()),
             samples: vec![],
+            repeats: vec![],
         };
         assert_eq!(
             bench("sort", "insertion").matching(&cat).unwrap().input,

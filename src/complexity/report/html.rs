@@ -3,6 +3,7 @@
 
 use std::fmt::Write;
 
+use super::json::VerdictCounts;
 use super::{problem_chart_file, Row};
 use crate::complexity::{Machine, COUNT_TOLERANCE, TIME_TOLERANCE};
 
@@ -12,6 +13,8 @@ table{border-collapse:collapse;margin:1em 0}\
 th,td{border:1px solid #bbb;padding:.25em .6em;text-align:left}\
 td.num{text-align:right;font-variant-numeric:tabular-nums}\
 tr.exceeds td{background:#fde2dc}\
+tr.module th{background:#eef2f8;font-size:1.05em}\
+tr.peer td{color:#555;font-style:italic}\
 img{max-width:100%;border:1px solid #ddd;margin:.5em 0}\
 figure{display:inline-block;margin:.5em}";
 
@@ -42,39 +45,45 @@ pub(crate) fn index_html(
         esc(&machine.build),
         esc(profile),
     );
+    let all = VerdictCounts::of(rows);
     let _ = write!(
         h,
-        "<h2>Summary</h2>\n<p>Exponents are least-squares slopes of log cost against log n. \
+        "<h2>Summary</h2>\n<p>{} rows: <strong>{} consistent</strong>, <strong>{} exceeds</strong>, \
+         {} without counts (criterion imports and peers). Exponents are least-squares slopes of \
+         log cost against log n; the exponent of time carries a 95 % interval bootstrapped from \
+         the repetitions at each size (counts are exact, one run per size, and need none). \
          The bound column gives the slope of log f(n) over the same sizes. The verdict compares \
          exact counts with the stated bound: <em>exceeds</em> when cost / f(n) grows faster \
          than n<sup>{COUNT_TOLERANCE}</sup> (time: n<sup>{TIME_TOLERANCE}</sup>). \
          See <code>docs/complexity.md</code>.</p>\n<table>\n<tr><th>algorithm</th>\
          <th>problem</th><th>input</th><th>stated bound</th><th>counted operation</th>\
-         <th>exponent of counts</th><th>exponent of bound</th><th>exponent of time</th>\
-         <th>verdict</th><th>time verdict</th></tr>\n"
+         <th>exponent of counts</th><th>exponent of bound</th><th>exponent of time (95 %)</th>\
+         <th>verdict</th><th>time verdict</th></tr>\n",
+        rows.len(),
+        all.consistent,
+        all.exceeds,
+        all.none,
     );
-    for r in rows {
-        let counts = r.counts_fit.as_ref();
-        let time = r.time_fit.as_ref();
-        let verdict = counts.map(|f| f.verdict.name());
+    for module in modules(rows) {
+        let members: Vec<&Row> = rows.iter().filter(|r| r.module == module).collect();
+        let tally = VerdictCounts::of(members.iter().copied());
         let _ = writeln!(
             h,
-            "<tr class=\"{}\"><td><a href=\"#{}\">{}</a></td><td>{}</td><td>{}</td><td>{}</td>\
-             <td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>\
-             <td>{}</td><td>{}</td></tr>",
-            verdict.unwrap_or(""),
-            esc(&r.key.clone()),
-            esc(&r.id),
-            esc(&r.problem),
-            esc(r.input.as_deref().unwrap_or("")),
-            r.bound.map(|b| esc(b.as_str())).unwrap_or_default(),
-            r.operation.map_or("", |o| o.name()),
-            num(counts.map(|f| f.exponent)),
-            num(counts.or(time).map(|f| f.bound_exponent)),
-            num(r.time_exponent()),
-            verdict.unwrap_or("-"),
-            time.map_or("-", |f| f.verdict.name()),
+            "<tr class=\"module\"><th colspan=\"10\">{} &mdash; {} {}: {} consistent, {} exceeds{}</th></tr>",
+            esc(&module),
+            members.len(),
+            if members.len() == 1 { "row" } else { "rows" },
+            tally.consistent,
+            tally.exceeds,
+            if tally.none > 0 {
+                format!(", {} without counts", tally.none)
+            } else {
+                String::new()
+            },
         );
+        for r in members {
+            summary_row(&mut h, r);
+        }
     }
     h.push_str("</table>\n");
     for problem in problems {
@@ -84,6 +93,7 @@ pub(crate) fn index_html(
             p = esc(problem),
             f = esc(&problem_chart_file(problem)),
         );
+        ratio_table(&mut h, rows.iter().filter(|r| &r.problem == problem));
         for r in rows.iter().filter(|r| &r.problem == problem) {
             let _ = writeln!(
                 h,
@@ -96,6 +106,123 @@ pub(crate) fn index_html(
     }
     h.push_str("</body>\n</html>\n");
     h
+}
+
+/// One row of the summary table.
+fn summary_row(h: &mut String, r: &Row) {
+    let counts = r.counts_fit.as_ref();
+    let time = r.time_fit.as_ref();
+    let verdict = counts.map(|f| f.verdict.name());
+    let class = if r.peer {
+        "peer"
+    } else {
+        verdict.unwrap_or("")
+    };
+    let time_exponent = match (r.time_exponent(), r.time_interval) {
+        (Some(e), Some((lo, hi))) => format!("{e:.2} ({lo:.2}&ndash;{hi:.2})"),
+        (e, _) => num(e),
+    };
+    let _ = writeln!(
+        h,
+        "<tr class=\"{class}\"><td><a href=\"#{}\">{}</a>{}</td><td>{}</td><td>{}</td><td>{}</td>\
+         <td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>\
+         <td>{}</td><td>{}</td></tr>",
+        esc(&r.key),
+        esc(&r.id),
+        if r.peer { " (peer)" } else { "" },
+        esc(&r.problem),
+        esc(r.input.as_deref().unwrap_or("")),
+        r.bound.map(|b| esc(b.as_str())).unwrap_or_default(),
+        r.operation.map_or("", |o| o.name()),
+        num(counts.map(|f| f.exponent)),
+        num(counts.or(time).map(|f| f.bound_exponent)),
+        time_exponent,
+        verdict.unwrap_or("-"),
+        time.map_or("-", |f| f.verdict.name()),
+    );
+}
+
+/// For a problem with peers: one line per size with compgeo's fastest time and each peer's
+/// ratio (compgeo's time over the peer's: below 1 when compgeo is faster).
+fn ratio_table<'r>(h: &mut String, members: impl Iterator<Item = &'r Row>) {
+    let members: Vec<&Row> = members.collect();
+    let peers: Vec<&Row> = members.iter().copied().filter(|r| r.peer).collect();
+    let compgeo: Vec<&Row> = members.iter().copied().filter(|r| !r.peer).collect();
+    if peers.is_empty() || compgeo.is_empty() {
+        return;
+    }
+    let mut sizes: Vec<usize> = members
+        .iter()
+        .flat_map(|r| r.points.iter().map(|p| p.n))
+        .collect();
+    sizes.sort_unstable();
+    sizes.dedup();
+    h.push_str(
+        "<p>compgeo against its peers in the same benchmark group: compgeo's fastest time \
+         at each size, and each peer's ratio compgeo / peer (below 1: compgeo is faster).</p>\n\
+         <table>\n<tr><th>n</th><th>compgeo fastest</th>",
+    );
+    for p in &peers {
+        let _ = write!(
+            h,
+            "<th>{} (slope {})</th>",
+            esc(&p.id),
+            num(p.time_exponent())
+        );
+    }
+    h.push_str("</tr>\n");
+    for n in sizes {
+        let fastest = compgeo
+            .iter()
+            .filter_map(|r| r.points.iter().find(|p| p.n == n).map(|p| (r, p.time_ns)))
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        let _ = write!(
+            h,
+            "<tr><td class=\"num\">{n}</td><td>{}</td>",
+            fastest.map_or_else(
+                || "-".to_string(),
+                |(r, t)| format!("{} ({})", esc(&r.id), duration(t))
+            )
+        );
+        for p in &peers {
+            let ratio = p
+                .points
+                .iter()
+                .find(|q| q.n == n)
+                .and_then(|q| q.ratio_to_compgeo);
+            let _ = write!(
+                h,
+                "<td class=\"num\">{}</td>",
+                ratio.map_or_else(|| "-".to_string(), |x| format!("{x:.2}&times;"))
+            );
+        }
+        h.push_str("</tr>\n");
+    }
+    h.push_str("</table>\n");
+}
+
+/// A time in nanoseconds with a readable unit.
+fn duration(ns: f64) -> String {
+    if ns >= 1e9 {
+        format!("{:.3} s", ns / 1e9)
+    } else if ns >= 1e6 {
+        format!("{:.3} ms", ns / 1e6)
+    } else if ns >= 1e3 {
+        format!("{:.3} µs", ns / 1e3)
+    } else {
+        format!("{ns:.1} ns")
+    }
+}
+
+/// Modules in order of first appearance.
+fn modules(rows: &[Row]) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for r in rows {
+        if !out.contains(&r.module) {
+            out.push(r.module.clone());
+        }
+    }
+    out
 }
 
 fn num(v: Option<f64>) -> String {

@@ -14,7 +14,31 @@ struct Results<'a> {
     machine: MachineJson<'a>,
     profile: &'a str,
     tolerances: Tolerances,
+    verdict_counts: VerdictCounts,
     algorithms: Vec<Algorithm<'a>>,
+}
+
+/// How many rows got each verdict of counts (rows without counts have none).
+#[derive(Serialize, Default)]
+pub(crate) struct VerdictCounts {
+    pub consistent: usize,
+    pub exceeds: usize,
+    pub none: usize,
+}
+
+impl VerdictCounts {
+    /// The tally of `rows`.
+    pub(crate) fn of<'r>(rows: impl IntoIterator<Item = &'r Row>) -> VerdictCounts {
+        let mut tally = VerdictCounts::default();
+        for r in rows {
+            match r.counts_fit.as_ref().map(|f| f.verdict) {
+                Some(crate::complexity::Verdict::Consistent) => tally.consistent += 1,
+                Some(crate::complexity::Verdict::Exceeds) => tally.exceeds += 1,
+                None => tally.none += 1,
+            }
+        }
+        tally
+    }
 }
 
 #[derive(Serialize)]
@@ -37,11 +61,14 @@ struct Tolerances {
 struct Algorithm<'a> {
     id: &'a str,
     problem: &'a str,
+    module: &'a str,
+    role: &'static str,
     bound: Option<String>,
     input: Option<&'a str>,
     operation: Option<&'static str>,
     exponent_counts: Option<f64>,
     exponent_time: Option<f64>,
+    exponent_time_interval: Option<[f64; 2]>,
     exponent_bound: Option<f64>,
     excess_counts: Option<f64>,
     excess_time: Option<f64>,
@@ -56,6 +83,8 @@ struct Sample<'a> {
     m: Option<usize>,
     h: Option<usize>,
     time_ns: f64,
+    time_repeats_ns: &'a [f64],
+    ratio_to_compgeo: Option<f64>,
     counts: Option<&'a Counts>,
 }
 
@@ -75,6 +104,7 @@ pub(crate) fn results_json(machine: &Machine, profile: &str, rows: &[Row]) -> io
             counts: COUNT_TOLERANCE,
             time: TIME_TOLERANCE,
         },
+        verdict_counts: VerdictCounts::of(rows),
         algorithms: rows.iter().map(algorithm).collect(),
     };
     serde_json::to_string_pretty(&results).map_err(io::Error::other)
@@ -86,11 +116,14 @@ fn algorithm(row: &Row) -> Algorithm<'_> {
     Algorithm {
         id: &row.id,
         problem: &row.problem,
+        module: &row.module,
+        role: if row.peer { "peer" } else { "compgeo" },
         bound: row.bound.map(|b| b.to_string()),
         input: row.input.as_deref(),
         operation: row.operation.map(|o| o.name()),
         exponent_counts: counts.map(|f| f.exponent),
         exponent_time: row.time_exponent(),
+        exponent_time_interval: row.time_interval.map(|(lo, hi)| [lo, hi]),
         exponent_bound: counts.or(time).map(|f| f.bound_exponent),
         excess_counts: counts.map(|f| f.excess),
         excess_time: time.map(|f| f.excess),
@@ -104,6 +137,8 @@ fn algorithm(row: &Row) -> Algorithm<'_> {
                 m: p.m,
                 h: p.h,
                 time_ns: p.time_ns,
+                time_repeats_ns: &p.time_repeats_ns,
+                ratio_to_compgeo: p.ratio_to_compgeo,
                 counts: p.counts.as_ref(),
             })
             .collect(),

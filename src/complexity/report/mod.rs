@@ -24,7 +24,8 @@ use crate::complexity::{slope, Bound, Fit, Machine, Measurement, Profile};
 use crate::count::{Counts, Operation};
 
 pub use criterion::{
-    read_criterion, write_criterion_report, CriterionBenchmark, CriterionImport, UserBound,
+    is_peer, read_criterion, write_criterion_report, CriterionBenchmark, CriterionImport,
+    UserBound, PEERS,
 };
 
 /// Writes the report of `measurements` (run under `profile` on `machine`) into `dir`,
@@ -56,6 +57,10 @@ pub(crate) struct Row {
     pub key: String,
     pub id: String,
     pub problem: String,
+    /// The crate module the algorithm lives in (`hull`, `spline`, ...), see [`module_of`].
+    pub module: String,
+    /// Whether the row measures a peer crate rather than compgeo (criterion imports only).
+    pub peer: bool,
     pub input: Option<String>,
     pub bound: Option<Bound>,
     pub operation: Option<Operation>,
@@ -64,6 +69,8 @@ pub(crate) struct Row {
     pub time_fit: Option<Fit>,
     /// Exponent of time when no bound (hence no fit) is available.
     pub bare_time_exponent: Option<f64>,
+    /// 95 % bootstrap interval of the exponent of time, from the repetitions.
+    pub time_interval: Option<(f64, f64)>,
 }
 
 /// One size of a [`Row`].
@@ -73,6 +80,11 @@ pub(crate) struct Point {
     pub h: Option<usize>,
     pub m: Option<usize>,
     pub time_ns: f64,
+    /// The repeated measurements behind `time_ns` (batch means, criterion samples).
+    pub time_repeats_ns: Vec<f64>,
+    /// For a peer: compgeo's fastest time at this size in the same group divided by the
+    /// peer's time (below 1 when compgeo is faster).
+    pub ratio_to_compgeo: Option<f64>,
     pub counts: Option<Counts>,
 }
 
@@ -82,6 +94,8 @@ impl Row {
             key: m.info.key(),
             id: m.info.id.clone(),
             problem: m.info.problem.clone(),
+            module: module_of(&m.info.id, &m.info.problem),
+            peer: false,
             input: Some(m.info.input.clone()),
             bound: Some(m.info.bound),
             operation: Some(m.info.operation),
@@ -93,12 +107,15 @@ impl Row {
                     h: s.h,
                     m: s.m,
                     time_ns: s.time_ns,
+                    time_repeats_ns: s.time_repeats_ns.clone(),
+                    ratio_to_compgeo: None,
                     counts: Some(s.counts),
                 })
                 .collect(),
             counts_fit: Some(m.counts.clone()),
             time_fit: Some(m.time.clone()),
             bare_time_exponent: None,
+            time_interval: m.time_interval,
         }
     }
 
@@ -141,6 +158,23 @@ impl Row {
             })
             .collect()
     }
+}
+
+/// The crate module of the algorithm `id` (`problem/name`) of `problem`: the first path
+/// segment of its declaration's function (`hull::graham_scan` is in `hull`); for an id that
+/// is not declared (a criterion benchmark of a peer, say) the module of the declared problem
+/// that `problem` starts with, the longest such; else `"other"`.
+pub(crate) fn module_of(id: &str, problem: &str) -> String {
+    let declared = crate::complexity::declarations();
+    let module = |function: &str| function.split("::").next().unwrap_or(function).to_string();
+    if let Some(d) = declared.iter().find(|d| d.id() == id) {
+        return module(d.function);
+    }
+    declared
+        .iter()
+        .filter(|d| problem.starts_with(d.problem))
+        .max_by_key(|d| d.problem.len())
+        .map_or_else(|| "other".to_string(), |d| module(d.function))
 }
 
 /// File name of a problem's comparison chart.
@@ -190,4 +224,21 @@ fn problems(rows: &[Row]) -> Vec<String> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::module_of;
+
+    #[test]
+    fn module_of_reads_the_declared_function() {
+        assert_eq!(module_of("hull/graham", "hull"), "hull");
+        assert_eq!(module_of("sort/bubble", "sort"), "sort");
+        // Not declared: the module of the declared problem the group starts with.
+        assert_eq!(
+            module_of("delaunay/uniform/spade-bulk-load", "delaunay/uniform"),
+            "delaunay"
+        );
+        assert_eq!(module_of("scan/prefix", "scan"), "other");
+    }
 }

@@ -68,18 +68,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn elevate(&self) -> Result<Self> {
-        let b = self.control();
-        let n = self.degree();
-        let den = (n + 1) as i64;
-        let mut control = Vec::with_capacity(n + 2);
-        control.push(b[0].clone());
-        for i in 1..=n {
-            let w = S::from_ratio(i as i64, den);
-            let v = S::one() - &w;
-            control.push(Point::combine(&b[i - 1], &w, &b[i], &v));
-        }
-        control.push(b[n].clone());
-        Bezier::derived(control, "degree elevation")
+        Bezier::derived(elevated_polygon(self.control()), "degree elevation")
     }
 
     /// The same curve with degree m ≥ n, in one step by Zhou's formula
@@ -169,4 +158,22 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         }
         control
     }
+}
+
+/// The control polygon of degree n + 1 of the polygon `b` of degree n (at least one point):
+/// `cᵢ = i/(n+1) bᵢ₋₁ + (1 − i/(n+1)) bᵢ` [PPB, §3.11], n + 2 points, each an affine
+/// combination of at most two (the ends are copies). Unchecked: with `f64` a point may round
+/// to a non-finite value next to ±`f64::MAX`.
+pub(crate) fn elevated_polygon<S: Scalar, const D: usize>(b: &[Point<S, D>]) -> Vec<Point<S, D>> {
+    let n = b.len() - 1;
+    let den = (n + 1) as i64;
+    let mut control = Vec::with_capacity(n + 2);
+    control.push(b[0].clone());
+    for i in 1..=n {
+        let w = S::from_ratio(i as i64, den);
+        let v = S::one() - &w;
+        control.push(Point::combine(&b[i - 1], &w, &b[i], &v));
+    }
+    control.push(b[n].clone());
+    control
 }

@@ -62,5 +62,6 @@ pub use reparametrised::Reparametrised;
 pub(crate) use curve::bounding_box_counted;
 pub(crate) use de_casteljau::de_casteljau_levels;
 pub(crate) use derivative::difference;
+pub(crate) use elevation::elevated_polygon;
 pub(crate) use joins::nearly_equal;
 pub(crate) use monomial::{from_monomial_counted, to_monomial_counted};

@@ -143,7 +143,7 @@ fn validate_polygon<S: Scalar, const D: usize>(
 /// The vertex count after `rounds` rounds, each mapping m vertices to `next(m)` (which must
 /// grow strictly, so the loop ends once the limit is passed), checked against
 /// [`MAX_SUBDIVISION_POINTS`](crate::limits::MAX_SUBDIVISION_POINTS) after every round.
-fn output_size(n: usize, rounds: usize, next: impl Fn(u128) -> u128) -> Result<usize> {
+pub(crate) fn output_size(n: usize, rounds: usize, next: impl Fn(u128) -> u128) -> Result<usize> {
     let mut m = n as u128;
     for _ in 0..rounds {
         m = next(m);
