@@ -18,6 +18,7 @@
 //! | `voronoi` | the Voronoi diagram | structure against the exact triangulation; vertices against exact circumcentres |
 //! | `predicates` | `orient2d`, `incircle`, `cmp_dist`, `cross_sign` | the sign of the exact rational expression |
 //! | `bezier` | Bézier eval, split, elevation, derivatives in `f64` | the `BigRational` back end, within rounding bounds |
+//! | `obj` | the Wavefront OBJ reader and the mesh validation, `f64` and exact | accepted meshes keep their invariants, round-trip through `write_obj` and through a Catmull–Clark round; both scalars read the same faces |
 //! | `bspline` | every B-spline operation and NURBS eval, insert, elevate in `f64` | the `BigRational` back end, within rounding bounds; overflow only near `f64::MAX` |
 //!
 //! Every function returns normally on inputs it does not apply to (invalid UTF-8 for a text
@@ -31,11 +32,13 @@
 mod bezier;
 mod bspline;
 mod geometry;
+mod mesh;
 mod readers;
 
 pub use bezier::bezier;
 pub use bspline::bspline;
 pub use geometry::{delaunay, hull, predicates, voronoi};
+pub use mesh::obj;
 pub use readers::{csv_points, exact_decimal, graph_json, json_points, number_arrays};
 
 use num_rational::BigRational;

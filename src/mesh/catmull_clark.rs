@@ -169,19 +169,29 @@ pub(crate) fn subdivide_rounds<S: Scalar, const D: usize, C: Counter>(
     counter: &mut C,
 ) -> Result<PolygonMesh<S, D>> {
     check_rounds(mesh.topology(), rounds)?;
-    let mut current = mesh.clone();
-    for _ in 0..rounds {
-        let (positions, topology) = current.into_parts();
-        let child_positions = if topology.is_quad_mesh() {
-            round(&positions, &topology, Quads, rules, counter)
-        } else {
-            round(&positions, &topology, General(&topology), rules, counter)
-        };
-        drop(positions);
-        let child = quad_split(&topology);
-        current = PolygonMesh::from_parts_unchecked(child_positions, child);
+    if rounds == 0 {
+        return Ok(mesh.clone());
+    }
+    let mut current = one_round(mesh, rules, counter);
+    for _ in 1..rounds {
+        current = one_round(&current, rules, counter);
     }
     Ok(current)
+}
+
+/// One round: the child positions, then the child connectivity.
+fn one_round<S: Scalar, const D: usize, C: Counter>(
+    mesh: &PolygonMesh<S, D>,
+    rules: Rules,
+    counter: &mut C,
+) -> PolygonMesh<S, D> {
+    let (positions, topology) = (mesh.positions(), mesh.topology());
+    let child_positions = if topology.is_quad_mesh() {
+        round(positions, topology, Quads, rules, counter)
+    } else {
+        round(positions, topology, General(topology), rules, counter)
+    };
+    PolygonMesh::from_parts_unchecked(child_positions, quad_split(topology))
 }
 
 /// [`Error::LimitExceeded`](crate::Error::LimitExceeded) unless H·4ᵏ ≤
@@ -219,6 +229,7 @@ fn round<S: Scalar, const D: usize, L: Layout, C: Counter>(
     let twins = t.twins();
     let offsets = t.face_offsets();
     let reciprocal = Reciprocals::<S>::new(64);
+    let weights = VertexWeights::<S>::new(rules, 32);
 
     // Face points, and for every vertex the sum of its neighbours and of its face points
     // (one pass over the corners: each half-edge leaving v ends at a neighbour of v and
@@ -254,14 +265,8 @@ fn round<S: Scalar, const D: usize, L: Layout, C: Counter>(
             continue;
         }
         let n = valence[v] as usize;
-        let point = match rules {
-            // ((n − 2)/n)·v + (Σ w + Σ f)/n²
-            Rules::CatmullClark => {
-                p.clone() * S::from_ratio(n as i64 - 2, n as i64) + &(sum * reciprocal.square(n))
-            }
-            // v/2 + (Σ w + Σ f)/(4n)
-            Rules::Midpoint => p.clone() * reciprocal.get(2) + &(sum * reciprocal.quarter_of(n)),
-        };
+        let (own, others) = weights.get(n);
+        let point = p.clone() * own + &(sum * others);
         count(c, 3);
         out.push(point);
     }
@@ -324,6 +329,37 @@ fn round<S: Scalar, const D: usize, L: Layout, C: Counter>(
     out
 }
 
+/// The two weights of an interior vertex point of valence n, a·v + b·(Σ wⱼ + Σ fⱼ):
+/// ((n − 2)/n, 1/n²) for Catmull–Clark, (1/2, 1/(4n)) for M₃; a table for small n.
+struct VertexWeights<S> {
+    rules: Rules,
+    table: Vec<(S, S)>,
+}
+
+impl<S: Scalar> VertexWeights<S> {
+    fn new(rules: Rules, size: usize) -> Self {
+        let mut table = vec![(S::zero(), S::zero())];
+        table.extend((1..size).map(|n| Self::compute(rules, n)));
+        VertexWeights { rules, table }
+    }
+
+    fn compute(rules: Rules, n: usize) -> (S, S) {
+        let n = n as i64;
+        match rules {
+            Rules::CatmullClark => (S::from_ratio(n - 2, n), S::from_ratio(1, n * n)),
+            Rules::Midpoint => (S::from_ratio(1, 2), S::from_ratio(1, 4 * n)),
+        }
+    }
+
+    #[inline]
+    fn get(&self, n: usize) -> (S, S) {
+        match self.table.get(n) {
+            Some(w) => w.clone(),
+            None => Self::compute(self.rules, n),
+        }
+    }
+}
+
 /// 1/n for small n, computed once per round (exact for rationals, and one division saved
 /// per use in `f64`).
 struct Reciprocals<S> {
@@ -344,18 +380,5 @@ impl<S: Scalar> Reciprocals<S> {
             Some(r) => r.clone(),
             None => S::from_ratio(1, n as i64),
         }
-    }
-
-    /// 1/n².
-    #[inline]
-    fn square(&self, n: usize) -> S {
-        let r = self.get(n);
-        r.clone() * &r
-    }
-
-    /// 1/(4n).
-    #[inline]
-    fn quarter_of(&self, n: usize) -> S {
-        self.get(n) * &self.get(4)
     }
 }

@@ -3,7 +3,7 @@
 //! rows and then the columns) on tori and grids, against a brute-force implementation of the
 //! textbook rules on irregular meshes with boundary, against a literal A²R for M₃; the
 //! counts V, E, F and the Euler characteristic per round; the limit stencil unchanged by a
-//! round; the operation counts.
+//! round; the operation counts; OpenSubdiv (`opensubdiv-rs`) as a peer oracle.
 
 use crate::spline_common::{qi, Q};
 use compgeo::count::Counts;
@@ -479,5 +479,58 @@ fn rounds_beyond_the_limit_are_refused_and_the_scheme_enum_dispatches() {
             _ => continue,
         };
         assert_eq!(subdivide(&mesh, scheme, 2).unwrap(), direct);
+    }
+}
+
+/// OpenSubdiv's refinement of `mesh` (`rounds` levels, sharp boundaries with pinned
+/// corners, the rules of `catmull_clark`): the peer oracle.
+fn opensubdiv(mesh: &PolygonMesh<f64, 3>, rounds: usize) -> Vec<[f64; 3]> {
+    use opensubdiv_rs::far::{
+        PrimvarRefiner, TopologyDescriptor, TopologyRefinerFactory, UniformOptions,
+    };
+    use opensubdiv_rs::sdc::{Options, SchemeType, VtxBoundaryInterpolation};
+    let t = mesh.topology();
+    let sizes: Vec<usize> = (0..t.face_count()).map(|f| t.face_size(f)).collect();
+    let descriptor = TopologyDescriptor::new(t.vertex_count(), &sizes, t.corners());
+    let options =
+        Options::default().with_vtx_boundary_interpolation(VtxBoundaryInterpolation::EdgeAndCorner);
+    let mut refiner =
+        TopologyRefinerFactory::create(descriptor, SchemeType::Catmark, options).unwrap();
+    refiner.refine_uniform(UniformOptions::new(rounds));
+    let primvars = PrimvarRefiner::new(&refiner);
+    let mut points: Vec<[f64; 3]> = mesh.positions().iter().map(|p| p.0).collect();
+    for level in 1..=rounds {
+        let mut refined = vec![[0.0; 3]; refiner.level(level).num_vertices()];
+        primvars.interpolate(level, &points, &mut refined);
+        points = refined;
+    }
+    points
+}
+
+#[test]
+fn opensubdiv_makes_the_same_points() {
+    // OpenSubdiv keeps its weights in f32: 1/3, 1/5, ... differ from ours by about 1e-7.
+    const CLOSE: f64 = 1e-6;
+    for mesh in [
+        irregular_disk(60, 8).unwrap(),
+        irregular_torus(8, 8, 3).unwrap(),
+        quad_grid(3, 4).unwrap(),
+        cube(),
+    ] {
+        let ours = catmull_clark(&mesh, 2).unwrap();
+        let mut theirs = opensubdiv(&mesh, 2);
+        assert_eq!(ours.vertex_count(), theirs.len());
+        theirs.sort_by(|p, q| p[0].total_cmp(&q[0]));
+        for p in ours.positions() {
+            let p = p.0;
+            let from = theirs.partition_point(|q| q[0] < p[0] - CLOSE);
+            assert!(
+                theirs[from..]
+                    .iter()
+                    .take_while(|q| q[0] <= p[0] + CLOSE)
+                    .any(|q| (0..3).all(|i| (p[i] - q[i]).abs() < CLOSE)),
+                "no OpenSubdiv point near {p:?}"
+            );
+        }
     }
 }

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 type Check = fn(&[u8]);
 
 /// The fuzz targets and their checks.
-const TARGETS: [(&str, Check); 11] = [
+const TARGETS: [(&str, Check); 12] = [
     ("json_points", compgeo::fuzzing::json_points),
     ("csv_points", compgeo::fuzzing::csv_points),
     ("graph_json", compgeo::fuzzing::graph_json),
@@ -23,6 +23,7 @@ const TARGETS: [(&str, Check); 11] = [
     ("predicates", compgeo::fuzzing::predicates),
     ("bezier", compgeo::fuzzing::bezier),
     ("bspline", compgeo::fuzzing::bspline),
+    ("obj", compgeo::fuzzing::obj),
 ];
 
 fn fixtures() -> PathBuf {
