@@ -39,13 +39,13 @@
 //! <!-- algorithms -->
 //! | algorithm | time | space | counts | source | file |
 //! |---|---|---|---|---|---|
-//! | `predicate/orient2d`: [`geometry::orient2d`] | O(1) | O(1) | orientation tests: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
-//! | `predicate/incircle`: [`geometry::incircle`] | O(1) | O(1) | incircle tests: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
-//! | `predicate/cmp-dist`: [`geometry::cmp_dist`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
-//! | `predicate/cross-sign`: [`geometry::cross_sign`] | O(1) | O(1) | orientation tests: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
-//! | `predicate/cmp-lex`: [`geometry::cmp_lex`] | O(1) | O(1) | comparisons: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
-//! | `predicate/cmp-line-dist`: [`geometry::cmp_line_dist`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/products.rs` |
-//! | `predicate/cmp-rect-area`: [`geometry::cmp_rect_area`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/products.rs` |
+//! | `predicate/orient2d`: [`geometry::orient2d`] | O(1) | O(1) | orientation tests: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/incircle`: [`geometry::incircle`] | O(1) | O(1) | incircle tests: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cmp-dist`: [`geometry::cmp_dist`] | O(1) | O(1) | distance evaluations: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cross-sign`: [`geometry::cross_sign`] | O(1) | O(1) | orientation tests: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cmp-lex`: [`geometry::cmp_lex`] | O(1) | O(1) | comparisons: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cmp-line-dist`: [`geometry::cmp_line_dist`] | O(1) | O(1) | distance evaluations: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/products.rs` |
+//! | `predicate/cmp-rect-area`: [`geometry::cmp_rect_area`] | O(1) | O(1) | distance evaluations: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/products.rs` |
 //! | `sort/bubble`: [`sort::bubble_sort`] | Θ(n²) | O(1) | comparisons: exactly n(n − 1)/2 comparisons | [RD, §2.1] | `src/sort/bubble.rs` |
 //! | `sort/selection`: [`sort::selection_sort`] | Θ(n²) | O(1) | comparisons: exactly n(n − 1)/2 comparisons | [RD, §2.1] | `src/sort/selection.rs` |
 //! | `sort/insertion`: [`sort::insertion_sort`] | Θ(n²) in the worst case and Θ(n) on sorted input | O(1) | comparisons: at most n(n − 1)/2 comparisons, n − 1 on sorted input | [RD, §2.1] | `src/sort/insertion.rs` |
@@ -84,11 +84,11 @@
 //! | `delaunay/lawson`: [`delaunay::lawson`] | O(n²) in the worst case | O(n) | incircle tests: one per edge check, Θ(n²) on a parabola | [RD, §2.4] | `src/delaunay/lawson.rs` |
 //! | `delaunay/fortune`: [`delaunay::fortune`] | O(n log n) expected | O(n) | comparisons: the sort, the event queue and the breakpoint tests; no in-circle test | [RD, §2.4] | `src/delaunay/fortune.rs` |
 //! | `voronoi/delaunay-dual`: [`delaunay::voronoi`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation; the dual makes no geometric decision | [RD, §2.4] | `src/delaunay/voronoi.rs` |
-//! | `check/delaunay`: [`delaunay::check_delaunay`] | O(n log n + t) | O(n + t) | not counted | [RD, §2.4] | `src/delaunay/check.rs` |
+//! | `check/delaunay`: [`delaunay::check_delaunay`] | O(n log n + t) | O(n + t) | incircle tests: exactly one per interior edge, 3n − 3 − 2h for n distinct points with h on the hull; one orientation test per triangle, then the hull's | [RD, §2.4] | `src/delaunay/check.rs` |
 //! | `closest-pair/delaunay`: [`proximity::closest_pair_delaunay`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation, then one distance evaluation per Delaunay edge | [RD, §2.4] | `src/proximity/closest_pair_delaunay.rs` |
 //! | `closest-pair/divide-and-conquer`: [`proximity::closest_pair_divide_and_conquer`] | O(n log n) in the worst case | O(n) | distance evaluations: strip membership, height cut-offs and candidate pairs, all exact | [RD, §2.4] | `src/proximity/closest_pair_divide_and_conquer.rs` |
 //! | `all-nearest-neighbours/delaunay`: [`proximity::all_nearest_neighbours`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation, then two distance evaluations per Delaunay edge | [RD, §2.4] | `src/proximity/all_nearest.rs` |
-//! | `nearest/delaunay-walk`: [`proximity::NearestSearch::nearest`] | O(n log n) to build; O(√n) expected steps per query on uniform points | O(n) | distance evaluations: one per neighbour looked at during a walk | [RD, §2.4] | `src/proximity/nearest.rs` |
+//! | `nearest/delaunay-walk`: [`proximity::NearestSearch::nearest`] | O(n log n) to build; O(√n) expected steps per query on uniform points | O(n) | distance evaluations: one per neighbour looked at during a walk, about six per step | [RD, §2.4] | `src/proximity/nearest.rs` |
 //! | `emst/delaunay-kruskal`: [`proximity::euclidean_mst`] | O(n log n) expected | O(n) | distance evaluations: those of the exact length sort, after the triangulation's tests | [RD, §2.4] | `src/proximity/emst.rs` |
 //! | `empty-circle/voronoi`: [`proximity::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case | O(n) | orientation tests: the hull tests of the Voronoi vertices, O(log h) each | [RD, §2.4] | `src/proximity/empty_circle.rs` |
 //! | `bezier/de-casteljau`: [`spline::Bezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations per point | [PPB, §2.3] | `src/spline/bezier/de_casteljau.rs` |

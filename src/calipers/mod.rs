@@ -66,14 +66,14 @@ use crate::hull::{akl_toussaint_with, check_strictly_convex_ccw, HullOptions};
 
 /// The antipodal pairs' declaration, for the catalog.
 pub(crate) const ANTIPODAL_PAIRS: &Declaration = &antipodal::DECLARATION;
+/// The width's declaration, for the catalog.
+pub(crate) const WIDTH: &Declaration = &width::DECLARATION;
+/// The minimum-area rectangle's declaration, for the catalog.
+pub(crate) const MIN_AREA_RECTANGLE: &Declaration = &rectangle::DECLARATION;
 
 /// The caliper algorithms that are not a choice among alternatives: the antipodal pairs, the
 /// width and the minimum-area rectangle.
-pub(crate) const DECLARATIONS: [&Declaration; 3] = [
-    ANTIPODAL_PAIRS,
-    &width::DECLARATION,
-    &rectangle::DECLARATION,
-];
+pub(crate) const DECLARATIONS: [&Declaration; 3] = [ANTIPODAL_PAIRS, WIDTH, MIN_AREA_RECTANGLE];
 
 /// A strictly convex polygon: the vertices, counter-clockwise, as indices into a validated
 /// point set. The input every caliper runs on.

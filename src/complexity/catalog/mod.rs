@@ -143,6 +143,7 @@ pub struct Entry {
 /// ```
 pub fn catalog() -> Vec<Entry> {
     let mut all = Vec::new();
+    all.extend(predicate::entries());
     all.extend(sort::entries());
     all.extend(graph::entries());
     all.extend(hull::entries());
@@ -196,6 +197,7 @@ mod bspline;
 mod delaunay;
 mod graph;
 mod hull;
+mod predicate;
 mod proximity;
 mod sort;
 mod spline;

@@ -48,10 +48,12 @@ pub(crate) fn index_html(
          The bound column gives the slope of log f(n) over the same sizes. The verdict compares \
          exact counts with the stated bound: <em>exceeds</em> when cost / f(n) grows faster \
          than n<sup>{COUNT_TOLERANCE}</sup> (time: n<sup>{TIME_TOLERANCE}</sup>). \
+         The exact fallbacks are the predicate calls, at the largest size, that the \
+         floating-point filter could not decide, with their share of the counted operation. \
          See <code>docs/complexity.md</code>.</p>\n<table>\n<tr><th>algorithm</th>\
          <th>problem</th><th>input</th><th>stated bound</th><th>counted operation</th>\
          <th>exponent of counts</th><th>exponent of bound</th><th>exponent of time</th>\
-         <th>verdict</th><th>time verdict</th></tr>\n"
+         <th>verdict</th><th>time verdict</th><th>exact fallbacks</th></tr>\n"
     );
     for r in rows {
         let counts = r.counts_fit.as_ref();
@@ -61,7 +63,7 @@ pub(crate) fn index_html(
             h,
             "<tr class=\"{}\"><td><a href=\"#{}\">{}</a></td><td>{}</td><td>{}</td><td>{}</td>\
              <td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>\
-             <td>{}</td><td>{}</td></tr>",
+             <td>{}</td><td>{}</td><td class=\"num\">{}</td></tr>",
             verdict.unwrap_or(""),
             esc(&r.key.clone()),
             esc(&r.id),
@@ -74,6 +76,7 @@ pub(crate) fn index_html(
             num(r.time_exponent()),
             verdict.unwrap_or("-"),
             time.map_or("-", |f| f.verdict.name()),
+            fallbacks(r),
         );
     }
     h.push_str("</table>\n");
@@ -96,6 +99,21 @@ pub(crate) fn index_html(
     }
     h.push_str("</body>\n</html>\n");
     h
+}
+
+/// The exact fallbacks at the largest size, with their share of the counted operation when
+/// there are any: `"0"`, `"5 (0.03 %)"`; `"-"` without counts.
+fn fallbacks(r: &Row) -> String {
+    let Some(counts) = r.points.last().and_then(|p| p.counts) else {
+        return "-".to_string();
+    };
+    let k = counts.exact_fallbacks;
+    match r.operation.map(|op| counts.get(op)) {
+        Some(total) if k > 0 && total > 0 => {
+            format!("{k} ({:.2} %)", 100.0 * k as f64 / total as f64)
+        }
+        _ => k.to_string(),
+    }
 }
 
 fn num(v: Option<f64>) -> String {
