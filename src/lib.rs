@@ -93,11 +93,11 @@
 //! | `empty-circle/voronoi`: [`proximity::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case | O(n) | orientation tests: the hull tests of the Voronoi vertices, O(log h) each | [RD, §2.4] | `src/proximity/empty_circle.rs` |
 //! | `bezier/de-casteljau`: [`spline::Bezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations per point | [PPB, §2.3] | `src/spline/bezier/de_casteljau.rs` |
 //! | `bezier/horner`: [`spline::Bezier::horner`] | Θ(nD) | O(D) | arithmetic operations: n + 1 point operations per point | [PPB, §2.3] | `src/spline/bezier/horner.rs` |
-//! | `bezier/split`: [`spline::Bezier::split`] | Θ(n²D) | O(nD) | not counted | [PPB, §3.3] | `src/spline/bezier/de_casteljau.rs` |
-//! | `bezier/blossom`: [`spline::Bezier::blossom`] | Θ(n²D) | O(nD) | not counted | [PPB, §3.2] | `src/spline/bezier/de_casteljau.rs` |
-//! | `bezier/elevate-to`: [`spline::Bezier::elevate_to`] | Θ(m·n·D) | Θ(mD) | not counted | [PPB, §3.12] | `src/spline/bezier/elevation.rs` |
-//! | `bezier/flatten`: [`spline::Bezier::flatten`] | Θ(s·n²D) | O(kn·D) | not counted | [PPB, §3.5] | `src/spline/bezier/flatten.rs` |
-//! | `bezier/intersections`: [`spline::intersections`] | O(k·d·(m² + n²)) | O(d(m + n)) | not counted | [PPB, §3.7] | `src/spline/bezier/intersect.rs` |
+//! | `bezier/split`: [`spline::Bezier::split`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations (one triangle) | [PPB, §3.3] | `src/spline/bezier/de_casteljau.rs` |
+//! | `bezier/blossom`: [`spline::Bezier::blossom`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations per value | [PPB, §3.2] | `src/spline/bezier/de_casteljau.rs` |
+//! | `bezier/elevate-to`: [`spline::Bezier::elevate_to`] | Θ(m·n·D) | Θ(mD) | arithmetic operations: exactly (n + 1)(m − n + 1) terms bᵢ·wᵢ | [PPB, §3.12] | `src/spline/bezier/elevation.rs` |
+//! | `bezier/flatten`: [`spline::Bezier::flatten`] | Θ(s·n²D) | O(kn·D) | arithmetic operations: exactly (s − 1)·n(n + 1)/2 affine combinations: one split at ½ per segment but one | [PPB, §3.5] | `src/spline/bezier/flatten.rs` |
+//! | `bezier/intersections`: [`spline::intersections`] | O(k·d·(m² + n²)) | O(d(m + n)) | arithmetic operations: n(n + 1)/2 affine combinations per halving of a piece of degree n; four orientation tests per pair of flat pieces whose boxes meet | [PPB, §3.7] | `src/spline/bezier/intersect.rs` |
 //! | `interpolate/vandermonde`: [`spline::vandermonde`] | Θ(n³ + n²·D) | Θ(n² + n·D) | not counted | [RD, §3.1] | `src/spline/interpolate/polynomial.rs` |
 //! | `interpolate/vandermonde-hermite`: [`spline::vandermonde_hermite`] | Θ(N³ + N²·D) | Θ(N² + N·D) | not counted | [PPB, §4.4] | `src/spline/interpolate/polynomial.rs` |
 //! | `interpolate/lagrange`: [`spline::lagrange`] | Θ(n log n + nD) | Θ(nD) | not counted | [PPB, §4.2] | `src/spline/interpolate/lagrange.rs` |

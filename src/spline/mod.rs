@@ -69,9 +69,9 @@ pub(crate) fn declarations() -> impl Iterator<Item = &'static crate::complexity:
 
 pub use beta::{is_beta_continuous, BetaParameters, BetaSpline, Matrix4, SubdivisionMatrices};
 pub use bezier::{
-    bernstein, bernstein_all, bernstein_derivative, c1_partition, intersections, Bezier,
-    CompositeBezier, Evaluation as BezierEvaluation, Intersection, Join, Reparametrised,
-    MAX_FLATTEN_SEGMENTS, MAX_INTERSECTION_PAIRS,
+    bernstein, bernstein_all, bernstein_derivative, c1_partition, intersections,
+    intersections_with, Bezier, CompositeBezier, Evaluation as BezierEvaluation, Intersection,
+    Join, Reparametrised, MAX_FLATTEN_SEGMENTS, MAX_INTERSECTION_PAIRS,
 };
 pub use bspline::{
     BSpline, BandMatrix, Basis, BasisDerivatives, DeBoorTrace, KnotVector, ParameterFit,

@@ -28,6 +28,7 @@ mod calipers;
 mod cli;
 mod complexity;
 mod constructions;
+mod counts;
 mod degenerate;
 mod delaunay;
 mod delaunay_builders;

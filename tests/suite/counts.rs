@@ -1,0 +1,131 @@
+//! Exact operation counts where an algorithm fixes them, each derived in the test from the
+//! algorithm's structure (a loop over the levels of a triangle, a sum over the terms of a
+//! formula) rather than copied from a run: a count that drifts from its documented value
+//! fails here, and so does a counter variant that stops counting.
+
+use crate::spline_common::{q, Q};
+use compgeo::count::Counts;
+use compgeo::spline::{intersections_with, Bezier, Point};
+use proptest::prelude::*;
+
+/// The affine combinations of one de Casteljau triangle of degree n: n at the first level,
+/// n − 1 at the second, ..., 1 at the last.
+fn triangle(n: usize) -> u64 {
+    (1..=n).map(|k| (n + 1 - k) as u64).sum()
+}
+
+/// A curve of degree n with small rational control points (the counts do not depend on the
+/// scalar, so the exact back end also checks that nothing is counted differently there).
+fn rational_curve(n: usize, seed: i64) -> Bezier<Q, 2> {
+    Bezier::new(
+        (0..=n as i64)
+            .map(|i| Point::new([q(i, 1), q((i * 7 + seed) % 11 - 5, 3)]))
+            .collect(),
+    )
+    .unwrap()
+}
+
+/// The parabola y = 2t(1 − t), x = t, written with degree n ≥ 2: its flatness bound
+/// n(n − 1)/8 · max |Δ²bᵢ| is ½ at every degree and a quarter of it after each halving.
+fn parabola(n: usize) -> Bezier<f64, 2> {
+    let den = (n * (n - 1)) as f64;
+    Bezier::new(
+        (0..=n)
+            .map(|i| Point::new([i as f64 / n as f64, (2 * i * (n - i)) as f64 / den]))
+            .collect(),
+    )
+    .unwrap()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    #[test]
+    fn a_split_and_a_blossom_value_cost_one_triangle(n in 0usize..10, seed in 0i64..50, k in 0i64..=8) {
+        let b = rational_curve(n, seed);
+        let mut c = Counts::default();
+        b.split_with(&q(k, 8), &mut c).unwrap();
+        prop_assert_eq!(c.arithmetic_operations, triangle(n));
+        let mut c = Counts::default();
+        let args: Vec<Q> = (0..n as i64).map(|i| q(i + k, 5)).collect();
+        b.blossom_with(&args, &mut c).unwrap();
+        prop_assert_eq!(c.arithmetic_operations, triangle(n));
+    }
+}
+
+#[test]
+fn elevation_to_m_costs_one_term_per_nonzero_weight() {
+    // Zhou's formula: dₖ sums the bᵢ with C(m − n, k − i) ≠ 0, i.e. 0 ≤ k − i ≤ m − n.
+    for n in 0..6 {
+        let b = rational_curve(n, 3);
+        for m in n..n + 9 {
+            let terms: u64 = (0..=m)
+                .map(|k| (0..=n).filter(|&i| i <= k && k - i <= m - n).count() as u64)
+                .sum();
+            assert_eq!(
+                terms,
+                ((n + 1) * (m - n + 1)) as u64,
+                "the documented closed form"
+            );
+            let mut c = Counts::default();
+            b.elevate_to_with(m, &mut c).unwrap();
+            assert_eq!(c.arithmetic_operations, terms, "n = {n}, m = {m}");
+        }
+    }
+}
+
+#[test]
+fn flattening_costs_one_triangle_per_split() {
+    // The parabola's pieces after j halvings have the bound ½·4⁻ʲ. With the tolerance 1.5
+    // times that bound for j = k, the pieces are flat after exactly k halvings (after k − 1
+    // the bound is 8/3 of the tolerance): 2ᵏ pieces, 2ᵏ − 1 splits of n(n + 1)/2 each.
+    for n in [2, 3, 5, 8] {
+        for k in 0..6u32 {
+            let tolerance = 1.5 * 0.5 / 4f64.powi(k as i32);
+            let mut c = Counts::default();
+            let poly = parabola(n).flatten_with(&tolerance, &mut c).unwrap();
+            let segments = 1u64 << k;
+            assert_eq!(poly.len() as u64, segments + 1, "n = {n}, k = {k}");
+            assert_eq!(c.arithmetic_operations, (segments - 1) * triangle(n));
+        }
+    }
+    // On any curve: one split per segment but the first.
+    let wavy = rational_curve(6, 1);
+    let mut c = Counts::default();
+    let poly = wavy.flatten_with(&q(1, 100), &mut c).unwrap();
+    assert!(poly.len() > 2);
+    assert_eq!(
+        c.arithmetic_operations,
+        (poly.len() as u64 - 2) * triangle(6)
+    );
+}
+
+#[test]
+fn the_intersection_search_counts_halvings_and_chord_tests() {
+    // Two crossing segments are flat: no halving, one chord test of four orientations.
+    let line = |a: [f64; 2], b: [f64; 2]| Bezier::new(vec![Point::new(a), Point::new(b)]).unwrap();
+    let mut c = Counts::default();
+    let hits = intersections_with(
+        &line([0.0, 0.0], [1.0, 1.0]),
+        &line([0.0, 1.0], [1.0, 0.0]),
+        1e-9,
+        &mut c,
+    )
+    .unwrap();
+    assert_eq!(hits.len(), 1);
+    assert_eq!((c.arithmetic_operations, c.orientation_tests), (0, 4));
+    // The parabola against y = 1/4: only the parabola is ever halved (the line is flat), so
+    // the count is a whole number of its triangles, and every chord test is four tests.
+    let across = line([-0.25, 0.25], [1.25, 0.25]);
+    for n in [2, 3, 6, 10] {
+        let mut c = Counts::default();
+        let hits = intersections_with(&parabola(n), &across, 1e-4, &mut c).unwrap();
+        assert_eq!(hits.len(), 2, "n = {n}");
+        let halvings = c.arithmetic_operations / triangle(n);
+        assert_eq!(c.arithmetic_operations, halvings * triangle(n), "n = {n}");
+        // Each crossing is reached through at least log₄(½ / 10⁻⁴) > 6 halvings.
+        assert!(halvings >= 12, "n = {n}: {halvings} halvings");
+        assert_eq!(c.orientation_tests % 4, 0);
+        assert!(c.orientation_tests >= 8);
+    }
+}
