@@ -129,3 +129,151 @@ fn the_intersection_search_counts_halvings_and_chord_tests() {
         assert!(c.orientation_tests >= 8);
     }
 }
+
+/// Gaussian elimination on N unknowns with point right-hand sides, when no entry below a
+/// pivot is zero: for column c, each of the N − 1 − c rows below changes its N − c entries
+/// from column c on and its right-hand side; back substitution takes N − 1 − c terms and one
+/// division for unknown c.
+fn elimination(unknowns: usize) -> u64 {
+    let n = unknowns as u64;
+    (0..n)
+        .map(|c| (n - 1 - c) * (n - c + 1) + (n - 1 - c) + 1)
+        .sum()
+}
+
+/// n + 1 distinct rational nodes in a scrambled order, and points with rational coordinates.
+fn rational_data(n: usize) -> (Vec<Q>, Vec<Point<Q, 2>>) {
+    let nodes = (0..=n as i64)
+        .map(|i| q((i * 5) % (n as i64 + 1) - 2, 3))
+        .collect();
+    let pts = (0..=n as i64)
+        .map(|i| Point::new([q(i * i % 7, 2), q(3 - i, 5)]))
+        .collect();
+    (nodes, pts)
+}
+
+#[test]
+fn polynomial_interpolation_counts_follow_the_schemes() {
+    use compgeo::spline::{
+        lagrange, newton_hermite_with, newton_with, vandermonde_with, HermiteNode,
+    };
+    // n + 1 = 6 coprime with 5, so the scrambled nodes are distinct.
+    for n in [1usize, 2, 5, 10] {
+        let (nodes, pts) = if n == 5 {
+            let nodes: Vec<Q> = (0..=5).map(|i| q(i * i, 4)).collect();
+            (nodes, rational_data(5).1)
+        } else {
+            rational_data(n)
+        };
+        let levels: u64 = (1..=n).map(|k| (n + 1 - k) as u64).sum();
+        let mut c = Counts::default();
+        lagrange(&nodes, &pts)
+            .unwrap()
+            .aitken_with(&q(7, 3), &mut c)
+            .unwrap();
+        assert_eq!(c.arithmetic_operations, levels, "Aitken, n = {n}");
+        let mut c = Counts::default();
+        newton_with(&nodes, &pts, &mut c).unwrap();
+        assert_eq!(c.arithmetic_operations, levels, "Newton, n = {n}");
+        // With exact scalars the pivot is the first nonzero entry and no entry of a
+        // Vandermonde matrix with distinct nodes vanishes below it.
+        let mut c = Counts::default();
+        vandermonde_with(&nodes, &pts, &mut c).unwrap();
+        assert_eq!(
+            c.arithmetic_operations,
+            elimination(n + 1),
+            "Vandermonde, n = {n}"
+        );
+        // Confluent data: a value and a slope at each node, 2(n + 1) conditions.
+        let data: Vec<HermiteNode<Q, 2>> = nodes
+            .iter()
+            .zip(&pts)
+            .map(|(u, p)| HermiteNode {
+                u: u.clone(),
+                values: vec![p.clone(), p.clone()],
+            })
+            .collect();
+        let conditions = 2 * (n + 1);
+        let mut c = Counts::default();
+        newton_hermite_with(&data, &mut c).unwrap();
+        let table: u64 = (1..conditions).map(|j| (conditions - j) as u64).sum();
+        assert_eq!(c.arithmetic_operations, table, "Newton–Hermite, n = {n}");
+    }
+}
+
+#[test]
+fn spline_interpolation_counts_one_operation_per_point_computed() {
+    use compgeo::spline::{
+        closed_quadratic_spline_with, cubic_spline_tangents_with, cubic_spline_with, hermite_with,
+        quadratic_spline_with, EndCondition,
+    };
+    for pieces in [1usize, 2, 3, 7, 20] {
+        let knots: Vec<Q> = (0..=pieces as i64).map(|i| q(i * i + i, 2)).collect();
+        let pts: Vec<Point<Q, 2>> = (0..=pieces as i64)
+            .map(|i| Point::new([q(i, 1), q((i * 3) % 5, 1)]))
+            .collect();
+        // Hermite: two inner Bézier points per piece.
+        let mut c = Counts::default();
+        hermite_with(&knots, &pts, &pts, &mut c).unwrap();
+        assert_eq!(c.arithmetic_operations, 2 * pieces as u64);
+        // Quadratic: one inner point per piece.
+        let mut c = Counts::default();
+        quadratic_spline_with(&knots, &pts, &pts[0], &mut c).unwrap();
+        assert_eq!(c.arithmetic_operations, pieces as u64);
+        // Cubic with open ends, n = pieces: per interval a difference quotient and the three
+        // operations of its right-hand side (4n), the two end rows' right-hand sides (2), and
+        // Thomas' algorithm on the n + 1 rows (3(n + 1) − 1): 7n + 4. Then Hermite's 2n.
+        let n = pieces as u64;
+        let thomas = 3 * (n + 1) - 1;
+        for end in [
+            EndCondition::Natural,
+            EndCondition::Clamped {
+                start: pts[0].clone(),
+                end: pts[1].clone(),
+            },
+        ] {
+            let mut c = Counts::default();
+            cubic_spline_tangents_with(&knots, &pts, &end, &mut c).unwrap();
+            assert_eq!(c.arithmetic_operations, 4 * n + 2 + thomas, "{end:?}");
+            assert_eq!(c.arithmetic_operations, 7 * n + 4);
+            let mut c = Counts::default();
+            cubic_spline_with(&knots, &pts, &end, &mut c).unwrap();
+            assert_eq!(c.arithmetic_operations, 7 * n + 4 + 2 * n);
+        }
+    }
+    // Closed quadratic (an odd number N of pieces): the N − 1 points of the recurrence, the
+    // closing equation's right-hand side, and the N inner points.
+    for pieces in [3usize, 5, 9] {
+        let knots: Vec<Q> = (0..=pieces as i64).map(|i| q(i, 1)).collect();
+        let mut pts: Vec<Point<Q, 2>> = (0..=pieces as i64)
+            .map(|i| Point::new([q(i % 4, 1), q(i * i % 5, 1)]))
+            .collect();
+        pts[pieces] = pts[0].clone();
+        let mut c = Counts::default();
+        closed_quadratic_spline_with(&knots, &pts, &mut c).unwrap();
+        assert_eq!(c.arithmetic_operations, (pieces - 1 + 1 + pieces) as u64);
+    }
+}
+
+#[test]
+fn least_squares_counts_the_normal_equations_and_their_solve() {
+    use compgeo::spline::{fit_bezier_with, FitOptions};
+    for degree in [0usize, 1, 3, 6] {
+        let m = 3 * (degree + 1);
+        let params: Vec<Q> = (0..m as i64).map(|i| q(i, m as i64 - 1)).collect();
+        let pts: Vec<Point<Q, 2>> = (0..m as i64)
+            .map(|i| Point::new([q(i, 1), q(i * i % 7, 1)]))
+            .collect();
+        let mut c = Counts::default();
+        fit_bezier_with(&params, &pts, degree, &FitOptions::default(), &mut c).unwrap();
+        // Each point adds its Bernstein row's outer product (n + 1)² and n + 1 right-hand
+        // sides; the Gram matrix of the Bernstein basis at distinct parameters has no zero
+        // entry, so none is skipped by the elimination.
+        let per_point = ((degree + 1) * (degree + 1) + degree + 1) as u64;
+        assert_eq!(
+            c.arithmetic_operations,
+            m as u64 * per_point + elimination(degree + 1),
+            "degree {degree}"
+        );
+    }
+}

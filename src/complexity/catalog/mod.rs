@@ -148,6 +148,7 @@ pub fn catalog() -> Vec<Entry> {
     all.extend(graph::entries());
     all.extend(hull::entries());
     all.extend(spline::entries());
+    all.extend(interpolate::entries());
     all.extend(bspline::entries());
     all.extend(subdivision::entries());
     all.extend(beta::entries());
@@ -197,6 +198,7 @@ mod bspline;
 mod delaunay;
 mod graph;
 mod hull;
+mod interpolate;
 mod predicate;
 mod proximity;
 mod sort;
