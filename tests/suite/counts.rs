@@ -277,3 +277,94 @@ fn least_squares_counts_the_normal_equations_and_their_solve() {
         );
     }
 }
+
+#[test]
+fn b_spline_counts_follow_their_schemes() {
+    use compgeo::spline::{BSpline, BandMatrix, CompositeBezier, KnotVector};
+    // The basis and its derivatives: the triangular scheme's d(d + 1)/2 steps, then for
+    // each order j = 1, …, K = min(k, d) the j + 1 coefficients of each of the d + 1
+    // functions.
+    for d in 0..7usize {
+        let t = KnotVector::clamped_uniform(d, d + 4, q(0, 1), q(1, 1)).unwrap();
+        for k in 0..9usize {
+            let mut c = Counts::default();
+            t.basis_derivatives_with(&q(2, 7), k, &mut c).unwrap();
+            let orders: u64 = (1..=k.min(d)).map(|j| ((d + 1) * (j + 1)) as u64).sum();
+            assert_eq!(
+                c.arithmetic_operations,
+                triangle(d) + orders,
+                "d = {d}, k = {k}"
+            );
+        }
+    }
+    // The banded solver: below pivot k, each of the r rows with an entry in column k takes a
+    // multiplier, w band entries and a right-hand side; back substitution w terms and a
+    // division per row.
+    for (size, lower, upper) in [(1usize, 0usize, 0usize), (5, 1, 1), (9, 2, 3), (12, 4, 1)] {
+        let mut a = BandMatrix::zeros(size, lower, upper).unwrap();
+        for i in 0..size {
+            for j in i.saturating_sub(lower)..(i + upper + 1).min(size) {
+                let v = if i == j {
+                    q(20, 1)
+                } else {
+                    q((i + 2 * j) as i64 % 5 + 1, 3)
+                };
+                a.set(i, j, v).unwrap();
+            }
+        }
+        let rhs: Vec<Point<Q, 2>> = (0..size as i64)
+            .map(|i| Point::new([q(i, 1), q(1, 1)]))
+            .collect();
+        let mut c = Counts::default();
+        a.solve_with(rhs, &mut c).unwrap();
+        let want: u64 = (0..size)
+            .map(|k| {
+                let (r, w) = (lower.min(size - 1 - k), upper.min(size - 1 - k));
+                (r * (w + 2) + w + 1) as u64
+            })
+            .sum();
+        assert_eq!(
+            c.arithmetic_operations, want,
+            "{size} × {size}, l = {lower}, u = {upper}"
+        );
+    }
+    // From p Bézier pieces of degree d ≥ 1: the first piece's d + 1 points, then d new ones
+    // per piece; one check of the shared end per join.
+    for (pieces, d) in [(1usize, 1usize), (3, 2), (5, 4)] {
+        let points: Vec<Point<Q, 2>> = (0..=(pieces * d) as i64)
+            .map(|i| Point::new([q(i, 1), q(i * i % 3, 1)]))
+            .collect();
+        let control = (0..pieces)
+            .map(|i| points[d * i..=d * (i + 1)].to_vec())
+            .collect();
+        let partition = (0..=pieces as i64).map(|i| q(i, 1)).collect();
+        let b = CompositeBezier::new(partition, control).unwrap();
+        let mut c = Counts::default();
+        let s = BSpline::from_bezier_with(&b, &mut c).unwrap();
+        assert_eq!(c.moves, (d + 1 + (pieces - 1) * d) as u64);
+        assert_eq!(c.moves, s.control().len() as u64);
+        assert_eq!(c.comparisons, pieces as u64 - 1);
+    }
+}
+
+#[test]
+fn rational_counts_are_those_of_both_homogeneous_halves() {
+    use compgeo::spline::{KnotVector, Nurbs, RationalBezier};
+    for n in 1..7usize {
+        let control: Vec<Point<Q, 2>> = (0..=n as i64)
+            .map(|i| Point::new([q(i, 1), q(i % 2, 1)]))
+            .collect();
+        let weights: Vec<Q> = (0..=n as i64).map(|i| q(i % 3 + 1, 2)).collect();
+        let r = RationalBezier::new(control.clone(), weights.clone()).unwrap();
+        let mut c = Counts::default();
+        r.de_casteljau_with(&q(1, 3), &mut c).unwrap();
+        assert_eq!(c.arithmetic_operations, 2 * triangle(n), "n = {n}");
+        // A knot inserted once inside a span of a clamped NURBS curve of degree d = n: d
+        // combinations of points and d of weights (r = 1, s = 0: r(d − s) − r(r − 1)/2 = d).
+        let knots = KnotVector::clamped_uniform(n, n + 1, q(0, 1), q(1, 1)).unwrap();
+        let s = Nurbs::new(control, weights, knots).unwrap();
+        let mut c = Counts::default();
+        s.insert_with(&q(1, 3), 1, &mut c).unwrap();
+        assert_eq!(c.arithmetic_operations, 2 * n as u64, "d = {n}");
+    }
+}
