@@ -48,6 +48,11 @@ pub trait Counter {
     /// One arithmetic step on points: an affine combination of two points (a de Casteljau
     /// step) or a multiply-add of a point (a Horner step). Scalar bookkeeping is not counted.
     fn arithmetic_operation(&mut self);
+    /// One call of an exact predicate that its floating-point filter could not decide, so
+    /// that it ran an exact stage (integer, expansion or big-integer arithmetic). Recorded
+    /// besides the call's own operation (an orientation test, ...), so the ratio of the two
+    /// says how often a distribution of input needs exact arithmetic.
+    fn exact_fallback(&mut self);
 }
 
 /// The counts of every kind of operation: a plain struct with named fields.
@@ -76,6 +81,8 @@ pub struct Counts {
     pub vertex_visits: u64,
     /// Arithmetic steps on points (affine combinations, multiply-adds).
     pub arithmetic_operations: u64,
+    /// Predicate calls that needed an exact stage after the floating-point filter.
+    pub exact_fallbacks: u64,
 }
 
 /// The kinds of operation [`Counts`] records, to name one of them (the complexity catalog
@@ -104,11 +111,13 @@ pub enum Operation {
     VertexVisits,
     /// [`Counts::arithmetic_operations`].
     ArithmeticOperations,
+    /// [`Counts::exact_fallbacks`].
+    ExactFallbacks,
 }
 
 impl Operation {
     /// Every operation, in the order of the fields of [`Counts`].
-    pub const ALL: [Operation; 10] = [
+    pub const ALL: [Operation; 11] = [
         Operation::Comparisons,
         Operation::Swaps,
         Operation::Moves,
@@ -119,6 +128,7 @@ impl Operation {
         Operation::EdgeVisits,
         Operation::VertexVisits,
         Operation::ArithmeticOperations,
+        Operation::ExactFallbacks,
     ];
 
     /// The field name in [`Counts`] (and in the JSON the CLI prints), e.g. `"orientation_tests"`.
@@ -134,6 +144,7 @@ impl Operation {
             Operation::EdgeVisits => "edge_visits",
             Operation::VertexVisits => "vertex_visits",
             Operation::ArithmeticOperations => "arithmetic_operations",
+            Operation::ExactFallbacks => "exact_fallbacks",
         }
     }
 }
@@ -152,6 +163,7 @@ impl Counts {
             Operation::EdgeVisits => self.edge_visits,
             Operation::VertexVisits => self.vertex_visits,
             Operation::ArithmeticOperations => self.arithmetic_operations,
+            Operation::ExactFallbacks => self.exact_fallbacks,
         }
     }
 
@@ -202,6 +214,10 @@ impl Counter for Counts {
     fn arithmetic_operation(&mut self) {
         self.arithmetic_operations += 1;
     }
+    #[inline]
+    fn exact_fallback(&mut self) {
+        self.exact_fallbacks += 1;
+    }
 }
 
 impl Add for Counts {
@@ -224,6 +240,7 @@ impl AddAssign for Counts {
         self.edge_visits += rhs.edge_visits;
         self.vertex_visits += rhs.vertex_visits;
         self.arithmetic_operations += rhs.arithmetic_operations;
+        self.exact_fallbacks += rhs.exact_fallbacks;
     }
 }
 
@@ -253,6 +270,8 @@ impl Counter for NoCount {
     fn vertex_visit(&mut self) {}
     #[inline(always)]
     fn arithmetic_operation(&mut self) {}
+    #[inline(always)]
+    fn exact_fallback(&mut self) {}
 }
 
 #[cfg(test)]
@@ -270,6 +289,7 @@ mod tests {
         c.edge_visit();
         c.vertex_visit();
         c.arithmetic_operation();
+        c.exact_fallback();
     }
 
     #[test]
@@ -280,7 +300,7 @@ mod tests {
         for op in Operation::ALL {
             assert_eq!(c.get(op), 2, "{}", op.name());
         }
-        assert_eq!(c.total(), 20);
+        assert_eq!(c.total(), 22);
     }
 
     #[test]

@@ -40,14 +40,14 @@
 //! <!-- algorithms -->
 //! | algorithm | time | space | counts | source | file |
 //! |---|---|---|---|---|---|
-//! | `predicate/orient2d`: [`geometry::orient2d`] | O(1) | O(1) | orientation tests: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
-//! | `predicate/incircle`: [`geometry::incircle`] | O(1) | O(1) | incircle tests: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
-//! | `predicate/cmp-dist`: [`geometry::cmp_dist`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
-//! | `predicate/cross-sign`: [`geometry::cross_sign`] | O(1) | O(1) | orientation tests: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
-//! | `predicate/cmp-lex`: [`geometry::cmp_lex`] | O(1) | O(1) | comparisons: one per call | [Shewchuk, §4] | `src/geometry/predicates.rs` |
-//! | `predicate/cmp-line-dist`: [`geometry::cmp_line_dist`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/products.rs` |
-//! | `predicate/cmp-rect-area`: [`geometry::cmp_rect_area`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/products.rs` |
-//! | `predicate/cmp-rect-perimeter`: [`geometry::cmp_rect_perimeter`] | O(1) | O(1) | distance evaluations: one per call | [Shewchuk, §4] | `src/geometry/products.rs` |
+//! | `predicate/orient2d`: [`geometry::orient2d`] | O(1) | O(1) | orientation tests: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/incircle`: [`geometry::incircle`] | O(1) | O(1) | incircle tests: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cmp-dist`: [`geometry::cmp_dist`] | O(1) | O(1) | distance evaluations: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cross-sign`: [`geometry::cross_sign`] | O(1) | O(1) | orientation tests: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cmp-lex`: [`geometry::cmp_lex`] | O(1) | O(1) | comparisons: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/predicates.rs` |
+//! | `predicate/cmp-line-dist`: [`geometry::cmp_line_dist`] | O(1) | O(1) | distance evaluations: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/products.rs` |
+//! | `predicate/cmp-rect-area`: [`geometry::cmp_rect_area`] | O(1) | O(1) | distance evaluations: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/products.rs` |
+//! | `predicate/cmp-rect-perimeter`: [`geometry::cmp_rect_perimeter`] | O(1) | O(1) | distance evaluations: one per call; calls the floating-point filter cannot decide also count as exact fallbacks | [Shewchuk, §4] | `src/geometry/products.rs` |
 //! | `sort/bubble`: [`sort::bubble_sort`] | Θ(n²) | O(1) | comparisons: exactly n(n − 1)/2 comparisons | [RD, §2.1] | `src/sort/bubble.rs` |
 //! | `sort/selection`: [`sort::selection_sort`] | Θ(n²) | O(1) | comparisons: exactly n(n − 1)/2 comparisons | [RD, §2.1] | `src/sort/selection.rs` |
 //! | `sort/insertion`: [`sort::insertion_sort`] | Θ(n²) in the worst case and Θ(n) on sorted input | O(1) | comparisons: at most n(n − 1)/2 comparisons, n − 1 on sorted input | [RD, §2.1] | `src/sort/insertion.rs` |
@@ -87,33 +87,33 @@
 //! | `delaunay/lawson`: [`delaunay::lawson`] | O(n²) in the worst case | O(n) | incircle tests: one per edge check, Θ(n²) on a parabola | [RD, §2.4] | `src/delaunay/lawson.rs` |
 //! | `delaunay/fortune`: [`delaunay::fortune`] | O(n log n) expected | O(n) | comparisons: the sort, the event queue and the breakpoint tests; no in-circle test | [RD, §2.4] | `src/delaunay/fortune.rs` |
 //! | `voronoi/delaunay-dual`: [`delaunay::voronoi`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation; the dual makes no geometric decision | [RD, §2.4] | `src/delaunay/voronoi.rs` |
-//! | `check/delaunay`: [`delaunay::check_delaunay`] | O(n log n + t) | O(n + t) | not counted | [RD, §2.4] | `src/delaunay/check.rs` |
+//! | `check/delaunay`: [`delaunay::check_delaunay`] | O(n log n + t) | O(n + t) | incircle tests: exactly one per interior edge, 3n − 3 − 2h for n distinct points with h on the hull; one orientation test per triangle, then the hull's | [RD, §2.4] | `src/delaunay/check.rs` |
 //! | `closest-pair/delaunay`: [`proximity::closest_pair_delaunay`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation, then one distance evaluation per Delaunay edge | [RD, §2.4] | `src/proximity/closest_pair_delaunay.rs` |
 //! | `closest-pair/divide-and-conquer`: [`proximity::closest_pair_divide_and_conquer`] | O(n log n) in the worst case | O(n) | distance evaluations: strip membership, height cut-offs and candidate pairs, all exact | [RD, §2.4] | `src/proximity/closest_pair_divide_and_conquer.rs` |
 //! | `all-nearest-neighbours/delaunay`: [`proximity::all_nearest_neighbours`] | O(n log n) expected | O(n) | incircle tests: those of the triangulation, then two distance evaluations per Delaunay edge | [RD, §2.4] | `src/proximity/all_nearest.rs` |
-//! | `nearest/delaunay-walk`: [`proximity::NearestSearch::nearest`] | O(n log n) to build; O(√n) expected steps per query on uniform points | O(n) | distance evaluations: one per neighbour looked at during a walk | [RD, §2.4] | `src/proximity/nearest.rs` |
+//! | `nearest/delaunay-walk`: [`proximity::NearestSearch::nearest`] | O(n log n) to build; O(√n) expected steps per query on uniform points | O(n) | distance evaluations: one per neighbour looked at during a walk, about six per step | [RD, §2.4] | `src/proximity/nearest.rs` |
 //! | `emst/delaunay-kruskal`: [`proximity::euclidean_mst`] | O(n log n) expected | O(n) | distance evaluations: those of the exact length sort, after the triangulation's tests | [RD, §2.4] | `src/proximity/emst.rs` |
 //! | `empty-circle/voronoi`: [`proximity::largest_empty_circle`] | O(n log n) expected on uniform-like input, O(nh) worst case | O(n) | orientation tests: the hull tests of the Voronoi vertices, O(log h) each | [RD, §2.4] | `src/proximity/empty_circle.rs` |
 //! | `bezier/de-casteljau`: [`spline::Bezier::de_casteljau`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations per point | [PPB, §2.3] | `src/spline/bezier/de_casteljau.rs` |
 //! | `bezier/horner`: [`spline::Bezier::horner`] | Θ(nD) | O(D) | arithmetic operations: n + 1 point operations per point | [PPB, §2.3] | `src/spline/bezier/horner.rs` |
-//! | `bezier/split`: [`spline::Bezier::split`] | Θ(n²D) | O(nD) | not counted | [PPB, §3.3] | `src/spline/bezier/de_casteljau.rs` |
-//! | `bezier/blossom`: [`spline::Bezier::blossom`] | Θ(n²D) | O(nD) | not counted | [PPB, §3.2] | `src/spline/bezier/de_casteljau.rs` |
-//! | `bezier/elevate-to`: [`spline::Bezier::elevate_to`] | Θ(m·n·D) | Θ(mD) | not counted | [PPB, §3.12] | `src/spline/bezier/elevation.rs` |
-//! | `bezier/flatten`: [`spline::Bezier::flatten`] | Θ(s·n²D) | O(kn·D) | not counted | [PPB, §3.5] | `src/spline/bezier/flatten.rs` |
-//! | `bezier/intersections`: [`spline::intersections`] | O(k·d·(m² + n²)) | O(d(m + n)) | not counted | [PPB, §3.7] | `src/spline/bezier/intersect.rs` |
-//! | `interpolate/vandermonde`: [`spline::vandermonde`] | Θ(n³ + n²·D) | Θ(n² + n·D) | not counted | [RD, §3.1] | `src/spline/interpolate/polynomial.rs` |
-//! | `interpolate/vandermonde-hermite`: [`spline::vandermonde_hermite`] | Θ(N³ + N²·D) | Θ(N² + N·D) | not counted | [PPB, §4.4] | `src/spline/interpolate/polynomial.rs` |
-//! | `interpolate/lagrange`: [`spline::lagrange`] | Θ(n log n + nD) | Θ(nD) | not counted | [PPB, §4.2] | `src/spline/interpolate/lagrange.rs` |
-//! | `interpolate/aitken`: [`spline::LagrangeForm::aitken`] | Θ(n²D) | Θ(nD) | not counted | [PPB, §4.2] | `src/spline/interpolate/lagrange.rs` |
-//! | `interpolate/newton`: [`spline::newton`] | Θ(n²·D) | Θ(n·D) | not counted | [PPB, §4.3] | `src/spline/interpolate/newton.rs` |
-//! | `interpolate/newton-hermite`: [`spline::newton_hermite`] | Θ(N²·D) | Θ(N·D) | not counted | [PPB, §4.4] | `src/spline/interpolate/newton.rs` |
-//! | `interpolate/hermite`: [`spline::hermite`] | Θ(m·D) | Θ(m·D) | not counted | [RD, §3.2] | `src/spline/interpolate/hermite.rs` |
-//! | `interpolate/quadratic-spline`: [`spline::quadratic_spline`] | Θ(N·D) | Θ(N·D) | not counted | [SPL, §2] | `src/spline/interpolate/quadratic_spline.rs` |
-//! | `interpolate/closed-quadratic-spline`: [`spline::closed_quadratic_spline`] | Θ(N·D) | Θ(N·D) | not counted | [SPL, §2] | `src/spline/interpolate/quadratic_spline.rs` |
-//! | `interpolate/cubic-spline`: [`spline::cubic_spline`] | Θ(n·D) | Θ(n·D) | not counted | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
+//! | `bezier/split`: [`spline::Bezier::split`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations (one triangle) | [PPB, §3.3] | `src/spline/bezier/de_casteljau.rs` |
+//! | `bezier/blossom`: [`spline::Bezier::blossom`] | Θ(n²D) | O(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations per value | [PPB, §3.2] | `src/spline/bezier/de_casteljau.rs` |
+//! | `bezier/elevate-to`: [`spline::Bezier::elevate_to`] | Θ(m·n·D) | Θ(mD) | arithmetic operations: exactly (n + 1)(m − n + 1) terms bᵢ·wᵢ | [PPB, §3.12] | `src/spline/bezier/elevation.rs` |
+//! | `bezier/flatten`: [`spline::Bezier::flatten`] | Θ(s·n²D) | O(kn·D) | arithmetic operations: exactly (s − 1)·n(n + 1)/2 affine combinations: one split at ½ per segment but one | [PPB, §3.5] | `src/spline/bezier/flatten.rs` |
+//! | `bezier/intersections`: [`spline::intersections`] | O(k·d·(m² + n²)) | O(d(m + n)) | arithmetic operations: n(n + 1)/2 affine combinations per halving of a piece of degree n; four orientation tests per pair of flat pieces whose boxes meet | [PPB, §3.7] | `src/spline/bezier/intersect.rs` |
+//! | `interpolate/vandermonde`: [`spline::vandermonde`] | Θ(n³ + n²·D) | Θ(n² + n·D) | arithmetic operations: one per entry changed by elimination and per back-substitution term: exactly (N − 1)N(2N − 1)/6 + N(N − 1) + N(N + 1)/2 for N = n + 1 nodes when no entry vanishes | [RD, §3.1] | `src/spline/interpolate/polynomial.rs` |
+//! | `interpolate/vandermonde-hermite`: [`spline::vandermonde_hermite`] | Θ(N³ + N²·D) | Θ(N² + N·D) | arithmetic operations: as the Vandermonde solve's for N conditions, less where an entry below a pivot is zero | [PPB, §4.4] | `src/spline/interpolate/polynomial.rs` |
+//! | `interpolate/lagrange`: [`spline::lagrange`] | Θ(n log n + nD) | Θ(nD) | comparisons: the comparisons of the distinctness check: a sort of the nodes, then n | [PPB, §4.2] | `src/spline/interpolate/lagrange.rs` |
+//! | `interpolate/aitken`: [`spline::LagrangeForm::aitken`] | Θ(n²D) | Θ(nD) | arithmetic operations: exactly n(n + 1)/2 affine combinations for n + 1 nodes | [PPB, §4.2] | `src/spline/interpolate/lagrange.rs` |
+//! | `interpolate/newton`: [`spline::newton`] | Θ(n²·D) | Θ(n·D) | arithmetic operations: exactly n(n + 1)/2 divided differences of points for n + 1 nodes | [PPB, §4.3] | `src/spline/interpolate/newton.rs` |
+//! | `interpolate/newton-hermite`: [`spline::newton_hermite`] | Θ(N²·D) | Θ(N·D) | arithmetic operations: exactly N(N − 1)/2 entries of the table for N conditions: differences, or derivatives over factorials | [PPB, §4.4] | `src/spline/interpolate/newton.rs` |
+//! | `interpolate/hermite`: [`spline::hermite`] | Θ(m·D) | Θ(m·D) | arithmetic operations: exactly 2m point multiply-adds for m pieces: two inner Bézier points each | [RD, §3.2] | `src/spline/interpolate/hermite.rs` |
+//! | `interpolate/quadratic-spline`: [`spline::quadratic_spline`] | Θ(N·D) | Θ(N·D) | arithmetic operations: exactly N point operations for N pieces: one per inner Bézier point | [SPL, §2] | `src/spline/interpolate/quadratic_spline.rs` |
+//! | `interpolate/closed-quadratic-spline`: [`spline::closed_quadratic_spline`] | Θ(N·D) | Θ(N·D) | arithmetic operations: exactly 2N point operations for N pieces: N − 1 for the recurrence, one for the closing condition, N for the inner points | [SPL, §2] | `src/spline/interpolate/quadratic_spline.rs` |
+//! | `interpolate/cubic-spline`: [`spline::cubic_spline`] | Θ(n·D) | Θ(n·D) | arithmetic operations: the tangents' 7n + 4 point operations (at most 8n periodic), then the Hermite pieces' 2n | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
 //! | `spline/cubic-natural`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: exactly 7n + 4 point operations | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
 //! | `spline/cubic-periodic`: [`spline::cubic_spline_tangents`] | Θ(n·D) | Θ(n·D) | arithmetic operations: Θ(n) point operations | [RD, §3.1] | `src/spline/interpolate/cubic_spline.rs` |
-//! | `fit/least-squares`: [`spline::fit_bezier`] | Θ(m·n² + n³ + m·n·D) | Θ(n² + m·n + n·D) | not counted | [PPB, §4.7] | `src/spline/interpolate/least_squares.rs` |
+//! | `fit/least-squares`: [`spline::fit_bezier`] | Θ(m·n² + n³ + m·n·D) | Θ(n² + m·n + n·D) | arithmetic operations: (n + 1)(n + 2) per data point for the normal equations, then the dense solve's count for n + 1 unknowns | [PPB, §4.7] | `src/spline/interpolate/least_squares.rs` |
 //! | `bspline/span`: [`spline::KnotVector::span`] | O(log(n − d)) | O(1) | comparisons: at most ⌈log₂(n − d + 1)⌉ + 1 comparisons with knots, plus 2 for the domain | [PPB, §5.4] | `src/spline/bspline/knots.rs` |
 //! | `bspline/basis`: [`spline::KnotVector::basis`] | Θ(d²) | O(d) | arithmetic operations: exactly d(d + 1)/2 steps of the triangular scheme | [PPB, §5.3] | `src/spline/bspline/basis.rs` |
 //! | `bspline/basis-derivatives`: [`spline::KnotVector::basis_derivatives`] | O(d² + d·K²) | O((k + 1)(d + 1)) | arithmetic operations: exactly d(d + 1)/2 + (d + 1)·K(K + 3)/2 steps, K = min(k, d) | [PPB, §5.7] | `src/spline/bspline/basis.rs` |
@@ -121,7 +121,7 @@
 //! | `bspline/derivatives`: [`spline::BSpline::derivatives`] | Θ((d² + K³)D), K = min(k, d) | O((d + k)D) | arithmetic operations: exactly d(d + 1)/2 affine combinations and K(K + 1)(K + 2)/6 differences | [PPB, §5.9] | `src/spline/bspline/derivatives.rs` |
 //! | `bspline/insert`: [`spline::BSpline::insert`] | Θ((n + d + rd)D) | O((n + d + r)D) | arithmetic operations: exactly r(d − s) − r(r − 1)/2 affine combinations, s the knot's multiplicity before | [PPB, §6.1] | `src/spline/bspline/insert.rs` |
 //! | `bspline/to-bezier`: [`spline::BSpline::to_bezier`] | Θ(n + d + p·d·D) plus O(n·d²·D) | Θ(p·d·D) | arithmetic operations: exactly Σ (d − m)(d − m + 1)/2 affine combinations over the distinct knots in the domain, m the multiplicity (at most d) | [PPB, §5.10] | `src/spline/bspline/to_bezier.rs` |
-//! | `bspline/from-bezier`: [`spline::BSpline::from_bezier`] | Θ(p·d·D) | Θ(p·d·D) | not counted | [PPB, §5.10] | `src/spline/bspline/to_bezier.rs` |
+//! | `bspline/from-bezier`: [`spline::BSpline::from_bezier`] | Θ(p·d·D) | Θ(p·d·D) | moves: exactly p·d + 1 control points copied (p for degree 0), and p − 1 comparisons of end points | [PPB, §5.10] | `src/spline/bspline/to_bezier.rs` |
 //! | `bspline/elevate`: [`spline::BSpline::elevate`] | Θ((n + p·t)(d + t)²·D) | O((n + p·(d + t))D) | arithmetic operations: the conversion's, (d + 1)(t + 1) Zhou terms per piece and exactly (d + t)(d + t + 1)/2 affine combinations per new control point | [PPB, §6.4] | `src/spline/bspline/elevate.rs` |
 //! | `bspline/blossom`: [`spline::BSpline::blossom`] | Θ(d²D) | O(dD) | arithmetic operations: exactly d(d + 1)/2 affine combinations per value | [PPB, §5.5] | `src/spline/bspline/blossom.rs` |
 //! | `bspline/greville`: [`spline::KnotVector::greville`] | Θ(nd) | Θ(n) | arithmetic operations: exactly n·d: one per knot in a mean (n for degree 0) | [PPB, §5.8] | `src/spline/bspline/greville.rs` |

@@ -20,7 +20,11 @@ const CALIPERS: Declaration = Declaration {
     operation: Some(Operation::DistanceEvaluations),
     counts: "at most 3h/2 after the hull, one per antipodal pair",
     source: "[RD, §2.3]",
-    claims: &[],
+    claims: &[on(
+        "convex-polygon",
+        Bound::Linear,
+        Operation::DistanceEvaluations,
+    )],
 };
 
 /// Brute force's [`Declaration`]: its name, bounds, counts, source and claims.

@@ -72,14 +72,20 @@ use crate::hull::{akl_toussaint_with, check_strictly_convex_ccw, HullOptions};
 
 /// The antipodal pairs' declaration, for the catalog.
 pub(crate) const ANTIPODAL_PAIRS: &Declaration = &antipodal::DECLARATION;
+/// The width's declaration, for the catalog.
+pub(crate) const WIDTH: &Declaration = &width::DECLARATION;
+/// The minimum-area rectangle's declaration, for the catalog.
+pub(crate) const MIN_AREA_RECTANGLE: &Declaration = &rectangle::DECLARATION;
+/// The minimum-perimeter rectangle's declaration, for the catalog.
+pub(crate) const MIN_PERIMETER_RECTANGLE: &Declaration = &perimeter_rectangle::DECLARATION;
 
 /// The caliper algorithms that are not a choice among alternatives: the antipodal pairs, the
 /// width and the minimum-area and minimum-perimeter rectangles.
 pub(crate) const DECLARATIONS: [&Declaration; 4] = [
     ANTIPODAL_PAIRS,
-    &width::DECLARATION,
-    &rectangle::DECLARATION,
-    &perimeter_rectangle::DECLARATION,
+    WIDTH,
+    MIN_AREA_RECTANGLE,
+    MIN_PERIMETER_RECTANGLE,
 ];
 
 /// A strictly convex polygon: the vertices, counter-clockwise, as indices into a validated

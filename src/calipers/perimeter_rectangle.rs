@@ -3,7 +3,7 @@
 
 use super::rectangle::Rectangle;
 use super::ConvexPolygon;
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::CountedPredicates;
@@ -20,7 +20,11 @@ pub(super) const DECLARATION: Declaration = Declaration {
     operation: Some(Operation::OrientationTests),
     counts: "at most 9h for the calipers, and h − 1 exact perimeter comparisons",
     source: "[RD, §2.3]",
-    claims: &[],
+    claims: &[on(
+        "convex-polygon",
+        Bound::Linear,
+        Operation::OrientationTests,
+    )],
 };
 
 impl ConvexPolygon<'_> {

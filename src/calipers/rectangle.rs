@@ -5,7 +5,7 @@
 
 use super::sides::{four_calipers, Sides};
 use super::ConvexPolygon;
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::construct::rectangle_corner;
@@ -26,7 +26,11 @@ pub(super) const DECLARATION: Declaration = Declaration {
     operation: Some(Operation::OrientationTests),
     counts: "at most 9h for the calipers, and h − 1 exact area comparisons",
     source: "[RD, §2.3]",
-    claims: &[],
+    claims: &[on(
+        "convex-polygon",
+        Bound::Linear,
+        Operation::OrientationTests,
+    )],
 };
 
 /// An enclosing rectangle with a side on a polygon edge (the minimum-area or the

@@ -3,7 +3,7 @@
 
 use super::sides::{four_calipers, Sides};
 use super::ConvexPolygon;
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::{line_distance, CountedPredicates, WideFloat};
@@ -21,7 +21,11 @@ pub(super) const DECLARATION: Declaration = Declaration {
     operation: Some(Operation::OrientationTests),
     counts: "at most 9h for the calipers, and h − 1 exact distance comparisons",
     source: "[RD, §2.3]",
-    claims: &[],
+    claims: &[on(
+        "convex-polygon",
+        Bound::Linear,
+        Operation::OrientationTests,
+    )],
 };
 
 /// A width: an edge of the polygon, the vertex farthest from its line, and the distance

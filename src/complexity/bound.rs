@@ -37,6 +37,8 @@ pub enum Bound {
     Constant,
     /// O(log n): f = lg n.
     Log,
+    /// O(√n): f = √n (a walk across a uniform point set, for instance).
+    Sqrt,
     /// O(n): f = n.
     Linear,
     /// O(n log n): f = n lg n.
@@ -68,9 +70,10 @@ pub enum SecondSize {
 
 impl Bound {
     /// Every bound, from slowest-growing to the second-size bounds.
-    pub const ALL: [Bound; 11] = [
+    pub const ALL: [Bound; 12] = [
         Bound::Constant,
         Bound::Log,
+        Bound::Sqrt,
         Bound::Linear,
         Bound::NLogN,
         Bound::Quadratic,
@@ -93,6 +96,7 @@ impl Bound {
         match self {
             Bound::Constant => 1.0,
             Bound::Log => lg(n),
+            Bound::Sqrt => n.sqrt(),
             Bound::Linear => n,
             Bound::NLogN => n * lg(n),
             Bound::Quadratic => n * n,
@@ -116,12 +120,13 @@ impl Bound {
     }
 
     /// The text form, as written in `results.json` and parsed by [`FromStr`]: `"O(1)"`,
-    /// `"O(log n)"`, `"O(n)"`, `"O(n log n)"`, `"O(n^2)"`, `"O(n^3)"`, `"O(nh)"`,
+    /// `"O(log n)"`, `"O(sqrt n)"`, `"O(n)"`, `"O(n log n)"`, `"O(n^2)"`, `"O(n^3)"`, `"O(nh)"`,
     /// `"O(n log h)"`, `"O(n + m)"`, `"O(m log m)"`, `"O(m log n)"`.
     pub fn as_str(self) -> &'static str {
         match self {
             Bound::Constant => "O(1)",
             Bound::Log => "O(log n)",
+            Bound::Sqrt => "O(sqrt n)",
             Bound::Linear => "O(n)",
             Bound::NLogN => "O(n log n)",
             Bound::Quadratic => "O(n^2)",

@@ -2,10 +2,11 @@
 //! from elsewhere).
 
 use super::triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Violation;
-use crate::geometry::{cmp_lex, incircle, orient2d, InCircle, Orientation, Point2, PointSet};
-use crate::hull::{monotone_chain, HullOptions};
+use crate::geometry::{cmp_lex, CountedPredicates, InCircle, Orientation, Point2, PointSet};
+use crate::hull::{monotone_chain_with, HullOptions};
 use std::cmp::Ordering;
 
 /// The exact checker's [`Declaration`]: its name, bounds and source.
@@ -17,10 +18,10 @@ pub(super) const DECLARATION: Declaration = Declaration {
     summary: "every property of a Delaunay triangulation, checked exactly",
     time: "O(n log n + t)",
     space: "O(n + t)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::IncircleTests),
+    counts: "exactly one per interior edge, 3n − 3 − 2h for n distinct points with h on the hull; one orientation test per triangle, then the hull's",
     source: "[RD, §2.4]",
-    claims: &[],
+    claims: &[on("uniform-disk", Bound::Linear, Operation::IncircleTests)],
 };
 
 /// Checks exactly that `t` is a Delaunay triangulation of `points` in compgeo's conventions;
@@ -72,12 +73,47 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn check_delaunay(points: &[Point2], t: &Triangulation) -> Result<(), Violation> {
-    check(points, t).map_err(Violation::new)
+    check_delaunay_with(points, t, &mut NoCount)
+}
+
+/// [`check_delaunay`], counting its predicates: one
+/// [`orientation_test`](Counter::orientation_test) per triangle, one
+/// [`incircle_test`](Counter::incircle_test) per interior edge (3n − 3 − 2h of them for n
+/// distinct points with h on the hull, when every property holds), and the orientation tests
+/// and comparisons of the keep-collinear hull it compares with. The search for duplicates
+/// (a lexicographic sort) is not counted.
+///
+/// # Errors
+/// As [`check_delaunay`].
+///
+/// # Complexity
+/// O(n log n + t) time and O(n + t) auxiliary space, as [`check_delaunay`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::delaunay::{check_delaunay_with, Triangulation};
+/// use compgeo::geometry::{Point2, PointSet};
+///
+/// // Four points around a fifth: four triangles, four interior edges, a hull of four.
+/// let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (1.0, 0.9)].map(Point2::from);
+/// let fan = [[4, 0, 1], [4, 1, 2], [4, 2, 3], [4, 3, 0]];
+/// let t = Triangulation::from_triangles(&PointSet::new(&pts)?, &fan, Vec::new())?;
+/// let mut c = Counts::default();
+/// assert!(check_delaunay_with(&pts, &t, &mut c).is_ok());
+/// assert_eq!(c.incircle_tests, 3 * 5 - 3 - 2 * 4);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn check_delaunay_with<C: Counter>(
+    points: &[Point2],
+    t: &Triangulation,
+    counter: &mut C,
+) -> Result<(), Violation> {
+    check(points, t, counter).map_err(Violation::new)
 }
 
 /// [`check_delaunay`], each property's failure as its message.
-fn check(points: &[Point2], t: &Triangulation) -> Result<(), String> {
-    PointSet::new(points).map_err(|e| e.to_string())?;
+fn check<C: Counter>(points: &[Point2], t: &Triangulation, counter: &mut C) -> Result<(), String> {
+    let set = PointSet::new(points).map_err(|e| e.to_string())?;
     let n = points.len();
     let len = t.triangles.len();
     if len % 3 != 0 {
@@ -112,7 +148,7 @@ fn check(points: &[Point2], t: &Triangulation) -> Result<(), String> {
     }
     for tri in 0..len / 3 {
         let e = 3 * tri;
-        if orient2d(p(e), p(e + 1), p(e + 2)) != Orientation::CounterClockwise {
+        if counter.orient2d(p(e), p(e + 1), p(e + 2)) != Orientation::CounterClockwise {
             return Err(format!(
                 "triangle {tri} {:?} is not counter-clockwise",
                 t.triangle(tri)
@@ -123,8 +159,8 @@ fn check(points: &[Point2], t: &Triangulation) -> Result<(), String> {
         let f = t.halfedges[e];
         if f != EMPTY && e < f {
             let across = p(prev_halfedge(f));
-            if incircle(p(e), p(next_halfedge(e)), p(prev_halfedge(e)), across) == InCircle::Inside
-            {
+            let (a, b, c) = (p(e), p(next_halfedge(e)), p(prev_halfedge(e)));
+            if counter.incircle(a, b, c, across) == InCircle::Inside {
                 return Err(format!(
                     "edge {} - {} is not locally Delaunay: vertex {} is inside the circumcircle of triangle {:?}",
                     t.triangles[e],
@@ -136,13 +172,13 @@ fn check(points: &[Point2], t: &Triangulation) -> Result<(), String> {
         }
     }
     check_vertices(points, t)?;
-    let expected = monotone_chain(
-        points,
+    let expected = monotone_chain_with(
+        &set,
         HullOptions {
             keep_collinear: true,
         },
-    )
-    .map_err(|e| e.to_string())?;
+        counter,
+    );
     if t.hull != expected {
         return Err(format!(
             "hull {:?} differs from the keep-collinear convex hull {expected:?}",
@@ -151,7 +187,8 @@ fn check(points: &[Point2], t: &Triangulation) -> Result<(), String> {
     }
     let distinct = n - t.duplicates.len();
     if len == 0 {
-        let degenerate = distinct < 3 || expected.len() == distinct && all_collinear(points);
+        let degenerate =
+            distinct < 3 || expected.len() == distinct && all_collinear(points, counter);
         return if degenerate {
             Ok(())
         } else {
@@ -231,7 +268,7 @@ fn check_boundary(t: &Triangulation) -> Result<(), String> {
     Ok(())
 }
 
-fn all_collinear(points: &[Point2]) -> bool {
+fn all_collinear<C: Counter>(points: &[Point2], counter: &mut C) -> bool {
     let Some(&a) = points.first() else {
         return true;
     };
@@ -240,7 +277,7 @@ fn all_collinear(points: &[Point2]) -> bool {
     };
     points
         .iter()
-        .all(|&q| orient2d(a, b, q) == Orientation::Collinear)
+        .all(|&q| counter.orient2d(a, b, q) == Orientation::Collinear)
 }
 
 #[cfg(test)]

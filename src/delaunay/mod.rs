@@ -66,7 +66,7 @@ mod quad_edge;
 mod triangulation;
 mod voronoi;
 
-pub use check::check_delaunay;
+pub use check::{check_delaunay, check_delaunay_with};
 pub use clip::ClipBox;
 pub use divide_conquer::{divide_and_conquer, divide_and_conquer_with};
 pub use fortune::{fortune, fortune_with};
@@ -82,7 +82,10 @@ use crate::geometry::{Point2, PointSet};
 
 /// The algorithms on a triangulation that are not a choice among builders: the Voronoi
 /// diagram as the dual, and the exact checker.
-pub(crate) const DECLARATIONS: [&Declaration; 2] = [VORONOI, &check::DECLARATION];
+pub(crate) const DECLARATIONS: [&Declaration; 2] = [VORONOI, CHECK];
+
+/// The exact checker's declaration.
+pub(crate) const CHECK: &Declaration = &check::DECLARATION;
 
 /// The Voronoi diagram's declaration.
 pub(crate) const VORONOI: &Declaration = &voronoi::DECLARATION;

@@ -1,9 +1,10 @@
 //! Counted forms of the predicates: the counter increments at the boundary, so algorithm
-//! bodies hold no counting code.
+//! bodies hold no counting code. Each method is the predicate's `_with` form, which also
+//! records the calls its floating-point filter could not decide as exact fallbacks.
 
 use super::{
-    cmp_dist, cmp_lex, cmp_line_dist, cmp_rect_area, cmp_rect_perimeter, cross_sign, incircle,
-    orient2d, InCircle, Orientation, Point2,
+    cmp_dist_with, cmp_lex_with, cmp_line_dist_with, cmp_rect_area_with, cmp_rect_perimeter_with,
+    cross_sign_with, incircle_with, orient2d_with, InCircle, Orientation, Point2,
 };
 use crate::count::Counter;
 use std::cmp::Ordering;
@@ -24,36 +25,32 @@ use std::cmp::Ordering;
 /// assert_eq!(counts.orientation_tests, 1);
 /// ```
 pub trait CountedPredicates: Counter {
-    /// [`orient2d`], counted as one orientation test.
+    /// [`orient2d`](super::orient2d), counted as one orientation test.
     #[inline]
     fn orient2d(&mut self, a: Point2, b: Point2, c: Point2) -> Orientation {
-        self.orientation_test();
-        orient2d(a, b, c)
+        orient2d_with(a, b, c, self)
     }
 
-    /// [`incircle`], counted as one in-circle test.
+    /// [`incircle`](super::incircle), counted as one in-circle test.
     #[inline]
     fn incircle(&mut self, a: Point2, b: Point2, c: Point2, d: Point2) -> InCircle {
-        self.incircle_test();
-        incircle(a, b, c, d)
+        incircle_with(a, b, c, d, self)
     }
 
-    /// [`cmp_dist`], counted as one distance evaluation.
+    /// [`cmp_dist`](super::cmp_dist), counted as one distance evaluation.
     #[inline]
     fn cmp_dist(&mut self, a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
-        self.distance_evaluation();
-        cmp_dist(a, b, c, d)
+        cmp_dist_with(a, b, c, d, self)
     }
 
-    /// [`cross_sign`], counted as one orientation test (it is a signed-area test of two
+    /// [`cross_sign`](super::cross_sign), counted as one orientation test (it is a signed-area test of two
     /// edge vectors).
     #[inline]
     fn cross_sign(&mut self, a: Point2, b: Point2, c: Point2, d: Point2) -> Orientation {
-        self.orientation_test();
-        cross_sign(a, b, c, d)
+        cross_sign_with(a, b, c, d, self)
     }
 
-    /// [`cmp_line_dist`], counted as one distance evaluation.
+    /// [`cmp_line_dist`](super::cmp_line_dist), counted as one distance evaluation.
     #[inline]
     fn cmp_line_dist(
         &mut self,
@@ -64,31 +61,27 @@ pub trait CountedPredicates: Counter {
         d: Point2,
         q: Point2,
     ) -> Ordering {
-        self.distance_evaluation();
-        cmp_line_dist(a, b, p, c, d, q)
+        cmp_line_dist_with(a, b, p, c, d, q, self)
     }
 
-    /// [`cmp_rect_area`], counted as one distance evaluation (it compares products of
+    /// [`cmp_rect_area`](super::cmp_rect_area), counted as one distance evaluation (it compares products of
     /// lengths).
     #[inline]
     fn cmp_rect_area(&mut self, first: [Point2; 5], second: [Point2; 5]) -> Ordering {
-        self.distance_evaluation();
-        cmp_rect_area(first, second)
+        cmp_rect_area_with(first, second, self)
     }
 
-    /// [`cmp_rect_perimeter`], counted as one distance evaluation (it compares sums of
-    /// lengths).
+    /// [`cmp_rect_perimeter`](super::cmp_rect_perimeter), counted as one distance
+    /// evaluation (it compares sums of lengths).
     #[inline]
     fn cmp_rect_perimeter(&mut self, first: [Point2; 5], second: [Point2; 5]) -> Ordering {
-        self.distance_evaluation();
-        cmp_rect_perimeter(first, second)
+        cmp_rect_perimeter_with(first, second, self)
     }
 
-    /// [`cmp_lex`], counted as one comparison.
+    /// [`cmp_lex`](super::cmp_lex), counted as one comparison.
     #[inline]
     fn cmp_lex(&mut self, a: Point2, b: Point2) -> Ordering {
-        self.comparison();
-        cmp_lex(a, b)
+        cmp_lex_with(a, b, self)
     }
 }
 

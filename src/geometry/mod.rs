@@ -64,6 +64,12 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 8] = [
     &products::DECLARATIONS[1],
     &products::DECLARATIONS[2],
 ];
-pub use predicates::{cmp_dist, cmp_lex, cross_sign, incircle, orient2d, InCircle, Orientation};
-pub use products::{cmp_line_dist, cmp_rect_area, cmp_rect_perimeter};
+pub use predicates::{
+    cmp_dist, cmp_dist_with, cmp_lex, cmp_lex_with, cross_sign, cross_sign_with, incircle,
+    incircle_with, orient2d, orient2d_with, InCircle, Orientation,
+};
+pub use products::{
+    cmp_line_dist, cmp_line_dist_with, cmp_rect_area, cmp_rect_area_with, cmp_rect_perimeter,
+    cmp_rect_perimeter_with,
+};
 pub(crate) use products::{line_distance, rect_area, rect_perimeter};

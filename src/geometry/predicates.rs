@@ -21,17 +21,20 @@
 use super::expansion::{two_diff, Expansion};
 use super::extended::{self, Predicate};
 use super::Point2;
-use crate::complexity::Declaration;
-use crate::count::Operation;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
 
-/// Declares an exact predicate: O(1) per call, counted as the operation it is.
-const fn predicate(
+/// Declares an exact predicate: O(1) per call, counted as the operation it is. Its claims
+/// are on workloads of n calls (Θ(n) in all), one per point distribution in `claims`; the
+/// calls that need an exact stage are counted besides, as exact fallbacks.
+pub(super) const fn predicate(
     name: &'static str,
     function: &'static str,
     file: &'static str,
     summary: &'static str,
     operation: Operation,
+    claims: &'static [crate::complexity::Claim],
 ) -> Declaration {
     Declaration {
         problem: "predicate",
@@ -42,11 +45,19 @@ const fn predicate(
         time: "O(1)",
         space: "O(1)",
         operation: Some(operation),
-        counts: "one per call",
+        counts: "one per call; calls the floating-point filter cannot decide also count as exact fallbacks",
         source: "[Shewchuk, §4]",
-        claims: &[],
+        claims,
     }
 }
+
+/// n calls on each of `kinds` (point distributions), Θ(n) in `operation`.
+macro_rules! calls_on {
+    ($operation:expr; $($kind:literal),+) => {
+        &[$(on($kind, Bound::Linear, $operation)),+]
+    };
+}
+pub(super) use calls_on;
 
 /// The predicates of this file, declared.
 pub(super) const DECLARATIONS: [Declaration; 5] = [
@@ -56,6 +67,7 @@ pub(super) const DECLARATIONS: [Declaration; 5] = [
         "src/geometry/predicates.rs",
         "the side of a line a point lies on",
         Operation::OrientationTests,
+        calls_on!(Operation::OrientationTests; "uniform-disk", "grid", "collinear", "huge"),
     ),
     predicate(
         "incircle",
@@ -63,6 +75,7 @@ pub(super) const DECLARATIONS: [Declaration; 5] = [
         "src/geometry/predicates.rs",
         "inside, on or outside the circle through three points",
         Operation::IncircleTests,
+        calls_on!(Operation::IncircleTests; "uniform-disk", "grid", "collinear", "tiny"),
     ),
     predicate(
         "cmp-dist",
@@ -70,6 +83,7 @@ pub(super) const DECLARATIONS: [Declaration; 5] = [
         "src/geometry/predicates.rs",
         "which of two distances is longer",
         Operation::DistanceEvaluations,
+        calls_on!(Operation::DistanceEvaluations; "uniform-disk", "grid", "huge"),
     ),
     predicate(
         "cross-sign",
@@ -77,6 +91,7 @@ pub(super) const DECLARATIONS: [Declaration; 5] = [
         "src/geometry/predicates.rs",
         "whether one direction turns left or right of another",
         Operation::OrientationTests,
+        calls_on!(Operation::OrientationTests; "uniform-disk", "collinear"),
     ),
     predicate(
         "cmp-lex",
@@ -84,6 +99,7 @@ pub(super) const DECLARATIONS: [Declaration; 5] = [
         "src/geometry/predicates.rs",
         "the lexicographic order of two points",
         Operation::Comparisons,
+        calls_on!(Operation::Comparisons; "uniform-disk", "grid"),
     ),
 ];
 
@@ -236,9 +252,37 @@ fn sign_of(x: f64) -> i32 {
 /// ```
 #[inline]
 pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
+    orient2d_with(a, b, c, &mut NoCount)
+}
+
+/// [`orient2d`], counting one [`orientation_test`](Counter::orientation_test) and, when the
+/// filter cannot decide, one [`exact_fallback`](Counter::exact_fallback).
+///
+/// # Complexity
+/// O(1), as for [`orient2d`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::geometry::{orient2d_with, Orientation, Point2};
+///
+/// let mut c = Counts::default();
+/// let (a, b) = (Point2::new(0.0, 0.0), Point2::new(1.0, 1.0));
+/// assert_eq!(orient2d_with(a, b, Point2::new(0.0, 1.0), &mut c), Orientation::CounterClockwise);
+/// assert_eq!(orient2d_with(a, b, Point2::new(3.0, 3.0), &mut c), Orientation::Collinear);
+/// assert_eq!((c.orientation_tests, c.exact_fallbacks), (2, 1)); // the tie needs the exact stage
+/// ```
+#[inline]
+pub fn orient2d_with<C: Counter + ?Sized>(
+    a: Point2,
+    b: Point2,
+    c: Point2,
+    counter: &mut C,
+) -> Orientation {
+    counter.orientation_test();
     let left = (a.x - c.x) * (b.y - c.y);
     let right = (a.y - c.y) * (b.x - c.x);
     cross_filter(left, right).unwrap_or_else(|| {
+        counter.exact_fallback();
         Orientation::from_sign(exact_sign(
             Predicate::Orient2d,
             &[a.x, a.y, b.x, b.y, c.x, c.y],
@@ -266,6 +310,34 @@ pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
 /// ```
 #[inline]
 pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> InCircle {
+    incircle_with(a, b, c, d, &mut NoCount)
+}
+
+/// [`incircle`], counting one [`incircle_test`](Counter::incircle_test) and, when the filter
+/// cannot decide, one [`exact_fallback`](Counter::exact_fallback).
+///
+/// # Complexity
+/// O(1), as for [`orient2d`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::geometry::{incircle_with, InCircle, Point2};
+///
+/// let mut c = Counts::default();
+/// let (a, b, d) = (Point2::new(0.0, 0.0), Point2::new(2.0, 0.0), Point2::new(0.0, 2.0));
+/// assert_eq!(incircle_with(a, b, d, Point2::new(1.0, 1.0), &mut c), InCircle::Inside);
+/// assert_eq!(incircle_with(a, b, d, Point2::new(2.0, 2.0), &mut c), InCircle::On);
+/// assert_eq!((c.incircle_tests, c.exact_fallbacks), (2, 1));
+/// ```
+#[inline]
+pub fn incircle_with<C: Counter + ?Sized>(
+    a: Point2,
+    b: Point2,
+    c: Point2,
+    d: Point2,
+    counter: &mut C,
+) -> InCircle {
+    counter.incircle_test();
     let (adx, ady, bdx, bdy) = (a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y);
     let (cdx, cdy) = (c.x - d.x, c.y - d.y);
     let (bc, cb) = (bdx * cdy, cdx * bdy);
@@ -294,6 +366,7 @@ pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> InCircle {
     if -det > bound {
         return InCircle::Outside;
     }
+    counter.exact_fallback();
     InCircle::from_sign(exact_sign(
         Predicate::Incircle,
         &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y],
@@ -319,6 +392,35 @@ pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> InCircle {
 /// ```
 #[inline]
 pub fn cmp_dist(a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
+    cmp_dist_with(a, b, c, d, &mut NoCount)
+}
+
+/// [`cmp_dist`], counting one [`distance_evaluation`](Counter::distance_evaluation) and,
+/// when the filter cannot decide, one [`exact_fallback`](Counter::exact_fallback).
+///
+/// # Complexity
+/// O(1), as for [`cmp_dist`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::geometry::{cmp_dist_with, Point2};
+/// use std::cmp::Ordering;
+///
+/// let mut c = Counts::default();
+/// let o = Point2::new(0.0, 0.0);
+/// let d = cmp_dist_with(o, Point2::new(3.0, 4.0), o, Point2::new(5.0, 0.0), &mut c);
+/// assert_eq!(d, Ordering::Equal);
+/// assert_eq!((c.distance_evaluations, c.exact_fallbacks), (1, 1));
+/// ```
+#[inline]
+pub fn cmp_dist_with<C: Counter + ?Sized>(
+    a: Point2,
+    b: Point2,
+    c: Point2,
+    d: Point2,
+    counter: &mut C,
+) -> Ordering {
+    counter.distance_evaluation();
     let (abx, aby, cdx, cdy) = (b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
     let ab = abx * abx + aby * aby;
     let cd = cdx * cdx + cdy * cdy;
@@ -329,6 +431,7 @@ pub fn cmp_dist(a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
     } else if -diff > bound {
         Ordering::Less
     } else {
+        counter.exact_fallback();
         exact_sign(
             Predicate::CmpDist,
             &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y],
@@ -357,9 +460,38 @@ pub fn cmp_dist(a: Point2, b: Point2, c: Point2, d: Point2) -> Ordering {
 /// ```
 #[inline]
 pub fn cross_sign(a: Point2, b: Point2, c: Point2, d: Point2) -> Orientation {
+    cross_sign_with(a, b, c, d, &mut NoCount)
+}
+
+/// [`cross_sign`], counting one [`orientation_test`](Counter::orientation_test) and, when
+/// the filter cannot decide, one [`exact_fallback`](Counter::exact_fallback).
+///
+/// # Complexity
+/// O(1), as for [`cross_sign`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::geometry::{cross_sign_with, Orientation, Point2};
+///
+/// let p = |x, y| Point2::new(x, y);
+/// let mut c = Counts::default();
+/// let s = cross_sign_with(p(0.0, 0.0), p(2.0, 2.0), p(7.0, 1.0), p(8.0, 2.0), &mut c);
+/// assert_eq!(s, Orientation::Collinear);
+/// assert_eq!((c.orientation_tests, c.exact_fallbacks), (1, 1));
+/// ```
+#[inline]
+pub fn cross_sign_with<C: Counter + ?Sized>(
+    a: Point2,
+    b: Point2,
+    c: Point2,
+    d: Point2,
+    counter: &mut C,
+) -> Orientation {
+    counter.orientation_test();
     let left = (b.x - a.x) * (d.y - c.y);
     let right = (b.y - a.y) * (d.x - c.x);
     cross_filter(left, right).unwrap_or_else(|| {
+        counter.exact_fallback();
         let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
         Orientation::from_sign(exact_sign(Predicate::CrossSign, &coords))
     })
@@ -398,6 +530,27 @@ fn cross_filter(left: f64, right: f64) -> Option<Orientation> {
 /// ```
 #[inline]
 pub fn cmp_lex(a: Point2, b: Point2) -> Ordering {
+    cmp_lex_with(a, b, &mut NoCount)
+}
+
+/// [`cmp_lex`], counting one [`comparison`](Counter::comparison). It has no exact stage to
+/// fall back to: comparing coordinates is exact.
+///
+/// # Complexity
+/// O(1).
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::geometry::{cmp_lex_with, Point2};
+/// use std::cmp::Ordering;
+///
+/// let mut c = Counts::default();
+/// assert_eq!(cmp_lex_with(Point2::new(1.0, 0.0), Point2::new(1.0, 2.0), &mut c), Ordering::Less);
+/// assert_eq!((c.comparisons, c.exact_fallbacks), (1, 0));
+/// ```
+#[inline]
+pub fn cmp_lex_with<C: Counter + ?Sized>(a: Point2, b: Point2, counter: &mut C) -> Ordering {
+    counter.comparison();
     cmp_coordinate(a.x, b.x).then_with(|| cmp_coordinate(a.y, b.y))
 }
 

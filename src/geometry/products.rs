@@ -17,53 +17,38 @@
 
 use super::bigint::BigInt;
 use super::extended::decompose;
-use super::predicates::{pow2, UNDERFLOW_SLACK};
+use super::predicates::{calls_on, pow2, predicate, UNDERFLOW_SLACK};
 use super::{Point2, WideFloat};
-use crate::complexity::Declaration;
-use crate::count::Operation;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
 
 /// The comparisons of products of this file, declared.
 pub(super) const DECLARATIONS: [Declaration; 3] = [
-    Declaration {
-        problem: "predicate",
-        name: "cmp-line-dist",
-        function: "geometry::cmp_line_dist",
-        file: "src/geometry/products.rs",
-        summary: "which of two points is closer to its line",
-        time: "O(1)",
-        space: "O(1)",
-        operation: Some(Operation::DistanceEvaluations),
-        counts: "one per call",
-        source: "[Shewchuk, §4]",
-        claims: &[],
-    },
-    Declaration {
-        problem: "predicate",
-        name: "cmp-rect-area",
-        function: "geometry::cmp_rect_area",
-        file: "src/geometry/products.rs",
-        summary: "which of two rectangles on given lines is smaller",
-        time: "O(1)",
-        space: "O(1)",
-        operation: Some(Operation::DistanceEvaluations),
-        counts: "one per call",
-        source: "[Shewchuk, §4]",
-        claims: &[],
-    },
-    Declaration {
-        problem: "predicate",
-        name: "cmp-rect-perimeter",
-        function: "geometry::cmp_rect_perimeter",
-        file: "src/geometry/products.rs",
-        summary: "which of two rectangles on given lines has the shorter perimeter",
-        time: "O(1)",
-        space: "O(1)",
-        operation: Some(Operation::DistanceEvaluations),
-        counts: "one per call",
-        source: "[Shewchuk, §4]",
-        claims: &[],
-    },
+    predicate(
+        "cmp-line-dist",
+        "geometry::cmp_line_dist",
+        "src/geometry/products.rs",
+        "which of two points is closer to its line",
+        Operation::DistanceEvaluations,
+        calls_on!(Operation::DistanceEvaluations; "uniform-disk", "grid"),
+    ),
+    predicate(
+        "cmp-rect-area",
+        "geometry::cmp_rect_area",
+        "src/geometry/products.rs",
+        "which of two rectangles on given lines is smaller",
+        Operation::DistanceEvaluations,
+        calls_on!(Operation::DistanceEvaluations; "uniform-disk", "grid"),
+    ),
+    predicate(
+        "cmp-rect-perimeter",
+        "geometry::cmp_rect_perimeter",
+        "src/geometry/products.rs",
+        "which of two rectangles on given lines has the shorter perimeter",
+        Operation::DistanceEvaluations,
+        calls_on!(Operation::DistanceEvaluations; "uniform-disk", "grid"),
+    ),
 ];
 
 /// Compares the distance from `p` to the line through `a` and `b` with the distance from
@@ -90,6 +75,38 @@ pub(super) const DECLARATIONS: [Declaration; 3] = [
 /// assert_eq!(cmp_line_dist(p(0.0, 0.0), p(1.0, 0.0), p(3.0, 4.0), p(0.0, 0.0), p(0.0, 7.0), p(4.0, 1.0)), Ordering::Equal);
 /// ```
 pub fn cmp_line_dist(a: Point2, b: Point2, p: Point2, c: Point2, d: Point2, q: Point2) -> Ordering {
+    cmp_line_dist_with(a, b, p, c, d, q, &mut NoCount)
+}
+
+/// [`cmp_line_dist`], counting one [`distance_evaluation`](Counter::distance_evaluation)
+/// and, when the filter cannot decide, one [`exact_fallback`](Counter::exact_fallback).
+///
+/// # Complexity
+/// O(1), as for [`cmp_line_dist`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::geometry::{cmp_line_dist_with, Point2};
+/// use std::cmp::Ordering;
+///
+/// let p = |x, y| Point2::new(x, y);
+/// let mut c = Counts::default();
+/// let o = p(0.0, 0.0);
+/// let tie = cmp_line_dist_with(o, p(1.0, 0.0), p(3.0, 4.0), o, p(0.0, 7.0), p(4.0, 1.0), &mut c);
+/// assert_eq!(tie, Ordering::Equal);
+/// assert_eq!((c.distance_evaluations, c.exact_fallbacks), (1, 1));
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn cmp_line_dist_with<C: Counter + ?Sized>(
+    a: Point2,
+    b: Point2,
+    p: Point2,
+    c: Point2,
+    d: Point2,
+    q: Point2,
+    counter: &mut C,
+) -> Ordering {
+    counter.distance_evaluation();
     let lhs = [
         Form::cross(a, b, a, p),
         Form::cross(a, b, a, p),
@@ -100,7 +117,7 @@ pub fn cmp_line_dist(a: Point2, b: Point2, p: Point2, c: Point2, d: Point2, q: P
         Form::cross(c, d, c, q),
         Form::dot(a, b, a, b),
     ];
-    cmp_abs_products(&lhs, &rhs)
+    cmp_abs_products(&lhs, &rhs, counter)
 }
 
 /// Compares the areas of two rectangles, each given as `[a, b, p, l, r]`: a side on the
@@ -130,6 +147,34 @@ pub fn cmp_line_dist(a: Point2, b: Point2, p: Point2, c: Point2, d: Point2, q: P
 /// assert_eq!(cmp_rect_area(flat, tilted_8), Ordering::Equal);
 /// ```
 pub fn cmp_rect_area(first: [Point2; 5], second: [Point2; 5]) -> Ordering {
+    cmp_rect_area_with(first, second, &mut NoCount)
+}
+
+/// [`cmp_rect_area`], counting one [`distance_evaluation`](Counter::distance_evaluation)
+/// (it compares products of lengths) and, when the filter cannot decide, one
+/// [`exact_fallback`](Counter::exact_fallback).
+///
+/// # Complexity
+/// O(1), as for [`cmp_line_dist`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::geometry::{cmp_rect_area_with, Point2};
+/// use std::cmp::Ordering;
+///
+/// let p = |x, y| Point2::new(x, y);
+/// let mut c = Counts::default();
+/// let flat = [p(0.0, 0.0), p(1.0, 0.0), p(0.0, 2.0), p(0.0, 0.0), p(4.0, 0.0)];
+/// let tilted = [p(0.0, 0.0), p(1.0, 1.0), p(0.0, 2.0), p(0.0, 0.0), p(4.0, 4.0)];
+/// assert_eq!(cmp_rect_area_with(flat, tilted, &mut c), Ordering::Equal);
+/// assert_eq!((c.distance_evaluations, c.exact_fallbacks), (1, 1));
+/// ```
+pub fn cmp_rect_area_with<C: Counter + ?Sized>(
+    first: [Point2; 5],
+    second: [Point2; 5],
+    counter: &mut C,
+) -> Ordering {
+    counter.distance_evaluation();
     let [a, b, p, l, r] = first;
     let [c, d, q, l2, r2] = second;
     let lhs = [
@@ -142,7 +187,7 @@ pub fn cmp_rect_area(first: [Point2; 5], second: [Point2; 5]) -> Ordering {
         Form::dot(c, d, l2, r2),
         Form::dot(a, b, a, b),
     ];
-    cmp_abs_products(&lhs, &rhs)
+    cmp_abs_products(&lhs, &rhs, counter)
 }
 
 /// Compares the perimeters of two rectangles, each given as `[a, b, p, l, r]` as in
@@ -176,6 +221,35 @@ pub fn cmp_rect_area(first: [Point2; 5], second: [Point2; 5]) -> Ordering {
 /// assert_eq!(cmp_rect_perimeter(square, long), Ordering::Equal);
 /// ```
 pub fn cmp_rect_perimeter(first: [Point2; 5], second: [Point2; 5]) -> Ordering {
+    cmp_rect_perimeter_with(first, second, &mut NoCount)
+}
+
+/// [`cmp_rect_perimeter`], counting one [`distance_evaluation`](Counter::distance_evaluation)
+/// (it compares sums of lengths) and, when the filter cannot decide, one
+/// [`exact_fallback`](Counter::exact_fallback).
+///
+/// # Complexity
+/// O(1), as [`cmp_rect_perimeter`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::geometry::{cmp_rect_perimeter_with, Point2};
+/// use std::cmp::Ordering;
+///
+/// let p = |x, y| Point2::new(x, y);
+/// let mut c = Counts::default();
+/// // A tie (both half-perimeters are 6) is for the exact stage to confirm.
+/// let square = [p(0.0, 0.0), p(1.0, 0.0), p(0.0, 3.0), p(0.0, 0.0), p(3.0, 0.0)];
+/// let long = [p(0.0, 0.0), p(0.0, 1.0), p(-1.0, 0.0), p(0.0, 0.0), p(0.0, 5.0)];
+/// assert_eq!(cmp_rect_perimeter_with(square, long, &mut c), Ordering::Equal);
+/// assert_eq!((c.distance_evaluations, c.exact_fallbacks), (1, 1));
+/// ```
+pub fn cmp_rect_perimeter_with<C: Counter + ?Sized>(
+    first: [Point2; 5],
+    second: [Point2; 5],
+    counter: &mut C,
+) -> Ordering {
+    counter.distance_evaluation();
     let [a, b, p, l, r] = first;
     let [c, d, q, l2, r2] = second;
     let lhs = HalfPerimeter {
@@ -188,8 +262,10 @@ pub fn cmp_rect_perimeter(first: [Point2; 5], second: [Point2; 5]) -> Ordering {
         length: Form::dot(c, d, l2, r2),
         squared_side: Form::dot(a, b, a, b),
     };
-    lhs.filtered_cmp(&rhs)
-        .unwrap_or_else(|| lhs.exact_cmp(&rhs))
+    lhs.filtered_cmp(&rhs).unwrap_or_else(|| {
+        counter.exact_fallback();
+        lhs.exact_cmp(&rhs)
+    })
 }
 
 /// One side of [`cmp_rect_perimeter`]: `(|height| + |length|)² · squared_side`, where
@@ -325,9 +401,18 @@ impl Form {
     }
 }
 
-/// The sign of `Π |lhs| − Π |rhs|` for two products of the same number of forms.
-fn cmp_abs_products<const K: usize>(lhs: &[Form; K], rhs: &[Form; K]) -> Ordering {
-    filtered(lhs, rhs).unwrap_or_else(|| exact(lhs, rhs))
+/// The sign of `Π |lhs| − Π |rhs|` for two products of the same number of forms, counting
+/// an exact fallback when the filter cannot decide.
+#[inline]
+fn cmp_abs_products<const K: usize, C: Counter + ?Sized>(
+    lhs: &[Form; K],
+    rhs: &[Form; K],
+    counter: &mut C,
+) -> Ordering {
+    filtered(lhs, rhs).unwrap_or_else(|| {
+        counter.exact_fallback();
+        exact(lhs, rhs)
+    })
 }
 
 #[inline]

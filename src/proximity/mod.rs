@@ -38,6 +38,7 @@ pub use closest_pair_divide_and_conquer::{
 };
 pub use empty_circle::{largest_empty_circle, largest_empty_circle_with, EmptyCircle};
 pub use emst::{euclidean_mst, euclidean_mst_with};
+pub(crate) use nearest::DelaunayGraph;
 pub use nearest::{nearest, NearestSearch};
 
 use crate::complexity::Declaration;

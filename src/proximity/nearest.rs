@@ -1,7 +1,7 @@
 //! Nearest-neighbour queries: a greedy walk on the Delaunay graph towards the query.
 
 use super::{adjacency, at_least, delaunay_edges};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::delaunay::{incremental_with, Triangulation};
 use crate::error::{Error, Result};
@@ -18,9 +18,20 @@ pub(super) const DECLARATION: Declaration = Declaration {
     time: "O(n log n) to build; O(√n) expected steps per query on uniform points",
     space: "O(n)",
     operation: Some(Operation::DistanceEvaluations),
-    counts: "one per neighbour looked at during a walk",
+    counts: "one per neighbour looked at during a walk, about six per step",
     source: "[RD, §2.4]",
-    claims: &[],
+    claims: &[
+        on(
+            "uniform-square",
+            Bound::Sqrt,
+            Operation::DistanceEvaluations,
+        ),
+        on(
+            "random-queries",
+            Bound::Linear,
+            Operation::DistanceEvaluations,
+        ),
+    ],
 };
 
 /// Nearest-neighbour queries on a fixed point set: a Delaunay triangulation and the
@@ -42,6 +53,14 @@ pub(super) const DECLARATION: Declaration = Declaration {
 #[derive(Debug, Clone)]
 pub struct NearestSearch<'a> {
     points: &'a [Point2],
+    graph: DelaunayGraph,
+}
+
+/// The part of a [`NearestSearch`] that owns its data: the adjacency of the Delaunay graph
+/// and the vertex a walk starts from. The catalog keeps one next to its own copy of the
+/// points, since a workload's input cannot borrow.
+#[derive(Debug, Clone)]
+pub(crate) struct DelaunayGraph {
     start: usize,
     offsets: Vec<usize>,
     neighbours: Vec<usize>,
@@ -68,14 +87,9 @@ impl<'a> NearestSearch<'a> {
     /// # Complexity
     /// O(n + t) time and space.
     pub fn from_triangulation(points: &PointSet<'a>, t: &Triangulation) -> NearestSearch<'a> {
-        let edges = delaunay_edges(t);
-        let (offsets, neighbours) = adjacency(points.len(), &edges);
-        let start = t.hull.first().copied().unwrap_or(0);
         NearestSearch {
             points: points.points(),
-            start,
-            offsets,
-            neighbours,
+            graph: DelaunayGraph::new(points.len(), t),
         }
     }
 
@@ -137,6 +151,32 @@ impl<'a> NearestSearch<'a> {
         start: Option<usize>,
         counter: &mut C,
     ) -> Result<usize> {
+        self.graph.walk(self.points, query, start, counter)
+    }
+}
+
+impl DelaunayGraph {
+    /// The adjacency of the Delaunay graph of `n` points triangulated by `t`, and a hull
+    /// vertex to start from.
+    pub(crate) fn new(n: usize, t: &Triangulation) -> DelaunayGraph {
+        let edges = delaunay_edges(t);
+        let (offsets, neighbours) = adjacency(n, &edges);
+        let start = t.hull.first().copied().unwrap_or(0);
+        DelaunayGraph {
+            start,
+            offsets,
+            neighbours,
+        }
+    }
+
+    /// [`NearestSearch::nearest_with`] on the graph of `p`.
+    pub(crate) fn walk<C: Counter>(
+        &self,
+        p: &[Point2],
+        query: Point2,
+        start: Option<usize>,
+        counter: &mut C,
+    ) -> Result<usize> {
         if !query.is_finite() {
             return Err(Error::InvalidParameter {
                 name: "query",
@@ -145,7 +185,7 @@ impl<'a> NearestSearch<'a> {
         }
         let mut v = match start {
             None => self.start,
-            Some(s) if s < self.points.len() && self.is_vertex(s) => s,
+            Some(s) if s < p.len() && self.is_vertex(s) => s,
             Some(s) => {
                 return Err(Error::InvalidParameter {
                     name: "start",
@@ -153,7 +193,6 @@ impl<'a> NearestSearch<'a> {
                 })
             }
         };
-        let p = self.points;
         loop {
             let mut best = v;
             for &w in &self.neighbours[self.offsets[v]..self.offsets[v + 1]] {

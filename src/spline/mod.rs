@@ -69,9 +69,9 @@ pub(crate) fn declarations() -> impl Iterator<Item = &'static crate::complexity:
 
 pub use beta::{is_beta_continuous, BetaParameters, BetaSpline, Matrix4, SubdivisionMatrices};
 pub use bezier::{
-    bernstein, bernstein_all, bernstein_derivative, c1_partition, intersections, Bezier,
-    CompositeBezier, Evaluation as BezierEvaluation, Intersection, Join, Reparametrised,
-    MAX_FLATTEN_SEGMENTS, MAX_INTERSECTION_PAIRS,
+    bernstein, bernstein_all, bernstein_derivative, c1_partition, intersections,
+    intersections_with, Bezier, CompositeBezier, Evaluation as BezierEvaluation, Intersection,
+    Join, Reparametrised, MAX_FLATTEN_SEGMENTS, MAX_INTERSECTION_PAIRS,
 };
 pub use bspline::{
     BSpline, BandMatrix, Basis, BasisDerivatives, DeBoorTrace, KnotVector, ParameterFit,
@@ -79,10 +79,12 @@ pub use bspline::{
 pub use curve::{Curve, CurveDerivative, Domain, Subsegment};
 pub use frenet::{bezier_frenet, curvature_vector, frenet_frame, is_g2, is_g2_join, FrenetFrame};
 pub use interpolate::{
-    closed_quadratic_spline, cubic_spline, cubic_spline_tangents, cubic_spline_tangents_with,
-    estimate_tangents, fit_bezier, hermite, lagrange, lagrange_basis, newton, newton_hermite,
-    parameterise, quadratic_spline, vandermonde, vandermonde_hermite, EndCondition, FitOptions,
-    HermiteNode, LagrangeForm, NewtonForm, Parameterisation, Polynomial,
+    closed_quadratic_spline, closed_quadratic_spline_with, cubic_spline, cubic_spline_tangents,
+    cubic_spline_tangents_with, cubic_spline_with, estimate_tangents, fit_bezier, fit_bezier_with,
+    hermite, hermite_with, lagrange, lagrange_basis, lagrange_with, newton, newton_hermite,
+    newton_hermite_with, newton_with, parameterise, quadratic_spline, quadratic_spline_with,
+    vandermonde, vandermonde_hermite, vandermonde_hermite_with, vandermonde_with, EndCondition,
+    FitOptions, HermiteNode, LagrangeForm, NewtonForm, Parameterisation, Polynomial,
 };
 #[cfg(feature = "cli")]
 pub(crate) use parse::{parse_f64, parse_f64_or_word, read_scalar};

@@ -68,6 +68,7 @@ fn true_families() -> Vec<Family> {
         ("n", Bound::Linear, |_| None, |n, _| n),
         ("1", Bound::Constant, |_| None, |_, _| 7.0),
         ("log n", Bound::Log, |_| None, |n, _| lg(n)),
+        ("sqrt n", Bound::Sqrt, |_| None, |n, _| n.sqrt()),
         (
             "n h, h = sqrt n",
             Bound::NH,
@@ -271,6 +272,7 @@ fn bound_text_round_trips_and_is_the_json_text() {
     let expected = [
         "O(1)",
         "O(log n)",
+        "O(sqrt n)",
         "O(n)",
         "O(n log n)",
         "O(n^2)",
@@ -305,6 +307,7 @@ fn bound_eval_matches_the_formulas() {
             let cases = [
                 (Bound::Constant, 1.0),
                 (Bound::Log, lgf(n)),
+                (Bound::Sqrt, n.sqrt()),
                 (Bound::Linear, n),
                 (Bound::NLogN, n * lgf(n)),
                 (Bound::Quadratic, n.powi(2)),
@@ -405,6 +408,75 @@ fn measure_counts_exactly_and_reports_h() {
     );
     let m = measure(&liar, &ns, &tiny_settings(), &mut |_| {}).unwrap();
     assert_eq!(m.counts.verdict, Verdict::Exceeds);
+}
+
+/// A test double: every pair of n keys compared once, n(n − 1)/2 comparisons.
+struct AllPairs;
+
+impl Workload for AllPairs {
+    type Input = Vec<u64>;
+    type Output = usize;
+
+    fn prepare(&self, n: usize, seed: u64) -> compgeo::Result<Vec<u64>> {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed ^ n as u64);
+        Ok((0..n).map(|_| rng.random_range(0..1000)).collect())
+    }
+
+    fn run<C: Counter>(&self, keys: &mut Vec<u64>, c: &mut C) -> compgeo::Result<usize> {
+        let mut equal = 0;
+        for (i, a) in keys.iter().enumerate() {
+            for b in &keys[i + 1..] {
+                c.comparison();
+                equal += usize::from(a == b);
+            }
+        }
+        Ok(std::hint::black_box(equal))
+    }
+}
+
+/// The double's declaration, with a false claim: O(n) for its quadratic loop.
+static MISSTATED: compgeo::complexity::Declaration = compgeo::complexity::Declaration {
+    problem: "pairs",
+    name: "all",
+    function: "tests::AllPairs",
+    file: "tests/suite/complexity.rs",
+    summary: "every pair compared once, declared linear by mistake",
+    time: "O(n)",
+    space: "O(1)",
+    operation: Some(Operation::Comparisons),
+    counts: "",
+    source: "[RD, ch. 2]",
+    claims: &[compgeo::complexity::on(
+        "random",
+        Bound::Linear,
+        Operation::Comparisons,
+    )],
+};
+
+#[test]
+fn a_quadratic_loop_declared_linear_is_caught_as_exceeding() {
+    let entry = Entry::declared(&MISSTATED, "random", AllPairs).quick(32, 512);
+    assert_eq!(
+        (entry.info.bound, &*entry.info.id),
+        (Bound::Linear, "pairs/all")
+    );
+    let sizes = entry.sizes(compgeo::complexity::Profile::Quick);
+    let m = measure(&entry, &sizes, &tiny_settings(), &mut |_| {}).unwrap();
+    for s in &m.samples {
+        assert_eq!(s.counts.comparisons, (s.n * (s.n - 1) / 2) as u64);
+    }
+    assert_eq!(m.counts.verdict, Verdict::Exceeds, "{:?}", m.counts);
+    assert!((m.counts.exponent - 2.0).abs() < 0.1, "{:?}", m.counts);
+    assert!(m.counts.excess > 0.8, "{:?}", m.counts);
+    // The same loop declared quadratic passes: the verdict is about the claim.
+    let honest = Entry::new(
+        "pairs/all",
+        Bound::Quadratic,
+        Operation::Comparisons,
+        AllPairs,
+    );
+    let m = measure(&honest, &sizes, &tiny_settings(), &mut |_| {}).unwrap();
+    assert_eq!(m.counts.verdict, Verdict::Consistent, "{:?}", m.counts);
 }
 
 #[test]

@@ -29,6 +29,7 @@ mod catmull_clark;
 mod cli;
 mod complexity;
 mod constructions;
+mod counts;
 mod degenerate;
 mod delaunay;
 mod delaunay_builders;

@@ -20,6 +20,19 @@
 //! - `random-parameters`: n is the number of sorted parameters evaluated at once on a cubic
 //!   with 64 control points (linear).
 //!
+//! The same sizes serve the rational curves: de Casteljau's scheme on a rational Bézier
+//! curve of degree n (n(n + 1) affine combinations, both homogeneous halves) and the NURBS
+//! insertion of one knot (2d) in `random-degree`; the NURBS refinement, elevation and
+//! conversion to Bézier pieces in `random-control` (twice the B-spline counts, linear).
+//! Besides them:
+//!
+//! - the basis derivatives up to order 2 grow as d² in `random-degree`, and all d of them
+//!   as d³ (`all-derivatives`: d(d + 1)/2 + (d + 1)·d(d + 3)/2 steps);
+//! - the banded solver on a diagonally dominant system, with l = u = 3 and n rows
+//!   (`random-rows`, linear), or with 256 rows and l = u = n (`random-bandwidth`, Θ(n²));
+//! - the B-spline from p Bézier pieces of degree d, p·d + 1 control points copied: n cubic
+//!   pieces (`random-pieces`) or 4 pieces of degree n (`random-degree`), linear both.
+//!
 //! The parameter (or the inserted knot, or the split) is the first generated coordinate,
 //! uniform in [0, 1), drawn with the same seed as the control points.
 //!
@@ -30,7 +43,10 @@ use crate::complexity::{Declaration, Entry, Workload};
 use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{points, PointKind};
-use crate::spline::{BSpline, EndCondition, KnotVector, Nurbs, Parameterisation, Point};
+use crate::spline::{
+    BSpline, BandMatrix, CompositeBezier, EndCondition, KnotVector, Nurbs, Parameterisation, Point,
+    RationalBezier,
+};
 
 /// The input distribution in which n is the degree.
 const RANDOM_DEGREE: &str = "random-degree";
@@ -41,6 +57,19 @@ const RANDOM_PARAMETERS: &str = "random-parameters";
 
 /// The number of control points of the fixed cubic of `random-parameters`.
 const FIXED_CONTROL: usize = 64;
+/// The input distribution in which n is the degree and every derivative is taken.
+const ALL_DERIVATIVES: &str = "all-derivatives";
+/// The input distribution in which n is the number of rows of a banded system.
+const RANDOM_ROWS: &str = "random-rows";
+/// The input distribution in which n is the half bandwidth of a banded system.
+const RANDOM_BANDWIDTH: &str = "random-bandwidth";
+/// The input distribution in which n is the number of Bézier pieces.
+const RANDOM_PIECES: &str = "random-pieces";
+/// The rows of the `random-bandwidth` system, and the bandwidth of the `random-rows` one.
+const BAND_ROWS: usize = 256;
+const BAND_WIDTH: usize = 3;
+/// The pieces of the `random-degree` conversion from Bézier form.
+const PIECES: usize = 4;
 
 /// Which algorithm a workload runs.
 #[derive(Clone, Copy, Debug)]
@@ -65,6 +94,16 @@ enum Run {
     Greville,
     Marsden,
     Integral,
+    BasisDerivatives,
+    AllBasisDerivatives,
+    RationalDeCasteljau,
+    NurbsInsert,
+    NurbsRefine,
+    NurbsElevate,
+    NurbsToBezier,
+    BandRows,
+    BandWidth,
+    FromBezier,
 }
 
 /// What n counts.
@@ -90,23 +129,38 @@ struct Prepared {
     params: Vec<f64>,
     /// Data points to interpolate or fit.
     data: Vec<Point<f64, 2>>,
-    /// The curve with weights in [1/2, 3/2), for the NURBS run.
+    /// The curve with weights in [1/2, 3/2), for the NURBS runs.
     nurbs: Option<Nurbs<f64, 2>>,
+    /// The control points with those weights as a rational Bézier curve.
+    rational: Option<RationalBezier<f64, 2>>,
+    /// A diagonally dominant banded system and its right-hand sides.
+    band: Option<(BandMatrix<f64>, Vec<Point<f64, 2>>)>,
+    /// Bézier pieces with matching ends.
+    pieces: Option<CompositeBezier<f64, 2>>,
 }
 
 /// The B-spline entries.
 pub(super) fn entries() -> Vec<Entry> {
     use crate::spline::bspline::declarations as b;
+    use crate::spline::rational::declarations as r;
     use crate::spline::rational::NURBS_DE_BOOR;
     let entry = |declaration: &'static Declaration, run: Run, size: Size| {
-        let input = match size {
-            Size::Degree => RANDOM_DEGREE,
-            Size::Control => RANDOM_CONTROL,
-            Size::Parameters => RANDOM_PARAMETERS,
+        let input = match (size, run) {
+            (Size::Degree, Run::AllBasisDerivatives) => ALL_DERIVATIVES,
+            (Size::Degree, _) => RANDOM_DEGREE,
+            (Size::Control, Run::BandRows) => RANDOM_ROWS,
+            (Size::Control, Run::BandWidth) => RANDOM_BANDWIDTH,
+            (Size::Control, Run::FromBezier) => RANDOM_PIECES,
+            (Size::Control, _) => RANDOM_CONTROL,
+            (Size::Parameters, _) => RANDOM_PARAMETERS,
         };
         let e = Entry::declared(declaration, input, Sweep { run, size });
         match (size, run) {
+            (Size::Degree, Run::AllBasisDerivatives) => e.quick(4, 64).full(4, 256),
+            // d(d + 1)/2 + 5(d + 1): the linear term fades from d = 16 on.
+            (Size::Degree, Run::BasisDerivatives) => e.quick(16, 256).full(16, 512),
             (Size::Degree, _) => e.quick(4, 256).full(4, 512),
+            (Size::Control, Run::BandWidth) => e.quick(4, 64).full(4, 128),
             (Size::Control, Run::DeBoor | Run::Span) => e.quick(64, 1 << 16).full(64, 1 << 20),
             (Size::Control, _) => e.quick(64, 1 << 12).full(64, 1 << 16),
             (Size::Parameters, _) => e.quick(64, 1 << 14).full(64, 1 << 18),
@@ -134,6 +188,25 @@ pub(super) fn entries() -> Vec<Entry> {
         entry(&b::GREVILLE, Run::Greville, Size::Control),
         entry(&b::MARSDEN, Run::Marsden, Size::Control),
         entry(&b::INTEGRAL, Run::Integral, Size::Control),
+        entry(&b::BASIS_DERIVATIVES, Run::BasisDerivatives, Size::Degree),
+        entry(
+            &b::BASIS_DERIVATIVES,
+            Run::AllBasisDerivatives,
+            Size::Degree,
+        ),
+        entry(&b::BANDED, Run::BandRows, Size::Control),
+        entry(&b::BANDED, Run::BandWidth, Size::Control),
+        entry(&b::FROM_BEZIER, Run::FromBezier, Size::Control),
+        entry(&b::FROM_BEZIER, Run::FromBezier, Size::Degree),
+        entry(
+            &r::RATIONAL_DE_CASTELJAU,
+            Run::RationalDeCasteljau,
+            Size::Degree,
+        ),
+        entry(&r::NURBS_INSERT, Run::NurbsInsert, Size::Degree),
+        entry(&r::NURBS_REFINE, Run::NurbsRefine, Size::Control),
+        entry(&r::NURBS_ELEVATE, Run::NurbsElevate, Size::Control),
+        entry(&r::NURBS_TO_BEZIER, Run::NurbsToBezier, Size::Control),
     ]
 }
 
@@ -142,10 +215,13 @@ impl Workload for Sweep {
     type Output = usize;
 
     fn prepare(&self, n: usize, seed: u64) -> Result<Prepared> {
-        let (degree, count) = match self.size {
-            Size::Degree => (n, 2 * (n + 1)),
-            Size::Control => (3, n.max(4)),
-            Size::Parameters => (3, FIXED_CONTROL),
+        let (degree, count) = match (self.size, self.run) {
+            (Size::Degree, Run::FromBezier) => (n, PIECES * n + 1),
+            (Size::Degree, _) => (n, 2 * (n + 1)),
+            (Size::Control, Run::FromBezier) => (3, 3 * n + 1),
+            (Size::Control, Run::BandWidth) => (3, BAND_ROWS),
+            (Size::Control, _) => (3, n.max(4)),
+            (Size::Parameters, _) => (3, FIXED_CONTROL),
         };
         let pts = points(PointKind::UniformSquare, count, seed)?;
         // Unit knot spacing for the derivatives, so that the d-th derivative of a curve of
@@ -164,7 +240,7 @@ impl Workload for Sweep {
         }
         let params = match (self.size, self.run) {
             (Size::Degree, _) => pts.iter().take(degree).map(|p| p.x).collect(),
-            (_, Run::Refine | Run::Oslo) => {
+            (_, Run::Refine | Run::Oslo | Run::NurbsRefine) => {
                 let t = curve.knots().knots();
                 (degree..count).map(|i| (t[i] + t[i + 1]) / 2.0).collect()
             }
@@ -181,10 +257,40 @@ impl Workload for Sweep {
             }
             _ => Vec::new(),
         };
+        let weights: Vec<f64> = pts.iter().map(|p| 0.5 + p.y).collect();
         let nurbs = match self.run {
-            Run::NurbsDeBoor => {
-                let weights = pts.iter().map(|p| 0.5 + p.y).collect();
-                Some(Nurbs::new(data.clone(), weights, curve.knots().clone())?)
+            Run::NurbsDeBoor
+            | Run::NurbsInsert
+            | Run::NurbsRefine
+            | Run::NurbsElevate
+            | Run::NurbsToBezier => Some(Nurbs::new(
+                data.clone(),
+                weights.clone(),
+                curve.knots().clone(),
+            )?),
+            _ => None,
+        };
+        let rational = match self.run {
+            Run::RationalDeCasteljau => Some(RationalBezier::new(
+                data[..=degree].to_vec(),
+                weights[..=degree].to_vec(),
+            )?),
+            _ => None,
+        };
+        let band = match self.run {
+            Run::BandRows => Some(band_system(&data, BAND_WIDTH)?),
+            Run::BandWidth => Some(band_system(&data, n)?),
+            _ => None,
+        };
+        let pieces = match self.run {
+            Run::FromBezier => {
+                // Consecutive pieces share their end points: piece i is points di..=d(i + 1).
+                let p = (count - 1) / degree;
+                let partition = (0..=p).map(|i| i as f64).collect();
+                let control = (0..p)
+                    .map(|i| data[degree * i..=degree * (i + 1)].to_vec())
+                    .collect();
+                Some(CompositeBezier::new(partition, control)?)
             }
             _ => None,
         };
@@ -194,6 +300,9 @@ impl Workload for Sweep {
             params,
             data,
             nurbs,
+            rational,
+            band,
+            pieces,
         })
     }
 
@@ -204,6 +313,9 @@ impl Workload for Sweep {
             params,
             data,
             nurbs,
+            rational,
+            band,
+            pieces,
         } = input;
         // A small summary of each result keeps the optimiser from dropping the work.
         Ok(match self.run {
@@ -245,6 +357,59 @@ impl Workload for Sweep {
             Run::Greville => curve.knots().greville_with(c).len(),
             Run::Marsden => curve.knots().marsden_with(u, c)?.len(),
             Run::Integral => curve.integral_with(c)?.control().len(),
+            Run::BasisDerivatives => curve.knots().basis_derivatives_with(u, 2, c)?.span(),
+            Run::AllBasisDerivatives => {
+                let d = curve.degree();
+                curve.knots().basis_derivatives_with(u, d, c)?.span()
+            }
+            Run::RationalDeCasteljau => match rational {
+                Some(r) => r.de_casteljau_with(u, c)?.coords()[0].to_bits() as usize,
+                None => 0,
+            },
+            Run::NurbsInsert | Run::NurbsRefine | Run::NurbsElevate | Run::NurbsToBezier => {
+                match nurbs {
+                    Some(s) => match self.run {
+                        Run::NurbsInsert => s.insert_with(u, 1, c)?.control().len(),
+                        Run::NurbsRefine => s.refine_with(params, c)?.control().len(),
+                        Run::NurbsElevate => s.elevate_with(1, c)?.control().len(),
+                        _ => s.to_bezier_with(c)?.1.len(),
+                    },
+                    None => 0,
+                }
+            }
+            Run::BandRows | Run::BandWidth => match band {
+                // The solve consumes its matrix: the clone is part of the run (Θ(n(l + u))).
+                Some((a, rhs)) => a.clone().solve_with(rhs.clone(), c)?.len(),
+                None => 0,
+            },
+            Run::FromBezier => match pieces {
+                Some(p) => BSpline::from_bezier_with(p, c)?.control().len(),
+                None => 0,
+            },
         })
     }
+}
+
+/// A banded system with `data.len()` rows and l = u = `width` (at most rows − 1): the
+/// off-diagonal entries are coordinates of the data in [0, 1), the diagonal 2·width + 1, so
+/// the matrix is strictly diagonally dominant and needs no pivoting; the data are the
+/// right-hand sides.
+fn band_system(
+    data: &[Point<f64, 2>],
+    width: usize,
+) -> Result<(BandMatrix<f64>, Vec<Point<f64, 2>>)> {
+    let n = data.len();
+    let width = width.min(n - 1);
+    let mut a = BandMatrix::zeros(n, width, width)?;
+    for i in 0..n {
+        for j in i.saturating_sub(width)..(i + width + 1).min(n) {
+            let value = if i == j {
+                (2 * width + 1) as f64
+            } else {
+                data[(i * 7 + j * 13) % n][(i + j) % 2]
+            };
+            a.set(i, j, value)?;
+        }
+    }
+    Ok((a, data.to_vec()))
 }

@@ -1,14 +1,19 @@
 //! Catalog entries of [`crate::hull`] and [`crate::calipers`]: each hull algorithm on the
 //! input that shows its bound, Jarvis's march and Chan's algorithm on both sides of their
-//! output sensitivity (few vertices in a disk, every point a vertex on a circle), and the
-//! diameter by brute force and by calipers over a convex polygon.
+//! output sensitivity (few vertices in a disk, every point a vertex on a circle), the
+//! diameter by brute force, and the calipers over a convex polygon (every point of a circle a
+//! vertex, so h = n): the antipodal pairs, the diameter, the width and the minimum-area
+//! rectangle, each Θ(h) after the hull.
 //!
 //! The counted operation is the orientation test, the course's "signed area" (quickhull's
 //! farthest-point test and the calipers' direction test are signed areas too); the monotone
 //! chain and the Akl–Toussaint filter are measured on comparisons, where their cost lies.
 
 use super::claimed_entries;
-use crate::calipers::{diameter_with, ConvexPolygon, DiameterAlgorithm, ANTIPODAL_PAIRS};
+use crate::calipers::{
+    diameter_with, ConvexPolygon, DiameterAlgorithm, ANTIPODAL_PAIRS, MIN_AREA_RECTANGLE,
+    MIN_PERIMETER_RECTANGLE, WIDTH,
+};
 use crate::complexity::{Entry, Workload};
 use crate::count::{Counter, NoCount};
 use crate::error::Result;
@@ -25,10 +30,25 @@ struct Hull {
 /// The diameter of generated points by comparing all pairs.
 struct BruteDiameter;
 
-/// The antipodal pairs of a convex polygon: the hull of points on a circle, computed while
+/// A caliper algorithm on a convex polygon: the hull of points on a circle, computed while
 /// preparing, so only the calipers are measured (the check of the polygon included, as the
 /// calipers' own validation was before the polygon type existed).
-struct Calipers;
+struct Calipers(Caliper);
+
+/// What the calipers compute.
+#[derive(Debug, Clone, Copy)]
+enum Caliper {
+    /// The antipodal pairs (orientation tests).
+    AntipodalPairs,
+    /// The diameter: the farthest antipodal pair (distance evaluations).
+    Diameter,
+    /// The width (orientation tests of the three calipers).
+    Width,
+    /// The minimum-area enclosing rectangle (orientation tests of the four calipers).
+    MinAreaRectangle,
+    /// The minimum-perimeter enclosing rectangle (the same calipers).
+    MinPerimeterRectangle,
+}
 
 /// The hull and diameter entries: every claim the hull algorithms declare, each on its input.
 pub(super) fn entries() -> Vec<Entry> {
@@ -57,11 +77,20 @@ pub(super) fn entries() -> Vec<Entry> {
         .quick(64, 2048)
         .full(64, 1 << 13),
     );
-    out.push(
-        Entry::declared(ANTIPODAL_PAIRS, "convex-polygon", Calipers)
-            .quick(256, 1 << 15)
-            .full(256, 1 << 18),
-    );
+    let calipers = [
+        (ANTIPODAL_PAIRS, Caliper::AntipodalPairs),
+        (DiameterAlgorithm::Calipers.declaration(), Caliper::Diameter),
+        (WIDTH, Caliper::Width),
+        (MIN_AREA_RECTANGLE, Caliper::MinAreaRectangle),
+        (MIN_PERIMETER_RECTANGLE, Caliper::MinPerimeterRectangle),
+    ];
+    for (declaration, caliper) in calipers {
+        out.push(
+            Entry::declared(declaration, "convex-polygon", Calipers(caliper))
+                .quick(256, 1 << 14)
+                .full(256, 1 << 18),
+        );
+    }
     out
 }
 
@@ -105,6 +134,7 @@ impl Workload for BruteDiameter {
 impl Workload for Calipers {
     /// The points and their hull, counter-clockwise.
     type Input = (Vec<Point2>, Vec<usize>);
+    /// The pairs, or the indices the answer names.
     type Output = Vec<[usize; 2]>;
 
     fn prepare(&self, n: usize, seed: u64) -> Result<Self::Input> {
@@ -116,7 +146,15 @@ impl Workload for Calipers {
     fn run<C: Counter>(&self, input: &mut Self::Input, counter: &mut C) -> Result<Self::Output> {
         let set = PointSet::new(&input.0)?;
         let polygon = ConvexPolygon::new(&set, input.1.clone())?;
-        Ok(polygon.antipodal_pairs_with(counter))
+        Ok(match self.0 {
+            Caliper::AntipodalPairs => polygon.antipodal_pairs_with(counter),
+            Caliper::Diameter => vec![polygon.diameter_with(counter)?.pair],
+            Caliper::Width => vec![polygon.width_with(counter)?.edge],
+            Caliper::MinAreaRectangle => vec![polygon.min_area_rectangle_with(counter)?.edge],
+            Caliper::MinPerimeterRectangle => {
+                vec![polygon.min_perimeter_rectangle_with(counter)?.edge]
+            }
+        })
     }
 
     fn output_size(&self, input: &Self::Input, _pairs: &Self::Output) -> Option<usize> {

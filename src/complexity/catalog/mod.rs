@@ -143,10 +143,12 @@ pub struct Entry {
 /// ```
 pub fn catalog() -> Vec<Entry> {
     let mut all = Vec::new();
+    all.extend(predicate::entries());
     all.extend(sort::entries());
     all.extend(graph::entries());
     all.extend(hull::entries());
     all.extend(spline::entries());
+    all.extend(interpolate::entries());
     all.extend(bspline::entries());
     all.extend(subdivision::entries());
     all.extend(beta::entries());
@@ -199,7 +201,9 @@ mod bspline;
 mod delaunay;
 mod graph;
 mod hull;
+mod interpolate;
 mod mesh;
+mod predicate;
 mod proximity;
 mod sort;
 mod spline;

@@ -8,18 +8,32 @@
 //! the empty circle's hull tests. The divide and conquer is measured on distance
 //! evaluations (strip tests and candidate pairs), on uniform points and on a grid where
 //! every distance ties.
+//!
+//! The exact Delaunay checker is measured on a triangulation built while preparing: one
+//! in-circle test per interior edge, Θ(n). Nearest-point queries walk the Delaunay graph
+//! (built while preparing) greedily from a hull vertex, about six distance evaluations per
+//! step, in each of their two sizes: 64 queries uniform in the unit square against n uniform
+//! sites, where a walk crosses the set in Θ(√n) expected steps (`uniform-square`, O(√n)), and
+//! n such queries against 1024 sites (`random-queries`, Θ(n)).
+
+use std::rc::Rc;
 
 use super::claimed_entries;
 use crate::complexity::{Declaration, Entry, Workload};
-use crate::count::Counter;
-use crate::delaunay::voronoi_with;
-use crate::error::Result;
+use crate::count::{Counter, NoCount};
+use crate::delaunay::{check_delaunay_with, incremental_with, voronoi_with, Triangulation};
+use crate::error::{Error, Result};
 use crate::gen::{points, PointKind};
 use crate::geometry::{Point2, PointSet};
 use crate::proximity::{
     all_nearest_neighbours_with, closest_pair_with, euclidean_mst_with, largest_empty_circle_with,
-    ClosestPairAlgorithm,
+    ClosestPairAlgorithm, DelaunayGraph,
 };
+
+/// The sites of the `random-queries` entry.
+const QUERY_SITES: usize = 1024;
+/// The queries of the `uniform-square` entry.
+const QUERIES: usize = 64;
 
 /// The problems measured here.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -55,7 +69,85 @@ pub(super) fn entries() -> Vec<Entry> {
             out.push(entry.quick(256, 1 << 14).full(256, 1 << 19));
         }
     }
+    out.push(
+        Entry::declared(crate::delaunay::CHECK, "uniform-disk", Check)
+            .quick(256, 1 << 13)
+            .full(256, 1 << 19),
+    );
+    out.push(
+        Entry::declared(crate::proximity::NEAREST, "uniform-square", Nearest::Sites)
+            .quick(256, 1 << 14)
+            .full(256, 1 << 20),
+    );
+    out.push(
+        Entry::declared(
+            crate::proximity::NEAREST,
+            "random-queries",
+            Nearest::Queries,
+        )
+        .quick(64, 1 << 12)
+        .full(64, 1 << 16),
+    );
     out
+}
+
+/// The exact Delaunay checker on the triangulation of n uniform points in the disk.
+struct Check;
+
+impl Workload for Check {
+    type Input = (Vec<Point2>, Triangulation);
+    type Output = ();
+
+    fn prepare(&self, n: usize, seed: u64) -> Result<Self::Input> {
+        let pts = points(PointKind::UniformDisk, n, seed)?;
+        let t = incremental_with(&PointSet::new(&pts)?, &mut NoCount)?;
+        Ok((pts, t))
+    }
+
+    fn run<C: Counter>(&self, input: &mut Self::Input, counter: &mut C) -> Result<()> {
+        let (pts, t) = input;
+        check_delaunay_with(pts, t, counter).map_err(|v| Error::InvalidParameter {
+            name: "triangulation",
+            reason: v.to_string(),
+        })
+    }
+}
+
+/// Nearest-point queries by the greedy walk on the Delaunay graph, in one of their sizes.
+#[derive(Debug, Clone, Copy)]
+enum Nearest {
+    /// [`QUERIES`] queries against n sites.
+    Sites,
+    /// n queries against [`QUERY_SITES`] sites.
+    Queries,
+}
+
+impl Workload for Nearest {
+    /// The sites, their Delaunay graph and the queries; shared, since no run changes them.
+    type Input = Rc<(Vec<Point2>, DelaunayGraph, Vec<Point2>)>;
+    /// The sum of the answers.
+    type Output = usize;
+
+    fn prepare(&self, n: usize, seed: u64) -> Result<Self::Input> {
+        let (sites, queries) = match self {
+            Nearest::Sites => (n, QUERIES),
+            Nearest::Queries => (QUERY_SITES, n),
+        };
+        let pts = points(PointKind::UniformSquare, sites, seed)?;
+        let set = PointSet::new(&pts)?;
+        let graph = DelaunayGraph::new(pts.len(), &incremental_with(&set, &mut NoCount)?);
+        let queries = points(PointKind::UniformSquare, queries, seed ^ 1)?;
+        Ok(Rc::new((pts, graph, queries)))
+    }
+
+    fn run<C: Counter>(&self, input: &mut Self::Input, counter: &mut C) -> Result<usize> {
+        let (pts, graph, queries) = &**input;
+        let mut sum = 0;
+        for &q in queries {
+            sum += graph.walk(pts, q, None, counter)?;
+        }
+        Ok(sum)
+    }
 }
 
 impl Workload for Proximity {

@@ -55,10 +55,12 @@ pub(crate) fn index_html(
          The bound column gives the slope of log f(n) over the same sizes. The verdict compares \
          exact counts with the stated bound: <em>exceeds</em> when cost / f(n) grows faster \
          than n<sup>{COUNT_TOLERANCE}</sup> (time: n<sup>{TIME_TOLERANCE}</sup>). \
+         The exact fallbacks are the predicate calls, at the largest size, that the \
+         floating-point filter could not decide, with their share of the counted operation. \
          See <code>docs/complexity.md</code>.</p>\n<table>\n<tr><th>algorithm</th>\
          <th>problem</th><th>input</th><th>stated bound</th><th>counted operation</th>\
          <th>exponent of counts</th><th>exponent of bound</th><th>exponent of time (95 %)</th>\
-         <th>verdict</th><th>time verdict</th></tr>\n",
+         <th>verdict</th><th>time verdict</th><th>exact fallbacks</th></tr>\n",
         rows.len(),
         all.consistent,
         all.exceeds,
@@ -69,7 +71,7 @@ pub(crate) fn index_html(
         let tally = VerdictCounts::of(members.iter().copied());
         let _ = writeln!(
             h,
-            "<tr class=\"module\"><th colspan=\"10\">{} &mdash; {} {}: {} consistent, {} exceeds{}</th></tr>",
+            "<tr class=\"module\"><th colspan=\"11\">{} &mdash; {} {}: {} consistent, {} exceeds{}</th></tr>",
             esc(&module),
             members.len(),
             if members.len() == 1 { "row" } else { "rows" },
@@ -108,6 +110,21 @@ pub(crate) fn index_html(
     h
 }
 
+/// The exact fallbacks at the largest size, with their share of the counted operation when
+/// there are any: `"0"`, `"5 (0.03 %)"`; `"-"` without counts.
+fn fallbacks(r: &Row) -> String {
+    let Some(counts) = r.points.last().and_then(|p| p.counts) else {
+        return "-".to_string();
+    };
+    let k = counts.exact_fallbacks;
+    match r.operation.map(|op| counts.get(op)) {
+        Some(total) if k > 0 && total > 0 => {
+            format!("{k} ({:.2} %)", 100.0 * k as f64 / total as f64)
+        }
+        _ => k.to_string(),
+    }
+}
+
 /// One row of the summary table.
 fn summary_row(h: &mut String, r: &Row) {
     let counts = r.counts_fit.as_ref();
@@ -126,7 +143,7 @@ fn summary_row(h: &mut String, r: &Row) {
         h,
         "<tr class=\"{class}\"><td><a href=\"#{}\">{}</a>{}</td><td>{}</td><td>{}</td><td>{}</td>\
          <td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>\
-         <td>{}</td><td>{}</td></tr>",
+         <td>{}</td><td>{}</td><td class=\"num\">{}</td></tr>",
         esc(&r.key),
         esc(&r.id),
         if r.peer { " (peer)" } else { "" },
@@ -139,6 +156,7 @@ fn summary_row(h: &mut String, r: &Row) {
         time_exponent,
         verdict.unwrap_or("-"),
         time.map_or("-", |f| f.verdict.name()),
+        fallbacks(r),
     );
 }
 

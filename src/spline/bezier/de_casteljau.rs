@@ -28,8 +28,7 @@ use crate::spline::curve::{check_interval, Curve, Subsegment};
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
 use crate::{Error, Result};
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// The split's [`Declaration`]: its name, bounds, counts, source and claims.
 pub(crate) const SPLIT: Declaration = Declaration {
     problem: "bezier",
     name: "split",
@@ -38,14 +37,17 @@ pub(crate) const SPLIT: Declaration = Declaration {
     summary: "the two halves at c, read off de Casteljau's triangle",
     time: "Θ(n²D)",
     space: "O(nD)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly n(n + 1)/2 affine combinations (one triangle)",
     source: "[PPB, §3.3]",
-    claims: &[],
+    claims: &[on(
+        "random-degree",
+        Bound::Quadratic,
+        Operation::ArithmeticOperations,
+    )],
 };
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// The blossom's [`Declaration`]: its name, bounds, counts, source and claims.
 pub(crate) const BLOSSOM: Declaration = Declaration {
     problem: "bezier",
     name: "blossom",
@@ -54,10 +56,14 @@ pub(crate) const BLOSSOM: Declaration = Declaration {
     summary: "the polar form by de Casteljau's scheme with distinct parameters",
     time: "Θ(n²D)",
     space: "O(nD)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly n(n + 1)/2 affine combinations per value",
     source: "[PPB, §3.2]",
-    claims: &[],
+    claims: &[on(
+        "random-degree",
+        Bound::Quadratic,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// De Casteljau's evaluation, declared: its name, bounds, counts, source and claims.
@@ -163,8 +169,34 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn split(&self, c: &S) -> Result<(Self, Self)> {
+        self.split_with(c, &mut NoCount)
+    }
+
+    /// [`Bezier::split`], counting one
+    /// [`arithmetic_operation`](Counter::arithmetic_operation) per affine combination of the
+    /// triangle: exactly n(n + 1)/2.
+    ///
+    /// # Errors
+    ///
+    /// As [`Bezier::split`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(n²D) time, O(nD) auxiliary space besides the output.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// let b = Bezier::new((0..7).map(|i| Point::new([i as f64])).collect())?;
+    /// let mut c = Counts::default();
+    /// b.split_with(&0.3, &mut c)?;
+    /// assert_eq!(c.arithmetic_operations, 21); // 6·7/2
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn split_with<C: Counter>(&self, c: &S, counter: &mut C) -> Result<(Self, Self)> {
         validate_parameter(c, "c")?;
-        let (left, right) = self.split_unchecked(c);
+        let (left, right) = self.split_counted(c, counter);
         Ok((
             Bezier::derived(left.into_control(), "split")?,
             Bezier::derived(right.into_control(), "split")?,
@@ -203,10 +235,10 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         let n = self.degree();
         let mut args = vec![a.clone(); n];
         let mut control = Vec::with_capacity(n + 1);
-        control.push(self.blossom_unchecked(&args));
+        control.push(self.blossom_unchecked(&args, &mut NoCount));
         for i in 1..=n {
             args[n - i] = b.clone();
-            control.push(self.blossom_unchecked(&args));
+            control.push(self.blossom_unchecked(&args, &mut NoCount));
         }
         Bezier::derived(control, "restrict")
     }
@@ -237,6 +269,32 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn blossom(&self, args: &[S]) -> Result<Point<S, D>> {
+        self.blossom_with(args, &mut NoCount)
+    }
+
+    /// [`Bezier::blossom`], counting one
+    /// [`arithmetic_operation`](Counter::arithmetic_operation) per affine combination:
+    /// exactly n(n + 1)/2, as for a point.
+    ///
+    /// # Errors
+    ///
+    /// As [`Bezier::blossom`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(n²D) time, O(nD) auxiliary space.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// let b = Bezier::new((0..4).map(|i| Point::new([i as f64])).collect())?;
+    /// let mut c = Counts::default();
+    /// b.blossom_with(&[0.0, 0.5, 1.0], &mut c)?;
+    /// assert_eq!(c.arithmetic_operations, 6); // 3·4/2
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn blossom_with<C: Counter>(&self, args: &[S], counter: &mut C) -> Result<Point<S, D>> {
         if args.len() != self.degree() {
             return Err(Error::InvalidParameter {
                 name: "blossom arguments",
@@ -251,7 +309,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         for u in args {
             validate_parameter(u, "blossom argument")?;
         }
-        Ok(self.blossom_unchecked(args))
+        Ok(self.blossom_unchecked(args, counter))
     }
 }
 
@@ -276,11 +334,6 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         let mut q = self.control().to_vec();
         de_casteljau_levels(&mut q, std::iter::repeat_n(t, self.degree()), counter);
         q.swap_remove(0)
-    }
-
-    /// The split without validation (c finite).
-    pub(crate) fn split_unchecked(&self, c: &S) -> (Self, Self) {
-        self.split_counted(c, &mut NoCount)
     }
 
     /// The split without validation (c finite), counting its n(n + 1)/2 affine combinations
@@ -319,10 +372,10 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
         }
     }
 
-    /// The blossom without validation (`args.len() == n`, all finite).
-    fn blossom_unchecked(&self, args: &[S]) -> Point<S, D> {
+    /// The blossom without validation (`args.len() == n`, all finite), counting.
+    fn blossom_unchecked<C: Counter>(&self, args: &[S], counter: &mut C) -> Point<S, D> {
         let mut q = self.control().to_vec();
-        de_casteljau_levels(&mut q, args, &mut NoCount);
+        de_casteljau_levels(&mut q, args, counter);
         q.swap_remove(0)
     }
 }

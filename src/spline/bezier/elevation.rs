@@ -19,13 +19,13 @@
 //! itself.
 
 use super::curve::Bezier;
-use crate::complexity::Declaration;
-use crate::count::{Counter, NoCount};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{Point, Scalar};
 use crate::{limits, Error, Result};
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// Elevation by Zhou's formula, declared: its name, bounds, counts, source and claims, in
+/// each of its sizes (the degree n, elevated to 2n; the target m, from degree 3).
 pub(crate) const ELEVATE_TO: Declaration = Declaration {
     problem: "bezier",
     name: "elevate-to",
@@ -34,10 +34,21 @@ pub(crate) const ELEVATE_TO: Declaration = Declaration {
     summary: "degree elevation to m in one step (Zhou's formula)",
     time: "Θ(m·n·D)",
     space: "Θ(mD)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly (n + 1)(m − n + 1) terms bᵢ·wᵢ",
     source: "[PPB, §3.12]",
-    claims: &[],
+    claims: &[
+        on(
+            "random-degree",
+            Bound::Quadratic,
+            Operation::ArithmeticOperations,
+        ),
+        on(
+            "random-target",
+            Bound::Linear,
+            Operation::ArithmeticOperations,
+        ),
+    ],
 };
 
 impl<S: Scalar, const D: usize> Bezier<S, D> {
@@ -107,6 +118,32 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn elevate_to(&self, m: usize) -> Result<Self> {
+        self.elevate_to_with(m, &mut NoCount)
+    }
+
+    /// [`Bezier::elevate_to`], counting one
+    /// [`arithmetic_operation`](Counter::arithmetic_operation) per term bᵢ·wᵢ of Zhou's sums:
+    /// each bᵢ enters the m − n + 1 points dᵢ, …, dᵢ₊ₘ₋ₙ, so exactly (n + 1)(m − n + 1).
+    ///
+    /// # Errors
+    ///
+    /// As [`Bezier::elevate_to`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(m·n·D) time, Θ(mD) space for the result.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// let b = Bezier::new((0..4).map(|i| Point::new([i as f64])).collect())?;
+    /// let mut c = Counts::default();
+    /// b.elevate_to_with(10, &mut c)?;
+    /// assert_eq!(c.arithmetic_operations, 4 * 8);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn elevate_to_with<C: Counter>(&self, m: usize, counter: &mut C) -> Result<Self> {
         let n = self.degree();
         if m < n {
             return Err(Error::InvalidParameter {
@@ -115,7 +152,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             });
         }
         limits::DEGREE.check(m as u128)?;
-        Bezier::derived(self.elevate_to_counted(m, &mut NoCount), "degree elevation")
+        Bezier::derived(self.elevate_to_counted(m, counter), "degree elevation")
     }
 
     /// Zhou's formula without validation (n ≤ m ≤ MAX_DEGREE), counting one

@@ -17,12 +17,13 @@
 //! tolerance of the curve; a straight polygon gives its chord.
 
 use super::curve::Bezier;
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
 use crate::{Error, Result};
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// Flattening, declared: its name, bounds, counts, source and claims, in each of its sizes
+/// (the degree n for four segments; the number s of segments of a cubic).
 pub(crate) const FLATTEN: Declaration = Declaration {
     problem: "bezier",
     name: "flatten",
@@ -31,10 +32,21 @@ pub(crate) const FLATTEN: Declaration = Declaration {
     summary: "a polyline within a tolerance by recursive subdivision",
     time: "Θ(s·n²D)",
     space: "O(kn·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly (s − 1)·n(n + 1)/2 affine combinations: one split at ½ per segment but one",
     source: "[PPB, §3.5]",
-    claims: &[],
+    claims: &[
+        on(
+            "parabola-degree",
+            Bound::Quadratic,
+            Operation::ArithmeticOperations,
+        ),
+        on(
+            "parabola-segments",
+            Bound::Linear,
+            Operation::ArithmeticOperations,
+        ),
+    ],
 };
 
 pub use crate::limits::MAX_FLATTEN_SEGMENTS;
@@ -76,6 +88,39 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn flatten(&self, tolerance: &S) -> Result<Vec<Point<S, D>>> {
+        self.flatten_with(tolerance, &mut NoCount)
+    }
+
+    /// [`Bezier::flatten`], counting one
+    /// [`arithmetic_operation`](Counter::arithmetic_operation) per affine combination of the
+    /// subdivisions: a polyline of s segments took s − 1 splits at ½, so exactly
+    /// (s − 1)·n(n + 1)/2. (The flatness bounds are bookkeeping, not counted.)
+    ///
+    /// # Errors
+    ///
+    /// As [`Bezier::flatten`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(s·n²D) time for s output segments, O(kn·D) auxiliary space for a recursion of
+    /// depth k.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// let b = Bezier::new(vec![Point::new([0.0, 0.0]), Point::new([1.0, 2.0]), Point::new([2.0, 0.0])])?;
+    /// let mut c = Counts::default();
+    /// let poly = b.flatten_with(&0.01, &mut c)?;
+    /// let segments = poly.len() as u64 - 1;
+    /// assert_eq!(c.arithmetic_operations, (segments - 1) * 3); // n = 2: three per split
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn flatten_with<C: Counter>(
+        &self,
+        tolerance: &S,
+        counter: &mut C,
+    ) -> Result<Vec<Point<S, D>>> {
         validate_parameter(tolerance, "tolerance")?;
         if *tolerance <= S::zero() {
             return Err(Error::InvalidParameter {
@@ -95,7 +140,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
             ((ratio.log2() / 2.0).ceil() as usize + 1).min(MAX_FLATTEN_DEPTH)
         };
         let mut out = vec![self.control()[0].clone()];
-        flatten_into(self, tolerance, depth, &mut out)?;
+        flatten_into(self, tolerance, depth, &mut out, counter)?;
         Ok(out)
     }
 }
@@ -116,11 +161,12 @@ pub(crate) fn flatness_bound<S: Scalar, const D: usize>(b: &[Point<S, D>]) -> S 
     max * S::from_ratio((n * n.saturating_sub(1)) as i64, 8)
 }
 
-fn flatten_into<S: Scalar, const D: usize>(
+fn flatten_into<S: Scalar, const D: usize, C: Counter>(
     curve: &Bezier<S, D>,
     tolerance: &S,
     depth: usize,
     out: &mut Vec<Point<S, D>>,
+    counter: &mut C,
 ) -> Result<()> {
     if depth == 0 || flatness_bound(curve.control()) <= *tolerance {
         if out.len() > MAX_FLATTEN_SEGMENTS {
@@ -129,9 +175,9 @@ fn flatten_into<S: Scalar, const D: usize>(
         out.push(curve.control()[curve.degree()].clone());
         return Ok(());
     }
-    let (left, right) = curve.split_unchecked(&S::from_ratio(1, 2));
-    flatten_into(&left, tolerance, depth - 1, out)?;
-    flatten_into(&right, tolerance, depth - 1, out)
+    let (left, right) = curve.split_counted(&S::from_ratio(1, 2), counter);
+    flatten_into(&left, tolerance, depth - 1, out, counter)?;
+    flatten_into(&right, tolerance, depth - 1, out, counter)
 }
 
 fn too_many_segments() -> Error {

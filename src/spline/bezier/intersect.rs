@@ -17,14 +17,16 @@
 
 use super::curve::{bounding_box_of, Bezier};
 use super::flatten::flatness_bound;
-use crate::complexity::Declaration;
-use crate::geometry::{orient2d, Orientation, Point2};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
+use crate::geometry::{CountedPredicates, Orientation, Point2};
 use crate::spline::curve::Curve;
 use crate::spline::scalar::{validate_parameter, Point};
 use crate::{Error, Result};
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// The intersection search, declared: its name, bounds, counts, source and claims, in each
+/// of its sizes (the degree of one curve; the tolerance ε, as n = 1/ε, which sets the depth
+/// d = O(log n)).
 pub(crate) const INTERSECTIONS: Declaration = Declaration {
     problem: "bezier",
     name: "intersections",
@@ -33,10 +35,13 @@ pub(crate) const INTERSECTIONS: Declaration = Declaration {
     summary: "the crossings of two curves by subdivision with box pruning",
     time: "O(k·d·(m² + n²))",
     space: "O(d(m + n))",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "n(n + 1)/2 affine combinations per halving of a piece of degree n; four orientation tests per pair of flat pieces whose boxes meet",
     source: "[PPB, §3.7]",
-    claims: &[],
+    claims: &[
+        on("parabola-degree", Bound::Quadratic, Operation::ArithmeticOperations),
+        on("parabola-tolerance", Bound::Log, Operation::ArithmeticOperations),
+    ],
 };
 
 /// One intersection of two curves: the parameters on each and the point.
@@ -73,7 +78,7 @@ pub use crate::limits::MAX_INTERSECTION_PAIRS;
 /// For k transversal intersections and a depth of d = O(log(size/tolerance)) halvings,
 /// O(k·d) pairs of pieces, each costing O((m² + n²)) for the split and box of degrees m
 /// and n: O(k·d·(m² + n²)) time expected for curves in general position, O(d(m + n))
-/// auxiliary space for the recursion. Counts nothing.
+/// auxiliary space for the recursion. [`intersections_with`] counts the work.
 ///
 /// ```
 /// use compgeo::spline::{intersections, Bezier, Point};
@@ -92,6 +97,41 @@ pub fn intersections(
     c: &Bezier<f64, 2>,
     tolerance: f64,
 ) -> Result<Vec<Intersection>> {
+    intersections_with(b, c, tolerance, &mut NoCount)
+}
+
+/// [`intersections`], counting one [`arithmetic_operation`](Counter::arithmetic_operation)
+/// per affine combination of the halvings (n(n + 1)/2 for a piece of degree n) and the
+/// [`orientation_test`](Counter::orientation_test)s of the chord crossings (four per pair of
+/// flat pieces whose boxes meet).
+///
+/// # Errors
+///
+/// As [`intersections`].
+///
+/// # Complexity
+///
+/// O(k·d·(m² + n²)) time expected for curves in general position, O(d(m + n)) auxiliary
+/// space, as [`intersections`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{intersections_with, Bezier, Point};
+///
+/// // Two crossing segments are flat at once: no halving, four orientation tests.
+/// let b = Bezier::new(vec![Point::new([0.0, 0.0]), Point::new([1.0, 1.0])])?;
+/// let c = Bezier::new(vec![Point::new([0.0, 1.0]), Point::new([1.0, 0.0])])?;
+/// let mut counts = Counts::default();
+/// assert_eq!(intersections_with(&b, &c, 1e-9, &mut counts)?.len(), 1);
+/// assert_eq!((counts.arithmetic_operations, counts.orientation_tests), (0, 4));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn intersections_with<C: Counter>(
+    b: &Bezier<f64, 2>,
+    c: &Bezier<f64, 2>,
+    tolerance: f64,
+    counter: &mut C,
+) -> Result<Vec<Intersection>> {
     validate_parameter(&tolerance, "tolerance")?;
     if tolerance <= 0.0 {
         return Err(Error::InvalidParameter {
@@ -103,6 +143,7 @@ pub fn intersections(
         tolerance,
         pairs: 0,
         hits: Vec::new(),
+        counter,
     };
     search.recurse(
         Piece {
@@ -137,17 +178,18 @@ struct Piece {
     hi: f64,
 }
 
-struct Search {
+struct Search<'c, C> {
     tolerance: f64,
     pairs: usize,
     hits: Vec<Intersection>,
+    counter: &'c mut C,
 }
 
 /// Halvings beyond which a piece counts as flat whatever its bound says (f64 rounding can
 /// keep the bound of a tiny piece above a tolerance near the coordinates' precision).
 const MAX_DEPTH: usize = 60;
 
-impl Search {
+impl<C: Counter> Search<'_, C> {
     fn recurse(&mut self, b: Piece, c: Piece, depth: usize) -> Result<()> {
         self.pairs += 1;
         if self.pairs > MAX_INTERSECTION_PAIRS {
@@ -164,16 +206,16 @@ impl Search {
         let flat =
             |p: &Piece| depth >= MAX_DEPTH || flatness_bound(p.curve.control()) <= self.tolerance;
         if !flat(&b) {
-            let (l, r) = halve(&b);
+            let (l, r) = halve(&b, self.counter);
             self.recurse(l, clone_piece(&c), depth + 1)?;
             return self.recurse(r, c, depth + 1);
         }
         if !flat(&c) {
-            let (l, r) = halve(&c);
+            let (l, r) = halve(&c, self.counter);
             self.recurse(clone_piece(&b), l, depth + 1)?;
             return self.recurse(b, r, depth + 1);
         }
-        if let Some((alpha, beta)) = chord_crossing(&b, &c) {
+        if let Some((alpha, beta)) = chord_crossing(&b, &c, self.counter) {
             self.hits.push(Intersection {
                 s: b.lo + alpha * (b.hi - b.lo),
                 t: c.lo + beta * (c.hi - c.lo),
@@ -192,8 +234,8 @@ fn clone_piece(p: &Piece) -> Piece {
     }
 }
 
-fn halve(p: &Piece) -> (Piece, Piece) {
-    let (l, r) = p.curve.split_unchecked(&0.5);
+fn halve<C: Counter>(p: &Piece, counter: &mut C) -> (Piece, Piece) {
+    let (l, r) = p.curve.split_counted(&0.5, counter);
     let mid = 0.5 * (p.lo + p.hi);
     (
         Piece {
@@ -217,16 +259,16 @@ fn boxes_overlap(b: &[Point<f64, 2>], c: &[Point<f64, 2>]) -> bool {
 
 /// Where the chords of two flat pieces meet, as local parameters (α on b's chord, β on
 /// c's), if they do. The decision is exact; α and β are rounded.
-fn chord_crossing(b: &Piece, c: &Piece) -> Option<(f64, f64)> {
+fn chord_crossing<C: Counter>(b: &Piece, c: &Piece, counter: &mut C) -> Option<(f64, f64)> {
     let end = |p: &Piece, last: bool| -> Point2 {
         let ctrl = p.curve.control();
         (if last { ctrl[ctrl.len() - 1] } else { ctrl[0] }).into()
     };
     let (b0, b1, c0, c1) = (end(b, false), end(b, true), end(c, false), end(c, true));
-    let o1 = orient2d(b0, b1, c0);
-    let o2 = orient2d(b0, b1, c1);
-    let o3 = orient2d(c0, c1, b0);
-    let o4 = orient2d(c0, c1, b1);
+    let o1 = counter.orient2d(b0, b1, c0);
+    let o2 = counter.orient2d(b0, b1, c1);
+    let o3 = counter.orient2d(c0, c1, b0);
+    let o4 = counter.orient2d(c0, c1, b1);
     let opposite_or_touching = |x: Orientation, y: Orientation| {
         x == Orientation::Collinear || y == Orientation::Collinear || x != y
     };

@@ -43,19 +43,27 @@ mod reparametrised;
 
 /// The Bézier operations that are not an evaluation scheme, declared.
 pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
-    &de_casteljau::SPLIT,
-    &de_casteljau::BLOSSOM,
-    &elevation::ELEVATE_TO,
-    &flatten::FLATTEN,
-    &intersect::INTERSECTIONS,
+    &declarations::SPLIT,
+    &declarations::BLOSSOM,
+    &declarations::ELEVATE_TO,
+    &declarations::FLATTEN,
+    &declarations::INTERSECTIONS,
 ];
+
+/// The declarations the catalog's entries measure, by name.
+pub(crate) mod declarations {
+    pub(crate) use super::de_casteljau::{BLOSSOM, SPLIT};
+    pub(crate) use super::elevation::ELEVATE_TO;
+    pub(crate) use super::flatten::FLATTEN;
+    pub(crate) use super::intersect::INTERSECTIONS;
+}
 
 pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
 pub use composite::CompositeBezier;
 pub use curve::Bezier;
 pub use evaluation::{evaluate, evaluate_with, Evaluation};
 pub use flatten::MAX_FLATTEN_SEGMENTS;
-pub use intersect::{intersections, Intersection, MAX_INTERSECTION_PAIRS};
+pub use intersect::{intersections, intersections_with, Intersection, MAX_INTERSECTION_PAIRS};
 pub use joins::{c1_partition, Join};
 pub use reparametrised::Reparametrised;
 

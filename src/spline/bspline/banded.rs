@@ -24,7 +24,7 @@
 //! Θ(n d²) for the collocation matrices of degree d (l = u = d); Θ(n(l + u + 1)) space for the
 //! band, overwritten.
 
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{Point, Scalar};
 use crate::{limits, Error, Result};
@@ -41,7 +41,18 @@ pub(crate) const BANDED: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly Σₖ rₖ(wₖ + 2) + Σₖ (wₖ + 1), rₖ = min(l, n − 1 − k), wₖ = min(u, n − 1 − k)",
     source: "[PPB, §6.7]",
-    claims: &[],
+    claims: &[
+        on(
+            "random-rows",
+            Bound::Linear,
+            Operation::ArithmeticOperations,
+        ),
+        on(
+            "random-bandwidth",
+            Bound::Quadratic,
+            Operation::ArithmeticOperations,
+        ),
+    ],
 };
 
 /// A square n × n matrix with `lower` diagonals below the main one and `upper` above it

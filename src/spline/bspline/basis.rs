@@ -650,7 +650,18 @@ pub(crate) const BASIS_DERIVATIVES: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly d(d + 1)/2 + (d + 1)·K(K + 3)/2 steps, K = min(k, d)",
     source: "[PPB, §5.7]",
-    claims: &[],
+    claims: &[
+        on(
+            "random-degree",
+            Bound::Quadratic,
+            Operation::ArithmeticOperations,
+        ),
+        on(
+            "all-derivatives",
+            Bound::Cubic,
+            Operation::ArithmeticOperations,
+        ),
+    ],
 };
 
 #[cfg(test)]

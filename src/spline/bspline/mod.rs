@@ -116,7 +116,8 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 22] = [
 
 /// The declarations the catalog's entries measure, by name.
 pub(crate) mod declarations {
-    pub(crate) use super::basis::BASIS;
+    pub(crate) use super::banded::BANDED;
+    pub(crate) use super::basis::{BASIS, BASIS_DERIVATIVES};
     pub(crate) use super::batch::EVAL_SORTED;
     pub(crate) use super::blossom::BLOSSOM;
     pub(crate) use super::cubic::CUBIC_SPLINE;
@@ -133,7 +134,7 @@ pub(crate) mod declarations {
     pub(crate) use super::refine::REFINE;
     pub(crate) use super::remove::REMOVE;
     pub(crate) use super::split::SPLIT;
-    pub(crate) use super::to_bezier::TO_BEZIER;
+    pub(crate) use super::to_bezier::{FROM_BEZIER, TO_BEZIER};
 }
 
 pub use banded::BandMatrix;

@@ -68,10 +68,13 @@ pub(crate) const FROM_BEZIER: Declaration = Declaration {
     summary: "Bézier pieces of one degree with matching ends as a B-spline with interior knots of multiplicity d",
     time: "Θ(p·d·D)",
     space: "Θ(p·d·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::Moves),
+    counts: "exactly p·d + 1 control points copied (p for degree 0), and p − 1 comparisons of end points",
     source: "[PPB, §5.10]",
-    claims: &[],
+    claims: &[
+        on("random-pieces", Bound::Linear, Operation::Moves),
+        on("random-degree", Bound::Linear, Operation::Moves),
+    ],
 };
 
 impl<S: Scalar, const D: usize> BSpline<S, D> {
@@ -258,6 +261,40 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn from_bezier(curve: &CompositeBezier<S, D>) -> Result<Self> {
+        Self::from_bezier_with(curve, &mut NoCount)
+    }
+
+    /// [`BSpline::from_bezier`], counting one [`element_move`](Counter::element_move) per
+    /// control point copied (exactly p·d + 1 for p pieces of degree d ≥ 1, p for degree 0)
+    /// and one [`comparison`](Counter::comparison) per pair of end points checked (p − 1 for
+    /// d ≥ 1).
+    ///
+    /// # Errors
+    ///
+    /// As [`BSpline::from_bezier`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(p·d·D) time and Θ(p·d·D) space for p pieces of degree d.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{BSpline, CompositeBezier, Point};
+    ///
+    /// let p = |x: f64| Point::new([x]);
+    /// let b = CompositeBezier::new(
+    ///     vec![0.0, 1.0, 2.0],
+    ///     vec![vec![p(0.0), p(2.0), p(3.0)], vec![p(3.0), p(4.0), p(8.0)]],
+    /// )?;
+    /// let mut c = Counts::default();
+    /// BSpline::from_bezier_with(&b, &mut c)?;
+    /// assert_eq!((c.moves, c.comparisons), (2 * 2 + 1, 1));
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn from_bezier_with<C: Counter>(
+        curve: &CompositeBezier<S, D>,
+        counter: &mut C,
+    ) -> Result<Self> {
         let pieces = curve.pieces();
         let u = curve.partition();
         let d = pieces[0].degree();
@@ -273,6 +310,9 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
                 });
             }
             let (start, end) = (&piece.control()[0], &pieces[i - 1].control()[d]);
+            if d > 0 {
+                counter.comparison();
+            }
             if d > 0 && start != end {
                 return Err(Error::InvalidParameter {
                     name: "pieces",
@@ -301,6 +341,9 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         for piece in &pieces[1..] {
             // The shared end point once (a degree-0 piece is its own point).
             control.extend_from_slice(&piece.control()[1.min(d)..]);
+        }
+        for _ in &control {
+            counter.element_move();
         }
         BSpline::new(control, KnotVector::new(d, knots)?)
     }

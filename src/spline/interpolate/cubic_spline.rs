@@ -22,7 +22,7 @@
 //! Θ(nD) time and space for n + 1 points in R^D: exactly 7n + 4 counted point operations with
 //! the open end conditions, at most 8n with the periodic one.
 
-use super::hermite::hermite;
+use super::hermite::hermite_with;
 use super::linear::{count, solve_cyclic, solve_tridiagonal};
 use super::parameterise::parabola_end_tangent;
 use super::validate::{check_knots_and_points, finite};
@@ -32,8 +32,7 @@ use crate::spline::scalar::{Point, Scalar};
 use crate::spline::CompositeBezier;
 use crate::{Error, Result};
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and claims.
 pub(crate) const CUBIC: Declaration = Declaration {
     problem: "interpolate",
     name: "cubic-spline",
@@ -42,10 +41,15 @@ pub(crate) const CUBIC: Declaration = Declaration {
     summary: "the C² cubic spline as composite Bézier curves",
     time: "Θ(n·D)",
     space: "Θ(n·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts:
+        "the tangents' 7n + 4 point operations (at most 8n periodic), then the Hermite pieces' 2n",
     source: "[RD, §3.1]",
-    claims: &[],
+    claims: &[on(
+        "random-points",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// The C² cubic spline's tangents with natural ends, declared.
@@ -128,8 +132,8 @@ pub enum EndCondition<S, const D: usize> {
 ///
 /// # Complexity
 ///
-/// Θ(n·D) time and Θ(n·D) auxiliary space for `n + 1` points in R^D. Nothing is counted (no
-/// geometric decision is made).
+/// Θ(n·D) time and Θ(n·D) auxiliary space for `n + 1` points in R^D.
+/// [`cubic_spline_tangents_with`] counts the arithmetic.
 ///
 /// ```
 /// use compgeo::spline::{cubic_spline_tangents, EndCondition, Point};
@@ -272,7 +276,7 @@ pub fn cubic_spline_tangents_with<S: Scalar, const D: usize, C: Counter>(
 ///
 /// # Complexity
 ///
-/// Θ(n·D) time and Θ(n·D) space for `n + 1` points in R^D. Nothing is counted.
+/// Θ(n·D) time and Θ(n·D) space for `n + 1` points in R^D.
 ///
 /// ```
 /// use compgeo::spline::{cubic_spline, Curve, CurveDerivative, EndCondition, Point};
@@ -290,8 +294,40 @@ pub fn cubic_spline<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
     end: &EndCondition<S, D>,
 ) -> Result<CompositeBezier<S, D>> {
-    let tangents = cubic_spline_tangents(partition, points, end)?;
-    hermite(partition, points, &tangents)
+    cubic_spline_with(partition, points, end, &mut NoCount)
+}
+
+/// [`cubic_spline`], counting the arithmetic on points of both steps: the tangents' (see
+/// [`cubic_spline_tangents_with`]: exactly 7n + 4 for the open end conditions) and the
+/// Hermite pieces' two inner points each, 2n, so exactly 9n + 4 for `n + 1` points with an
+/// open end condition.
+///
+/// # Errors
+///
+/// As [`cubic_spline`].
+///
+/// # Complexity
+///
+/// Θ(n·D) time and Θ(n·D) space for `n + 1` points in R^D.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{cubic_spline_with, EndCondition, Point};
+///
+/// let pts = [Point::new([0.0, 0.0]), Point::new([1.0, 2.0]), Point::new([3.0, 1.0])];
+/// let mut c = Counts::default();
+/// cubic_spline_with(&[0.0, 1.0, 2.0], &pts, &EndCondition::Natural, &mut c)?;
+/// assert_eq!(c.arithmetic_operations, 9 * 2 + 4);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn cubic_spline_with<S: Scalar, const D: usize, C: Counter>(
+    partition: &[S],
+    points: &[Point<S, D>],
+    end: &EndCondition<S, D>,
+    counter: &mut C,
+) -> Result<CompositeBezier<S, D>> {
+    let tangents = cubic_spline_tangents_with(partition, points, end, counter)?;
+    hermite_with(partition, points, &tangents, counter)
 }
 
 /// The rows of a (cyclic) tridiagonal system, as [`solve_tridiagonal`] and [`solve_cyclic`]

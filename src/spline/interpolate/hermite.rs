@@ -16,13 +16,13 @@
 //! Θ(mD) time and space for m + 1 points in R^D.
 
 use super::validate::{check_knots_and_points, overflow};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{validate_points, Point, Scalar};
 use crate::spline::CompositeBezier;
 use crate::{Error, Result};
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and claims.
 pub(crate) const HERMITE: Declaration = Declaration {
     problem: "interpolate",
     name: "hermite",
@@ -31,10 +31,14 @@ pub(crate) const HERMITE: Declaration = Declaration {
     summary: "piecewise cubic Hermite interpolation as composite Bézier curves",
     time: "Θ(m·D)",
     space: "Θ(m·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly 2m point multiply-adds for m pieces: two inner Bézier points each",
     source: "[RD, §3.2]",
-    claims: &[],
+    claims: &[on(
+        "random-points",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// The piecewise cubic C¹ curve through `points` at the knots `partition` with the
@@ -55,7 +59,7 @@ pub(crate) const HERMITE: Declaration = Declaration {
 ///
 /// # Complexity
 ///
-/// Θ(m·D) time and space for `m + 1` points in R^D. Nothing is counted.
+/// Θ(m·D) time and space for `m + 1` points in R^D.
 ///
 /// ```
 /// use compgeo::spline::{hermite, Point};
@@ -70,6 +74,36 @@ pub fn hermite<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
     tangents: &[Point<S, D>],
 ) -> Result<CompositeBezier<S, D>> {
+    hermite_with(partition, points, tangents, &mut NoCount)
+}
+
+/// [`hermite`], counting one [`arithmetic_operation`](Counter::arithmetic_operation) per
+/// inner Bézier point (a point plus or minus a scaled tangent): exactly 2m for m pieces.
+///
+/// # Errors
+///
+/// As [`hermite`].
+///
+/// # Complexity
+///
+/// Θ(m·D) time and space for `m + 1` points in R^D.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{hermite_with, Point};
+///
+/// let p = |x: f64| Point::new([x]);
+/// let mut c = Counts::default();
+/// hermite_with(&[0.0, 1.0, 3.0, 4.0], &[p(0.0), p(1.0), p(0.0), p(2.0)], &[p(1.0); 4], &mut c)?;
+/// assert_eq!(c.arithmetic_operations, 2 * 3);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn hermite_with<S: Scalar, const D: usize, C: Counter>(
+    partition: &[S],
+    points: &[Point<S, D>],
+    tangents: &[Point<S, D>],
+    counter: &mut C,
+) -> Result<CompositeBezier<S, D>> {
     check_knots_and_points(partition, points, 2)?;
     if tangents.len() != points.len() {
         return Err(Error::InvalidParameter {
@@ -82,6 +116,8 @@ pub fn hermite<S: Scalar, const D: usize>(
     let pieces: Vec<Vec<Point<S, D>>> = (0..points.len() - 1)
         .map(|i| {
             let third = (partition[i + 1].clone() - &partition[i]) / &three;
+            counter.arithmetic_operation();
+            counter.arithmetic_operation();
             vec![
                 points[i].clone(),
                 points[i].clone() + &(tangents[i].clone() * &third),

@@ -19,15 +19,17 @@
 
 use super::newton::{newton_unchecked, NewtonForm};
 use super::polynomial::{nested_to_bezier, Polynomial};
-use super::validate::{check_degree, check_distinct, check_finite_nodes, check_nodes_and_points};
-use crate::complexity::Declaration;
+use super::validate::{
+    check_degree, check_distinct, check_distinct_with, check_finite_nodes, check_nodes_and_points,
+};
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::spline::bezier::Reparametrised;
 use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
 use crate::{Error, Result};
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// Building the Lagrange form, declared: its name, bounds, counts, source and claims.
 pub(crate) const LAGRANGE: Declaration = Declaration {
     problem: "interpolate",
     name: "lagrange",
@@ -36,14 +38,13 @@ pub(crate) const LAGRANGE: Declaration = Declaration {
     summary: "the interpolating polynomial in the Lagrange basis",
     time: "Θ(n log n + nD)",
     space: "Θ(nD)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::Comparisons),
+    counts: "the comparisons of the distinctness check: a sort of the nodes, then n",
     source: "[PPB, §4.2]",
-    claims: &[],
+    claims: &[on("random-nodes", Bound::NLogN, Operation::Comparisons)],
 };
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// Aitken's scheme, declared: its name, bounds, counts, source and claims.
 pub(crate) const AITKEN: Declaration = Declaration {
     problem: "interpolate",
     name: "aitken",
@@ -52,10 +53,14 @@ pub(crate) const AITKEN: Declaration = Declaration {
     summary: "the interpolating polynomial's value by Aitken's scheme",
     time: "Θ(n²D)",
     space: "Θ(nD)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly n(n + 1)/2 affine combinations for n + 1 nodes",
     source: "[PPB, §4.2]",
-    claims: &[],
+    claims: &[on(
+        "random-nodes",
+        Bound::Quadratic,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// The interpolating polynomial in Lagrange form: distinct nodes `u_0, …, u_n` and the points
@@ -124,6 +129,32 @@ impl<S: Scalar, const D: usize> LagrangeForm<S, D> {
     ///
     /// Θ(n²D) time and Θ(nD) auxiliary space.
     pub fn aitken(&self, u: &S) -> Result<Point<S, D>> {
+        self.aitken_with(u, &mut NoCount)
+    }
+
+    /// [`LagrangeForm::aitken`], counting one
+    /// [`arithmetic_operation`](Counter::arithmetic_operation) per affine combination: step
+    /// k makes n − k of them, so exactly n(n + 1)/2 for n + 1 nodes.
+    ///
+    /// # Errors
+    ///
+    /// As [`LagrangeForm::aitken`].
+    ///
+    /// # Complexity
+    ///
+    /// Θ(n²D) time and Θ(nD) auxiliary space.
+    ///
+    /// ```
+    /// use compgeo::count::Counts;
+    /// use compgeo::spline::{lagrange, Point};
+    ///
+    /// let p = lagrange(&[0.0, 1.0, 2.0, 4.0], &[0.0, 1.0, 4.0, 16.0].map(|y| Point::new([y])))?;
+    /// let mut c = Counts::default();
+    /// assert!((p.aitken_with(&3.0, &mut c)?[0] - 9.0).abs() < 1e-12);
+    /// assert_eq!(c.arithmetic_operations, 6); // 3 + 2 + 1
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn aitken_with<C: Counter>(&self, u: &S, counter: &mut C) -> Result<Point<S, D>> {
         validate_parameter(u, "u")?;
         let nodes = &self.nodes;
         let n = nodes.len() - 1;
@@ -133,6 +164,7 @@ impl<S: Scalar, const D: usize> LagrangeForm<S, D> {
             for i in 0..last {
                 let alpha = (u.clone() - &nodes[last]) / (nodes[i].clone() - &nodes[last]);
                 p[i] = Point::lerp(&p[last], &p[i], &alpha);
+                counter.arithmetic_operation();
             }
         }
         Ok(p.swap_remove(0))
@@ -262,7 +294,7 @@ pub fn lagrange_basis<S: Scalar>(nodes: &[S], u: &S) -> Result<Vec<S>> {
 ///
 /// # Complexity
 ///
-/// Θ(n log n + nD) time and Θ(nD) space for `n + 1` nodes in R^D. Nothing is counted.
+/// Θ(n log n + nD) time and Θ(nD) space for `n + 1` nodes in R^D.
 ///
 /// ```
 /// use compgeo::spline::{lagrange, Curve, Point};
@@ -278,9 +310,38 @@ pub fn lagrange<S: Scalar, const D: usize>(
     nodes: &[S],
     points: &[Point<S, D>],
 ) -> Result<LagrangeForm<S, D>> {
+    lagrange_with(nodes, points, &mut NoCount)
+}
+
+/// [`lagrange`], counting the [`comparison`](Counter::comparison)s of its check that the
+/// nodes are distinct: those of a sort of the n + 1 nodes (O(n log n)), then one per pair of
+/// neighbours in the sorted order, n. Copying the data is not counted.
+///
+/// # Errors
+///
+/// As [`lagrange`].
+///
+/// # Complexity
+///
+/// Θ(n log n + nD) time and Θ(nD) space for `n + 1` nodes in R^D.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{lagrange_with, Point};
+///
+/// let mut c = Counts::default();
+/// lagrange_with(&[2.0, 0.0, 1.0], &[Point::new([4.0]), Point::new([0.0]), Point::new([1.0])], &mut c)?;
+/// assert!(c.comparisons >= 2 + 2 && c.comparisons <= 3 + 2); // the sort, then 2
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn lagrange_with<S: Scalar, const D: usize, C: Counter>(
+    nodes: &[S],
+    points: &[Point<S, D>],
+    counter: &mut C,
+) -> Result<LagrangeForm<S, D>> {
     check_nodes_and_points(nodes, points)?;
     check_degree(nodes.len())?;
-    check_distinct(nodes)?;
+    check_distinct_with(nodes, counter)?;
     Ok(LagrangeForm {
         nodes: nodes.to_vec(),
         points: points.to_vec(),

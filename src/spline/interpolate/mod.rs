@@ -43,31 +43,48 @@ pub(crate) const CUBIC_PERIODIC: &Declaration = &cubic_spline::PERIODIC;
 
 /// The interpolation and fitting algorithms, declared.
 pub(crate) const DECLARATIONS: [&Declaration; 13] = [
-    &polynomial::VANDERMONDE,
-    &polynomial::VANDERMONDE_HERMITE,
-    &lagrange::LAGRANGE,
-    &lagrange::AITKEN,
-    &newton::NEWTON,
-    &newton::NEWTON_HERMITE,
-    &hermite::HERMITE,
-    &quadratic_spline::QUADRATIC,
-    &quadratic_spline::CLOSED_QUADRATIC,
-    &cubic_spline::CUBIC,
+    &declarations::VANDERMONDE,
+    &declarations::VANDERMONDE_HERMITE,
+    &declarations::LAGRANGE,
+    &declarations::AITKEN,
+    &declarations::NEWTON,
+    &declarations::NEWTON_HERMITE,
+    &declarations::HERMITE,
+    &declarations::QUADRATIC,
+    &declarations::CLOSED_QUADRATIC,
+    &declarations::CUBIC,
     CUBIC_NATURAL,
     CUBIC_PERIODIC,
-    &least_squares::LEAST_SQUARES,
+    &declarations::LEAST_SQUARES,
 ];
 
+/// The declarations the catalog's entries measure, by name.
+pub(crate) mod declarations {
+    pub(crate) use super::cubic_spline::CUBIC;
+    pub(crate) use super::hermite::HERMITE;
+    pub(crate) use super::lagrange::{AITKEN, LAGRANGE};
+    pub(crate) use super::least_squares::LEAST_SQUARES;
+    pub(crate) use super::newton::{NEWTON, NEWTON_HERMITE};
+    pub(crate) use super::polynomial::{VANDERMONDE, VANDERMONDE_HERMITE};
+    pub(crate) use super::quadratic_spline::{CLOSED_QUADRATIC, QUADRATIC};
+}
+
 pub use cubic_spline::{
-    cubic_spline, cubic_spline_tangents, cubic_spline_tangents_with, EndCondition,
+    cubic_spline, cubic_spline_tangents, cubic_spline_tangents_with, cubic_spline_with,
+    EndCondition,
 };
-pub use hermite::hermite;
-pub use lagrange::{lagrange, lagrange_basis, LagrangeForm};
-pub use least_squares::{fit_bezier, FitOptions};
-pub use newton::{newton, newton_hermite, NewtonForm};
+pub use hermite::{hermite, hermite_with};
+pub use lagrange::{lagrange, lagrange_basis, lagrange_with, LagrangeForm};
+pub use least_squares::{fit_bezier, fit_bezier_with, FitOptions};
+pub use newton::{newton, newton_hermite, newton_hermite_with, newton_with, NewtonForm};
 pub use parameterise::{estimate_tangents, parameterise, Parameterisation};
-pub use polynomial::{vandermonde, vandermonde_hermite, HermiteNode, Polynomial};
-pub use quadratic_spline::{closed_quadratic_spline, quadratic_spline};
+pub use polynomial::{
+    vandermonde, vandermonde_hermite, vandermonde_hermite_with, vandermonde_with, HermiteNode,
+    Polynomial,
+};
+pub use quadratic_spline::{
+    closed_quadratic_spline, closed_quadratic_spline_with, quadratic_spline, quadratic_spline_with,
+};
 
 pub(crate) use linear::{eliminate_below, pivot, solve_dense_with};
 pub(crate) use validate::check_partition;

@@ -19,14 +19,14 @@ use super::polynomial::{nested_to_bezier, HermiteNode, Polynomial};
 use super::validate::{
     check_degree, check_distinct, check_hermite, check_nodes_and_points, finite,
 };
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::spline::bezier::Reparametrised;
 use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
 use crate::spline::scalar::{falling_factorial, validate_parameter, Point, Scalar};
 use crate::Result;
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// Newton's divided differences, declared: its name, bounds, counts, source and claims.
 pub(crate) const NEWTON: Declaration = Declaration {
     problem: "interpolate",
     name: "newton",
@@ -35,14 +35,18 @@ pub(crate) const NEWTON: Declaration = Declaration {
     summary: "the interpolating polynomial by divided differences",
     time: "Θ(n²·D)",
     space: "Θ(n·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly n(n + 1)/2 divided differences of points for n + 1 nodes",
     source: "[PPB, §4.3]",
-    claims: &[],
+    claims: &[on(
+        "random-nodes",
+        Bound::Quadratic,
+        Operation::ArithmeticOperations,
+    )],
 };
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// Divided differences at confluent nodes, declared: its name, bounds, counts, source and
+/// claims.
 pub(crate) const NEWTON_HERMITE: Declaration = Declaration {
     problem: "interpolate",
     name: "newton-hermite",
@@ -51,10 +55,14 @@ pub(crate) const NEWTON_HERMITE: Declaration = Declaration {
     summary: "divided differences with confluent nodes (derivative data)",
     time: "Θ(N²·D)",
     space: "Θ(N·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly N(N − 1)/2 entries of the table for N conditions: differences, or derivatives over factorials",
     source: "[PPB, §4.4]",
-    claims: &[],
+    claims: &[on(
+        "random-nodes",
+        Bound::Quadratic,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// A polynomial in Newton form: `p(u) = Σ_i c_i (u − z_0)···(u − z_{i−1})`, with the nodes
@@ -172,7 +180,7 @@ impl<S: Scalar, const D: usize> Subsegment<S, D> for NewtonForm<S, D> {
 ///
 /// # Complexity
 ///
-/// Θ(n²·D) time and Θ(n·D) auxiliary space for `n + 1` nodes in R^D. Nothing is counted.
+/// Θ(n²·D) time and Θ(n·D) auxiliary space for `n + 1` nodes in R^D.
 ///
 /// ```
 /// use compgeo::spline::{newton, Curve, Point};
@@ -187,10 +195,40 @@ pub fn newton<S: Scalar, const D: usize>(
     nodes: &[S],
     points: &[Point<S, D>],
 ) -> Result<NewtonForm<S, D>> {
+    newton_with(nodes, points, &mut NoCount)
+}
+
+/// [`newton`], counting one [`arithmetic_operation`](Counter::arithmetic_operation) per
+/// entry of the table of divided differences below its first column (a difference of two
+/// points divided by a difference of nodes): column j has n + 1 − j entries, so exactly
+/// n(n + 1)/2 for n + 1 nodes.
+///
+/// # Errors
+///
+/// As [`newton`].
+///
+/// # Complexity
+///
+/// Θ(n²·D) time and Θ(n·D) auxiliary space for `n + 1` nodes in R^D.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{newton_with, Point};
+///
+/// let mut c = Counts::default();
+/// newton_with(&[3.0, 1.0, 2.0, 0.0], &[9.0, 1.0, 4.0, 0.0].map(|y| Point::new([y])), &mut c)?;
+/// assert_eq!(c.arithmetic_operations, 3 + 2 + 1);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn newton_with<S: Scalar, const D: usize, C: Counter>(
+    nodes: &[S],
+    points: &[Point<S, D>],
+    counter: &mut C,
+) -> Result<NewtonForm<S, D>> {
     check_nodes_and_points(nodes, points)?;
     check_degree(nodes.len())?;
     check_distinct(nodes)?;
-    newton_unchecked(nodes, points)
+    newton_counted(nodes, points, counter)
 }
 
 /// The Newton form of the Hermite interpolant: values and derivatives at distinct nodes, by
@@ -213,7 +251,7 @@ pub fn newton<S: Scalar, const D: usize>(
 ///
 /// # Complexity
 ///
-/// Θ(N²·D) time and Θ(N·D) auxiliary space for `N` conditions. Nothing is counted.
+/// Θ(N²·D) time and Θ(N·D) auxiliary space for `N` conditions.
 ///
 /// ```
 /// use compgeo::spline::{newton_hermite, Curve, HermiteNode, Point};
@@ -230,14 +268,55 @@ pub fn newton<S: Scalar, const D: usize>(
 pub fn newton_hermite<S: Scalar, const D: usize>(
     data: &[HermiteNode<S, D>],
 ) -> Result<NewtonForm<S, D>> {
+    newton_hermite_with(data, &mut NoCount)
+}
+
+/// [`newton_hermite`], counting one [`arithmetic_operation`](Counter::arithmetic_operation)
+/// per entry of the table below its first column, a divided difference or a derivative over
+/// a factorial: exactly N(N − 1)/2 for N conditions.
+///
+/// # Errors
+///
+/// As [`newton_hermite`].
+///
+/// # Complexity
+///
+/// Θ(N²·D) time and Θ(N·D) auxiliary space for `N` conditions.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{newton_hermite_with, HermiteNode, Point};
+///
+/// let data = [
+///     HermiteNode { u: 0.0, values: vec![Point::new([0.0]), Point::new([0.0]), Point::new([0.0])] },
+///     HermiteNode { u: 1.0, values: vec![Point::new([1.0])] },
+/// ];
+/// let mut c = Counts::default();
+/// newton_hermite_with(&data, &mut c)?;
+/// assert_eq!(c.arithmetic_operations, 4 * 3 / 2);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn newton_hermite_with<S: Scalar, const D: usize, C: Counter>(
+    data: &[HermiteNode<S, D>],
+    counter: &mut C,
+) -> Result<NewtonForm<S, D>> {
     check_hermite(data)?;
-    checked(divided_differences(data))
+    checked(divided_differences(data, counter))
 }
 
 /// The Newton form of validated data: distinct finite nodes, as many finite points.
 pub(super) fn newton_unchecked<S: Scalar, const D: usize>(
     nodes: &[S],
     points: &[Point<S, D>],
+) -> Result<NewtonForm<S, D>> {
+    newton_counted(nodes, points, &mut NoCount)
+}
+
+/// [`newton_unchecked`], counting the table's entries.
+fn newton_counted<S: Scalar, const D: usize, C: Counter>(
+    nodes: &[S],
+    points: &[Point<S, D>],
+    counter: &mut C,
 ) -> Result<NewtonForm<S, D>> {
     let data: Vec<HermiteNode<S, D>> = nodes
         .iter()
@@ -247,7 +326,7 @@ pub(super) fn newton_unchecked<S: Scalar, const D: usize>(
             values: vec![p.clone()],
         })
         .collect();
-    checked(divided_differences(&data))
+    checked(divided_differences(&data, counter))
 }
 
 /// The form, or an error if an `f64` divided difference overflowed.
@@ -260,7 +339,10 @@ fn checked<S: Scalar, const D: usize>(form: NewtonForm<S, D>) -> Result<NewtonFo
 }
 
 /// The divided-difference table over validated data, kept one column at a time.
-fn divided_differences<S: Scalar, const D: usize>(data: &[HermiteNode<S, D>]) -> NewtonForm<S, D> {
+fn divided_differences<S: Scalar, const D: usize, C: Counter>(
+    data: &[HermiteNode<S, D>],
+    counter: &mut C,
+) -> NewtonForm<S, D> {
     // z: the nodes repeated per condition; owner[i]: which datum z_i came from.
     let mut z = Vec::new();
     let mut owner = Vec::new();
@@ -285,6 +367,7 @@ fn divided_differences<S: Scalar, const D: usize>(data: &[HermiteNode<S, D>]) ->
                 let diff = column[i + 1].clone() - &column[i];
                 diff / (z[i + j].clone() - &z[i])
             };
+            counter.arithmetic_operation();
         }
         column.truncate(n - j);
         coefficients.push(column[0].clone());

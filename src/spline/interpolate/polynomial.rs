@@ -18,20 +18,20 @@
 //!
 //! Θ(N³ + N²D) time and Θ(N² + ND) space for N conditions in R^D.
 
-use super::linear::solve_dense;
+use super::linear::solve_dense_with;
 use super::validate::{
     check_degree, check_dense, check_distinct, check_hermite, check_nodes_and_points, finite,
     singular,
 };
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::spline::bezier::Reparametrised;
 use crate::spline::curve::{check_interval, Curve, CurveDerivative, Domain, Subsegment};
 use crate::spline::scalar::{falling_factorial, validate_parameter, Point, Scalar};
 use crate::spline::Bezier;
 use crate::{Error, Result};
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// The Vandermonde solve, declared: its name, bounds, counts, source and claims.
 pub(crate) const VANDERMONDE: Declaration = Declaration {
     problem: "interpolate",
     name: "vandermonde",
@@ -40,14 +40,17 @@ pub(crate) const VANDERMONDE: Declaration = Declaration {
     summary: "the power-basis polynomial through distinct nodes, by elimination",
     time: "Θ(n³ + n²·D)",
     space: "Θ(n² + n·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "one per entry changed by elimination and per back-substitution term: exactly (N − 1)N(2N − 1)/6 + N(N − 1) + N(N + 1)/2 for N = n + 1 nodes when no entry vanishes",
     source: "[RD, §3.1]",
-    claims: &[],
+    claims: &[on(
+        "random-nodes",
+        Bound::Cubic,
+        Operation::ArithmeticOperations,
+    )],
 };
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// The confluent Vandermonde solve, declared: its name, bounds, counts, source and claims.
 pub(crate) const VANDERMONDE_HERMITE: Declaration = Declaration {
     problem: "interpolate",
     name: "vandermonde-hermite",
@@ -56,10 +59,15 @@ pub(crate) const VANDERMONDE_HERMITE: Declaration = Declaration {
     summary: "the polynomial with given values and derivatives, by elimination",
     time: "Θ(N³ + N²·D)",
     space: "Θ(N² + N·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts:
+        "as the Vandermonde solve's for N conditions, less where an entry below a pivot is zero",
     source: "[PPB, §4.4]",
-    claims: &[],
+    claims: &[on(
+        "random-nodes",
+        Bound::Cubic,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// A polynomial curve `p(u) = Σ_j a_j u^j` in the power (monomial) basis, with coefficients
@@ -205,8 +213,6 @@ impl<S: Scalar, const D: usize> Subsegment<S, D> for Polynomial<S, D> {
 ///
 /// Θ(n³ + n²·D) time and Θ(n² + n·D) auxiliary space for `n + 1` nodes in R^D.
 ///
-/// Nothing is counted: the algorithm makes no geometric decision.
-///
 /// ```
 /// use compgeo::spline::{vandermonde, Curve, Point};
 ///
@@ -218,6 +224,40 @@ impl<S: Scalar, const D: usize> Subsegment<S, D> for Polynomial<S, D> {
 pub fn vandermonde<S: Scalar, const D: usize>(
     nodes: &[S],
     points: &[Point<S, D>],
+) -> Result<Polynomial<S, D>> {
+    vandermonde_with(nodes, points, &mut NoCount)
+}
+
+/// [`vandermonde`], counting the elimination's arithmetic: one
+/// [`arithmetic_operation`](Counter::arithmetic_operation) per entry a row operation changes
+/// (of the matrix and of the right-hand side) and per term of the back substitution,
+/// divisions included. For N = n + 1 nodes and no entry below a pivot that vanishes (always
+/// so with exact scalars, where the first nonzero entry is the pivot), that is exactly
+/// Σₖ₌₀ᴺ⁻¹ k(k + 2) + N(N + 1)/2 = (N − 1)N(2N − 1)/6 + N(N − 1) + N(N + 1)/2. Building the
+/// matrix's powers is scalar bookkeeping, not counted.
+///
+/// # Errors
+///
+/// As [`vandermonde`].
+///
+/// # Complexity
+///
+/// Θ(n³ + n²·D) time and Θ(n² + n·D) auxiliary space for `n + 1` nodes in R^D.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{vandermonde_with, Point};
+///
+/// let mut c = Counts::default();
+/// vandermonde_with(&[-1.0, 0.0, 2.0], &[Point::new([1.0]), Point::new([0.0]), Point::new([4.0])], &mut c)?;
+/// // N = 3: 2·4 + 1·3 entries changed by elimination, then 1 + 2 + 3 back-substitution terms.
+/// assert_eq!(c.arithmetic_operations, 11 + 6);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn vandermonde_with<S: Scalar, const D: usize, C: Counter>(
+    nodes: &[S],
+    points: &[Point<S, D>],
+    counter: &mut C,
 ) -> Result<Polynomial<S, D>> {
     check_nodes_and_points(nodes, points)?;
     check_dense(nodes.len())?;
@@ -235,7 +275,7 @@ pub fn vandermonde<S: Scalar, const D: usize>(
             row
         })
         .collect();
-    let coefficients = solve_dense(matrix, points.to_vec())
+    let coefficients = solve_dense_with(matrix, points.to_vec(), counter)
         .ok_or_else(|| singular("nodes", "the Vandermonde matrix is singular"))?;
     Ok(Polynomial::new(finite(coefficients)?))
 }
@@ -260,8 +300,6 @@ pub fn vandermonde<S: Scalar, const D: usize>(
 ///
 /// Θ(N³ + N²·D) time and Θ(N² + N·D) auxiliary space for `N` conditions in R^D.
 ///
-/// Nothing is counted.
-///
 /// ```
 /// use compgeo::spline::{vandermonde_hermite, Curve, HermiteNode, Point};
 ///
@@ -276,6 +314,38 @@ pub fn vandermonde<S: Scalar, const D: usize>(
 /// ```
 pub fn vandermonde_hermite<S: Scalar, const D: usize>(
     data: &[HermiteNode<S, D>],
+) -> Result<Polynomial<S, D>> {
+    vandermonde_hermite_with(data, &mut NoCount)
+}
+
+/// [`vandermonde_hermite`], counting the elimination's arithmetic as
+/// [`vandermonde_with`] does: at most (N − 1)N(2N − 1)/6 + N(N − 1) + N(N + 1)/2 for N
+/// conditions (fewer where a derivative row's zeros below a pivot are skipped).
+///
+/// # Errors
+///
+/// As [`vandermonde_hermite`].
+///
+/// # Complexity
+///
+/// Θ(N³ + N²·D) time and Θ(N² + N·D) auxiliary space for `N` conditions in R^D.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{vandermonde_hermite_with, HermiteNode, Point};
+///
+/// let data = [
+///     HermiteNode { u: 0.0, values: vec![Point::new([0.0]), Point::new([0.0])] },
+///     HermiteNode { u: 1.0, values: vec![Point::new([1.0]), Point::new([3.0])] },
+/// ];
+/// let mut c = Counts::default();
+/// vandermonde_hermite_with(&data, &mut c)?;
+/// assert!(c.arithmetic_operations > 0 && c.arithmetic_operations <= 14 + 12 + 10);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn vandermonde_hermite_with<S: Scalar, const D: usize, C: Counter>(
+    data: &[HermiteNode<S, D>],
+    counter: &mut C,
 ) -> Result<Polynomial<S, D>> {
     let total = check_hermite(data)?;
     check_dense(total)?;
@@ -294,7 +364,7 @@ pub fn vandermonde_hermite<S: Scalar, const D: usize>(
             rhs.push(value.clone());
         }
     }
-    let coefficients = solve_dense(matrix, rhs)
+    let coefficients = solve_dense_with(matrix, rhs, counter)
         .ok_or_else(|| singular("nodes", "the confluent Vandermonde matrix is singular"))?;
     Ok(Polynomial::new(finite(coefficients)?))
 }

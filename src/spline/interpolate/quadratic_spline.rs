@@ -19,13 +19,13 @@
 //! cyclic system by telescoping, also in one pass).
 
 use super::validate::{check_knots_and_points, overflow, singular};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{Point, Scalar};
 use crate::spline::CompositeBezier;
 use crate::{Error, Result};
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and claims.
 pub(crate) const QUADRATIC: Declaration = Declaration {
     problem: "interpolate",
     name: "quadratic-spline",
@@ -34,14 +34,17 @@ pub(crate) const QUADRATIC: Declaration = Declaration {
     summary: "the C¹ parabolic spline with a tangent at one end",
     time: "Θ(N·D)",
     space: "Θ(N·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly N point operations for N pieces: one per inner Bézier point",
     source: "[SPL, §2]",
-    claims: &[],
+    claims: &[on(
+        "random-points",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
-/// This algorithm's [`Declaration`]: its name, bounds and source (it has no counter variant
-/// yet).
+/// This algorithm's [`Declaration`]: its name, bounds, counts, source and claims.
 pub(crate) const CLOSED_QUADRATIC: Declaration = Declaration {
     problem: "interpolate",
     name: "closed-quadratic-spline",
@@ -50,10 +53,10 @@ pub(crate) const CLOSED_QUADRATIC: Declaration = Declaration {
     summary: "the closed C¹ parabolic spline",
     time: "Θ(N·D)",
     space: "Θ(N·D)",
-    operation: None,
-    counts: "",
+    operation: Some(Operation::ArithmeticOperations),
+    counts: "exactly 2N point operations for N pieces: N − 1 for the recurrence, one for the closing condition, N for the inner points",
     source: "[SPL, §2]",
-    claims: &[],
+    claims: &[on("random-points", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 /// The C¹ quadratic spline through `points` at the knots `partition` whose first derivative at
@@ -71,7 +74,7 @@ pub(crate) const CLOSED_QUADRATIC: Declaration = Declaration {
 ///
 /// # Complexity
 ///
-/// Θ(N·D) time and space for `N + 1` points in R^D. Nothing is counted.
+/// Θ(N·D) time and space for `N + 1` points in R^D.
 ///
 /// ```
 /// use compgeo::spline::{quadratic_spline, Curve, Point};
@@ -88,6 +91,37 @@ pub fn quadratic_spline<S: Scalar, const D: usize>(
     points: &[Point<S, D>],
     start_tangent: &Point<S, D>,
 ) -> Result<CompositeBezier<S, D>> {
+    quadratic_spline_with(partition, points, start_tangent, &mut NoCount)
+}
+
+/// [`quadratic_spline`], counting one [`arithmetic_operation`](Counter::arithmetic_operation)
+/// per inner Bézier point (the first from the tangent, each next one by reflection): exactly
+/// N for N pieces.
+///
+/// # Errors
+///
+/// As [`quadratic_spline`].
+///
+/// # Complexity
+///
+/// Θ(N·D) time and space for `N + 1` points in R^D.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{quadratic_spline_with, Point};
+///
+/// let pts: Vec<_> = [0.0, 1.0, 4.0, 9.0].iter().map(|&y| Point::new([y])).collect();
+/// let mut c = Counts::default();
+/// quadratic_spline_with(&[0.0, 1.0, 2.0, 3.0], &pts, &Point::new([0.0]), &mut c)?;
+/// assert_eq!(c.arithmetic_operations, 3);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn quadratic_spline_with<S: Scalar, const D: usize, C: Counter>(
+    partition: &[S],
+    points: &[Point<S, D>],
+    start_tangent: &Point<S, D>,
+    counter: &mut C,
+) -> Result<CompositeBezier<S, D>> {
     check_knots_and_points(partition, points, 2)?;
     if let Some(c) = start_tangent.coords().iter().find(|c| !c.is_finite()) {
         return Err(Error::NonFinite {
@@ -99,10 +133,12 @@ pub fn quadratic_spline<S: Scalar, const D: usize>(
     let h: Vec<S> = partition.windows(2).map(|w| w[1].clone() - &w[0]).collect();
     let mut inner = Vec::with_capacity(n);
     inner.push(points[0].clone() + &(start_tangent.clone() * (h[0].clone() / S::from_i64(2))));
+    counter.arithmetic_operation();
     for i in 1..n {
         let ratio = h[i].clone() / &h[i - 1];
         let reflected = (points[i].clone() - &inner[i - 1]) * ratio;
         inner.push(points[i].clone() + &reflected);
+        counter.arithmetic_operation();
     }
     build(partition, points, inner)
 }
@@ -126,7 +162,7 @@ pub fn quadratic_spline<S: Scalar, const D: usize>(
 ///
 /// # Complexity
 ///
-/// Θ(N·D) time and space. Nothing is counted.
+/// Θ(N·D) time and space.
 ///
 /// ```
 /// use compgeo::spline::{closed_quadratic_spline, Point};
@@ -144,6 +180,38 @@ pub fn quadratic_spline<S: Scalar, const D: usize>(
 pub fn closed_quadratic_spline<S: Scalar, const D: usize>(
     partition: &[S],
     points: &[Point<S, D>],
+) -> Result<CompositeBezier<S, D>> {
+    closed_quadratic_spline_with(partition, points, &mut NoCount)
+}
+
+/// [`closed_quadratic_spline`], counting one
+/// [`arithmetic_operation`](Counter::arithmetic_operation) per point computed: the N − 1
+/// points Aᵢ of the recurrence, the right-hand side of the closing condition, and the N inner
+/// Bézier points, exactly 2N for N pieces.
+///
+/// # Errors
+///
+/// As [`closed_quadratic_spline`].
+///
+/// # Complexity
+///
+/// Θ(N·D) time and space.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{closed_quadratic_spline_with, Point};
+///
+/// let p = |x: f64, y: f64| Point::new([x, y]);
+/// let pts = [p(0.0, 0.0), p(4.0, 0.0), p(0.0, 4.0), p(0.0, 0.0)];
+/// let mut c = Counts::default();
+/// closed_quadratic_spline_with(&[0.0, 1.0, 2.0, 3.0], &pts, &mut c)?;
+/// assert_eq!(c.arithmetic_operations, 2 * 3);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn closed_quadratic_spline_with<S: Scalar, const D: usize, C: Counter>(
+    partition: &[S],
+    points: &[Point<S, D>],
+    counter: &mut C,
 ) -> Result<CompositeBezier<S, D>> {
     check_knots_and_points(partition, points, 3)?;
     let n = points.len() - 1;
@@ -164,6 +232,7 @@ pub fn closed_quadratic_spline<S: Scalar, const D: usize>(
         let next_b = -(b[i - 1].clone() * &ratio);
         a.push(next_a);
         b.push(next_b);
+        counter.arithmetic_operation();
     }
     // At the closing point: (Δu_{N−1} + Δu_0) a_0 = Δu_0 c_{2N−1} + Δu_{N−1} c_1.
     if n % 2 == 0 {
@@ -178,6 +247,10 @@ pub fn closed_quadratic_spline<S: Scalar, const D: usize>(
     let coefficient = h[0].clone() * &b[n - 1] + &h[n - 1];
     let rhs = points[0].clone() * (h[n - 1].clone() + &h[0]) - &(a[n - 1].clone() * &h[0]);
     let first = rhs / &coefficient;
+    counter.arithmetic_operation();
+    for _ in 0..n {
+        counter.arithmetic_operation();
+    }
     let inner: Vec<Point<S, D>> = a
         .into_iter()
         .zip(b)

@@ -3,6 +3,7 @@
 //! once, at the public function; the kernels behind it take it as valid.
 
 use super::polynomial::HermiteNode;
+use crate::count::{Counter, NoCount};
 use crate::spline::scalar::{validate_points, Point, Scalar};
 use crate::{limits, Error, Result};
 
@@ -51,14 +52,25 @@ pub(crate) fn check_finite_nodes<S: Scalar>(nodes: &[S], name: &'static str) -> 
 
 /// Checks that no two nodes are equal (in any order); O(n log n).
 pub(crate) fn check_distinct<S: Scalar>(nodes: &[S]) -> Result<()> {
+    check_distinct_with(nodes, &mut NoCount)
+}
+
+/// [`check_distinct`], counting one [`comparison`](Counter::comparison) per comparison of two
+/// nodes: those of the sort, then one per neighbouring pair.
+pub(crate) fn check_distinct_with<S: Scalar, C: Counter>(
+    nodes: &[S],
+    counter: &mut C,
+) -> Result<()> {
     let mut order: Vec<usize> = (0..nodes.len()).collect();
     // The nodes are finite, so `partial_cmp` is total on them.
     order.sort_by(|&a, &b| {
+        counter.comparison();
         nodes[a]
             .partial_cmp(&nodes[b])
             .unwrap_or(std::cmp::Ordering::Equal)
     });
     for w in order.windows(2) {
+        counter.comparison();
         if nodes[w[0]] == nodes[w[1]] {
             let (i, j) = (w[0].min(w[1]), w[0].max(w[1]));
             return Err(singular(

@@ -31,7 +31,7 @@
 
 use super::quotient::quotient_derivatives;
 use super::weights::{homogeneous, project, validate_weights};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::bezier::Bezier;
 use crate::spline::curve::{Curve, CurveDerivative, Domain};
@@ -50,7 +50,7 @@ pub(crate) const RATIONAL_DE_CASTELJAU: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly n(n + 1) affine combinations per point: n(n + 1)/2 on the weighted points and as many on the weights",
     source: "[SPL, §14]",
-    claims: &[],
+    claims: &[on("random-degree", Bound::Quadratic, Operation::ArithmeticOperations)],
 };
 
 /// A rational Bézier curve of degree n: n + 1 control points in R^D with positive weights,

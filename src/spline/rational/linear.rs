@@ -16,7 +16,7 @@
 //! with one.
 
 use super::{Nurbs, RationalBezier};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::curve::Subsegment;
 use crate::spline::scalar::Scalar;
@@ -34,7 +34,7 @@ pub(crate) const NURBS_ELEVATE: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "B-spline elevation's count for D + 1 coordinates, as two curves",
     source: "[SPL, §14]",
-    claims: &[],
+    claims: &[on("random-control", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 /// NURBS to rational Bézier pieces, declared.
@@ -49,7 +49,11 @@ pub(crate) const NURBS_TO_BEZIER: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "B-spline conversion's count, as two curves",
     source: "[SPL, §14]",
-    claims: &[],
+    claims: &[on(
+        "random-control",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// NURBS knot refinement, declared.
@@ -64,7 +68,7 @@ pub(crate) const NURBS_REFINE: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "B-spline refinement's count, as two curves",
     source: "[SPL, §14]",
-    claims: &[],
+    claims: &[on("random-control", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 impl<S: Scalar, const D: usize> Nurbs<S, D> {

@@ -58,6 +58,13 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 6] = [
     &linear::NURBS_TO_BEZIER,
 ];
 
+/// The declarations the catalog's entries measure, by name.
+pub(crate) mod declarations {
+    pub(crate) use super::bezier::RATIONAL_DE_CASTELJAU;
+    pub(crate) use super::linear::{NURBS_ELEVATE, NURBS_REFINE, NURBS_TO_BEZIER};
+    pub(crate) use super::nurbs::NURBS_INSERT;
+}
+
 pub use bezier::RationalBezier;
 pub use conic::ConicKind;
 /// NURBS evaluation, declared: the catalog measures it.

@@ -75,7 +75,11 @@ pub(crate) const NURBS_INSERT: Declaration = Declaration {
     counts:
         "exactly 2(r(d − s) − r(r − 1)/2) affine combinations, s the knot's multiplicity before",
     source: "[SPL, §14]",
-    claims: &[],
+    claims: &[on(
+        "random-degree",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// A NURBS curve of degree d: n control points in R^D with positive weights on a
