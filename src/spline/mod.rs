@@ -86,8 +86,9 @@ pub use interpolate::{
     vandermonde, vandermonde_hermite, vandermonde_hermite_with, vandermonde_with, EndCondition,
     FitOptions, HermiteNode, LagrangeForm, NewtonForm, Parameterisation, Polynomial,
 };
+pub(crate) use parse::read_scalar;
 #[cfg(feature = "cli")]
-pub(crate) use parse::{parse_f64, parse_f64_or_word, read_scalar};
+pub(crate) use parse::{parse_f64, parse_f64_or_word};
 pub use parse::{parse_scalar, ParseScalar, MAX_EXACT_DIGITS, MAX_EXACT_EXPONENT};
 pub use rational::{ConicKind, Nurbs, NurbsDerivative, RationalBezier};
 pub use scalar::{binomial, validate_parameter, validate_points, Finite, Point, Scalar};

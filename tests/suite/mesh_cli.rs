@@ -3,6 +3,8 @@
 //! writes OBJ to stdout, and bad meshes, bad OBJ lines and bad arguments exit 2 with one
 //! `error:` line naming the face or the line.
 
+#![cfg(all(feature = "cli", feature = "exact"))]
+
 use crate::common::{assert_rejected, run, run_json};
 use crate::spline_common::Q;
 use compgeo::gen::{cube, irregular_disk};

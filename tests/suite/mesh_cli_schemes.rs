@@ -3,6 +3,8 @@
 //! F·4ᵏ triangles for Loop and F + E + V faces for a round of Doo–Sabin on a closed mesh, and
 //! a mesh Loop cannot take or an absurd round count exits 2 with one `error:` line naming it.
 
+#![cfg(all(feature = "cli", feature = "exact"))]
+
 use crate::common::{assert_rejected, run, run_json};
 use crate::mesh_loop::fans;
 use crate::spline_common::Q;
