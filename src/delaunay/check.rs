@@ -27,7 +27,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// Checks exactly that `t` is a Delaunay triangulation of `points` in compgeo's conventions;
 /// the error names the first violation found.
 ///
-/// Checked, with the exact predicates [`orient2d`] and [`incircle`] only:
+/// Checked, with the exact predicates [`orient2d`](crate::geometry::orient2d) and [`incircle`](crate::geometry::incircle) only:
 ///
 /// 1. the arrays fit: three vertices per triangle, one entry of `halfedges` per half-edge,
 ///    every index in range;
