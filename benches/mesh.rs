@@ -9,11 +9,12 @@
 //!   `TopologyRefinerFactory::create` (its base level from the face list),
 //!   `refine_uniform(3)` and `PrimvarRefiner::interpolate` of the positions level by level:
 //!   the same work, topology and positions of every level.
-//! - `mesh/loop`: OpenSubdiv's Loop scheme on the 50 × 100 triangle torus (10⁴ triangles),
-//!   the same three steps. compgeo's Loop scheme (the `loop` of `mesh::Scheme`) joins this
-//!   group as `compgeo/from-faces` and `compgeo/rounds` in `bench_loop`.
+//! - `mesh/loop`: Loop's scheme on the 50 × 100 triangle torus (10⁴ triangles, every
+//!   vertex of valence 6) and on the irregular 88 × 88 torus with every face cut into a fan
+//!   of triangles (about 10⁴ triangles, valences 3 to 12), the same three steps: compgeo's
+//!   `loop_subdivision` (`from-faces`, `rounds`) against OpenSubdiv's Loop scheme.
 //!
-//! Before timing, each Catmull–Clark case checks that both libraries produce the same
+//! Before timing, each case checks that both libraries produce the same
 //! positions (each of ours has one of theirs within 1e-6: OpenSubdiv's weights are `f32`), so the times compare the
 //! same result. Both use
 //! Catmull–Clark's rules with sharp boundaries (OpenSubdiv's `EdgeAndCorner`); the tori are
@@ -27,7 +28,11 @@
 //! |---|---|---|---|---|
 //! | Catmull–Clark, quad torus, 10⁴ quads | 103 ms | 76 ms | 1155 ms | 0.09 |
 //! | Catmull–Clark, irregular torus, about 10⁴ faces | 125 ms | 98 ms | 1088 ms | 0.11 |
-//! | Loop, triangle torus, 10⁴ triangles | (the `grid` branch) | | 543 ms | |
+//! | Loop, triangle torus, 10⁴ triangles | 152 ms | 116 ms | 1474 ms | 0.10 |
+//! | Loop, irregular triangles, about 10⁴ (fans of the irregular torus) | 245 ms | 179 ms | 2632 ms | 0.09 |
+//!
+//! (The Loop rows were measured on 2026-12-03 at a load average of 8 on the 2 cores; a run
+//! outside criterion at a lower load gave 79 ms against 1120 ms for the triangle torus.)
 //!
 //! The target of issue 17 (three rounds at most 0.5× OpenSubdiv's time) holds with room to
 //! spare. Where the time goes (perf): the positions' three passes and the connectivity of
@@ -36,7 +41,7 @@
 //! alone, `Level::from_face_vertices`, costs more than all of compgeo's three rounds).
 
 use compgeo::gen::{irregular_torus, quad_torus, triangle_torus};
-use compgeo::mesh::{catmull_clark, PolygonMesh};
+use compgeo::mesh::{catmull_clark, loop_subdivision, PolygonMesh};
 use compgeo::spline::Point;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use opensubdiv_rs::far::{
@@ -47,6 +52,9 @@ use std::hint::black_box;
 use std::time::Duration;
 
 const ROUNDS: usize = 3;
+
+/// A scheme of compgeo's: k rounds on a validated mesh.
+type Scheme = fn(&PolygonMesh<f64, 3>, usize) -> compgeo::Result<PolygonMesh<f64, 3>>;
 const SEED: u64 = 0x5EED_0017;
 
 /// A mesh as plain face lists, the input both libraries start from.
@@ -78,11 +86,11 @@ impl Input {
         offsets
     }
 
-    /// compgeo from the face list: validation, then the rounds.
-    fn compgeo(&self, offsets: &[usize]) -> PolygonMesh<f64, 3> {
+    /// compgeo from the face list: validation, then the rounds of `scheme`.
+    fn compgeo(&self, offsets: &[usize], scheme: Scheme) -> PolygonMesh<f64, 3> {
         let mesh =
             PolygonMesh::from_offsets(self.positions.clone(), offsets, &self.corners).unwrap();
-        catmull_clark(&mesh, ROUNDS).unwrap()
+        scheme(&mesh, ROUNDS).unwrap()
     }
 
     /// OpenSubdiv from the face list: the refiner, uniform refinement, the positions of
@@ -113,9 +121,9 @@ const AGREEMENT: f64 = 1e-6;
 
 /// Both libraries make the same points within [`AGREEMENT`]: every point of ours has one of
 /// OpenSubdiv's that close (searched among theirs sorted by x), and the counts are equal.
-fn check_agreement(input: &Input) {
-    let ours = input.compgeo(&input.offsets());
-    let mut theirs = input.opensubdiv(SchemeType::Catmark);
+fn check_agreement(input: &Input, scheme: SchemeType, ours: Scheme) {
+    let ours = input.compgeo(&input.offsets(), ours);
+    let mut theirs = input.opensubdiv(scheme);
     assert_eq!(
         ours.vertex_count(),
         theirs.len(),
@@ -147,7 +155,7 @@ fn bench_catmull_clark(c: &mut Criterion) {
     group.warm_up_time(Duration::from_secs(1));
     group.measurement_time(Duration::from_secs(4));
     for input in &inputs {
-        check_agreement(input);
+        check_agreement(input, SchemeType::Catmark, catmull_clark);
         let offsets = input.offsets();
         let faces = input.sizes.len();
         let validated =
@@ -156,7 +164,7 @@ fn bench_catmull_clark(c: &mut Criterion) {
         group.bench_with_input(
             BenchmarkId::new("compgeo/from-faces", input.name),
             input,
-            |b, input| b.iter(|| black_box(input.compgeo(&offsets))),
+            |b, input| b.iter(|| black_box(input.compgeo(&offsets, catmull_clark))),
         );
         group.bench_with_input(
             BenchmarkId::new("compgeo/rounds", input.name),
@@ -172,22 +180,57 @@ fn bench_catmull_clark(c: &mut Criterion) {
     group.finish();
 }
 
-/// The Loop group: OpenSubdiv's Loop scheme on 10⁴ triangles. compgeo's Loop scheme
-/// (`mesh::Scheme`'s `loop`, on the `grid` branch) is measured here, on the same input, as
-/// `compgeo/from-faces` and `compgeo/rounds` once it exists.
+/// The Loop group: three rounds of Loop's scheme on about 10⁴ triangles, the regular
+/// triangle torus and the irregular torus with every face cut into a fan of triangles
+/// (valences 3 to 12, so Loop's β with an irrational cos(2π/n) runs); compgeo as
+/// `compgeo/from-faces` (validation, then `loop_subdivision`) and `compgeo/rounds`.
 fn bench_loop(c: &mut Criterion) {
-    let input = Input::new("triangle-torus-10k", &triangle_torus(50, 100).unwrap());
+    let inputs = [
+        Input::new("triangle-torus-10k", &triangle_torus(50, 100).unwrap()),
+        Input::new(
+            "irregular-triangles-10k",
+            &fan_triangulated(&irregular_torus(88, 88, SEED).unwrap()),
+        ),
+    ];
     let mut group = c.benchmark_group("mesh/loop");
     group.sample_size(10);
     group.warm_up_time(Duration::from_secs(1));
     group.measurement_time(Duration::from_secs(4));
-    group.throughput(Throughput::Elements(input.sizes.len() as u64));
-    group.bench_with_input(
-        BenchmarkId::new("opensubdiv", input.name),
-        &input,
-        |b, input| b.iter(|| black_box(input.opensubdiv(SchemeType::Loop))),
-    );
+    for input in &inputs {
+        check_agreement(input, SchemeType::Loop, loop_subdivision);
+        let offsets = input.offsets();
+        let validated =
+            PolygonMesh::from_offsets(input.positions.clone(), &offsets, &input.corners).unwrap();
+        group.throughput(Throughput::Elements(input.sizes.len() as u64));
+        group.bench_with_input(
+            BenchmarkId::new("compgeo/from-faces", input.name),
+            input,
+            |b, input| b.iter(|| black_box(input.compgeo(&offsets, loop_subdivision))),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("compgeo/rounds", input.name),
+            &validated,
+            |b, mesh| b.iter(|| black_box(loop_subdivision(mesh, ROUNDS).unwrap())),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("opensubdiv", input.name),
+            input,
+            |b, input| b.iter(|| black_box(input.opensubdiv(SchemeType::Loop))),
+        );
+    }
     group.finish();
+}
+
+/// The mesh with every face cut into the fan of triangles from its first corner.
+fn fan_triangulated(m: &PolygonMesh<f64, 3>) -> PolygonMesh<f64, 3> {
+    let mut faces = Vec::new();
+    for f in 0..m.face_count() {
+        let c = m.face_vertices(f);
+        for k in 1..c.len() - 1 {
+            faces.push([c[0] as usize, c[k] as usize, c[k + 1] as usize]);
+        }
+    }
+    PolygonMesh::new(m.positions().to_vec(), &faces).unwrap()
 }
 
 criterion_group!(benches, bench_catmull_clark, bench_loop);

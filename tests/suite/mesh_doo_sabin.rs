@@ -13,7 +13,8 @@ use crate::surface_subdivision::lattice_net;
 use compgeo::count::Counts;
 use compgeo::gen::{cube, irregular_disk, irregular_torus, quad_torus};
 use compgeo::mesh::{
-    doo_sabin, doo_sabin_limit_points, doo_sabin_weights, doo_sabin_with, PolygonMesh,
+    doo_sabin, doo_sabin_limit_points, doo_sabin_weights, doo_sabin_with, subdivide, PolygonMesh,
+    Scheme,
 };
 use compgeo::spline::subdivision::Topology;
 use compgeo::spline::Point;
@@ -318,4 +319,14 @@ fn bad_round_counts_and_overflow_are_named_errors() {
     )
     .unwrap();
     assert!(matches!(doo_sabin(&huge, 1), Err(Error::Overflow { .. })));
+}
+
+#[test]
+fn the_scheme_family_runs_doo_sabin() {
+    let mesh = irregular_disk(20, 1).unwrap();
+    assert_eq!(
+        subdivide(&mesh, Scheme::DooSabin, 2).unwrap(),
+        doo_sabin(&mesh, 2).unwrap()
+    );
+    assert_eq!("doo-sabin".parse::<Scheme>().unwrap(), Scheme::DooSabin);
 }

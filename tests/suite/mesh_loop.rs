@@ -5,7 +5,8 @@
 //! meshes, with the half-edge invariants of every result; the weights (α(6) = 5/8, Loop's
 //! interval, exact affine rules for every valence); the boundary polygon subdivided as a
 //! closed cubic B-spline (the curve Lane–Riesenfeld algorithm as the oracle); the limit
-//! positions fixed by a round; the operation counts; bad input gets named errors.
+//! positions fixed by a round; the operation counts; OpenSubdiv (`opensubdiv-rs`) as a peer
+//! oracle in `f64`; bad input gets named errors.
 
 use crate::spline_common::{q, qi, Q};
 use crate::surface_subdivision::{lattice_net, quartic_box_spline_round, Grid};
@@ -13,7 +14,7 @@ use compgeo::count::Counts;
 use compgeo::gen::{irregular_disk, irregular_torus, quad_grid, triangle_torus};
 use compgeo::mesh::{
     loop_limit_points, loop_limit_points_with, loop_subdivision, loop_subdivision_weighted,
-    loop_subdivision_with, LoopWeights, MeshError, PolygonMesh,
+    loop_subdivision_with, subdivide, LoopWeights, MeshError, PolygonMesh, Scheme,
 };
 use compgeo::spline::subdivision::{lane_riesenfeld, Topology};
 use compgeo::spline::{Point, Scalar};
@@ -420,4 +421,67 @@ proptest! {
             }
         }
     }
+}
+
+/// OpenSubdiv's Loop refinement of `mesh` (`rounds` levels, boundary edges sharp and
+/// boundary corners smooth, `EdgeOnly`: the crease rule (1, 6, 1)/8 at every boundary
+/// vertex, as ours): the peer oracle.
+fn opensubdiv_loop(mesh: &PolygonMesh<f64, 3>, rounds: usize) -> Vec<[f64; 3]> {
+    use opensubdiv_rs::far::{
+        PrimvarRefiner, TopologyDescriptor, TopologyRefinerFactory, UniformOptions,
+    };
+    use opensubdiv_rs::sdc::{Options, SchemeType, VtxBoundaryInterpolation};
+    let t = mesh.topology();
+    let sizes = vec![3usize; t.face_count()];
+    let descriptor = TopologyDescriptor::new(t.vertex_count(), &sizes, t.corners());
+    let options =
+        Options::default().with_vtx_boundary_interpolation(VtxBoundaryInterpolation::EdgeOnly);
+    let mut refiner =
+        TopologyRefinerFactory::create(descriptor, SchemeType::Loop, options).unwrap();
+    refiner.refine_uniform(UniformOptions::new(rounds));
+    let primvars = PrimvarRefiner::new(&refiner);
+    let mut points: Vec<[f64; 3]> = mesh.positions().iter().map(|p| p.0).collect();
+    for level in 1..=rounds {
+        let mut refined = vec![[0.0; 3]; refiner.level(level).num_vertices()];
+        primvars.interpolate(level, &points, &mut refined);
+        points = refined;
+    }
+    points
+}
+
+#[test]
+fn opensubdiv_makes_the_same_points() {
+    // OpenSubdiv keeps its weights in f32: where β is not dyadic ours differ by about 1e-8.
+    const CLOSE: f64 = 1e-6;
+    for mesh in [
+        triangle_torus(5, 6).unwrap(),
+        fans(&irregular_torus(8, 8, 3).unwrap()),
+        fans(&irregular_disk(50, 6).unwrap()),
+    ] {
+        let ours = loop_subdivision(&mesh, 2).unwrap();
+        let mut theirs = opensubdiv_loop(&mesh, 2);
+        assert_eq!(ours.vertex_count(), theirs.len());
+        theirs.sort_by(|p, q| p[0].total_cmp(&q[0]));
+        for p in ours.positions() {
+            let p = p.0;
+            let from = theirs.partition_point(|q| q[0] < p[0] - CLOSE);
+            assert!(
+                theirs[from..]
+                    .iter()
+                    .take_while(|q| q[0] <= p[0] + CLOSE)
+                    .any(|q| (0..3).all(|i| (p[i] - q[i]).abs() < CLOSE)),
+                "no OpenSubdiv point near {p:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_scheme_family_runs_loop() {
+    let mesh = fans(&irregular_disk(20, 1).unwrap());
+    assert_eq!(
+        subdivide(&mesh, Scheme::Loop, 2).unwrap(),
+        loop_subdivision_weighted(&mesh, 2, LoopWeights::Loop).unwrap()
+    );
+    assert_eq!("loop".parse::<Scheme>().unwrap(), Scheme::Loop);
 }
