@@ -172,7 +172,6 @@ impl MeshTopology {
     /// boundary loops are found here. Nothing is validated (the scheme's construction
     /// guarantees the invariants); debug builds run [`check`](Self::check).
     #[allow(clippy::too_many_arguments)]
-    #[allow(dead_code)] // the subdivision schemes build their refined meshes with it
     pub(crate) fn from_parts_unchecked(
         vertex_count: usize,
         face_offsets: Vec<u32>,
