@@ -404,3 +404,44 @@ fn beta_spline_joints_and_frenet_frames_count_their_steps() {
     frenet_frame_with(&d[..2], &mut c).unwrap();
     assert_eq!(c.arithmetic_operations, 2);
 }
+
+#[test]
+fn surface_isocurves_and_refinement_count_the_curves_they_run_on() {
+    use compgeo::spline::KnotVector;
+    use compgeo::surface::{BSplineSurface, ControlNet, Direction};
+    // M = 6 rows and N = 7 columns, bidegree (p, q) = (2, 3), clamped uniform knots.
+    let (rows, columns, p, qd) = (6usize, 7usize, 2usize, 3usize);
+    let net = ControlNet::new(
+        (0..rows as i64)
+            .map(|i| {
+                (0..columns as i64)
+                    .map(|j| Point::new([q(i, 1), q(j, 1), q((i * j) % 5, 1)]))
+                    .collect()
+            })
+            .collect(),
+    )
+    .unwrap();
+    let s = BSplineSurface::new(
+        net,
+        KnotVector::clamped_uniform(p, rows, q(0, 1), q(1, 1)).unwrap(),
+        KnotVector::clamped_uniform(qd, columns, q(0, 1), q(1, 1)).unwrap(),
+    )
+    .unwrap();
+    // v fixed off the knots: de Boor on each of the M rows, q(q + 1)/2 combinations each.
+    let mut c = Counts::default();
+    s.isocurve_with(Direction::V, &q(1, 7), &mut c).unwrap();
+    assert_eq!(c.arithmetic_operations, rows as u64 * triangle(qd));
+    // u fixed off the knots: the basis in u (p(p + 1)/2 steps), then one multiply-add per
+    // point of each of the p + 1 rows that matter.
+    let mut c = Counts::default();
+    s.isocurve_with(Direction::U, &q(1, 7), &mut c).unwrap();
+    assert_eq!(
+        c.arithmetic_operations,
+        triangle(p) + ((p + 1) * columns) as u64
+    );
+    // Refinement in v by m new simple knots inside spans: q combinations per knot and row.
+    let new = [q(1, 9), q(4, 9), q(8, 9)];
+    let mut c = Counts::default();
+    s.refine_with(Direction::V, &new, &mut c).unwrap();
+    assert_eq!(c.arithmetic_operations, (rows * new.len() * qd) as u64);
+}
