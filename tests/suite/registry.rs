@@ -7,6 +7,8 @@
 //!   time and space under `# Complexity`;
 //! - every catalog entry measures a declared claim, with the claim's bound and operation, and
 //!   every claim is measured once;
+//! - every declared algorithm has a counted operation and a measured claim, unless it is
+//!   exempt (`UNMEASURED`, empty, each exemption with its reason);
 //! - every algorithm family's enum parses and prints the declared names, and the command
 //!   line's `--help` lists them with their bounds.
 

@@ -234,7 +234,7 @@ impl Workload for Sweep {
         // Unit knot spacing for the derivatives, so that the d-th derivative of a curve of
         // degree 512 (about d!/∏ widths times 2^d) stays far inside the double range.
         let end = match self.run {
-            Run::Derivatives => (count - degree) as f64,
+            Run::Derivatives | Run::AllBasisDerivatives => (count - degree) as f64,
             _ => 1.0,
         };
         let u = pts[0].x * end;
