@@ -64,10 +64,16 @@ pub(crate) fn declarations() -> impl Iterator<Item = &'static crate::complexity:
         .chain(rational::DECLARATIONS)
         .chain(subdivision::DECLARATIONS)
         .chain(beta::DECLARATIONS)
-        .chain([&frenet::FRENET])
+        .chain([FRENET])
 }
 
-pub use beta::{is_beta_continuous, BetaParameters, BetaSpline, Matrix4, SubdivisionMatrices};
+/// The Frenet frame, declared: the catalog measures it.
+pub(crate) const FRENET: &crate::complexity::Declaration = &frenet::FRENET;
+
+pub use beta::{
+    is_beta_continuous, is_beta_continuous_with, BetaParameters, BetaSpline, Matrix4,
+    SubdivisionMatrices,
+};
 pub use bezier::{
     bernstein, bernstein_all, bernstein_derivative, c1_partition, intersections,
     intersections_with, Bezier, CompositeBezier, Evaluation as BezierEvaluation, Intersection,
@@ -77,7 +83,10 @@ pub use bspline::{
     BSpline, BandMatrix, Basis, BasisDerivatives, DeBoorTrace, KnotVector, ParameterFit,
 };
 pub use curve::{Curve, CurveDerivative, Domain, Subsegment};
-pub use frenet::{bezier_frenet, curvature_vector, frenet_frame, is_g2, is_g2_join, FrenetFrame};
+pub use frenet::{
+    bezier_frenet, curvature_vector, frenet_frame, frenet_frame_with, is_g2, is_g2_join,
+    FrenetFrame,
+};
 pub use interpolate::{
     closed_quadratic_spline, closed_quadratic_spline_with, cubic_spline, cubic_spline_tangents,
     cubic_spline_tangents_with, cubic_spline_with, estimate_tangents, fit_bezier, fit_bezier_with,

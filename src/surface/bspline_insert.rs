@@ -51,7 +51,11 @@ pub(crate) const SURFACE_REFINE: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "M times the curve refinement's affine combinations in v (N times in u)",
     source: "[PPB, §6.1–6.2, §9.1]",
-    claims: &[],
+    claims: &[on(
+        "random-net",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 impl<S: Scalar, const D: usize> BSplineSurface<S, D> {

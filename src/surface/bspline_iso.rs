@@ -13,7 +13,7 @@
 
 use super::bspline::BSplineSurface;
 use super::direction::Direction;
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::{BSpline, Point, Scalar};
 use crate::{Error, Result};
@@ -30,7 +30,7 @@ pub(crate) const SURFACE_ISOCURVE: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "those of de Boor's algorithm on each row, or of the basis plus one per point and row",
     source: "[FJ-surfaces, §2], [PPB, §9.1]",
-    claims: &[],
+    claims: &[on("random-net", Bound::Linear, Operation::ArithmeticOperations), on("random-columns", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 impl<S: Scalar, const D: usize> BSplineSurface<S, D> {

@@ -127,7 +127,8 @@ pub(crate) mod declarations {
     pub(crate) use super::bounds::BOUNDING_BOX;
     pub(crate) use super::bspline::TENSOR_DE_BOOR;
     pub(crate) use super::bspline_elevate::SURFACE_ELEVATE;
-    pub(crate) use super::bspline_insert::SURFACE_INSERT;
+    pub(crate) use super::bspline_insert::{SURFACE_INSERT, SURFACE_REFINE};
+    pub(crate) use super::bspline_iso::SURFACE_ISOCURVE;
     pub(crate) use super::bspline_to_bezier::SURFACE_TO_BEZIER;
     pub(crate) use super::derivative::DERIVATIVE_NET;
     pub(crate) use super::elevate::ELEVATE_TO;

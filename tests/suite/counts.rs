@@ -368,3 +368,80 @@ fn rational_counts_are_those_of_both_homogeneous_halves() {
         assert_eq!(c.arithmetic_operations, 2 * n as u64, "d = {n}");
     }
 }
+
+#[test]
+fn beta_spline_joints_and_frenet_frames_count_their_steps() {
+    use compgeo::spline::{frenet_frame_with, is_beta_continuous_with, BetaParameters, BetaSpline};
+    // Every joint of a Beta-spline: β₁Q⁻′ and the two terms of β₁²Q⁻″ + β₂Q⁻′, then the three
+    // comparisons of a joint that holds (exactly, with rationals).
+    let p = BetaParameters::new(q(3, 2), q(1, 2)).unwrap();
+    let control: Vec<Point<Q, 2>> = (0..9i64)
+        .map(|i| Point::new([q(i, 1), q(i * i % 5, 2)]))
+        .collect();
+    let s = BetaSpline::new(p.clone(), control).unwrap();
+    for i in 1..s.segments() {
+        let left = s.segment_derivatives(i - 1, &q(1, 1)).unwrap();
+        let right = s.segment_derivatives(i, &q(0, 1)).unwrap();
+        let mut c = Counts::default();
+        assert!(is_beta_continuous_with(&left, &right, &p, &mut c));
+        assert_eq!((c.arithmetic_operations, c.comparisons), (3, 3));
+    }
+    // The Frenet frame in R³ from three independent derivatives: each is projected twice on
+    // every residual before it (0 + 2 + 4), then the orientation's elimination of the 3 × 3
+    // matrix of derivatives changes 2·3 + 1·2 entries (none vanishes below a pivot here).
+    let d = [
+        Point::new([q(1, 1), q(2, 1), q(3, 1)]),
+        Point::new([q(2, 1), q(-1, 1), q(5, 1)]),
+        Point::new([q(4, 1), q(3, 1), q(-2, 1)]),
+    ];
+    let projections: u64 = (0..3).map(|i| 2 * i).sum();
+    let elimination: u64 = (0..3).map(|c| (2 - c) * (3 - c)).sum();
+    let mut c = Counts::default();
+    frenet_frame_with(&d, &mut c).unwrap();
+    assert_eq!(c.arithmetic_operations, projections + elimination);
+    // With two derivatives in R³ the frame is not full: projections only.
+    let mut c = Counts::default();
+    frenet_frame_with(&d[..2], &mut c).unwrap();
+    assert_eq!(c.arithmetic_operations, 2);
+}
+
+#[test]
+fn surface_isocurves_and_refinement_count_the_curves_they_run_on() {
+    use compgeo::spline::KnotVector;
+    use compgeo::surface::{BSplineSurface, ControlNet, Direction};
+    // M = 6 rows and N = 7 columns, bidegree (p, q) = (2, 3), clamped uniform knots.
+    let (rows, columns, p, qd) = (6usize, 7usize, 2usize, 3usize);
+    let net = ControlNet::new(
+        (0..rows as i64)
+            .map(|i| {
+                (0..columns as i64)
+                    .map(|j| Point::new([q(i, 1), q(j, 1), q((i * j) % 5, 1)]))
+                    .collect()
+            })
+            .collect(),
+    )
+    .unwrap();
+    let s = BSplineSurface::new(
+        net,
+        KnotVector::clamped_uniform(p, rows, q(0, 1), q(1, 1)).unwrap(),
+        KnotVector::clamped_uniform(qd, columns, q(0, 1), q(1, 1)).unwrap(),
+    )
+    .unwrap();
+    // v fixed off the knots: de Boor on each of the M rows, q(q + 1)/2 combinations each.
+    let mut c = Counts::default();
+    s.isocurve_with(Direction::V, &q(1, 7), &mut c).unwrap();
+    assert_eq!(c.arithmetic_operations, rows as u64 * triangle(qd));
+    // u fixed off the knots: the basis in u (p(p + 1)/2 steps), then one multiply-add per
+    // point of each of the p + 1 rows that matter.
+    let mut c = Counts::default();
+    s.isocurve_with(Direction::U, &q(1, 7), &mut c).unwrap();
+    assert_eq!(
+        c.arithmetic_operations,
+        triangle(p) + ((p + 1) * columns) as u64
+    );
+    // Refinement in v by m new simple knots inside spans: q combinations per knot and row.
+    let new = [q(1, 9), q(4, 9), q(8, 9)];
+    let mut c = Counts::default();
+    s.refine_with(Direction::V, &new, &mut c).unwrap();
+    assert_eq!(c.arithmetic_operations, (rows * new.len() * qd) as u64);
+}

@@ -11,7 +11,8 @@
 //!   differences).
 //! - `random-control`: n is the number of control points (or data points) of a cubic on
 //!   clamped uniform knots. The span search's comparisons ([`Operation::Comparisons`]) are the
-//!   only part of an evaluation that grows with n (⌈lg(n − d)⌉ + O(1) by bisection); the
+//!   only part of an evaluation that grows with n (⌈lg(n − d)⌉ + O(1) by bisection): the
+//!   arithmetic of the basis and of its derivatives (up to order 2) stays constant, O(1); the
 //!   conversion to Bézier pieces, elevation by one, the refinement at every span's midpoint
 //!   (by one backward pass of Boehm's insertions, and by the Oslo algorithm), interpolation of n points (chord length), the least-squares fit of n points
 //!   by n/4 + 4 control points, the C² cubic spline in B-spline form through n points at
@@ -162,6 +163,10 @@ pub(super) fn entries() -> Vec<Entry> {
             (Size::Degree, _) => e.quick(4, 256).full(4, 512),
             (Size::Control, Run::BandWidth) => e.quick(4, 64).full(4, 128),
             (Size::Control, Run::DeBoor | Run::Span) => e.quick(64, 1 << 16).full(64, 1 << 20),
+            // Constant arithmetic: seven sizes show it flat.
+            (Size::Control, Run::Basis | Run::BasisDerivatives) => {
+                e.quick(64, 1 << 12).full(64, 1 << 20)
+            }
             (Size::Control, _) => e.quick(64, 1 << 12).full(64, 1 << 16),
             (Size::Parameters, _) => e.quick(64, 1 << 14).full(64, 1 << 18),
         }
@@ -170,6 +175,7 @@ pub(super) fn entries() -> Vec<Entry> {
         entry(&b::DE_BOOR, Run::DeBoor, Size::Degree),
         entry(&b::DE_BOOR, Run::DeBoor, Size::Control),
         entry(&b::BASIS, Run::Basis, Size::Degree),
+        entry(&b::BASIS, Run::Basis, Size::Control),
         entry(&b::SPAN, Run::Span, Size::Control),
         entry(&b::INSERT, Run::Insert, Size::Degree),
         entry(&b::BLOSSOM, Run::Blossom, Size::Degree),
@@ -189,6 +195,7 @@ pub(super) fn entries() -> Vec<Entry> {
         entry(&b::MARSDEN, Run::Marsden, Size::Control),
         entry(&b::INTEGRAL, Run::Integral, Size::Control),
         entry(&b::BASIS_DERIVATIVES, Run::BasisDerivatives, Size::Degree),
+        entry(&b::BASIS_DERIVATIVES, Run::BasisDerivatives, Size::Control),
         entry(
             &b::BASIS_DERIVATIVES,
             Run::AllBasisDerivatives,
@@ -227,7 +234,7 @@ impl Workload for Sweep {
         // Unit knot spacing for the derivatives, so that the d-th derivative of a curve of
         // degree 512 (about d!/∏ widths times 2^d) stays far inside the double range.
         let end = match self.run {
-            Run::Derivatives => (count - degree) as f64,
+            Run::Derivatives | Run::AllBasisDerivatives => (count - degree) as f64,
             _ => 1.0,
         };
         let u = pts[0].x * end;

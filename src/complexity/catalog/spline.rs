@@ -21,6 +21,10 @@
 //!   Θ(n²)), or at degree 3 and tolerance 1/n, where the search descends
 //!   d = log₄(n/2) levels towards each of the two crossings (`parabola-tolerance`, Θ(log n)).
 //!
+//! The Frenet frame is measured in the dimension D = n of the space with r = D random
+//! derivatives (`random-dimension`, n = 2, 4, …, 64): r(r − 1) projections and the
+//! orientation's elimination, Θ(n³).
+//!
 //! The counted operation is the arithmetic step on points
 //! ([`Operation::ArithmeticOperations`]). Control points are uniform in the unit square and
 //! the parameter is drawn from [0, 1) with the same seed. Degrees stay at most 512: beyond
@@ -31,7 +35,9 @@ use crate::count::Counter;
 use crate::error::Result;
 use crate::gen::{points, PointKind};
 use crate::spline::bezier::{evaluate_with, Evaluation};
-use crate::spline::{cubic_spline_tangents_with, intersections_with, Bezier, EndCondition, Point};
+use crate::spline::{
+    cubic_spline_tangents_with, frenet_frame_with, intersections_with, Bezier, EndCondition, Point,
+};
 
 /// One evaluation of a random curve of degree n at a random parameter.
 struct Evaluate(Evaluation);
@@ -99,7 +105,53 @@ pub(super) fn entries() -> Vec<Entry> {
         .quick(16, 1 << 12)
         .full(16, 1 << 20),
     ]);
+    entries.push(
+        Entry::declared(crate::spline::FRENET, "random-dimension", Frenet)
+            .quick(2, 32)
+            .full(2, 64),
+    );
     entries
+}
+
+/// The Frenet frame from n random derivatives in R^n, for n a power of two up to 64 (the
+/// dimension is a type parameter: each size is its own instance).
+struct Frenet;
+
+impl Workload for Frenet {
+    /// The derivatives, as rows of n coordinates.
+    type Input = Vec<Vec<f64>>;
+    /// The first curvature's bits.
+    type Output = u64;
+
+    fn prepare(&self, n: usize, seed: u64) -> Result<Vec<Vec<f64>>> {
+        let coords: Vec<f64> = points(PointKind::UniformSquare, n * n / 2 + 1, seed)?
+            .into_iter()
+            .flat_map(|p| [p.x - 0.5, p.y - 0.5])
+            .collect();
+        Ok(coords.chunks(n).take(n).map(<[f64]>::to_vec).collect())
+    }
+
+    fn run<C: Counter>(&self, rows: &mut Vec<Vec<f64>>, c: &mut C) -> Result<u64> {
+        fn frame<const D: usize, C: Counter>(rows: &[Vec<f64>], c: &mut C) -> Result<u64> {
+            let derivatives: Vec<Point<f64, D>> = rows
+                .iter()
+                .map(|r| Point::new(std::array::from_fn(|i| r[i])))
+                .collect();
+            Ok(frenet_frame_with(&derivatives, c)?.curvature().to_bits())
+        }
+        match rows.len() {
+            2 => frame::<2, C>(rows, c),
+            4 => frame::<4, C>(rows, c),
+            8 => frame::<8, C>(rows, c),
+            16 => frame::<16, C>(rows, c),
+            32 => frame::<32, C>(rows, c),
+            64 => frame::<64, C>(rows, c),
+            n => Err(crate::Error::InvalidParameter {
+                name: "dimension",
+                reason: format!("the Frenet workload has no instance for dimension {n}"),
+            }),
+        }
+    }
 }
 
 /// The Bézier operations measured besides evaluation (see the module docs for the sizes).

@@ -5,8 +5,12 @@
 //! clamped knots with one interior knot in each direction, at a random (u, v): Θ(n³).
 //!
 //! `random-net`: a bicubic surface with n rows and 8 columns (clamped uniform knots), so the
-//! work is linear in n: a knot inserted in v (every row), the conversion to Bézier patches,
-//! the degree raised by one in v.
+//! work is linear in n: a knot inserted in v (every row), the midpoints of the five spans in
+//! v inserted in one refinement (every row), the conversion to Bézier patches, the degree
+//! raised by one in v, and the isoparametric curve at a random v (de Boor on every row).
+//!
+//! `random-columns`: the bicubic surface with 8 rows and n columns, and its isoparametric
+//! curve at a random u: the basis in u applied to the four rows that matter, linear in n.
 //!
 //! `random-grid`: n × 8 data points at uniform parameters, interpolated bicubically (tensor
 //! interpolation) and by the piecewise bicubic C¹ scheme: linear in n.
@@ -55,6 +59,11 @@ pub(super) fn entries() -> Vec<Entry> {
         net(&s::SURFACE_INSERT, Run::Insert),
         net(&s::SURFACE_TO_BEZIER, Run::ToBezier),
         net(&s::SURFACE_ELEVATE, Run::Elevate),
+        net(&s::SURFACE_REFINE, Run::Refine),
+        net(&s::SURFACE_ISOCURVE, Run::IsocurveV),
+        Entry::declared(&s::SURFACE_ISOCURVE, "random-columns", Net(Run::IsocurveU))
+            .quick(16, 1024)
+            .full(16, 8192),
         Entry::declared(
             &s::SURFACE_INTERPOLATE,
             "random-grid",
@@ -196,6 +205,11 @@ enum Run {
     Insert,
     ToBezier,
     Elevate,
+    Refine,
+    /// The curve at a fixed v, on n rows.
+    IsocurveV,
+    /// The curve at a fixed u, on n columns.
+    IsocurveU,
 }
 
 /// An operation on a bicubic surface of n × 8 points.
@@ -207,7 +221,10 @@ impl Workload for Net {
     type Output = usize;
 
     fn prepare(&self, n: usize, seed: u64) -> Result<Self::Input> {
-        random_surface(n.max(4), 8, (3, 3), seed)
+        match self.0 {
+            Run::IsocurveU => random_surface(8, n.max(4), (3, 3), seed),
+            _ => random_surface(n.max(4), 8, (3, 3), seed),
+        }
     }
 
     fn run<C: Counter>(&self, s: &mut Self::Input, c: &mut C) -> Result<Self::Output> {
@@ -219,6 +236,13 @@ impl Workload for Net {
                 .len(),
             Run::ToBezier => s.to_bezier_with(c)?.patches().len(),
             Run::Elevate => s.elevate_with(Direction::V, 1, c)?.net().points().len(),
+            Run::Refine => {
+                let t = s.v_knots().knots();
+                let mids: Vec<f64> = (3..8).map(|i| (t[i] + t[i + 1]) / 2.0).collect();
+                s.refine_with(Direction::V, &mids, c)?.net().points().len()
+            }
+            Run::IsocurveV => s.isocurve_with(Direction::V, &0.3, c)?.control().len(),
+            Run::IsocurveU => s.isocurve_with(Direction::U, &0.3, c)?.control().len(),
         })
     }
 }

@@ -27,7 +27,7 @@
 //! every sampled t, C·C⁻¹ = I, and β₁ = 1, β₂ = 0 is the uniform cubic B-spline.
 
 use super::{BetaParameters, Matrix4};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::interpolate::linear::solve_dense;
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
@@ -45,7 +45,7 @@ pub(crate) const BASIS: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly 16 arithmetic operations (12 Horner steps, 4 divisions by δ)",
     source: "[CCKS, §3]",
-    claims: &[],
+    claims: &[on("random-parameters", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 impl<S: Scalar> BetaParameters<S> {

@@ -21,8 +21,8 @@
 //! point fails; a passing join with Q⁻′ ≠ 0 has equal curvature vectors from both sides.
 
 use super::BetaParameters;
-use crate::complexity::Declaration;
-use crate::count::Operation;
+use crate::complexity::{on, Bound, Declaration};
+use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{Point, Scalar};
 
 /// The joint check, declared.
@@ -36,9 +36,13 @@ pub(crate) const CONTINUITY: Declaration = Declaration {
     time: "O(D)",
     space: "O(D)",
     operation: Some(Operation::ArithmeticOperations),
-    counts: "",
+    counts: "exactly 3 point operations (β₁Q⁻′ and the two terms of β₁²Q⁻″ + β₂Q⁻′), then at most 3 comparisons of points",
     source: "[CCKS, §3]",
-    claims: &[],
+    claims: &[on(
+        "random-control",
+        Bound::Linear,
+        Operation::ArithmeticOperations,
+    )],
 };
 
 /// `true` if the pieces meet with β-continuity (G² with the shape parameters β₁, β₂ of
@@ -66,9 +70,52 @@ pub fn is_beta_continuous<S: Scalar, const D: usize>(
     right: &[Point<S, D>; 3],
     parameters: &BetaParameters<S>,
 ) -> bool {
+    is_beta_continuous_with(left, right, parameters, &mut NoCount)
+}
+
+/// [`is_beta_continuous`], counting its three
+/// [`arithmetic_operation`](Counter::arithmetic_operation)s on points (β₁Q⁻′, and β₁²Q⁻″ and
+/// β₂Q⁻′ summed) and one [`comparison`](Counter::comparison) per pair of points compared,
+/// in order, until one differs (at most three).
+///
+/// # Complexity
+///
+/// O(D) time, O(D) space.
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::spline::{is_beta_continuous_with, BetaParameters, Point};
+///
+/// let p = BetaParameters::new(2.0, 1.0)?;
+/// let pt = |x: f64, y: f64| Point::new([x, y]);
+/// let left = [pt(1.0, 1.0), pt(1.0, 0.0), pt(0.0, 1.0)];
+/// let mut c = Counts::default();
+/// assert!(!is_beta_continuous_with(&left, &[pt(0.0, 1.0), pt(2.0, 0.0), pt(1.0, 4.0)], &p, &mut c));
+/// assert_eq!((c.arithmetic_operations, c.comparisons), (3, 1)); // the points differ
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn is_beta_continuous_with<S: Scalar, const D: usize, C: Counter>(
+    left: &[Point<S, D>; 3],
+    right: &[Point<S, D>; 3],
+    parameters: &BetaParameters<S>,
+    counter: &mut C,
+) -> bool {
     let b1 = parameters.beta1();
     let b2 = parameters.beta2();
     let tangent = left[1].clone() * b1;
     let curvature = left[2].clone() * &(b1.clone() * b1) + &(left[1].clone() * b2);
-    left[0] == right[0] && tangent == right[1] && curvature == right[2]
+    for _ in 0..3 {
+        counter.arithmetic_operation();
+    }
+    for (a, b) in [
+        (&left[0], &right[0]),
+        (&tangent, &right[1]),
+        (&curvature, &right[2]),
+    ] {
+        counter.comparison();
+        if a != b {
+            return false;
+        }
+    }
+    true
 }

@@ -30,7 +30,7 @@
 
 use super::basis::{invert, multiply};
 use super::{BetaParameters, Matrix4};
-use crate::complexity::Declaration;
+use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::spline::scalar::{binomial, power, validate_parameter, Point, Scalar};
 use crate::{Error, Result};
@@ -47,7 +47,7 @@ pub(crate) const MATRICES: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly 256 multiply-adds (four 4 × 4 products), besides one 4 × 4 inversion",
     source: "[CCKS, §2, eq. (7)–(8)]",
-    claims: &[],
+    claims: &[on("random-parameters", Bound::Linear, Operation::ArithmeticOperations)],
 };
 
 /// The left and right subdivision matrices of a cubic Beta-spline segment at a parameter c:

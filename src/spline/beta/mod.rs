@@ -45,7 +45,7 @@ mod matrices;
 mod parameters;
 mod subdivide;
 
-pub use continuity::is_beta_continuous;
+pub use continuity::{is_beta_continuous, is_beta_continuous_with};
 pub use curve::BetaSpline;
 pub use matrices::SubdivisionMatrices;
 pub use parameters::BetaParameters;
@@ -64,6 +64,9 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 5] = [
 
 /// The declarations the catalog's entries measure, by name.
 pub(crate) mod declarations {
+    pub(crate) use super::basis::BASIS;
+    pub(crate) use super::continuity::CONTINUITY;
     pub(crate) use super::curve::EVAL;
+    pub(crate) use super::matrices::MATRICES;
     pub(crate) use super::subdivide::SUBDIVIDE;
 }

@@ -631,11 +631,18 @@ pub(crate) const BASIS: Declaration = Declaration {
     operation: Some(Operation::ArithmeticOperations),
     counts: "exactly d(d + 1)/2 steps of the triangular scheme",
     source: "[PPB, §5.3]",
-    claims: &[on(
-        "random-degree",
-        Bound::Quadratic,
-        Operation::ArithmeticOperations,
-    )],
+    claims: &[
+        on(
+            "random-degree",
+            Bound::Quadratic,
+            Operation::ArithmeticOperations,
+        ),
+        on(
+            "random-control",
+            Bound::Constant,
+            Operation::ArithmeticOperations,
+        ),
+    ],
 };
 
 /// The basis derivatives, declared.
@@ -659,6 +666,11 @@ pub(crate) const BASIS_DERIVATIVES: Declaration = Declaration {
         on(
             "all-derivatives",
             Bound::Cubic,
+            Operation::ArithmeticOperations,
+        ),
+        on(
+            "random-control",
+            Bound::Constant,
             Operation::ArithmeticOperations,
         ),
     ],
