@@ -40,6 +40,7 @@ mod counted;
 pub(crate) mod exact_sum;
 mod expansion;
 mod extended;
+pub(crate) mod lex_sort;
 mod point;
 mod point_set;
 mod predicates;
@@ -49,6 +50,8 @@ mod wide;
 
 pub use construct::ConstructedPoint;
 pub use counted::CountedPredicates;
+#[doc(hidden)]
+pub use lex_sort::{comparison_sorted_lex, radix_sorted_lex};
 pub use point::{Point2, PointPair};
 pub use point_set::{BoundingBox, PointSet};
 pub use wide::WideFloat;

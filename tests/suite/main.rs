@@ -40,6 +40,7 @@ mod graph;
 mod hull;
 mod interpolate;
 mod interpolate_cli;
+mod lex_sort;
 mod limits;
 mod nurbs;
 mod nurbs_cli;
