@@ -32,6 +32,12 @@ pub trait Counter {
     /// lexicographic sorts of the hull and Delaunay code become radix sorts, which make no
     /// comparisons); the result is the same on either path. `false` unless a counter says
     /// otherwise, so a counter that records sees the documented operations.
+    ///
+    /// ```
+    /// use compgeo::count::{Counter, Counts, NoCount};
+    ///
+    /// assert!(NoCount::DISCARDS && !Counts::DISCARDS);
+    /// ```
     const DISCARDS: bool = false;
 
     /// One comparison of two keys (sorting, searching, priority queues).

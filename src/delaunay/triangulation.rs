@@ -190,7 +190,7 @@ pub fn prev_halfedge(e: usize) -> usize {
 /// among the equal points, sorted by `dropped`. Every builder reports duplicates this way.
 ///
 /// # Complexity
-/// O(n log n) time (a lexicographic sort: a radix sort from 256 points up, linear on
+/// O(n log n) time (a lexicographic sort: a radix sort from 384 points up, linear on
 /// random input), O(n) auxiliary space.
 ///
 /// ```

@@ -21,7 +21,8 @@
 //! `sweep_predicates` (Fortune's sweep), `circle_predicates` (the largest empty circle:
 //! circumcentres against hull lines, bisector crossings along a hull edge, squared radii) and
 //! `clip_predicates` (Voronoi cells clipped to a box: the side of a line on which two others
-//! meet).
+//! meet). `lex_sort` is the lexicographic sort of points that the hull and Delaunay code
+//! share: a radix sort when nobody counts, the counted comparison sort otherwise.
 //!
 //! Constructed points (Voronoi vertices, rectangle corners, empty-circle centres) are rounded,
 //! not exact: each is a [`ConstructedPoint`], within a stated relative error of its exact
