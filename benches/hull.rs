@@ -30,9 +30,11 @@
 //! rebuilds the group hulls for every guess of h (m = 4, 16, 256, 65 536), and on 10⁵ points
 //! on a circle the round with m = 65 536 runs 65 536 wrapping steps before it gives up.
 
+use compgeo::count::{Counter, NoCount};
+use compgeo::delaunay::{triangulate_with, Algorithm as Builder};
 use compgeo::gen::{points, PointKind};
-use compgeo::geometry::Point2;
-use compgeo::hull::{convex_hull, Algorithm, HullOptions};
+use compgeo::geometry::{cmp_lex, comparison_sorted_lex, radix_sorted_lex, Point2, PointSet};
+use compgeo::hull::{convex_hull, convex_hull_with, Algorithm, HullOptions};
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion, Throughput};
 use geo::{ConvexHull, Coord, MultiPoint, Point};
 use std::hint::black_box;
@@ -102,5 +104,122 @@ fn hulls(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, hulls);
+/// The inputs of the `lex-sort` groups.
+const LEX_KINDS: [PointKind; 5] = [
+    PointKind::UniformSquare,
+    PointKind::UniformDisk,
+    PointKind::Gaussian,
+    PointKind::Clustered,
+    PointKind::Grid,
+];
+const LEX_SIZES: [usize; 4] = [1_000, 10_000, 100_000, 1_000_000];
+
+/// A counter that records nothing but, unlike `NoCount`, leaves `DISCARDS` false: the
+/// algorithms take their counted code paths (the comparison sorts) at no counting cost.
+struct Silent;
+
+impl Counter for Silent {
+    fn comparison(&mut self) {}
+    fn swap(&mut self) {}
+    fn element_move(&mut self) {}
+    fn orientation_test(&mut self) {}
+    fn incircle_test(&mut self) {}
+    fn distance_evaluation(&mut self) {}
+    fn adjacency_test(&mut self) {}
+    fn edge_visit(&mut self) {}
+    fn vertex_visit(&mut self) {}
+    fn arithmetic_operation(&mut self) {}
+}
+
+/// The items sorted by `cmp_lex` and index, as the divide-and-conquer builder sorted them
+/// before the radix sort.
+fn cmp_lex_sorted(points: &[Point2]) -> Vec<(Point2, usize)> {
+    let mut items: Vec<(Point2, usize)> = points.iter().copied().zip(0..).collect();
+    items.sort_unstable_by(|a, b| cmp_lex(a.0, b.0).then(a.1.cmp(&b.1)));
+    items
+}
+
+/// The lexicographic sort of the hull and Delaunay code alone, from the points to the sorted
+/// `(point, index)` items: the radix sort `NoCount` runs take (`radix`), the comparison sort
+/// counted runs take (`sort-unstable`: `(key, index)` pairs, then the points gathered), and
+/// `sort_unstable_by` with `cmp_lex` on the items (`cmp-lex`).
+fn lex_sorts(c: &mut Criterion) {
+    for kind in LEX_KINDS {
+        let mut group = c.benchmark_group(format!("lex-sort/{kind}"));
+        group.sample_size(10);
+        for n in LEX_SIZES {
+            let pts = points(kind, n, SEED).expect("generator");
+            group.throughput(Throughput::Elements(n as u64));
+            type Sort = fn(&[Point2]) -> Vec<(Point2, usize)>;
+            let sorts: [(&str, Sort); 3] = [
+                ("radix", radix_sorted_lex),
+                ("sort-unstable", comparison_sorted_lex),
+                ("cmp-lex", cmp_lex_sorted),
+            ];
+            for (name, sort) in sorts {
+                group.bench_with_input(BenchmarkId::new(name, n), &pts, |b, pts| {
+                    b.iter(|| sort(black_box(pts)))
+                });
+            }
+        }
+        group.finish();
+    }
+}
+
+/// Whole algorithms with each sort: `radix` runs with `NoCount`, `sort-unstable` with
+/// [`Silent`], so the two differ in the sort alone. (Akl–Toussaint, which sorts only its
+/// survivors, measured no faster with the radix sort and now always compares; its numbers
+/// are in docs/design.md.)
+fn lex_sort_algorithms(c: &mut Criterion) {
+    for kind in &LEX_KINDS[..] {
+        let kind = *kind;
+        if kind == PointKind::Clustered {
+            continue;
+        }
+        let mut group = c.benchmark_group(format!("lex-sort-hull/{kind}"));
+        group.sample_size(10);
+        for n in LEX_SIZES {
+            let pts = points(kind, n, SEED).expect("generator");
+            let set = PointSet::new(&pts).expect("finite");
+            group.throughput(Throughput::Elements(n as u64));
+            for algorithm in [Algorithm::MonotoneChain, Algorithm::Chan] {
+                let id = |sort: &str| BenchmarkId::new(format!("{algorithm}/{sort}"), n);
+                let options = HullOptions::default();
+                group.bench_function(id("radix"), |b| {
+                    b.iter(|| convex_hull_with(black_box(&set), algorithm, options, &mut NoCount))
+                });
+                group.bench_function(id("sort-unstable"), |b| {
+                    b.iter(|| convex_hull_with(black_box(&set), algorithm, options, &mut Silent))
+                });
+            }
+        }
+        group.finish();
+        let mut group = c.benchmark_group(format!("lex-sort-delaunay/{kind}"));
+        group.sample_size(10);
+        for n in LEX_SIZES {
+            let pts = points(kind, n, SEED).expect("generator");
+            let set = PointSet::new(&pts).expect("finite");
+            group.throughput(Throughput::Elements(n as u64));
+            for builder in [Builder::DivideAndConquer, Builder::Fortune, Builder::Lawson] {
+                // Fortune's sweep takes seconds at 10⁶ points, Lawson's flips grow faster
+                // than n log n: smaller sizes only.
+                if (builder == Builder::Fortune && n > 100_000)
+                    || (builder == Builder::Lawson && n > 10_000)
+                {
+                    continue;
+                }
+                let id = |sort: &str| BenchmarkId::new(format!("{builder}/{sort}"), n);
+                group.bench_function(id("radix"), |b| {
+                    b.iter(|| triangulate_with(black_box(&set), builder, &mut NoCount))
+                });
+                group.bench_function(id("sort-unstable"), |b| {
+                    b.iter(|| triangulate_with(black_box(&set), builder, &mut Silent))
+                });
+            }
+        }
+        group.finish();
+    }
+}
+
+criterion_group!(benches, hulls, lex_sorts, lex_sort_algorithms);
 criterion_main!(benches);

@@ -27,6 +27,19 @@ use std::ops::{Add, AddAssign};
 /// Each method records one operation of its kind. Implementors: [`Counts`] (records) and
 /// [`NoCount`] (does nothing, inlined away).
 pub trait Counter {
+    /// Whether this counter throws away what it is told, as [`NoCount`] does. An algorithm
+    /// may then take a faster path whose operations are not the ones its docs count (the
+    /// lexicographic sorts of the hull and Delaunay code become radix sorts, which make no
+    /// comparisons); the result is the same on either path. `false` unless a counter says
+    /// otherwise, so a counter that records sees the documented operations.
+    ///
+    /// ```
+    /// use compgeo::count::{Counter, Counts, NoCount};
+    ///
+    /// assert!(NoCount::DISCARDS && !Counts::DISCARDS);
+    /// ```
+    const DISCARDS: bool = false;
+
     /// One comparison of two keys (sorting, searching, priority queues).
     fn comparison(&mut self);
     /// One exchange of two elements.
@@ -250,6 +263,8 @@ impl AddAssign for Counts {
 pub struct NoCount;
 
 impl Counter for NoCount {
+    const DISCARDS: bool = true;
+
     #[inline(always)]
     fn comparison(&mut self) {}
     #[inline(always)]

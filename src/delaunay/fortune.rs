@@ -7,6 +7,7 @@ use super::Triangulation;
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
+use crate::geometry::lex_sort::{sorted_items_with, yx_key};
 use crate::geometry::sweep_predicates::{
     breakpoint_side, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
 };
@@ -293,31 +294,24 @@ fn sorted_by_y<C: Counter>(
     points: &[Point2],
     counter: &mut C,
 ) -> (Vec<Point2>, Vec<usize>, Vec<[usize; 2]>) {
-    let mut order: Vec<usize> = (0..points.len()).collect();
-    order.sort_unstable_by(|&a, &b| {
-        counter.comparison();
-        cmp_yx(points[a], points[b]).then(a.cmp(&b))
-    });
+    // One comparison per comparison of two (key, index) pairs; a radix sort with NoCount
+    // (see crate::geometry::lex_sort).
+    let order = sorted_items_with(points, 0..points.len(), yx_key, counter);
     let mut sites: Vec<Point2> = Vec::with_capacity(order.len());
     let mut index = Vec::with_capacity(order.len());
     let mut duplicates = Vec::new();
-    for i in order {
+    for (p, i) in order {
         if let Some(&last) = sites.last() {
             counter.comparison();
-            if cmp_yx(last, points[i]) == Ordering::Equal {
+            // Finite coordinates: equal as floats exactly when equal in the (y, x) order.
+            if last == p {
                 duplicates.push([i, *index.last().expect("index follows sites")]);
                 continue;
             }
         }
-        sites.push(points[i]);
+        sites.push(p);
         index.push(i);
     }
     duplicates.sort_unstable();
     (sites, index, duplicates)
-}
-
-/// y, then x (finite coordinates; `-0.0 == 0.0`).
-fn cmp_yx(a: Point2, b: Point2) -> Ordering {
-    let by = |u: f64, v: f64| u.partial_cmp(&v).unwrap_or(Ordering::Equal);
-    by(a.y, b.y).then_with(|| by(a.x, b.x))
 }

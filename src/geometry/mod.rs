@@ -21,7 +21,8 @@
 //! `sweep_predicates` (Fortune's sweep), `circle_predicates` (the largest empty circle:
 //! circumcentres against hull lines, bisector crossings along a hull edge, squared radii) and
 //! `clip_predicates` (Voronoi cells clipped to a box: the side of a line on which two others
-//! meet).
+//! meet). `lex_sort` is the lexicographic sort of points that the hull and Delaunay code
+//! share: a radix sort when nobody counts, the counted comparison sort otherwise.
 //!
 //! Constructed points (Voronoi vertices, rectangle corners, empty-circle centres) are rounded,
 //! not exact: each is a [`ConstructedPoint`], within a stated relative error of its exact
@@ -40,6 +41,7 @@ mod counted;
 pub(crate) mod exact_sum;
 mod expansion;
 mod extended;
+pub(crate) mod lex_sort;
 mod point;
 mod point_set;
 mod predicates;
@@ -49,6 +51,8 @@ mod wide;
 
 pub use construct::ConstructedPoint;
 pub use counted::CountedPredicates;
+#[doc(hidden)]
+pub use lex_sort::{comparison_sorted_lex, radix_sorted_lex};
 pub use point::{Point2, PointPair};
 pub use point_set::{BoundingBox, PointSet};
 pub use wide::WideFloat;

@@ -66,7 +66,9 @@ pub fn monotone_chain(points: &[Point2], options: HullOptions) -> Result<Vec<usi
 /// # Complexity
 ///
 /// With n = `points.len()` and h the number of hull vertices: time O(n log n) (the sort),
-/// the scans O(n); auxiliary space O(n).
+/// the scans O(n); auxiliary space O(n). With [`NoCount`] the sort is a radix sort from 384
+/// points up (the same order, O(n) on random input, 1.2 to 1.9 times faster overall at 10³ to
+/// 10⁶ points); a counter that records gets the comparison sort the counts below describe.
 ///
 /// # Counts
 ///

@@ -42,6 +42,7 @@ mod graph;
 mod hull;
 mod interpolate;
 mod interpolate_cli;
+mod lex_sort;
 mod limits;
 mod mesh;
 mod mesh_cli;
