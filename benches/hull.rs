@@ -129,6 +129,7 @@ impl Counter for Silent {
     fn edge_visit(&mut self) {}
     fn vertex_visit(&mut self) {}
     fn arithmetic_operation(&mut self) {}
+    fn exact_fallback(&mut self) {}
 }
 
 /// The items sorted by `cmp_lex` and index, as the divide-and-conquer builder sorted them

@@ -154,6 +154,7 @@ impl Counter for Compare {
     fn edge_visit(&mut self) {}
     fn vertex_visit(&mut self) {}
     fn arithmetic_operation(&mut self) {}
+    fn exact_fallback(&mut self) {}
 }
 
 /// The radix path of [`sorted_items_with`], for any number of items.
