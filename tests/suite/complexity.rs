@@ -609,6 +609,9 @@ mod report {
         assert_eq!(json["verdict_counts"]["consistent"], 1);
         assert_eq!(json["verdict_counts"]["exceeds"], 1);
         assert_eq!(json["verdict_counts"]["none"], 0);
+        // Two rows, one algorithm (the same id on two inputs).
+        assert_eq!(json["measured_algorithms"], 1);
+        assert!(html.contains("Algorithms measured with exact counts: 1. Rows: 2,"));
         for a in algorithms {
             assert_eq!(a["module"], "other", "scan is not a declared problem");
             assert_eq!(a["role"], "compgeo");
@@ -832,6 +835,7 @@ mod report {
             "no sample.json"
         );
         assert_eq!(json["verdict_counts"]["none"], 4);
+        assert_eq!(json["measured_algorithms"], 0, "criterion rows have no counts");
         let html = std::fs::read_to_string(&index).unwrap();
         assert!(
             html.contains("scan/spade-bulk (slope 1.00)"),

@@ -8,7 +8,8 @@
 //! - every catalog entry measures a declared claim, with the claim's bound and operation, and
 //!   every claim is measured once;
 //! - every declared algorithm has a counted operation and a measured claim, unless it is
-//!   exempt (`UNMEASURED`, empty, each exemption with its reason);
+//!   exempt (`UNMEASURED`, empty, each exemption with its reason), and the README and
+//!   the crate docs say how many are measured;
 //! - every algorithm family's enum parses and prints the declared names, and the command
 //!   line's `--help` lists them with their bounds.
 
@@ -255,6 +256,48 @@ fn every_declared_algorithm_is_measured_unless_exempt_with_a_reason() {
         }
     }
     assert!(missing.is_empty(), "{}", missing.join("\n"));
+}
+
+/// The sentence the README and the crate docs use to say how much the report measures.
+fn measured_sentence() -> String {
+    let entries = catalog();
+    let ids: HashSet<&str> = entries.iter().map(|e| e.info.id.as_str()).collect();
+    format!(
+        "measures all {} declared algorithms in {} catalog entries",
+        ids.len(),
+        entries.len()
+    )
+}
+
+/// `text` with `//!` prefixes removed and runs of whitespace made one space, so a sentence
+/// may wrap anywhere.
+fn flattened(text: &str) -> String {
+    text.lines()
+        .map(|l| l.trim_start().strip_prefix("//!").unwrap_or(l))
+        .collect::<Vec<_>>()
+        .join(" ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+#[test]
+fn readme_and_crate_docs_state_the_number_of_measured_algorithms() {
+    let measured: HashSet<String> = catalog().iter().map(|e| e.info.id.clone()).collect();
+    assert_eq!(
+        measured.len(),
+        declarations().len() - UNMEASURED.len(),
+        "every declared algorithm but the exempt ones is measured"
+    );
+    let sentence = measured_sentence();
+    for file in ["README.md", "src/lib.rs"] {
+        let text = flattened(&fs::read_to_string(root().join(file)).unwrap());
+        assert!(
+            text.contains(&sentence),
+            "{file} should say \"{sentence}\" (the report's results.json gives the same \
+             number as measured_algorithms)"
+        );
+    }
 }
 
 /// Every family: each algorithm is in the registry ([`declarations`]) under the family's

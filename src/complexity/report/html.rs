@@ -3,7 +3,7 @@
 
 use std::fmt::Write;
 
-use super::json::VerdictCounts;
+use super::json::{measured_algorithms, VerdictCounts};
 use super::{problem_chart_file, Row};
 use crate::complexity::{Machine, COUNT_TOLERANCE, TIME_TOLERANCE};
 
@@ -48,8 +48,8 @@ pub(crate) fn index_html(
     let all = VerdictCounts::of(rows);
     let _ = write!(
         h,
-        "<h2>Summary</h2>\n<p>{} rows: <strong>{} consistent</strong>, <strong>{} exceeds</strong>, \
-         {} without counts (criterion imports and peers). Exponents are least-squares slopes of \
+        "<h2>Summary</h2>\n<p>Algorithms measured with exact counts: {1}. Rows: {0}, <strong>{2} consistent</strong>, <strong>{3} exceeds</strong>, \
+         {4} without counts (criterion imports and peers). Exponents are least-squares slopes of \
          log cost against log n; the exponent of time carries a 95 % interval bootstrapped from \
          the repetitions at each size (counts are exact, one run per size, and need none). \
          The bound column gives the slope of log f(n) over the same sizes. The verdict compares \
@@ -62,6 +62,7 @@ pub(crate) fn index_html(
          <th>exponent of counts</th><th>exponent of bound</th><th>exponent of time (95 %)</th>\
          <th>verdict</th><th>time verdict</th><th>exact fallbacks</th></tr>\n",
         rows.len(),
+        measured_algorithms(rows),
         all.consistent,
         all.exceeds,
         all.none,

@@ -15,7 +15,19 @@ struct Results<'a> {
     profile: &'a str,
     tolerances: Tolerances,
     verdict_counts: VerdictCounts,
+    measured_algorithms: usize,
     algorithms: Vec<Algorithm<'a>>,
+}
+
+/// How many distinct algorithms `rows` measure with exact counts (compgeo's own; an algorithm
+/// measured on several inputs or in several growths counts once).
+pub(crate) fn measured_algorithms(rows: &[Row]) -> usize {
+    let ids: std::collections::HashSet<&str> = rows
+        .iter()
+        .filter(|r| !r.peer && r.counts_fit.is_some())
+        .map(|r| r.id.as_str())
+        .collect();
+    ids.len()
 }
 
 /// How many rows got each verdict of counts (rows without counts have none).
@@ -105,6 +117,7 @@ pub(crate) fn results_json(machine: &Machine, profile: &str, rows: &[Row]) -> io
             time: TIME_TOLERANCE,
         },
         verdict_counts: VerdictCounts::of(rows),
+        measured_algorithms: measured_algorithms(rows),
         algorithms: rows.iter().map(algorithm).collect(),
     };
     serde_json::to_string_pretty(&results).map_err(io::Error::other)
