@@ -48,7 +48,11 @@ struct Written {
     index: PathBuf,
     results: PathBuf,
     profile: String,
+    /// Rows written: one per catalog entry (or criterion benchmark), as `results.json`'s
+    /// `algorithms` array.
     algorithms: usize,
+    /// Distinct algorithms among them measured with exact counts (`measured_algorithms`).
+    measured_algorithms: usize,
     exceeds: Vec<String>,
     seconds: f64,
 }
@@ -66,9 +70,10 @@ pub(super) fn run(args: ReportArgs) -> Result<(), CliError> {
         ..written
     };
     eprintln!(
-        "wrote {} ({} algorithms, {} exceeding their bound, {:.1} s)",
+        "wrote {} ({} entries measuring {} algorithms, {} exceeding their bound, {:.1} s)",
         written.index.display(),
         written.algorithms,
+        written.measured_algorithms,
         written.exceeds.len(),
         written.seconds
     );
@@ -121,13 +126,15 @@ fn measured(args: &ReportArgs, machine: &Machine) -> Result<Written, CliError> {
         .filter(|m| m.counts.verdict == Verdict::Exceeds)
         .map(|m| m.info.key())
         .collect();
-    Ok(written(
-        &args.out,
-        index,
-        profile.name(),
-        results.len(),
-        exceeds,
-    ))
+    let written = written(&args.out, index, profile.name(), results.len(), exceeds);
+    Ok(Written {
+        measured_algorithms: results
+            .iter()
+            .map(|m| m.info.id.as_str())
+            .collect::<std::collections::HashSet<_>>()
+            .len(),
+        ..written
+    })
 }
 
 fn from_criterion(dir: &Path, args: &ReportArgs, machine: &Machine) -> Result<Written, CliError> {
@@ -169,6 +176,7 @@ fn written(
         results: out.join("results.json"),
         profile: profile.to_string(),
         algorithms,
+        measured_algorithms: 0,
         exceeds,
         seconds: 0.0,
     }

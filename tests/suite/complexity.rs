@@ -835,7 +835,10 @@ mod report {
             "no sample.json"
         );
         assert_eq!(json["verdict_counts"]["none"], 4);
-        assert_eq!(json["measured_algorithms"], 0, "criterion rows have no counts");
+        assert_eq!(
+            json["measured_algorithms"], 0,
+            "criterion rows have no counts"
+        );
         let html = std::fs::read_to_string(&index).unwrap();
         assert!(
             html.contains("scan/spade-bulk (slope 1.00)"),
@@ -1008,6 +1011,7 @@ mod cli {
             out_dir.join("index.html").to_str().unwrap()
         );
         assert_eq!(printed["algorithms"], 1);
+        assert_eq!(printed["measured_algorithms"], 1);
         assert_eq!(printed["exceeds"], serde_json::json!([]));
         let results: Value =
             serde_json::from_str(&std::fs::read_to_string(out_dir.join("results.json")).unwrap())
