@@ -30,7 +30,7 @@
 //! rebuilds the group hulls for every guess of h (m = 4, 16, 256, 65 536), and on 10⁵ points
 //! on a circle the round with m = 65 536 runs 65 536 wrapping steps before it gives up.
 
-use compgeo::count::{Counter, NoCount};
+use compgeo::count::{NoCount, Silent};
 use compgeo::delaunay::{triangulate_with, Algorithm as Builder};
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::{cmp_lex, comparison_sorted_lex, radix_sorted_lex, Point2, PointSet};
@@ -113,24 +113,6 @@ const LEX_KINDS: [PointKind; 5] = [
     PointKind::Grid,
 ];
 const LEX_SIZES: [usize; 4] = [1_000, 10_000, 100_000, 1_000_000];
-
-/// A counter that records nothing but, unlike `NoCount`, leaves `DISCARDS` false: the
-/// algorithms take their counted code paths (the comparison sorts) at no counting cost.
-struct Silent;
-
-impl Counter for Silent {
-    fn comparison(&mut self) {}
-    fn swap(&mut self) {}
-    fn element_move(&mut self) {}
-    fn orientation_test(&mut self) {}
-    fn incircle_test(&mut self) {}
-    fn distance_evaluation(&mut self) {}
-    fn adjacency_test(&mut self) {}
-    fn edge_visit(&mut self) {}
-    fn vertex_visit(&mut self) {}
-    fn arithmetic_operation(&mut self) {}
-    fn exact_fallback(&mut self) {}
-}
 
 /// The items sorted by `cmp_lex` and index, as the divide-and-conquer builder sorted them
 /// before the radix sort.

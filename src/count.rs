@@ -257,6 +257,34 @@ impl AddAssign for Counts {
     }
 }
 
+/// The methods of a counter that records nothing: every one empty and inlined.
+macro_rules! ignore_every_operation {
+    () => {
+        #[inline(always)]
+        fn comparison(&mut self) {}
+        #[inline(always)]
+        fn swap(&mut self) {}
+        #[inline(always)]
+        fn element_move(&mut self) {}
+        #[inline(always)]
+        fn orientation_test(&mut self) {}
+        #[inline(always)]
+        fn incircle_test(&mut self) {}
+        #[inline(always)]
+        fn distance_evaluation(&mut self) {}
+        #[inline(always)]
+        fn adjacency_test(&mut self) {}
+        #[inline(always)]
+        fn edge_visit(&mut self) {}
+        #[inline(always)]
+        fn vertex_visit(&mut self) {}
+        #[inline(always)]
+        fn arithmetic_operation(&mut self) {}
+        #[inline(always)]
+        fn exact_fallback(&mut self) {}
+    };
+}
+
 /// The counter that counts nothing: zero-sized, every method empty and inlined, so an
 /// algorithm run with `NoCount` compiles to the uncounted code.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -264,29 +292,25 @@ pub struct NoCount;
 
 impl Counter for NoCount {
     const DISCARDS: bool = true;
+    ignore_every_operation!();
+}
 
-    #[inline(always)]
-    fn comparison(&mut self) {}
-    #[inline(always)]
-    fn swap(&mut self) {}
-    #[inline(always)]
-    fn element_move(&mut self) {}
-    #[inline(always)]
-    fn orientation_test(&mut self) {}
-    #[inline(always)]
-    fn incircle_test(&mut self) {}
-    #[inline(always)]
-    fn distance_evaluation(&mut self) {}
-    #[inline(always)]
-    fn adjacency_test(&mut self) {}
-    #[inline(always)]
-    fn edge_visit(&mut self) {}
-    #[inline(always)]
-    fn vertex_visit(&mut self) {}
-    #[inline(always)]
-    fn arithmetic_operation(&mut self) {}
-    #[inline(always)]
-    fn exact_fallback(&mut self) {}
+/// A counter that records nothing yet, unlike [`NoCount`], leaves
+/// [`DISCARDS`](Counter::DISCARDS) false, so an algorithm takes the path a counted run
+/// takes: for timing that path (the benchmarks compare it with `NoCount`'s fast path, such as
+/// the radix sort of points against the comparison sort).
+///
+/// ```
+/// use compgeo::count::{Counter, Silent};
+///
+/// assert!(!Silent::DISCARDS);
+/// assert_eq!(std::mem::size_of::<Silent>(), 0);
+/// ```
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Silent;
+
+impl Counter for Silent {
+    ignore_every_operation!();
 }
 
 #[cfg(test)]

@@ -10,7 +10,7 @@
 //! | module | what it holds | files |
 //! |---|---|---|
 //! | [`geometry`] | [`Point2`](geometry::Point2), the validated [`PointSet`](geometry::PointSet) and its [`BoundingBox`](geometry::BoundingBox), exact predicates, [`PointPair`](geometry::PointPair), [`WideFloat`](geometry::WideFloat) for lengths beyond `f64` | `src/geometry/` |
-//! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount) | `src/count.rs` |
+//! | [`count`] | the [`Counter`](count::Counter) trait, [`Counts`](count::Counts), [`NoCount`](count::NoCount), [`Silent`](count::Silent) | `src/count.rs` |
 //! | [`error`] | the crate's [`Error`] and [`Result`] | `src/error.rs` |
 //! | [`limits`] | every size limit (degrees, vertex and edge counts, generated sizes), checked before allocating | `src/limits.rs` |
 //! | [`gen`] | seeded workload generators: point sets, graphs, number sequences, polygon meshes | `src/gen/` |

@@ -49,7 +49,7 @@
 //! [`Counter::DISCARDS`]: crate::count::Counter::DISCARDS
 
 use super::Point2;
-use crate::count::Counter;
+use crate::count::{Counter, Silent};
 use crate::util::order_key;
 
 /// Inputs shorter than this take the comparison sort even with `NoCount`: on fewer items the
@@ -137,24 +137,7 @@ pub fn radix_sorted_lex(points: &[Point2]) -> Vec<(Point2, usize)> {
 /// only: not part of the API.
 #[doc(hidden)]
 pub fn comparison_sorted_lex(points: &[Point2]) -> Vec<(Point2, usize)> {
-    sorted_items_with(points, 0..points.len(), lex_key, &mut Compare)
-}
-
-/// A counter that records nothing but, unlike `NoCount`, asks for the comparison sort.
-struct Compare;
-
-impl Counter for Compare {
-    fn comparison(&mut self) {}
-    fn swap(&mut self) {}
-    fn element_move(&mut self) {}
-    fn orientation_test(&mut self) {}
-    fn incircle_test(&mut self) {}
-    fn distance_evaluation(&mut self) {}
-    fn adjacency_test(&mut self) {}
-    fn edge_visit(&mut self) {}
-    fn vertex_visit(&mut self) {}
-    fn arithmetic_operation(&mut self) {}
-    fn exact_fallback(&mut self) {}
+    sorted_items_with(points, 0..points.len(), lex_key, &mut Silent)
 }
 
 /// The radix path of [`sorted_items_with`], for any number of items.

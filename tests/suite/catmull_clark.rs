@@ -482,20 +482,23 @@ fn rounds_beyond_the_limit_are_refused_and_the_scheme_enum_dispatches() {
     }
 }
 
-/// OpenSubdiv's refinement of `mesh` (`rounds` levels, sharp boundaries with pinned
-/// corners, the rules of `catmull_clark`): the peer oracle.
-fn opensubdiv(mesh: &PolygonMesh<f64, 3>, rounds: usize) -> Vec<[f64; 3]> {
+/// OpenSubdiv's refinement of `mesh`: `rounds` levels of `scheme` with the boundary rule
+/// `boundary`; the peer oracle of Catmull–Clark here and of Loop in `mesh_loop`.
+pub fn opensubdiv_refine(
+    mesh: &PolygonMesh<f64, 3>,
+    scheme: opensubdiv_rs::sdc::SchemeType,
+    boundary: opensubdiv_rs::sdc::VtxBoundaryInterpolation,
+    rounds: usize,
+) -> Vec<[f64; 3]> {
     use opensubdiv_rs::far::{
         PrimvarRefiner, TopologyDescriptor, TopologyRefinerFactory, UniformOptions,
     };
-    use opensubdiv_rs::sdc::{Options, SchemeType, VtxBoundaryInterpolation};
+    use opensubdiv_rs::sdc::Options;
     let t = mesh.topology();
     let sizes: Vec<usize> = (0..t.face_count()).map(|f| t.face_size(f)).collect();
     let descriptor = TopologyDescriptor::new(t.vertex_count(), &sizes, t.corners());
-    let options =
-        Options::default().with_vtx_boundary_interpolation(VtxBoundaryInterpolation::EdgeAndCorner);
-    let mut refiner =
-        TopologyRefinerFactory::create(descriptor, SchemeType::Catmark, options).unwrap();
+    let options = Options::default().with_vtx_boundary_interpolation(boundary);
+    let mut refiner = TopologyRefinerFactory::create(descriptor, scheme, options).unwrap();
     refiner.refine_uniform(UniformOptions::new(rounds));
     let primvars = PrimvarRefiner::new(&refiner);
     let mut points: Vec<[f64; 3]> = mesh.positions().iter().map(|p| p.0).collect();
@@ -505,6 +508,18 @@ fn opensubdiv(mesh: &PolygonMesh<f64, 3>, rounds: usize) -> Vec<[f64; 3]> {
         points = refined;
     }
     points
+}
+
+/// OpenSubdiv's Catmull–Clark (sharp boundaries with pinned corners, the rules of
+/// `catmull_clark`).
+fn opensubdiv(mesh: &PolygonMesh<f64, 3>, rounds: usize) -> Vec<[f64; 3]> {
+    use opensubdiv_rs::sdc::{SchemeType, VtxBoundaryInterpolation};
+    opensubdiv_refine(
+        mesh,
+        SchemeType::Catmark,
+        VtxBoundaryInterpolation::EdgeAndCorner,
+        rounds,
+    )
 }
 
 #[test]

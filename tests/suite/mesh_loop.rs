@@ -427,26 +427,13 @@ proptest! {
 /// boundary corners smooth, `EdgeOnly`: the crease rule (1, 6, 1)/8 at every boundary
 /// vertex, as ours): the peer oracle.
 fn opensubdiv_loop(mesh: &PolygonMesh<f64, 3>, rounds: usize) -> Vec<[f64; 3]> {
-    use opensubdiv_rs::far::{
-        PrimvarRefiner, TopologyDescriptor, TopologyRefinerFactory, UniformOptions,
-    };
-    use opensubdiv_rs::sdc::{Options, SchemeType, VtxBoundaryInterpolation};
-    let t = mesh.topology();
-    let sizes = vec![3usize; t.face_count()];
-    let descriptor = TopologyDescriptor::new(t.vertex_count(), &sizes, t.corners());
-    let options =
-        Options::default().with_vtx_boundary_interpolation(VtxBoundaryInterpolation::EdgeOnly);
-    let mut refiner =
-        TopologyRefinerFactory::create(descriptor, SchemeType::Loop, options).unwrap();
-    refiner.refine_uniform(UniformOptions::new(rounds));
-    let primvars = PrimvarRefiner::new(&refiner);
-    let mut points: Vec<[f64; 3]> = mesh.positions().iter().map(|p| p.0).collect();
-    for level in 1..=rounds {
-        let mut refined = vec![[0.0; 3]; refiner.level(level).num_vertices()];
-        primvars.interpolate(level, &points, &mut refined);
-        points = refined;
-    }
-    points
+    use opensubdiv_rs::sdc::{SchemeType, VtxBoundaryInterpolation};
+    crate::catmull_clark::opensubdiv_refine(
+        mesh,
+        SchemeType::Loop,
+        VtxBoundaryInterpolation::EdgeOnly,
+        rounds,
+    )
 }
 
 #[test]
