@@ -6,7 +6,7 @@
 //! value or path); every invocation is quick.
 #![cfg(feature = "cli")]
 
-use crate::common::{assert_rejected, run};
+use crate::common::{assert_rejected, run, TempDir};
 use compgeo::limits;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -305,35 +305,6 @@ fn command_groups_without_a_subcommand_name_their_choices() {
         assert_eq!(code, 0, "{help:?}: {err}");
         assert!(out.contains("Usage: compgeo"), "{help:?}: {out}");
         assert!(err.is_empty(), "{help:?}: {err}");
-    }
-}
-
-/// A fresh directory under the system's temporary directory, removed on drop.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(tag: &str) -> TempDir {
-        let nanos = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .unwrap()
-            .as_nanos();
-        let dir = std::env::temp_dir().join(format!(
-            "compgeo-attack-{tag}-{}-{nanos}",
-            std::process::id()
-        ));
-        std::fs::create_dir_all(&dir).unwrap();
-        TempDir(dir)
-    }
-
-    fn path(&self, name: &str) -> PathBuf {
-        self.0.join(name)
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        // Best effort: a leftover temporary directory harms nothing.
-        let _ = std::fs::remove_dir_all(&self.0);
     }
 }
 

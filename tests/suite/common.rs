@@ -127,3 +127,35 @@ pub fn wide_q(w: compgeo::geometry::WideFloat) -> num_rational::BigRational {
         m / power
     }
 }
+
+/// A fresh empty directory under the system's temporary directory, removed when dropped.
+#[cfg(feature = "cli")]
+pub struct TempDir(pub std::path::PathBuf);
+
+#[cfg(feature = "cli")]
+impl TempDir {
+    /// A new directory whose name has `tag`, the process id and the time.
+    pub fn new(tag: &str) -> TempDir {
+        let nanos = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .unwrap()
+            .as_nanos();
+        let dir =
+            std::env::temp_dir().join(format!("compgeo-{tag}-{}-{nanos}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        TempDir(dir)
+    }
+
+    /// The path of `name` inside the directory.
+    pub fn path(&self, name: &str) -> std::path::PathBuf {
+        self.0.join(name)
+    }
+}
+
+#[cfg(feature = "cli")]
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        // Best effort: a leftover temporary directory harms nothing.
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}

@@ -489,30 +489,8 @@ fn measure_rejects_too_few_sizes() {
     );
 }
 
-/// A fresh empty directory under the system temp dir, removed when dropped.
 #[cfg(feature = "cli")]
-struct TempDir(std::path::PathBuf);
-
-#[cfg(feature = "cli")]
-impl TempDir {
-    fn new(tag: &str) -> TempDir {
-        let nanos = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .unwrap()
-            .as_nanos();
-        let dir =
-            std::env::temp_dir().join(format!("compgeo-{tag}-{}-{nanos}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        TempDir(dir)
-    }
-}
-
-#[cfg(feature = "cli")]
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
+use crate::common::TempDir;
 
 #[cfg(feature = "cli")]
 mod report {

@@ -16,6 +16,7 @@ mod beta;
 mod beta_cli;
 mod bezier;
 mod bezier_eval;
+mod browser;
 mod bspline_basis;
 mod bspline_blossom;
 mod bspline_cli;
