@@ -80,10 +80,12 @@ pub use akl_toussaint::{akl_toussaint, akl_toussaint_filter, akl_toussaint_with}
 pub use brute_force::{brute_force_hull, brute_force_hull_with};
 pub use chan::{chan, chan_with};
 pub use check::{check_encloses, check_strictly_convex_ccw};
-pub use graham::{graham_scan, graham_scan_with};
-pub use jarvis::{jarvis_march, jarvis_march_with};
-pub use monotone_chain::{monotone_chain, monotone_chain_with};
-pub use quickhull::{quickhull, quickhull_with};
+pub use graham::{graham_scan, graham_scan_with, graham_trace, GrahamStep};
+pub use jarvis::{jarvis_march, jarvis_march_with, jarvis_trace, JarvisStep};
+pub use monotone_chain::{
+    monotone_chain, monotone_chain_trace, monotone_chain_with, Chain, ChainStep,
+};
+pub use quickhull::{quickhull, quickhull_trace, quickhull_with, QuickhullStep};
 
 /// Options shared by every hull algorithm.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]

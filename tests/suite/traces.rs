@@ -1,0 +1,488 @@
+//! Step traces (`compgeo::trace`): each trace is the algorithm's own run. The last frame is
+//! the algorithm's result, the number of frames is the number of steps the algorithm makes
+//! (derived here independently, by brute force or from the course's counting arguments),
+//! and the counts in the last frame are those of the counted run.
+
+use crate::common::set;
+use crate::strategies::{lattice, uniform};
+use compgeo::count::Counts;
+use compgeo::geometry::{cmp_lex, orient2d, Orientation, Point2};
+use compgeo::hull::{
+    graham_scan_with, graham_trace, jarvis_march_with, jarvis_trace, monotone_chain_trace,
+    monotone_chain_with, quickhull_trace, quickhull_with, Chain, ChainStep, GrahamStep,
+    HullOptions, JarvisStep, QuickhullStep,
+};
+use compgeo::trace::Frame;
+use compgeo::Error;
+use proptest::prelude::*;
+
+/// Counts never decrease from one frame to the next.
+fn counts_grow<S>(frames: &[Frame<S>]) {
+    for w in frames.windows(2) {
+        for op in compgeo::count::Operation::ALL {
+            assert!(w[0].counts.get(op) <= w[1].counts.get(op), "{op:?}");
+        }
+    }
+}
+
+/// The distinct points of `pts`: each one's smallest index.
+fn distinct(pts: &[Point2]) -> Vec<usize> {
+    (0..pts.len())
+        .filter(|&i| (0..i).all(|j| pts[j] != pts[i]))
+        .collect()
+}
+
+/// The strictly convex hull's vertex set by brute force: a distinct point is a vertex when
+/// some line through it has every other distinct point strictly on one side or, for points
+/// on the line, behind it; tested as "not in the closed triangle of three others and not
+/// strictly between two others on a segment". Returned as a sorted list of indices.
+fn brute_vertices(pts: &[Point2]) -> Vec<usize> {
+    let d = distinct(pts);
+    let inside = |p: usize, a: usize, b: usize, c: usize| {
+        let o = [
+            orient2d(pts[a], pts[b], pts[p]),
+            orient2d(pts[b], pts[c], pts[p]),
+            orient2d(pts[c], pts[a], pts[p]),
+        ];
+        let pos = o.iter().all(|&x| x != Orientation::Clockwise);
+        let neg = o.iter().all(|&x| x != Orientation::CounterClockwise);
+        pos || neg
+    };
+    let between = |p: usize, a: usize, b: usize| {
+        orient2d(pts[a], pts[b], pts[p]) == Orientation::Collinear
+            && cmp_lex(pts[a], pts[p]) != cmp_lex(pts[b], pts[p])
+    };
+    d.iter()
+        .copied()
+        .filter(|&p| {
+            let others: Vec<usize> = d.iter().copied().filter(|&q| q != p).collect();
+            for (x, &a) in others.iter().enumerate() {
+                for (y, &b) in others.iter().enumerate().skip(x + 1) {
+                    if between(p, a, b) {
+                        return false;
+                    }
+                    for &c in &others[y + 1..] {
+                        if orient2d(pts[a], pts[b], pts[c]) != Orientation::Collinear
+                            && inside(p, a, b, c)
+                        {
+                            return false;
+                        }
+                    }
+                }
+            }
+            true
+        })
+        .collect()
+}
+
+fn options(keep: bool) -> HullOptions {
+    HullOptions {
+        keep_collinear: keep,
+    }
+}
+
+/// The multiplicity of `pts[v]` in `pts`.
+fn copies(pts: &[Point2], v: usize) -> usize {
+    pts.iter().filter(|&&p| p == pts[v]).count()
+}
+
+fn check_jarvis(pts: &[Point2], keep: bool) {
+    let frames = jarvis_trace(pts, options(keep)).unwrap();
+    let mut counts = Counts::default();
+    let hull = jarvis_march_with(&set(pts), options(keep), &mut counts);
+    let last = frames.last().unwrap();
+    assert_eq!(last.step, JarvisStep::Done { hull: hull.clone() });
+    assert_eq!(last.counts, counts);
+    counts_grow(&frames);
+    if pts.is_empty() {
+        assert_eq!(frames.len(), 1);
+        return;
+    }
+    // The march wraps from every strict hull vertex once and looks at every point but the
+    // copies of the current vertex each time.
+    let strict = jarvis_march_with(&set(pts), options(false), &mut Counts::default());
+    let mut sorted = strict.clone();
+    sorted.sort_unstable();
+    assert_eq!(sorted, brute_vertices(pts));
+    let looked: usize = strict.iter().map(|&v| pts.len() - copies(pts, v)).sum();
+    let candidates: Vec<&Frame<JarvisStep>> = frames
+        .iter()
+        .filter(|f| matches!(f.step, JarvisStep::Candidate { .. }))
+        .collect();
+    assert_eq!(candidates.len(), looked);
+    let wraps: Vec<usize> = frames
+        .iter()
+        .filter_map(|f| match &f.step {
+            JarvisStep::Wrap { vertex, hull } => {
+                assert_eq!(hull.last(), Some(vertex));
+                Some(*vertex)
+            }
+            _ => None,
+        })
+        .collect();
+    assert_eq!(wraps, strict[1..]);
+    assert_eq!(frames[0].step, JarvisStep::Start { vertex: strict[0] });
+    assert_eq!(frames.len(), 1 + looked + strict.len() - 1 + 1);
+    // Each candidate frame after the first of its scan is one orientation test; the best
+    // after a scan is the next vertex (or the start, to close the hull).
+    let mut prev = frames[0].counts;
+    let mut first_of_scan = true;
+    for f in &frames[1..frames.len() - 1] {
+        match &f.step {
+            JarvisStep::Candidate {
+                point, best, hull, ..
+            } => {
+                let tests = f.counts.orientation_tests - prev.orientation_tests;
+                assert_eq!(tests, u64::from(!first_of_scan));
+                if first_of_scan {
+                    assert_eq!(point, best);
+                }
+                assert!(strict.starts_with(hull));
+                first_of_scan = false;
+            }
+            JarvisStep::Wrap { .. } => first_of_scan = true,
+            other => panic!("{other:?}"),
+        }
+        prev = f.counts;
+    }
+}
+
+/// The directions from the pivot (the lexicographically smallest point) to the other
+/// distinct points, counted by brute force.
+fn directions(pts: &[Point2]) -> usize {
+    let d = distinct(pts);
+    let pivot = *d.iter().min_by(|&&a, &&b| cmp_lex(pts[a], pts[b])).unwrap();
+    let others: Vec<usize> = d.into_iter().filter(|&i| i != pivot).collect();
+    others
+        .iter()
+        .enumerate()
+        .filter(|&(k, &a)| {
+            others[..k]
+                .iter()
+                .all(|&b| orient2d(pts[pivot], pts[a], pts[b]) != Orientation::Collinear)
+        })
+        .count()
+}
+
+fn check_graham(pts: &[Point2], keep: bool) {
+    let frames = graham_trace(pts, options(keep)).unwrap();
+    let mut counts = Counts::default();
+    let hull = graham_scan_with(&set(pts), options(keep), &mut counts);
+    let last = frames.last().unwrap();
+    assert_eq!(last.step, GrahamStep::Done { hull });
+    assert_eq!(last.counts, counts);
+    counts_grow(&frames);
+    if pts.is_empty() {
+        assert_eq!(frames.len(), 1);
+        return;
+    }
+    let strict = graham_scan_with(&set(pts), options(false), &mut Counts::default());
+    // The course's scan: one push per point of the angular order (the pivot and one point
+    // per direction), one pop per point that is not a vertex.
+    let pushes = 1 + directions(pts);
+    let pops = pushes - strict.len();
+    let mut stack: Vec<usize> = Vec::new();
+    let (mut seen_pushes, mut seen_pops) = (0, 0);
+    for f in &frames[1..frames.len() - 1] {
+        match &f.step {
+            GrahamStep::Push { point, stack: s } => {
+                stack.push(*point);
+                assert_eq!(&stack, s);
+                seen_pushes += 1;
+            }
+            GrahamStep::Pop { point, stack: s } => {
+                assert_eq!(stack.pop(), Some(*point));
+                assert_eq!(&stack, s);
+                seen_pops += 1;
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+    assert_eq!((seen_pushes, seen_pops), (pushes, pops));
+    assert_eq!(stack, strict);
+    assert_eq!(frames.len(), 1 + pushes + pops + 1);
+    // Every orientation test of the scan pops a point or ends a push (the course's 2n − 4
+    // argument): the pivot and the first direction are pushed without a test.
+    let GrahamStep::Sorted { order } = &frames[0].step else {
+        panic!("{:?}", frames[0].step)
+    };
+    assert_eq!(order.len(), pushes);
+    let scan_tests =
+        frames[frames.len() - 2].counts.orientation_tests - frames[0].counts.orientation_tests;
+    assert_eq!(scan_tests as usize, pops + pushes.saturating_sub(2));
+    assert!(scan_tests as usize <= (2 * pts.len()).saturating_sub(4).max(pops));
+}
+
+fn check_monotone(pts: &[Point2], keep: bool) {
+    let frames = monotone_chain_trace(pts, options(keep)).unwrap();
+    let mut counts = Counts::default();
+    let hull = monotone_chain_with(&set(pts), options(keep), &mut counts);
+    let last = frames.last().unwrap();
+    assert_eq!(last.step, ChainStep::Done { hull });
+    assert_eq!(last.counts, counts);
+    counts_grow(&frames);
+    let strict = monotone_chain_with(&set(pts), options(false), &mut Counts::default());
+    let mut d = distinct(pts);
+    d.sort_by(|&a, &b| cmp_lex(pts[a], pts[b]));
+    assert_eq!(frames[0].step, ChainStep::Sorted { order: d.clone() });
+    if d.len() <= 2 {
+        assert_eq!(frames.len(), 2);
+        return;
+    }
+    let (first, end) = (d[0], d[d.len() - 1]);
+    let side = |o: Orientation| -> Vec<usize> {
+        d.iter()
+            .copied()
+            .filter(|&i| orient2d(pts[first], pts[end], pts[i]) == o)
+            .collect()
+    };
+    let below = side(Orientation::Clockwise);
+    let mut above = side(Orientation::CounterClockwise);
+    above.reverse();
+    let lower: Vec<usize> = [first].into_iter().chain(below).chain([end]).collect();
+    let upper: Vec<usize> = [end].into_iter().chain(above).chain([first]).collect();
+    assert_eq!(
+        frames[1].step,
+        ChainStep::Split {
+            lower: lower.clone(),
+            upper: upper.clone()
+        }
+    );
+    let mut stacks = [Vec::new(), Vec::new()];
+    let mut moves = [(0, 0), (0, 0)];
+    let mut current = Chain::Lower;
+    for f in &frames[2..frames.len() - 1] {
+        let (chain, point, s, push) = match &f.step {
+            ChainStep::Push {
+                chain,
+                point,
+                stack,
+            } => (*chain, *point, stack, true),
+            ChainStep::Pop {
+                chain,
+                point,
+                stack,
+            } => (*chain, *point, stack, false),
+            other => panic!("{other:?}"),
+        };
+        // The lower chain is scanned first, then the upper.
+        assert!(chain == current || (current == Chain::Lower && chain == Chain::Upper));
+        current = chain;
+        let k = usize::from(chain == Chain::Upper);
+        if push {
+            stacks[k].push(point);
+            moves[k].0 += 1;
+        } else {
+            assert_eq!(stacks[k].pop(), Some(point));
+            moves[k].1 += 1;
+        }
+        assert_eq!(&stacks[k], s);
+    }
+    // Each chain pushes its points and pops those that are not vertices.
+    for (k, chain) in [lower, upper].iter().enumerate() {
+        assert_eq!(moves[k].0, chain.len());
+        assert_eq!(moves[k].1, chain.len() - stacks[k].len());
+    }
+    let joined: Vec<usize> = stacks[0][..stacks[0].len() - 1]
+        .iter()
+        .chain(&stacks[1][..stacks[1].len() - 1])
+        .copied()
+        .collect();
+    assert_eq!(joined, strict);
+}
+
+fn check_quickhull(pts: &[Point2], keep: bool) {
+    let frames = quickhull_trace(pts, options(keep)).unwrap();
+    let mut counts = Counts::default();
+    let hull = quickhull_with(&set(pts), options(keep), &mut counts);
+    let last = frames.last().unwrap();
+    assert_eq!(last.step, QuickhullStep::Done { hull });
+    assert_eq!(last.counts, counts);
+    counts_grow(&frames);
+    let strict = quickhull_with(&set(pts), options(false), &mut Counts::default());
+    let d = distinct(pts);
+    if d.len() < 2 {
+        assert_eq!(frames.len(), 1);
+        return;
+    }
+    // One split per hull vertex other than the two ends.
+    assert_eq!(frames.len(), 1 + (strict.len() - 2) + 1);
+    let QuickhullStep::Ends { a, b, below, above } = &frames[0].step else {
+        panic!("{:?}", frames[0].step)
+    };
+    let right_of =
+        |a: usize, b: usize, i: usize| orient2d(pts[a], pts[b], pts[i]) == Orientation::Clockwise;
+    let all: Vec<usize> = (0..pts.len()).collect();
+    assert_eq!(
+        below,
+        &all.iter()
+            .copied()
+            .filter(|&i| right_of(*a, *b, i))
+            .collect::<Vec<_>>()
+    );
+    assert_eq!(
+        above,
+        &all.iter()
+            .copied()
+            .filter(|&i| right_of(*b, *a, i))
+            .collect::<Vec<_>>()
+    );
+    for f in &frames[1..frames.len() - 1] {
+        let QuickhullStep::Split {
+            edge: [a, b],
+            points,
+            farthest,
+            first,
+            second,
+        } = &f.step
+        else {
+            panic!("{:?}", f.step)
+        };
+        assert!(strict.contains(farthest) && strict.contains(a) && strict.contains(b));
+        assert!(points.iter().all(|&i| right_of(*a, *b, i)));
+        // No point of the subproblem is farther from the edge's line than the new vertex.
+        for &i in points {
+            assert_ne!(
+                compgeo::geometry::cross_sign(pts[*a], pts[*b], pts[*farthest], pts[i]),
+                Orientation::Clockwise
+            );
+        }
+        let expect_first: Vec<usize> = points
+            .iter()
+            .copied()
+            .filter(|&i| right_of(*a, *farthest, i))
+            .collect();
+        let expect_second: Vec<usize> = points
+            .iter()
+            .copied()
+            .filter(|&i| !right_of(*a, *farthest, i) && right_of(*farthest, *b, i))
+            .collect();
+        assert_eq!((first, second), (&expect_first, &expect_second));
+    }
+}
+
+fn check_hulls(pts: &[Point2]) {
+    for keep in [false, true] {
+        check_jarvis(pts, keep);
+        check_graham(pts, keep);
+        check_monotone(pts, keep);
+        check_quickhull(pts, keep);
+    }
+}
+
+#[test]
+fn hull_traces_on_small_and_degenerate_inputs() {
+    let p = |v: &[(f64, f64)]| v.iter().copied().map(Point2::from).collect::<Vec<_>>();
+    check_hulls(&[]);
+    check_hulls(&p(&[(1.0, 2.0)]));
+    check_hulls(&p(&[(1.0, 2.0), (1.0, 2.0)]));
+    check_hulls(&p(&[(0.0, 0.0), (1.0, 1.0), (2.0, 2.0), (1.0, 1.0)]));
+    check_hulls(&p(&[
+        (0.0, 0.0),
+        (2.0, 0.0),
+        (1.0, 1.0),
+        (2.0, 2.0),
+        (0.0, 2.0),
+        (1.0, 0.0),
+    ]));
+    // A square with its centre and the midpoints of its sides.
+    let mut square = Vec::new();
+    for x in 0..3 {
+        for y in 0..3 {
+            square.push(Point2::new(f64::from(x), f64::from(y)));
+        }
+    }
+    check_hulls(&square);
+}
+
+#[test]
+fn graham_trace_of_a_fan_worked_by_hand() {
+    // The pivot (0, 0) and six points on distinct rays from it, alternately near (odd i,
+    // (16, 2i)) and far (even i, (32, 4i)). By the course's step 4, worked by hand with the
+    // signed areas: 3 is popped when 4 comes; 5 and then 4 (on the segment 2-6) when 6
+    // comes.
+    let mut pts = vec![Point2::new(0.0, 0.0)];
+    for i in 1..=6 {
+        let (r, t) = if i % 2 == 0 { (32.0, 4.0) } else { (16.0, 2.0) };
+        pts.push(Point2::new(r, t * f64::from(i)));
+    }
+    let steps: Vec<GrahamStep> = graham_trace(&pts, HullOptions::default())
+        .unwrap()
+        .into_iter()
+        .map(|f| f.step)
+        .collect();
+    let push = |point: usize, stack: &[usize]| GrahamStep::Push {
+        point,
+        stack: stack.to_vec(),
+    };
+    let pop = |point: usize, stack: &[usize]| GrahamStep::Pop {
+        point,
+        stack: stack.to_vec(),
+    };
+    assert_eq!(
+        steps,
+        [
+            GrahamStep::Sorted {
+                order: (0..7).collect()
+            },
+            push(0, &[0]),
+            push(1, &[0, 1]),
+            push(2, &[0, 1, 2]),
+            push(3, &[0, 1, 2, 3]),
+            pop(3, &[0, 1, 2]),
+            push(4, &[0, 1, 2, 4]),
+            push(5, &[0, 1, 2, 4, 5]),
+            pop(5, &[0, 1, 2, 4]),
+            pop(4, &[0, 1, 2]),
+            push(6, &[0, 1, 2, 6]),
+            GrahamStep::Done {
+                hull: vec![0, 1, 2, 6]
+            },
+        ]
+    );
+}
+
+#[test]
+fn a_trace_beyond_the_limit_is_refused_by_name() {
+    // Jarvis on 1100 points in convex position: 1100² candidate frames of growing hulls.
+    let pts = compgeo::gen::points(compgeo::gen::PointKind::Cocircular, 1100, 3).unwrap();
+    let e = jarvis_trace(&pts, HullOptions::default()).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::LimitExceeded {
+                limit: "TRACE_MAX_ENTRIES",
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert!(jarvis_trace(&pts[..30], HullOptions::default()).is_ok());
+}
+
+#[test]
+fn hull_traces_reject_non_finite_points() {
+    let pts = [Point2::new(0.0, 0.0), Point2::new(f64::NAN, 1.0)];
+    for e in [
+        jarvis_trace(&pts, HullOptions::default()).map(|_| ()),
+        graham_trace(&pts, HullOptions::default()).map(|_| ()),
+        monotone_chain_trace(&pts, HullOptions::default()).map(|_| ()),
+        quickhull_trace(&pts, HullOptions::default()).map(|_| ()),
+    ] {
+        assert!(matches!(e, Err(Error::NonFinite { .. })), "{e:?}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn hull_traces_on_lattices(pts in lattice(-4..=4, 0..14)) {
+        check_hulls(&pts);
+    }
+
+    #[test]
+    fn hull_traces_on_uniform_points(pts in uniform(100.0, 3..16)) {
+        check_hulls(&pts);
+    }
+}
