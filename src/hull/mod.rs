@@ -9,11 +9,11 @@
 //! | algorithm | file |
 //! |---|---|
 //! | [`brute_force_hull`] | `brute_force.rs` |
-//! | [`jarvis_march`] | `jarvis.rs` |
-//! | [`graham_scan`] | `graham.rs` |
-//! | [`monotone_chain`] | `monotone_chain.rs` |
+//! | [`jarvis_march`] (its steps: [`jarvis_trace`]) | `jarvis.rs` |
+//! | [`graham_scan`] (its steps: [`graham_trace`]) | `graham.rs` |
+//! | [`monotone_chain`] (its steps: [`monotone_chain_trace`]) | `monotone_chain.rs` |
 //! | [`akl_toussaint`] (and its filter [`akl_toussaint_filter`]) | `akl_toussaint.rs` |
-//! | [`quickhull`] | `quickhull.rs` |
+//! | [`quickhull`] (its steps: [`quickhull_trace`]) | `quickhull.rs` |
 //! | [`chan`] | `chan.rs` |
 //!
 //! Their bounds are in the crate's [algorithm table](crate#algorithms-and-their-bounds), from

@@ -486,3 +486,121 @@ proptest! {
         check_hulls(&pts);
     }
 }
+
+/// The directed edges of flat `triangles` (three per triangle, counter-clockwise), with the
+/// opposite vertex of each: edge a -> b of triangle [a, b, c] maps to c.
+fn directed_edges(triangles: &[usize]) -> std::collections::HashMap<(usize, usize), usize> {
+    let mut out = std::collections::HashMap::new();
+    for t in triangles.chunks(3) {
+        for k in 0..3 {
+            let previous = out.insert((t[k], t[(k + 1) % 3]), t[(k + 2) % 3]);
+            assert!(previous.is_none(), "edge twice in one direction");
+        }
+    }
+    out
+}
+
+fn check_lawson(pts: &[Point2]) {
+    use compgeo::delaunay::{check_delaunay, lawson, lawson_trace, lawson_with, LawsonStep};
+    use compgeo::geometry::{incircle, InCircle};
+    let frames = lawson_trace(pts).unwrap();
+    let mut counts = Counts::default();
+    let result = lawson_with(&set(pts), &mut counts).unwrap();
+    assert_eq!(result, lawson(pts).unwrap());
+    let last = frames.last().unwrap();
+    assert_eq!(
+        last.step,
+        LawsonStep::Done {
+            triangulation: result.clone()
+        }
+    );
+    assert_eq!(last.counts, counts);
+    assert_eq!(check_delaunay(pts, &result), Ok(()));
+    counts_grow(&frames);
+    let LawsonStep::Swept { triangles: swept } = &frames[0].step else {
+        panic!("{:?}", frames[0].step)
+    };
+    // Every flip removes an edge whose far vertex is strictly inside the circle through
+    // the near triangle, and rewrites exactly its two triangles in place.
+    let mut current = swept.clone();
+    let undirected = |tris: &[usize]| -> std::collections::HashSet<(usize, usize)> {
+        directed_edges(tris)
+            .into_keys()
+            .map(|(a, b)| (a.min(b), a.max(b)))
+            .collect()
+    };
+    let interior = directed_edges(swept)
+        .keys()
+        .filter(|&&(a, b)| a < b && directed_edges(swept).contains_key(&(b, a)))
+        .count() as u64;
+    let mut previous_tests = frames[0].counts.incircle_tests;
+    for f in &frames[1..frames.len() - 1] {
+        let LawsonStep::Flip {
+            removed: [a, b],
+            added: [d, c],
+            triangles,
+        } = &f.step
+        else {
+            panic!("{:?}", f.step)
+        };
+        let edges = directed_edges(&current);
+        assert_eq!(edges.get(&(*a, *b)), Some(c));
+        assert_eq!(edges.get(&(*b, *a)), Some(d));
+        assert_eq!(
+            incircle(pts[*a], pts[*b], pts[*c], pts[*d]),
+            InCircle::Inside
+        );
+        let changed: Vec<usize> = (0..current.len() / 3)
+            .filter(|&k| current[3 * k..3 * k + 3] != triangles[3 * k..3 * k + 3])
+            .collect();
+        assert_eq!(changed.len(), 2);
+        let after = directed_edges(triangles);
+        assert!(after.contains_key(&(*d, *c)) && after.contains_key(&(*c, *d)));
+        assert!(!after.contains_key(&(*a, *b)) && !after.contains_key(&(*b, *a)));
+        // Each flip follows the in-circle test that found its edge.
+        assert!(f.counts.incircle_tests > previous_tests);
+        previous_tests = f.counts.incircle_tests;
+        current = triangles.clone();
+    }
+    assert_eq!(current, result.triangles);
+    // Every edge of the sweep that Delaunay's triangulation lacks was flipped away; the edge
+    // checks are the sweep's interior edges plus the four edges around each flip, at most.
+    let flips = (frames.len() - 2) as u64;
+    let gone = undirected(swept)
+        .difference(&undirected(&result.triangles))
+        .count() as u64;
+    assert!(flips >= gone, "{flips} flips, {gone} edges gone");
+    let tests = last.counts.incircle_tests - frames[0].counts.incircle_tests;
+    assert!(
+        tests >= flips && tests <= interior + 4 * flips,
+        "{tests} tests"
+    );
+}
+
+#[test]
+fn lawson_traces_on_a_parabola_and_degenerate_input() {
+    // Points on a parabola: the sweep's fans are far from Delaunay.
+    let pts = compgeo::gen::points(compgeo::gen::PointKind::Parabola, 24, 0).unwrap();
+    check_lawson(&pts);
+    assert!(compgeo::delaunay::lawson_trace(&pts).unwrap().len() > 2 + 24);
+    check_lawson(&[]);
+    check_lawson(&[
+        Point2::new(1.0, 1.0),
+        Point2::new(1.0, 1.0),
+        Point2::new(2.0, 2.0),
+    ]);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn lawson_traces_on_lattices(pts in lattice(-5..=5, 0..20)) {
+        check_lawson(&pts);
+    }
+
+    #[test]
+    fn lawson_traces_on_uniform_points(pts in uniform(100.0, 3..30)) {
+        check_lawson(&pts);
+    }
+}
