@@ -604,3 +604,270 @@ proptest! {
         check_lawson(&pts);
     }
 }
+
+/// A small graph: n vertices and edges [u, v] (loops and parallel edges allowed), with
+/// weights from a few integers so that ties are common.
+fn arb_weighted() -> impl Strategy<Value = (usize, Vec<[usize; 2]>, Vec<f64>)> {
+    (1usize..9).prop_flat_map(|n| {
+        prop::collection::vec((0..n, 0..n, 0u8..5), 0..18).prop_map(move |es| {
+            let edges = es.iter().map(|&(u, v, _)| [u, v]).collect();
+            let weights = es.iter().map(|&(_, _, w)| f64::from(w)).collect();
+            (n, edges, weights)
+        })
+    })
+}
+
+/// Component labels by repeated relaxation (no union–find: an independent oracle).
+fn labels(n: usize, edges: &[[usize; 2]]) -> Vec<usize> {
+    let mut label: Vec<usize> = (0..n).collect();
+    loop {
+        let mut changed = false;
+        for &[u, v] in edges {
+            let m = label[u].min(label[v]);
+            for x in [u, v] {
+                if label[x] != m {
+                    label[x] = m;
+                    changed = true;
+                }
+            }
+        }
+        if !changed {
+            return label;
+        }
+    }
+}
+
+fn check_colouring_trace(n: usize, edges: &[[usize; 2]], order: &[usize]) {
+    use compgeo::graph::{
+        course_greedy_colouring_trace, course_greedy_colouring_with, CourseColouringStep, Graph,
+    };
+    let g = Graph::from_edges(n, edges).unwrap();
+    let frames = course_greedy_colouring_trace(&g, order).unwrap();
+    let mut counts = Counts::default();
+    let colouring = course_greedy_colouring_with(&g, order, &mut counts).unwrap();
+    let last = frames.last().unwrap();
+    assert_eq!(last.step, CourseColouringStep::Done { colouring });
+    assert_eq!(last.counts, counts);
+    assert_eq!(frames.len(), n + 1);
+    let adjacent = |u: usize, v: usize| {
+        edges
+            .iter()
+            .any(|&[a, b]| [a, b] == [u, v] || [a, b] == [v, u])
+    };
+    let mut so_far: Vec<Option<usize>> = vec![None; n];
+    for (i, f) in frames[..n].iter().enumerate() {
+        let CourseColouringStep::Coloured {
+            vertex,
+            colour,
+            adjacent: found,
+            colours,
+        } = &f.step
+        else {
+            panic!("{:?}", f.step)
+        };
+        // The course: ask about every earlier vertex, then the first colour not in S.
+        assert_eq!(*vertex, order[i]);
+        assert_eq!(f.counts.adjacency_tests, (i * (i + 1) / 2) as u64);
+        let expected: Vec<usize> = order[..i]
+            .iter()
+            .copied()
+            .filter(|&u| u != *vertex && adjacent(u, *vertex))
+            .collect();
+        assert_eq!(found, &expected);
+        let used: Vec<usize> = expected.iter().map(|&u| so_far[u].unwrap()).collect();
+        let first_free = (0..).find(|k| !used.contains(k)).unwrap();
+        assert_eq!(*colour, first_free);
+        so_far[*vertex] = Some(first_free);
+        assert_eq!(colours, &so_far);
+    }
+}
+
+fn check_prim_trace(n: usize, edges: &[[usize; 2]], weights: &[f64]) {
+    use compgeo::graph::{prim, prim_trace, prim_with, PrimStep, WeightedGraph};
+    let g = WeightedGraph::from_edges(n, edges, weights).unwrap();
+    let frames = prim_trace(&g).unwrap();
+    let mut counts = Counts::default();
+    let forest = prim_with(&g, &mut counts);
+    assert_eq!(forest, prim(&g));
+    let last = frames.last().unwrap();
+    assert_eq!(
+        last.step,
+        PrimStep::Done {
+            forest: forest.clone()
+        }
+    );
+    assert_eq!(last.counts, counts);
+    counts_grow(&frames);
+    let label = labels(n, edges);
+    let components = (0..n).filter(|&v| label[v] == v).count();
+    let proper: Vec<usize> = (0..edges.len())
+        .filter(|&e| edges[e][0] != edges[e][1])
+        .collect();
+    let key = |e: usize| (weights[e], e);
+    let lighter = |a: usize, b: usize| key(a).0.total_cmp(&key(b).0).then(a.cmp(&b)).is_lt();
+    let mut in_tree = vec![false; n];
+    let (mut roots, mut edge_frames, mut accepted) = (0, 0, Vec::new());
+    for (k, f) in frames[..frames.len() - 1].iter().enumerate() {
+        match &f.step {
+            PrimStep::Root { vertex } => {
+                assert!(!in_tree[*vertex]);
+                in_tree[*vertex] = true;
+                roots += 1;
+            }
+            PrimStep::Edge {
+                edge,
+                to,
+                accepted: ok,
+                tree,
+            } => {
+                edge_frames += 1;
+                let [u, v] = edges[*edge];
+                assert!(*to == u || *to == v);
+                assert_eq!(*ok, !in_tree[*to]);
+                if *ok {
+                    let from = if *to == u { v } else { u };
+                    assert!(in_tree[from]);
+                    // The course's rule: the lightest edge that adds a new vertex.
+                    for &e in &proper {
+                        let [a, b] = edges[e];
+                        if in_tree[a] != in_tree[b] {
+                            assert!(!lighter(e, *edge), "edge {e} is lighter than {edge}");
+                        }
+                    }
+                    // The very first edge is the lightest of the graph.
+                    if k == 1 {
+                        assert!(proper.iter().all(|&e| !lighter(e, *edge)));
+                    }
+                    in_tree[*to] = true;
+                    accepted.push(*edge);
+                }
+                assert_eq!(tree, &accepted);
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+    assert_eq!(roots, components);
+    assert_eq!(accepted.len(), n - components);
+    // Each edge that is not a loop enters the heap once and comes out once.
+    assert_eq!(edge_frames, proper.len());
+    accepted.sort_unstable();
+    assert_eq!(accepted, forest.edges);
+}
+
+fn check_kruskal_trace(n: usize, edges: &[[usize; 2]], weights: &[f64]) {
+    use compgeo::graph::{kruskal, kruskal_trace, kruskal_with, KruskalStep, WeightedGraph};
+    let g = WeightedGraph::from_edges(n, edges, weights).unwrap();
+    let frames = kruskal_trace(&g).unwrap();
+    let mut counts = Counts::default();
+    let forest = kruskal_with(&g, &mut counts);
+    assert_eq!(forest, kruskal(&g));
+    let last = frames.last().unwrap();
+    assert_eq!(
+        last.step,
+        KruskalStep::Done {
+            forest: forest.clone()
+        }
+    );
+    assert_eq!(last.counts, counts);
+    counts_grow(&frames);
+    let mut order: Vec<usize> = (0..edges.len())
+        .filter(|&e| edges[e][0] != edges[e][1])
+        .collect();
+    order.sort_by(|&a, &b| weights[a].total_cmp(&weights[b]).then(a.cmp(&b)));
+    assert_eq!(
+        frames[0].step,
+        KruskalStep::Sorted {
+            order: order.clone()
+        }
+    );
+    // Every comparison is the sort's; then one edge visit per edge examined.
+    assert_eq!(frames[0].counts.comparisons, counts.comparisons);
+    let mut chosen: Vec<[usize; 2]> = Vec::new();
+    let mut examined = 0;
+    for (f, &e) in frames[1..frames.len() - 1].iter().zip(&order) {
+        let KruskalStep::Edge {
+            edge,
+            accepted,
+            forest: so_far,
+        } = &f.step
+        else {
+            panic!("{:?}", f.step)
+        };
+        assert_eq!(*edge, e);
+        let label = labels(n, &chosen);
+        assert_eq!(*accepted, label[edges[e][0]] != label[edges[e][1]]);
+        if *accepted {
+            chosen.push(edges[e]);
+        }
+        assert_eq!(so_far.len(), chosen.len());
+        examined += 1;
+        assert_eq!(f.counts.edge_visits, examined);
+    }
+    // It stops as soon as the forest has n − 1 edges, or when the order is exhausted.
+    let expected = if chosen.len() + 1 >= n {
+        // The examined prefix ends with the acceptance that completed the tree (none
+        // needed for a single vertex).
+        let mut needed = 0;
+        let mut picked: Vec<[usize; 2]> = Vec::new();
+        for &e in &order {
+            if picked.len() + 1 >= n {
+                break;
+            }
+            needed += 1;
+            let label = labels(n, &picked);
+            if label[edges[e][0]] != label[edges[e][1]] {
+                picked.push(edges[e]);
+            }
+        }
+        needed
+    } else {
+        order.len()
+    };
+    assert_eq!(frames.len() - 2, expected);
+}
+
+#[test]
+fn graph_traces_on_small_graphs() {
+    // The course's search toy graph shape: a 5-cycle with a chord, in two orders.
+    let edges = [[0, 1], [1, 2], [2, 3], [3, 4], [4, 0], [0, 2]];
+    check_colouring_trace(5, &edges, &[0, 1, 2, 3, 4]);
+    check_colouring_trace(5, &edges, &[4, 2, 0, 3, 1]);
+    check_colouring_trace(0, &[], &[]);
+    let weights = [4.0, 1.0, 3.0, 1.0, 2.0, 5.0];
+    check_prim_trace(5, &edges, &weights);
+    check_kruskal_trace(5, &edges, &weights);
+    // Two components, a loop and a parallel edge.
+    let edges = [[0, 1], [1, 0], [2, 2], [2, 3], [3, 4]];
+    let weights = [2.0, 1.0, 0.0, 1.0, 1.0];
+    check_prim_trace(6, &edges, &weights);
+    check_kruskal_trace(6, &edges, &weights);
+    check_prim_trace(0, &[], &[]);
+    check_kruskal_trace(0, &[], &[]);
+}
+
+#[test]
+fn colouring_trace_rejects_a_bad_order() {
+    let g = compgeo::graph::Graph::from_edges(3, &[[0, 1]]).unwrap();
+    let e = compgeo::graph::course_greedy_colouring_trace(&g, &[0, 0, 1]).unwrap_err();
+    assert!(matches!(e, Error::InvalidParameter { .. }), "{e}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
+
+    #[test]
+    fn graph_traces_on_random_graphs((n, edges, weights) in arb_weighted(), seed in any::<u64>()) {
+        // A random order of the vertices.
+        let mut order: Vec<usize> = (0..n).collect();
+        let mut x = seed | 1;
+        for i in (1..n).rev() {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            order.swap(i, (x % (i as u64 + 1)) as usize);
+        }
+        check_colouring_trace(n, &edges, &order);
+        check_prim_trace(n, &edges, &weights);
+        check_kruskal_trace(n, &edges, &weights);
+    }
+}
