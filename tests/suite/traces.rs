@@ -871,3 +871,235 @@ proptest! {
         check_kruskal_trace(n, &edges, &weights);
     }
 }
+
+mod curves {
+    use super::counts_grow;
+    use crate::spline_common::{q, qi, Q};
+    use compgeo::count::Counts;
+    use compgeo::spline::subdivision::{
+        lane_riesenfeld, lane_riesenfeld_trace, lane_riesenfeld_with, LaneRiesenfeldStep, Topology,
+    };
+    use compgeo::spline::{Bezier, Point};
+    use num_bigint::BigInt;
+    use proptest::prelude::*;
+
+    type P2 = Point<Q, 2>;
+
+    fn binomial(n: usize, k: usize) -> Q {
+        let mut c = BigInt::from(1);
+        for j in 0..k {
+            c = c * BigInt::from(n - j) / BigInt::from(j + 1);
+        }
+        Q::from_integer(c)
+    }
+
+    /// The point bᵢᵏ(t) = Σⱼ Bⱼᵏ(t) bᵢ₊ⱼ of de Casteljau's triangle, from the Bernstein
+    /// polynomials (an independent formula).
+    fn triangle_point(b: &[P2], i: usize, k: usize, t: &Q) -> P2 {
+        let mut sum = Point::new([qi(0), qi(0)]);
+        for j in 0..=k {
+            let mut w = binomial(k, j);
+            for _ in 0..j {
+                w *= t;
+            }
+            for _ in 0..k - j {
+                w *= qi(1) - t;
+            }
+            sum = sum + &(b[i + j].clone() * &w);
+        }
+        sum
+    }
+
+    fn check_de_casteljau(control: Vec<P2>, t: Q) {
+        let curve = Bezier::new(control.clone()).unwrap();
+        let n = curve.degree();
+        let frames = curve.de_casteljau_trace(&t).unwrap();
+        let mut counts = Counts::default();
+        let point = curve.de_casteljau_with(&t, &mut counts).unwrap();
+        assert_eq!(frames.len(), n + 1);
+        let last = frames.last().unwrap();
+        assert_eq!(last.step.points, [point.clone()]);
+        assert_eq!(point, triangle_point(&control, 0, n, &t));
+        assert_eq!(last.counts, counts);
+        counts_grow(&frames);
+        let mut combinations = 0;
+        for (k, f) in frames.iter().enumerate() {
+            assert_eq!(f.step.level, k);
+            assert_eq!(f.step.points.len(), n + 1 - k);
+            if k > 0 {
+                combinations += n + 1 - k;
+            }
+            assert_eq!(f.counts.arithmetic_operations, combinations as u64);
+            for (i, p) in f.step.points.iter().enumerate() {
+                assert_eq!(
+                    p,
+                    &triangle_point(&control, i, k, &t),
+                    "level {k}, point {i}"
+                );
+            }
+        }
+        // The borders of the scaffolding are the two halves at t.
+        let (left, right) = curve.split(&t).unwrap();
+        let first: Vec<P2> = frames.iter().map(|f| f.step.points[0].clone()).collect();
+        let mut end: Vec<P2> = frames
+            .iter()
+            .map(|f| f.step.points[f.step.points.len() - 1].clone())
+            .collect();
+        end.reverse();
+        assert_eq!(left.control(), first);
+        assert_eq!(right.control(), end);
+    }
+
+    #[test]
+    fn de_casteljau_scaffolding_of_the_course_figure() {
+        // The course draws the quadratic scaffolding at t = 1/3 ([RD, §3.2]).
+        let control = vec![
+            Point::new([qi(0), qi(0)]),
+            Point::new([qi(3), qi(6)]),
+            Point::new([qi(9), qi(0)]),
+        ];
+        check_de_casteljau(control.clone(), q(1, 3));
+        let curve = Bezier::new(control).unwrap();
+        let frames = curve.de_casteljau_trace(&q(1, 3)).unwrap();
+        // P₀⁽¹⁾ = ⅔P₀ + ⅓P₁, P₁⁽¹⁾ = ⅔P₁ + ⅓P₂, C(⅓) = ⅔P₀⁽¹⁾ + ⅓P₁⁽¹⁾.
+        assert_eq!(
+            frames[1].step.points,
+            [Point::new([qi(1), qi(2)]), Point::new([qi(5), qi(4)])]
+        );
+        assert_eq!(frames[2].step.points, [Point::new([q(7, 3), q(8, 3)])]);
+        assert!(curve.de_casteljau_trace(&Q::from_integer(0.into())).is_ok());
+        let bad = Bezier::new(vec![Point::new([0.0]), Point::new([1.0])]).unwrap();
+        assert!(bad.de_casteljau_trace(&f64::NAN).is_err());
+    }
+
+    fn check_lane_riesenfeld(points: &[P2], degree: usize, rounds: usize, topology: Topology) {
+        let frames = lane_riesenfeld_trace(points, degree, rounds, topology).unwrap();
+        let mut counts = Counts::default();
+        let result = lane_riesenfeld_with(points, degree, rounds, topology, &mut counts).unwrap();
+        assert_eq!(frames.len(), 1 + rounds * (degree + 1));
+        let polygon = |s: &LaneRiesenfeldStep<Q, 2>| match s {
+            LaneRiesenfeldStep::Input { polygon }
+            | LaneRiesenfeldStep::Doubled { polygon, .. }
+            | LaneRiesenfeldStep::Averaged { polygon, .. } => polygon.clone(),
+        };
+        let last = frames.last().unwrap();
+        assert_eq!(polygon(&last.step), result);
+        assert_eq!(last.counts, counts);
+        counts_grow(&frames);
+        assert_eq!(
+            frames[0].step,
+            LaneRiesenfeldStep::Input {
+                polygon: points.to_vec()
+            }
+        );
+        let mut before = points.to_vec();
+        let mut k = 1;
+        for round in 1..=rounds {
+            let doubled: Vec<P2> = before.iter().flat_map(|p| [p.clone(), p.clone()]).collect();
+            assert_eq!(
+                frames[k].step,
+                LaneRiesenfeldStep::Doubled {
+                    round,
+                    polygon: doubled
+                }
+            );
+            k += 1;
+            for pass in 1..=degree {
+                let LaneRiesenfeldStep::Averaged {
+                    round: r,
+                    pass: p,
+                    polygon,
+                } = &frames[k].step
+                else {
+                    panic!("{:?}", frames[k].step)
+                };
+                assert_eq!((*r, *p), (round, pass));
+                // After j passes, the round so far is the round of degree j (the B-spline of
+                // degree j is the box convolved j times) when there are enough vertices.
+                if topology == Topology::Closed || before.len() > pass {
+                    assert_eq!(
+                        polygon,
+                        &lane_riesenfeld(&before, pass, 1, topology).unwrap(),
+                        "round {round} pass {pass}"
+                    );
+                }
+                // One midpoint per vertex, and an open polygon loses one vertex per pass.
+                let previous = polygon_len(&frames[k - 1].step);
+                let made = frames[k].counts.arithmetic_operations
+                    - frames[k - 1].counts.arithmetic_operations;
+                match topology {
+                    Topology::Closed => assert_eq!(made as usize, previous),
+                    Topology::Open => assert_eq!(made as usize, previous - 1),
+                }
+                k += 1;
+            }
+            before = polygon(&frames[k - 1].step);
+        }
+    }
+
+    fn polygon_len(s: &LaneRiesenfeldStep<Q, 2>) -> usize {
+        match s {
+            LaneRiesenfeldStep::Input { polygon }
+            | LaneRiesenfeldStep::Doubled { polygon, .. }
+            | LaneRiesenfeldStep::Averaged { polygon, .. } => polygon.len(),
+        }
+    }
+
+    fn pts(v: &[(i64, i64)]) -> Vec<P2> {
+        v.iter().map(|&(x, y)| Point::new([qi(x), qi(y)])).collect()
+    }
+
+    #[test]
+    fn lane_riesenfeld_traces_on_small_polygons() {
+        let square = pts(&[(0, 0), (4, 0), (4, 4), (0, 4)]);
+        check_lane_riesenfeld(&square, 2, 2, Topology::Closed);
+        check_lane_riesenfeld(&square, 3, 2, Topology::Open);
+        check_lane_riesenfeld(&square, 1, 0, Topology::Open);
+        assert!(lane_riesenfeld_trace(&square[..2], 2, 1, Topology::Closed).is_err());
+        assert!(lane_riesenfeld_trace(&square, 0, 1, Topology::Closed).is_err());
+        // A trace beyond the limit is refused by name: 2^18 points after 16 rounds, and
+        // every pass's polygon kept (in f64, for speed).
+        let square = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]].map(Point::new);
+        let Err(e) = lane_riesenfeld_trace(&square, 3, 16, Topology::Closed) else {
+            panic!("a trace of about 2^21 points was accepted")
+        };
+        assert!(
+            matches!(
+                e,
+                compgeo::Error::LimitExceeded {
+                    limit: "TRACE_MAX_ENTRIES",
+                    ..
+                }
+            ),
+            "{e}"
+        );
+    }
+
+    fn point() -> impl Strategy<Value = P2> {
+        ((-20i64..20, 1i64..5), (-20i64..20, 1i64..5))
+            .prop_map(|((a, b), (c, d))| Point::new([q(a, b), q(c, d)]))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(40))]
+
+        #[test]
+        fn de_casteljau_traces_are_the_bernstein_triangle(
+            control in prop::collection::vec(point(), 1..7),
+            (a, b) in (-6i64..12, 1i64..7),
+        ) {
+            check_de_casteljau(control, q(a, b));
+        }
+
+        #[test]
+        fn lane_riesenfeld_traces_are_rounds_of_lower_degree(
+            polygon in prop::collection::vec(point(), 5..8),
+            degree in 1usize..5,
+            rounds in 0usize..3,
+            closed in any::<bool>(),
+        ) {
+            let topology = if closed { Topology::Closed } else { Topology::Open };
+            check_lane_riesenfeld(&polygon, degree, rounds, topology);
+        }
+    }
+}
