@@ -905,7 +905,7 @@ mod curves {
             for _ in 0..k - j {
                 w *= qi(1) - t;
             }
-            sum = sum + &(b[i + j].clone() * &w);
+            sum += &(b[i + j].clone() * &w);
         }
         sum
     }
@@ -918,7 +918,7 @@ mod curves {
         let point = curve.de_casteljau_with(&t, &mut counts).unwrap();
         assert_eq!(frames.len(), n + 1);
         let last = frames.last().unwrap();
-        assert_eq!(last.step.points, [point.clone()]);
+        assert_eq!(last.step.points, std::slice::from_ref(&point));
         assert_eq!(point, triangle_point(&control, 0, n, &t));
         assert_eq!(last.counts, counts);
         counts_grow(&frames);
