@@ -106,6 +106,13 @@ pub const TRACE_MAX_LEN: usize = 1000;
 /// list Q, so a trace of n vertices holds up to 2n rows of up to n entries.
 pub const TRACE_MAX_VERTICES: usize = 1000;
 
+/// The most entries a step trace ([`trace`](crate::trace): `hull::graham_trace`,
+/// `delaunay::lawson_trace`, `graph::prim_trace`, ...) stores: 2^20. A frame counts one, plus
+/// one per index or point it holds. Traces copy the state at every step, so they grow faster
+/// than the run (Jarvis's march on n points in convex position: n² frames of up to n
+/// indices); a trace is meant for inputs a reader can follow, and about 100 MiB at the limit.
+pub const TRACE_MAX_ENTRIES: usize = 1 << 20;
+
 /// The most points the incremental and divide-and-conquer Delaunay builders take: 2^29.
 /// About 6n half-edges get 32-bit ids.
 pub const MAX_TRIANGULATION_POINTS: usize = 1 << 29;
@@ -257,6 +264,12 @@ pub(crate) const TRACE_VERTICES: Limit = Limit {
     max: TRACE_MAX_VERTICES,
     what: "traced search vertex count",
 };
+/// [`TRACE_MAX_ENTRIES`].
+pub(crate) const TRACE_ENTRIES: Limit = Limit {
+    name: "TRACE_MAX_ENTRIES",
+    max: TRACE_MAX_ENTRIES,
+    what: "step trace entry count",
+};
 /// [`MAX_TRIANGULATION_POINTS`].
 pub(crate) const TRIANGULATION_POINTS: Limit = Limit {
     name: "MAX_TRIANGULATION_POINTS",
@@ -323,7 +336,7 @@ pub(crate) const MESH_CORNERS: Limit = Limit {
 };
 
 /// Every limit, in the order of the table in `docs/design.md`.
-pub const ALL: [Limit; 20] = [
+pub const ALL: [Limit; 21] = [
     POINTS,
     COCIRCULAR,
     KEYS,
@@ -334,6 +347,7 @@ pub const ALL: [Limit; 20] = [
     SAMPLES,
     TRACE_LEN,
     TRACE_VERTICES,
+    TRACE_ENTRIES,
     TRIANGULATION_POINTS,
     FORTUNE_POINTS,
     FLATTEN_SEGMENTS,

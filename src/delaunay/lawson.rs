@@ -4,9 +4,11 @@
 use super::divide_conquer::sorted_distinct;
 use super::{next_halfedge, prev_halfedge, Triangulation, EMPTY};
 use crate::complexity::{on, Bound, Declaration};
+use crate::count::Counts;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::{CountedPredicates, InCircle, Orientation, Point2, PointSet};
+use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -22,6 +24,44 @@ pub(super) const DECLARATION: Declaration = Declaration {
     source: "[RD, §2.4]",
     claims: &[on("parabola", Bound::Quadratic, Operation::IncircleTests)],
 };
+
+/// A step of Lawson's algorithm, as [`lawson_trace`] records it. Vertices are indices into
+/// the input; `triangles` lists three per triangle, counter-clockwise, in the layout of
+/// [`Triangulation::triangles`] (a flip rewrites two triangles in place).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum LawsonStep {
+    /// The sweep triangulation the flips start from.
+    Swept {
+        /// Its triangles.
+        triangles: Vec<usize>,
+    },
+    /// The edge `removed` was not locally Delaunay (the vertex across it lay strictly inside
+    /// the circle through one of its triangles) and was flipped to `added`.
+    Flip {
+        /// The flipped edge's ends.
+        removed: [usize; 2],
+        /// The new edge's ends.
+        added: [usize; 2],
+        /// The triangles after the flip.
+        triangles: Vec<usize>,
+    },
+    /// No edge is left to flip: the result of [`lawson`].
+    Done {
+        /// The triangulation, as [`lawson`] returns it.
+        triangulation: Triangulation,
+    },
+}
+
+impl TraceSize for LawsonStep {
+    fn entries(&self) -> usize {
+        match self {
+            LawsonStep::Swept { triangles } | LawsonStep::Flip { triangles, .. } => triangles.len(),
+            LawsonStep::Done { triangulation } => {
+                triangulation.triangles.len() + triangulation.hull.len()
+            }
+        }
+    }
+}
 
 /// The Delaunay triangulation of `points` by Lawson's flips from a sweep triangulation.
 /// See [`lawson_with`].
@@ -104,9 +144,72 @@ pub fn lawson(points: &[Point2]) -> Result<Triangulation> {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn lawson_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Result<Triangulation> {
+    lawson_observed(points, counter, &mut NoObserver)
+}
+
+/// The frames of Lawson's algorithm on `points`: its own run, step by step.
+///
+/// The run is [`lawson_with`]'s, told about each step: [`LawsonStep::Swept`] with the sweep
+/// triangulation, one [`LawsonStep::Flip`] per flip with the triangles after it, and last
+/// [`LawsonStep::Done`] with the triangulation [`lawson`] returns. Each frame carries the
+/// operations counted so far (the in-circle tests of the edge checks among them); the last
+/// frame's are those of [`lawson_with`] with [`Counts`].
+///
+/// # Errors
+///
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or
+/// infinite coordinate; [`Error::LimitExceeded`](crate::Error::LimitExceeded) if the frames
+/// would hold more than [`TRACE_MAX_ENTRIES`](crate::trace::TRACE_MAX_ENTRIES) entries.
+///
+/// # Complexity
+///
+/// That of [`lawson_with`] plus O(n) per flip for the frames: O(n³) time and space in the
+/// worst case (Θ(n²) flips).
+///
+/// ```
+/// use compgeo::delaunay::{lawson, lawson_trace, LawsonStep};
+/// use compgeo::geometry::Point2;
+///
+/// // The sweep cuts the quadrilateral along 0-2; 3 lies inside the circle through 0, 1, 2.
+/// let pts = [(0.0, 0.0), (1.0, 1.0), (2.0, 1.0), (3.0, -0.8)].map(Point2::from);
+/// let frames = lawson_trace(&pts)?;
+/// assert_eq!(frames.len(), 3);
+/// let LawsonStep::Flip { removed, added, .. } = &frames[1].step else { panic!() };
+/// let (mut removed, mut added) = (*removed, *added);
+/// removed.sort();
+/// added.sort();
+/// assert_eq!((removed, added), ([0, 2], [1, 3]));
+/// assert_eq!(frames[2].step, LawsonStep::Done { triangulation: lawson(&pts)? });
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn lawson_trace(points: &[Point2]) -> Result<Vec<Frame<LawsonStep>>> {
+    let points = PointSet::new(points)?;
+    let mut counts = Counts::default();
+    let mut recorder = Recorder::new();
+    let triangulation = lawson_observed(&points, &mut counts, &mut recorder)?;
+    recorder.step(&counts, || LawsonStep::Done { triangulation });
+    recorder.finish()
+}
+
+/// Lawson's algorithm, telling `obs` about the sweep and each flip.
+fn lawson_observed<C: Counter, O: Observer<LawsonStep, C>>(
+    points: &PointSet<'_>,
+    counter: &mut C,
+    obs: &mut O,
+) -> Result<Triangulation> {
     let (sorted, index, duplicates) = sorted_distinct(points, counter);
     let (mut triangles, mut halfedges, hull) = sweep(&sorted, counter);
-    flip_until_delaunay(&sorted, &mut triangles, &mut halfedges, counter);
+    obs.step(counter, || LawsonStep::Swept {
+        triangles: triangles.iter().map(|&v| index[v]).collect(),
+    });
+    flip_until_delaunay(
+        &sorted,
+        &index,
+        &mut triangles,
+        &mut halfedges,
+        counter,
+        obs,
+    );
     let hull = if triangles.is_empty() {
         index.clone()
     } else {
@@ -221,12 +324,15 @@ fn sweep<C: Counter>(p: &[Point2], counter: &mut C) -> (Vec<usize>, Vec<usize>, 
     (triangles, halfedges, hull)
 }
 
-/// Lawson's flips until every interior edge of the triangulation is locally Delaunay.
-fn flip_until_delaunay<C: Counter>(
+/// Lawson's flips until every interior edge of the triangulation is locally Delaunay,
+/// telling `obs` about each flip (with the vertices as `index` maps them to the input).
+fn flip_until_delaunay<C: Counter, O: Observer<LawsonStep, C>>(
     p: &[Point2],
+    index: &[usize],
     triangles: &mut [usize],
     halfedges: &mut [usize],
     counter: &mut C,
+    obs: &mut O,
 ) {
     let mut stack: Vec<usize> = (0..triangles.len())
         .filter(|&e| halfedges[e] != EMPTY && halfedges[e] < e)
@@ -250,6 +356,11 @@ fn flip_until_delaunay<C: Counter>(
         pair(halfedges, e, hf2);
         pair(halfedges, f, he2);
         pair(halfedges, e2, f2);
+        obs.step(counter, || LawsonStep::Flip {
+            removed: [index[a], index[b]],
+            added: [index[d], index[c]],
+            triangles: triangles.iter().map(|&v| index[v]).collect(),
+        });
         stack.extend([e, e1, f, f1]);
     }
 }

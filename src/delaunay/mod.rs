@@ -30,7 +30,7 @@
 //! |---|---|---|
 //! | [`incremental`] | O(n log n) expected on every input | `incremental.rs` (+ `hilbert.rs`, its insertion order) |
 //! | [`divide_and_conquer`] | O(n log n) worst case (the course's algorithm) | `divide_conquer.rs` (+ `quad_edge.rs`, its working structure) |
-//! | [`lawson`] | O(n²) worst case (flips from a sweep triangulation; for teaching) | `lawson.rs` |
+//! | [`lawson`] | O(n²) worst case (flips from a sweep triangulation; for teaching; [`lawson_trace`] records each flip) | `lawson.rs` |
 //! | [`fortune`] | O(n log n) expected on every input (Fortune's sweep, the Voronoi diagram first) | `fortune.rs` (+ `beach_line.rs`, its treap; exact predicates in `geometry/sweep_predicates.rs`) |
 //!
 //! # On top of the triangulation
@@ -71,7 +71,7 @@ pub use clip::ClipBox;
 pub use divide_conquer::{divide_and_conquer, divide_and_conquer_with};
 pub use fortune::{fortune, fortune_with};
 pub use incremental::{incremental, incremental_with};
-pub use lawson::{lawson, lawson_with};
+pub use lawson::{lawson, lawson_trace, lawson_with, LawsonStep};
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};
 pub use voronoi::{dual, voronoi, voronoi_with, Cell, Ray, Voronoi};
 

@@ -11,12 +11,12 @@
 //! | function | bound (n vertices, m edges) | counted |
 //! |---|---|---|
 //! | [`bfs`], [`dfs`] | O(n + m) | vertex and edge visits |
-//! | [`course_greedy_colouring`] | O(n²), exactly n(n−1)/2 adjacency tests | adjacency tests |
+//! | [`course_greedy_colouring`] (its steps: [`course_greedy_colouring_trace`]) | O(n²), exactly n(n−1)/2 adjacency tests | adjacency tests |
 //! | [`greedy_colouring`] (any order, [`largest_first_order`], [`smallest_last_order`]) | O(n + m) | edge visits |
 //! | [`dsatur`] | O((n + m) log n) | heap comparisons |
 //! | [`dsatur_tabu`] (DSatur, then [`tabu_recolour`] for fewer colours) | O((n + m) log n) | heap comparisons and moves evaluated |
-//! | [`prim`] (the course's greedy tree) | O(m log n) | heap comparisons |
-//! | [`kruskal`] | O(m log m) | sort comparisons |
+//! | [`prim`] (the course's greedy tree; its steps: [`prim_trace`]) | O(m log n) | heap comparisons |
+//! | [`kruskal`] (its steps: [`kruskal_trace`]) | O(m log m) | sort comparisons |
 //! | [`boruvka`] | O(m log n) | edge visits |
 
 mod colouring;
@@ -28,15 +28,17 @@ mod traverse;
 mod union_find;
 
 pub use colouring::{
-    check_colouring, colour, colour_with, course_greedy_colouring, course_greedy_colouring_with,
-    dsatur, dsatur_tabu, dsatur_tabu_with, dsatur_with, greedy_colouring, greedy_colouring_with,
-    largest_first_order, smallest_last_order, tabu_recolour, tabu_recolour_with, Colouring,
-    ColouringAlgorithm, TABU_EFFORT,
+    check_colouring, colour, colour_with, course_greedy_colouring, course_greedy_colouring_trace,
+    course_greedy_colouring_with, dsatur, dsatur_tabu, dsatur_tabu_with, dsatur_with,
+    greedy_colouring, greedy_colouring_with, largest_first_order, smallest_last_order,
+    tabu_recolour, tabu_recolour_with, Colouring, ColouringAlgorithm, CourseColouringStep,
+    TABU_EFFORT,
 };
 pub use graph::{EdgeList, Graph, WeightedGraph, MAX_EDGES, MAX_VERTICES};
 pub use mst::{
-    boruvka, boruvka_with, check_spanning_forest, kruskal, kruskal_with, prim, prim_with,
-    spanning_forest, spanning_forest_with, MstAlgorithm, SpanningForest,
+    boruvka, boruvka_with, check_spanning_forest, kruskal, kruskal_trace, kruskal_with, prim,
+    prim_trace, prim_with, spanning_forest, spanning_forest_with, KruskalStep, MstAlgorithm,
+    PrimStep, SpanningForest,
 };
 pub use traverse::{
     bfs, bfs_with, check_search_tree, components, dfs, dfs_with, is_connected, search,

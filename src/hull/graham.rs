@@ -5,9 +5,11 @@ use super::collinear::finish;
 use super::lex::lex_min;
 use super::HullOptions;
 use crate::complexity::{on, Bound, Declaration};
+use crate::count::Counts;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
+use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
 use std::cmp::Ordering;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -27,6 +29,47 @@ pub(super) const DECLARATION: Declaration = Declaration {
         on("cocircular", Bound::NLogN, Operation::OrientationTests),
     ],
 };
+
+/// A step of Graham's scan, as [`graham_trace`] records it. Indices are into the input.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub enum GrahamStep {
+    /// The angular sort is done: the pivot (the lexicographically smallest point) followed by
+    /// the farthest point of every direction from it, counter-clockwise.
+    Sorted {
+        /// The pivot, then one point per direction in angular order.
+        order: Vec<usize>,
+    },
+    /// `point` was pushed on the stack.
+    Push {
+        /// The pushed point.
+        point: usize,
+        /// The stack after the push, bottom first.
+        stack: Vec<usize>,
+    },
+    /// `point` was popped: it and the top of the stack below it do not turn strictly left
+    /// towards the next point of the order.
+    Pop {
+        /// The popped point.
+        point: usize,
+        /// The stack after the pop, bottom first.
+        stack: Vec<usize>,
+    },
+    /// The scan is over: the result of [`graham_scan`] (with the boundary points inserted if
+    /// the options ask for them).
+    Done {
+        /// The hull, as [`graham_scan`] returns it.
+        hull: Vec<usize>,
+    },
+}
+
+impl TraceSize for GrahamStep {
+    fn entries(&self) -> usize {
+        match self {
+            GrahamStep::Sorted { order: v } | GrahamStep::Done { hull: v } => v.len(),
+            GrahamStep::Push { stack, .. } | GrahamStep::Pop { stack, .. } => 1 + stack.len(),
+        }
+    }
+}
 
 /// The convex hull of `points` by Graham's scan. See [`graham_scan_with`].
 ///
@@ -94,12 +137,74 @@ pub fn graham_scan_with<C: Counter>(
     options: HullOptions,
     counter: &mut C,
 ) -> Vec<usize> {
-    let points = points.points();
+    graham(points.points(), options, counter, &mut NoObserver)
+}
+
+/// The frames of Graham's scan on `points`: its own run, step by step.
+///
+/// The run is [`graham_scan_with`]'s, told about each step: [`GrahamStep::Sorted`] after the
+/// angular sort, then one [`GrahamStep::Push`] per point of that order and one
+/// [`GrahamStep::Pop`] per point the scan removes, each with the stack after it (the
+/// course's step 4), and last [`GrahamStep::Done`] with the hull [`graham_scan`] returns.
+/// Each frame carries the operations counted so far; the last frame's are those of
+/// [`graham_scan_with`] with [`Counts`].
+///
+/// # Errors
+///
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or
+/// infinite coordinate; [`Error::LimitExceeded`](crate::Error::LimitExceeded) if the frames
+/// would hold more than [`TRACE_MAX_ENTRIES`](crate::trace::TRACE_MAX_ENTRIES) entries.
+///
+/// # Complexity
+///
+/// O(n log n) for the scan plus the frames: at most 2n of up to n indices, O(n²) time and
+/// space.
+///
+/// ```
+/// use compgeo::geometry::Point2;
+/// use compgeo::hull::{graham_trace, GrahamStep, HullOptions};
+///
+/// // 3 lies inside the triangle 0, 1, 2: pushed, then popped when 2 comes.
+/// let pts = [(0.0, 0.0), (4.0, 0.0), (0.0, 4.0), (2.0, 1.0)].map(Point2::from);
+/// let steps: Vec<GrahamStep> = graham_trace(&pts, HullOptions::default())?
+///     .into_iter()
+///     .map(|f| f.step)
+///     .collect();
+/// assert_eq!(steps, [
+///     GrahamStep::Sorted { order: vec![0, 1, 3, 2] },
+///     GrahamStep::Push { point: 0, stack: vec![0] },
+///     GrahamStep::Push { point: 1, stack: vec![0, 1] },
+///     GrahamStep::Push { point: 3, stack: vec![0, 1, 3] },
+///     GrahamStep::Pop { point: 3, stack: vec![0, 1] },
+///     GrahamStep::Push { point: 2, stack: vec![0, 1, 2] },
+///     GrahamStep::Done { hull: vec![0, 1, 2] },
+/// ]);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn graham_trace(points: &[Point2], options: HullOptions) -> Result<Vec<Frame<GrahamStep>>> {
+    let points = PointSet::new(points)?;
+    let mut counts = Counts::default();
+    let mut recorder = Recorder::new();
+    let hull = graham(points.points(), options, &mut counts, &mut recorder);
+    recorder.step(&counts, || GrahamStep::Done { hull });
+    recorder.finish()
+}
+
+/// The scan, telling `obs` about each step.
+fn graham<C: Counter, O: Observer<GrahamStep, C>>(
+    points: &[Point2],
+    options: HullOptions,
+    counter: &mut C,
+    obs: &mut O,
+) -> Vec<usize> {
     if points.is_empty() {
         return Vec::new();
     }
     let order = angular_order(points, counter);
-    let strict = scan(points, &order, counter);
+    obs.step(counter, || GrahamStep::Sorted {
+        order: order.clone(),
+    });
+    let strict = scan(points, &order, counter, obs);
     finish(points, 0..points.len(), strict, options, counter)
 }
 
@@ -133,16 +238,55 @@ fn angular_order<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
 
 /// The course's step 4 over `order` (pivot first, then one point per direction in angular
 /// order): the strictly convex hull.
-fn scan<C: Counter>(points: &[Point2], order: &[usize], counter: &mut C) -> Vec<usize> {
-    let mut stack: Vec<usize> = order.iter().copied().take(2).collect();
+fn scan<C: Counter, O: Observer<GrahamStep, C>>(
+    points: &[Point2],
+    order: &[usize],
+    counter: &mut C,
+    obs: &mut O,
+) -> Vec<usize> {
+    let mut stack: Vec<usize> = Vec::with_capacity(order.len());
+    for &i in order.iter().take(2) {
+        stack.push(i);
+        obs.step(counter, || GrahamStep::Push {
+            point: i,
+            stack: stack.clone(),
+        });
+    }
     for &i in order.iter().skip(2) {
-        push_left_turn(&mut stack, 2, i, |k| points[k], counter);
+        push_left_turn(
+            &mut stack,
+            2,
+            i,
+            |k| points[k],
+            counter,
+            |moved, stack, counter| {
+                obs.step(counter, || match moved {
+                    Move::Push(point) => GrahamStep::Push {
+                        point,
+                        stack: stack.to_vec(),
+                    },
+                    Move::Pop(point) => GrahamStep::Pop {
+                        point,
+                        stack: stack.to_vec(),
+                    },
+                })
+            },
+        );
     }
     stack
 }
 
+/// What [`push_left_turn`] did to its stack.
+pub(super) enum Move<T> {
+    /// Pushed this item.
+    Push(T),
+    /// Popped this item.
+    Pop(T),
+}
+
 /// Pops from `stack` while it holds at least `floor` items and the points (`point`) of its
-/// last two do not turn strictly left towards `item`'s, then pushes `item`.
+/// last two do not turn strictly left towards `item`'s, then pushes `item`; `watch` sees
+/// each pop and the push with the stack after it (a trace's observer, or nothing).
 #[inline]
 pub(super) fn push_left_turn<T: Copy, C: Counter>(
     stack: &mut Vec<T>,
@@ -150,6 +294,7 @@ pub(super) fn push_left_turn<T: Copy, C: Counter>(
     item: T,
     point: impl Fn(T) -> Point2,
     counter: &mut C,
+    mut watch: impl FnMut(Move<T>, &[T], &C),
 ) {
     let p = point(item);
     while stack.len() >= floor {
@@ -158,8 +303,10 @@ pub(super) fn push_left_turn<T: Copy, C: Counter>(
             break;
         }
         stack.pop();
+        watch(Move::Pop(b), stack, counter);
     }
     stack.push(item);
+    watch(Move::Push(item), stack, counter);
 }
 
 #[cfg(test)]
@@ -176,7 +323,7 @@ mod tests {
                 let pts = generate(kind, n, seed).unwrap();
                 let order = angular_order(&pts, &mut NoCount);
                 let mut counts = Counts::default();
-                let hull = scan(&pts, &order, &mut counts);
+                let hull = scan(&pts, &order, &mut counts, &mut NoObserver);
                 assert!(
                     counts.orientation_tests <= (2 * n).saturating_sub(4) as u64,
                     "{kind} n={n}: {} tests",
@@ -196,7 +343,10 @@ mod tests {
             .collect();
         let order = angular_order(&convex, &mut NoCount);
         let mut counts = Counts::default();
-        assert_eq!(scan(&convex, &order, &mut counts).len(), 20);
+        assert_eq!(
+            scan(&convex, &order, &mut counts, &mut NoObserver).len(),
+            20
+        );
         assert_eq!(counts.orientation_tests, 18);
 
         // Alternating near/far points on a fan: every second point is popped.
@@ -210,7 +360,7 @@ mod tests {
             .collect();
         let order = angular_order(&fan, &mut NoCount);
         let mut counts = Counts::default();
-        let hull = scan(&fan, &order, &mut counts);
+        let hull = scan(&fan, &order, &mut counts, &mut NoObserver);
         assert!(counts.orientation_tests <= 2 * 41 - 4);
         assert!(counts.orientation_tests > 41, "pops happened");
         assert!(super::super::check_strictly_convex_ccw(&fan, &hull).is_ok());

@@ -9,11 +9,11 @@
 //! | algorithm | file |
 //! |---|---|
 //! | [`brute_force_hull`] | `brute_force.rs` |
-//! | [`jarvis_march`] | `jarvis.rs` |
-//! | [`graham_scan`] | `graham.rs` |
-//! | [`monotone_chain`] | `monotone_chain.rs` |
+//! | [`jarvis_march`] (its steps: [`jarvis_trace`]) | `jarvis.rs` |
+//! | [`graham_scan`] (its steps: [`graham_trace`]) | `graham.rs` |
+//! | [`monotone_chain`] (its steps: [`monotone_chain_trace`]) | `monotone_chain.rs` |
 //! | [`akl_toussaint`] (and its filter [`akl_toussaint_filter`]) | `akl_toussaint.rs` |
-//! | [`quickhull`] | `quickhull.rs` |
+//! | [`quickhull`] (its steps: [`quickhull_trace`]) | `quickhull.rs` |
 //! | [`chan`] | `chan.rs` |
 //!
 //! Their bounds are in the crate's [algorithm table](crate#algorithms-and-their-bounds), from
@@ -80,10 +80,12 @@ pub use akl_toussaint::{akl_toussaint, akl_toussaint_filter, akl_toussaint_with}
 pub use brute_force::{brute_force_hull, brute_force_hull_with};
 pub use chan::{chan, chan_with};
 pub use check::{check_encloses, check_strictly_convex_ccw};
-pub use graham::{graham_scan, graham_scan_with};
-pub use jarvis::{jarvis_march, jarvis_march_with};
-pub use monotone_chain::{monotone_chain, monotone_chain_with};
-pub use quickhull::{quickhull, quickhull_with};
+pub use graham::{graham_scan, graham_scan_with, graham_trace, GrahamStep};
+pub use jarvis::{jarvis_march, jarvis_march_with, jarvis_trace, JarvisStep};
+pub use monotone_chain::{
+    monotone_chain, monotone_chain_trace, monotone_chain_with, Chain, ChainStep,
+};
+pub use quickhull::{quickhull, quickhull_trace, quickhull_with, QuickhullStep};
 
 /// Options shared by every hull algorithm.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]

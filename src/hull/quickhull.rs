@@ -4,9 +4,11 @@ use super::collinear::finish;
 use super::lex::lex_min;
 use super::HullOptions;
 use crate::complexity::{on, Bound, Declaration};
+use crate::count::Counts;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
+use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
 use std::cmp::Ordering;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -27,6 +29,59 @@ pub(super) const DECLARATION: Declaration = Declaration {
         Operation::OrientationTests,
     )],
 };
+
+/// A step of Quickhull, as [`quickhull_trace`] records it. Indices are into the input.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub enum QuickhullStep {
+    /// The first split, at the lexicographically smallest point `a` and the largest `b` (two
+    /// or more distinct points only).
+    Ends {
+        /// The lexicographically smallest point.
+        a: usize,
+        /// The lexicographically largest point.
+        b: usize,
+        /// The points strictly right of `a -> b`, in input order.
+        below: Vec<usize>,
+        /// The points strictly left of `a -> b`, in input order.
+        above: Vec<usize>,
+    },
+    /// One split: of `points`, all strictly right of the directed hull edge `edge`,
+    /// `farthest` is farthest from its line and becomes a hull vertex; the points inside the
+    /// triangle are dropped and the rest go to the two new edges.
+    Split {
+        /// The edge `[a, b]`, directed with the points on its right.
+        edge: [usize; 2],
+        /// The points right of the edge.
+        points: Vec<usize>,
+        /// The farthest of them: a new hull vertex c.
+        farthest: usize,
+        /// The points strictly right of `a -> c`.
+        first: Vec<usize>,
+        /// The points strictly right of `c -> b` (and not of `a -> c`).
+        second: Vec<usize>,
+    },
+    /// Every edge is done: the result of [`quickhull`] (with the boundary points inserted if
+    /// the options ask for them).
+    Done {
+        /// The hull, as [`quickhull`] returns it.
+        hull: Vec<usize>,
+    },
+}
+
+impl TraceSize for QuickhullStep {
+    fn entries(&self) -> usize {
+        match self {
+            QuickhullStep::Ends { below, above, .. } => 2 + below.len() + above.len(),
+            QuickhullStep::Split {
+                points,
+                first,
+                second,
+                ..
+            } => 3 + points.len() + first.len() + second.len(),
+            QuickhullStep::Done { hull } => hull.len(),
+        }
+    }
+}
 
 /// The convex hull of `points` by Quickhull. See [`quickhull_with`].
 ///
@@ -96,7 +151,68 @@ pub fn quickhull_with<C: Counter>(
     options: HullOptions,
     counter: &mut C,
 ) -> Vec<usize> {
-    let points = points.points();
+    quick(points.points(), options, counter, &mut NoObserver)
+}
+
+/// The frames of Quickhull on `points`: its own run, step by step.
+///
+/// The run is [`quickhull_with`]'s, told about each step: [`QuickhullStep::Ends`] with the
+/// first split at the extreme points, one [`QuickhullStep::Split`] per edge with points on
+/// its right (the segment, the farthest point and the two surviving subsets), in the order
+/// the explicit stack takes them (the lower chain first, each edge's first half before its
+/// second), and last [`QuickhullStep::Done`] with the hull [`quickhull`] returns. Each frame
+/// carries the operations counted so far; the last frame's are those of [`quickhull_with`]
+/// with [`Counts`].
+///
+/// # Errors
+///
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first point with a NaN or
+/// infinite coordinate; [`Error::LimitExceeded`](crate::Error::LimitExceeded) if the frames
+/// would hold more than [`TRACE_MAX_ENTRIES`](crate::trace::TRACE_MAX_ENTRIES) entries.
+///
+/// # Complexity
+///
+/// That of [`quickhull_with`] plus the frames, which copy each subproblem twice: O(nh) time
+/// and space.
+///
+/// ```
+/// use compgeo::geometry::Point2;
+/// use compgeo::hull::{quickhull_trace, HullOptions, QuickhullStep};
+///
+/// let pts = [(0.0, 0.0), (4.0, 0.0), (2.0, 3.0), (2.0, 1.0), (1.0, -1.0)].map(Point2::from);
+/// let frames = quickhull_trace(&pts, HullOptions::default())?;
+/// let steps: Vec<QuickhullStep> = frames.into_iter().map(|f| f.step).collect();
+/// assert_eq!(steps, [
+///     QuickhullStep::Ends { a: 0, b: 1, below: vec![4], above: vec![2, 3] },
+///     QuickhullStep::Split {
+///         edge: [0, 1], points: vec![4], farthest: 4, first: vec![], second: vec![],
+///     },
+///     QuickhullStep::Split {
+///         edge: [1, 0], points: vec![2, 3], farthest: 2, first: vec![], second: vec![],
+///     },
+///     QuickhullStep::Done { hull: vec![0, 4, 1, 2] },
+/// ]);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn quickhull_trace(
+    points: &[Point2],
+    options: HullOptions,
+) -> Result<Vec<Frame<QuickhullStep>>> {
+    let points = PointSet::new(points)?;
+    let mut counts = Counts::default();
+    let mut recorder = Recorder::new();
+    let hull = quick(points.points(), options, &mut counts, &mut recorder);
+    recorder.step(&counts, || QuickhullStep::Done { hull });
+    recorder.finish()
+}
+
+/// Quickhull, telling `obs` about each split.
+fn quick<C: Counter, O: Observer<QuickhullStep, C>>(
+    points: &[Point2],
+    options: HullOptions,
+    counter: &mut C,
+    obs: &mut O,
+) -> Vec<usize> {
     if points.is_empty() {
         return Vec::new();
     }
@@ -119,6 +235,12 @@ pub fn quickhull_with<C: Counter>(
             Orientation::Collinear => {}
         }
     }
+    obs.step(counter, || QuickhullStep::Ends {
+        a,
+        b,
+        below: below.clone(),
+        above: above.clone(),
+    });
     let mut hull = Vec::new();
     let mut tasks = vec![
         Task::Side(b, a, above),
@@ -134,13 +256,20 @@ pub fn quickhull_with<C: Counter>(
                 let c = farthest(points, a, b, &set, counter);
                 let (pa, pb, pc) = (points[a], points[b], points[c]);
                 let (mut first, mut second) = (Vec::new(), Vec::new());
-                for i in set {
+                for &i in &set {
                     if counter.orient2d(pa, pc, points[i]) == Orientation::Clockwise {
                         first.push(i);
                     } else if counter.orient2d(pc, pb, points[i]) == Orientation::Clockwise {
                         second.push(i);
                     }
                 }
+                obs.step(counter, || QuickhullStep::Split {
+                    edge: [a, b],
+                    points: set.clone(),
+                    farthest: c,
+                    first: first.clone(),
+                    second: second.clone(),
+                });
                 tasks.push(Task::Side(c, b, second));
                 tasks.push(Task::Emit(c));
                 tasks.push(Task::Side(a, c, first));

@@ -76,8 +76,8 @@ pub use beta::{
 };
 pub use bezier::{
     bernstein, bernstein_all, bernstein_derivative, c1_partition, intersections,
-    intersections_with, Bezier, CompositeBezier, Evaluation as BezierEvaluation, Intersection,
-    Join, Reparametrised, MAX_FLATTEN_SEGMENTS, MAX_INTERSECTION_PAIRS,
+    intersections_with, Bezier, CasteljauLevel, CompositeBezier, Evaluation as BezierEvaluation,
+    Intersection, Join, Reparametrised, MAX_FLATTEN_SEGMENTS, MAX_INTERSECTION_PAIRS,
 };
 pub use bspline::{
     BSpline, BandMatrix, Basis, BasisDerivatives, DeBoorTrace, KnotVector, ParameterFit,

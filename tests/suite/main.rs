@@ -66,6 +66,7 @@ mod surface_cli;
 mod surface_construct;
 mod surface_mesh;
 mod surface_subdivision;
+mod traces;
 mod triangle;
 mod triangle_cli;
 mod voronoi;

@@ -2,9 +2,10 @@
 
 use super::{check_colouring, check_order, Colouring};
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, NoCount, Operation};
+use crate::count::{Counter, Counts, NoCount, Operation};
 use crate::error::Result;
 use crate::graph::Graph;
+use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -20,6 +21,41 @@ pub(super) const DECLARATION: Declaration = Declaration {
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::Quadratic, Operation::AdjacencyTests)],
 };
+
+/// A step of the course's greedy colouring, as [`course_greedy_colouring_trace`] records it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum CourseColouringStep {
+    /// The vertex `vertex`, the `i`-th of the order (from 0), got colour `colour`: the first
+    /// colour not in S, the colours of the earlier vertices found adjacent to it. Every
+    /// earlier vertex of the order was asked about (i adjacency tests).
+    Coloured {
+        /// The vertex coloured.
+        vertex: usize,
+        /// The colour it got (from 0).
+        colour: usize,
+        /// The earlier vertices of the order adjacent to it, in the order they were asked
+        /// about; their colours make up S.
+        adjacent: Vec<usize>,
+        /// The colouring so far, per vertex: `None` for those still to come.
+        colours: Vec<Option<usize>>,
+    },
+    /// Every vertex is coloured: the result of [`course_greedy_colouring`].
+    Done {
+        /// The colouring, as [`course_greedy_colouring`] returns it.
+        colouring: Colouring,
+    },
+}
+
+impl TraceSize for CourseColouringStep {
+    fn entries(&self) -> usize {
+        match self {
+            CourseColouringStep::Coloured {
+                adjacent, colours, ..
+            } => 2 + adjacent.len() + colours.len(),
+            CourseColouringStep::Done { colouring } => colouring.colour.len(),
+        }
+    }
+}
 
 /// The course's greedy colouring of `g` in the given vertex order; see
 /// [`course_greedy_colouring_with`].
@@ -78,6 +114,66 @@ pub fn course_greedy_colouring_with<C: Counter>(
     c: &mut C,
 ) -> Result<Colouring> {
     check_order(g, order)?;
+    Ok(course(g, order, c, &mut NoObserver))
+}
+
+/// The frames of the course's greedy colouring of `g` in `order`: its own run, step by step.
+///
+/// The run is [`course_greedy_colouring_with`]'s, told about each step: one
+/// [`CourseColouringStep::Coloured`] per vertex in the order (the vertex, its colour, the
+/// earlier vertices found adjacent, the colouring so far), then
+/// [`CourseColouringStep::Done`] with the colouring [`course_greedy_colouring`] returns. Each
+/// frame carries the operations counted so far: after the i-th vertex (from 0), exactly
+/// i(i + 1)/2 adjacency tests.
+///
+/// # Errors
+///
+/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) (name `"order"`) if `order`
+/// is not a permutation of `0..n`; [`Error::LimitExceeded`](crate::Error::LimitExceeded) if
+/// the frames would hold more than [`TRACE_MAX_ENTRIES`](crate::trace::TRACE_MAX_ENTRIES)
+/// entries (each frame copies the colouring: n frames of n entries).
+///
+/// # Complexity
+///
+/// O(n² + m) time and O(n² + m) space for the frames.
+///
+/// ```
+/// use compgeo::graph::{course_greedy_colouring_trace, CourseColouringStep, Graph};
+///
+/// // The path 0 - 1 - 2, coloured in the order 1, 0, 2.
+/// let g = Graph::from_edges(3, &[[0, 1], [1, 2]])?;
+/// let frames = course_greedy_colouring_trace(&g, &[1, 0, 2])?;
+/// assert_eq!(
+///     frames[1].step,
+///     CourseColouringStep::Coloured {
+///         vertex: 0,
+///         colour: 1,
+///         adjacent: vec![1],
+///         colours: vec![Some(1), Some(0), None],
+///     }
+/// );
+/// assert_eq!(frames[2].counts.adjacency_tests, 3); // 0 + 1 + 2 questions
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn course_greedy_colouring_trace(
+    g: &Graph,
+    order: &[usize],
+) -> Result<Vec<Frame<CourseColouringStep>>> {
+    check_order(g, order)?;
+    let mut counts = Counts::default();
+    let mut recorder = Recorder::new();
+    let colouring = course(g, order, &mut counts, &mut recorder);
+    recorder.step(&counts, || CourseColouringStep::Done { colouring });
+    recorder.finish()
+}
+
+/// The course's algorithm on a checked order, telling `obs` about each vertex coloured.
+fn course<C: Counter, O: Observer<CourseColouringStep, C>>(
+    g: &Graph,
+    order: &[usize],
+    c: &mut C,
+    obs: &mut O,
+) -> Colouring {
     let n = g.vertex_count();
     let mut colour = vec![0usize; n];
     let mut adjacent_mark = vec![usize::MAX; n];
@@ -99,7 +195,23 @@ pub fn course_greedy_colouring_with<C: Counter>(
         }
         colour[vi] = k;
         count = count.max(k + 1);
+        obs.step(c, || CourseColouringStep::Coloured {
+            vertex: vi,
+            colour: k,
+            adjacent: order[..i]
+                .iter()
+                .copied()
+                .filter(|&vj| adjacent_mark[vj] == i)
+                .collect(),
+            colours: {
+                let mut so_far = vec![None; n];
+                for &v in &order[..=i] {
+                    so_far[v] = Some(colour[v]);
+                }
+                so_far
+            },
+        });
     }
     debug_assert_eq!(check_colouring(g, &colour), Ok(()));
-    Ok(Colouring { colour, count })
+    Colouring { colour, count }
 }

@@ -24,7 +24,10 @@ mod largest_first;
 mod smallest_last;
 mod tabu;
 
-pub use course::{course_greedy_colouring, course_greedy_colouring_with};
+pub use course::{
+    course_greedy_colouring, course_greedy_colouring_trace, course_greedy_colouring_with,
+    CourseColouringStep,
+};
 pub use dsatur::{dsatur, dsatur_with};
 pub use greedy::{greedy_colouring, greedy_colouring_with};
 pub use largest_first::largest_first_order;

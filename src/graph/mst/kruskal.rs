@@ -2,8 +2,10 @@
 
 use super::{edge_keys, finish, SpanningForest};
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, NoCount, Operation};
+use crate::count::{Counter, Counts, NoCount, Operation};
+use crate::error::Result;
 use crate::graph::{UnionFind, WeightedGraph};
+use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -19,6 +21,42 @@ pub(super) const DECLARATION: Declaration = Declaration {
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::MLogM, Operation::Comparisons)],
 };
+
+/// A step of Kruskal's algorithm, as [`kruskal_trace`] records it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum KruskalStep {
+    /// The edges that are not loops, sorted by (weight, index): the order they are examined
+    /// in.
+    Sorted {
+        /// Edge indices, lightest first.
+        order: Vec<usize>,
+    },
+    /// The next edge of the order was examined: accepted if its ends were in different
+    /// trees of the forest, rejected (it would close a cycle) otherwise.
+    Edge {
+        /// The edge's index in the graph.
+        edge: usize,
+        /// Whether the edge joined the forest.
+        accepted: bool,
+        /// The edges of the forest so far, in the order they were accepted.
+        forest: Vec<usize>,
+    },
+    /// The forest has n − 1 edges or the order is exhausted: the result of [`kruskal`].
+    Done {
+        /// The spanning forest, as [`kruskal`] returns it.
+        forest: SpanningForest,
+    },
+}
+
+impl TraceSize for KruskalStep {
+    fn entries(&self) -> usize {
+        match self {
+            KruskalStep::Sorted { order } => order.len(),
+            KruskalStep::Edge { forest, .. } => 2 + forest.len(),
+            KruskalStep::Done { forest } => forest.edges.len(),
+        }
+    }
+}
 
 /// Kruskal's algorithm; see [`kruskal_with`].
 ///
@@ -65,6 +103,61 @@ pub fn kruskal(g: &WeightedGraph) -> SpanningForest {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn kruskal_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest {
+    kruskal_observed(g, c, &mut NoObserver)
+}
+
+/// The frames of Kruskal's algorithm on `g`: its own run, step by step.
+///
+/// The run is [`kruskal_with`]'s, told about each step: [`KruskalStep::Sorted`] after the
+/// sort, one [`KruskalStep::Edge`] per edge examined (accepted or rejected, with the forest
+/// so far), and last [`KruskalStep::Done`] with the forest [`kruskal`] returns. Each frame
+/// carries the operations counted so far; the last frame's are those of [`kruskal_with`]
+/// with [`Counts`].
+///
+/// # Errors
+///
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if the frames would hold more than
+/// [`TRACE_MAX_ENTRIES`](crate::trace::TRACE_MAX_ENTRIES) entries (m frames of up to n − 1
+/// edges).
+///
+/// # Complexity
+///
+/// O(m log m) for the algorithm plus O(mn) time and space for the frames.
+///
+/// ```
+/// use compgeo::graph::{kruskal_trace, KruskalStep, WeightedGraph};
+///
+/// // A square with a diagonal 0-2 (weight 1.5): 1-2 (1) and the diagonal go in, 2-3 (2)
+/// // joins 3, then 3-0 (3) would close a cycle.
+/// let g = WeightedGraph::from_edges(
+///     4,
+///     &[[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]],
+///     &[4.0, 1.0, 2.0, 3.0, 1.5],
+/// )?;
+/// let steps: Vec<KruskalStep> = kruskal_trace(&g)?.into_iter().map(|f| f.step).collect();
+/// assert_eq!(steps[0], KruskalStep::Sorted { order: vec![1, 4, 2, 3, 0] });
+/// let accepted: Vec<bool> = steps
+///     .iter()
+///     .filter_map(|s| match s { KruskalStep::Edge { accepted, .. } => Some(*accepted), _ => None })
+///     .collect();
+/// assert_eq!(accepted, [true, true, true]); // three edges span four vertices: it stops
+/// assert!(matches!(&steps[4], KruskalStep::Done { forest } if forest.edges == [1, 2, 4]));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn kruskal_trace(g: &WeightedGraph) -> Result<Vec<Frame<KruskalStep>>> {
+    let mut counts = Counts::default();
+    let mut recorder = Recorder::new();
+    let forest = kruskal_observed(g, &mut counts, &mut recorder);
+    recorder.step(&counts, || KruskalStep::Done { forest });
+    recorder.finish()
+}
+
+/// Kruskal's algorithm, telling `obs` about the sort and each edge examined.
+fn kruskal_observed<C: Counter, O: Observer<KruskalStep, C>>(
+    g: &WeightedGraph,
+    c: &mut C,
+    obs: &mut O,
+) -> SpanningForest {
     let n = g.vertex_count();
     let keys = edge_keys(g);
     let edges = g.raw_edges();
@@ -76,6 +169,9 @@ pub fn kruskal_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest 
         c.comparison();
         a.cmp(b)
     });
+    obs.step(c, || KruskalStep::Sorted {
+        order: order.iter().map(|&(_, e)| e as usize).collect(),
+    });
     let mut sets = UnionFind::new(n);
     let mut chosen = Vec::with_capacity(n.saturating_sub(1));
     for &(_, e) in &order {
@@ -84,9 +180,15 @@ pub fn kruskal_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest 
         }
         c.edge_visit();
         let [u, v] = edges[e as usize];
-        if sets.union(u as usize, v as usize) {
+        let accepted = sets.union(u as usize, v as usize);
+        if accepted {
             chosen.push(e as usize);
         }
+        obs.step(c, || KruskalStep::Edge {
+            edge: e as usize,
+            accepted,
+            forest: chosen.clone(),
+        });
     }
     let components = n - chosen.len();
     finish(g, chosen, components)

@@ -26,8 +26,8 @@ mod kruskal;
 mod prim;
 
 pub use boruvka::{boruvka, boruvka_with};
-pub use kruskal::{kruskal, kruskal_with};
-pub use prim::{prim, prim_with};
+pub use kruskal::{kruskal, kruskal_trace, kruskal_with, KruskalStep};
+pub use prim::{prim, prim_trace, prim_with, PrimStep};
 
 /// A minimum spanning forest: one tree per connected component, and its total weight.
 ///

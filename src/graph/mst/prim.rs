@@ -3,8 +3,10 @@
 
 use super::{edge_keys, finish, SpanningForest};
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, NoCount, Operation};
+use crate::count::{Counter, Counts, NoCount, Operation};
+use crate::error::Result;
 use crate::graph::WeightedGraph;
+use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
 use crate::util::Heap;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -21,6 +23,45 @@ pub(super) const DECLARATION: Declaration = Declaration {
     source: "[RD, §2.1]",
     claims: &[on("gnm-4n", Bound::MLogN, Operation::Comparisons)],
 };
+
+/// A step of Prim's algorithm, as [`prim_trace`] records it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PrimStep {
+    /// A new tree starts at `vertex` (the first at an end of the lightest edge, then one per
+    /// further component, at its smallest vertex).
+    Root {
+        /// The tree's first vertex.
+        vertex: usize,
+    },
+    /// The lightest edge left in the heap, `edge`, towards `to`, was taken out: accepted if
+    /// `to` was new to the tree (the course's "lightest edge that adds a new vertex"),
+    /// rejected if it was already in.
+    Edge {
+        /// The edge's index in the graph.
+        edge: usize,
+        /// The end of the edge that was outside the tree when the edge entered the heap.
+        to: usize,
+        /// Whether the edge joined the tree.
+        accepted: bool,
+        /// The edges of the forest so far, in the order they were accepted.
+        tree: Vec<usize>,
+    },
+    /// The heap is empty in every component: the result of [`prim`].
+    Done {
+        /// The spanning forest, as [`prim`] returns it.
+        forest: SpanningForest,
+    },
+}
+
+impl TraceSize for PrimStep {
+    fn entries(&self) -> usize {
+        match self {
+            PrimStep::Root { .. } => 1,
+            PrimStep::Edge { tree, .. } => 3 + tree.len(),
+            PrimStep::Done { forest } => forest.edges.len(),
+        }
+    }
+}
 
 /// Prim's algorithm; see [`prim_with`].
 ///
@@ -74,6 +115,56 @@ pub fn prim(g: &WeightedGraph) -> SpanningForest {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn prim_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest {
+    prim_observed(g, c, &mut NoObserver)
+}
+
+/// The frames of Prim's algorithm on `g`: its own run, step by step.
+///
+/// The run is [`prim_with`]'s, told about each step: a [`PrimStep::Root`] per tree started,
+/// one [`PrimStep::Edge`] per edge taken out of the heap (accepted or rejected, with the
+/// forest so far), and last [`PrimStep::Done`] with the forest [`prim`] returns. Every edge
+/// that is not a loop enters the heap exactly once (from the end that joins the tree first),
+/// so there are as many edge frames as such edges. Each frame carries the operations
+/// counted so far; the last frame's are those of [`prim_with`] with [`Counts`].
+///
+/// # Errors
+///
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if the frames would hold more than
+/// [`TRACE_MAX_ENTRIES`](crate::trace::TRACE_MAX_ENTRIES) entries (m frames of up to n − 1
+/// edges).
+///
+/// # Complexity
+///
+/// O(m log m) for the algorithm plus O(mn) time and space for the frames.
+///
+/// ```
+/// use compgeo::graph::{prim_trace, PrimStep, WeightedGraph};
+///
+/// // A triangle 0-1 (weight 1), 1-2 (2), 2-0 (3): the edge 2-0 comes out of the heap last,
+/// // when both ends are in the tree, and is rejected.
+/// let g = WeightedGraph::from_edges(3, &[[0, 1], [1, 2], [2, 0]], &[1.0, 2.0, 3.0])?;
+/// let steps: Vec<PrimStep> = prim_trace(&g)?.into_iter().map(|f| f.step).collect();
+/// assert_eq!(steps[0], PrimStep::Root { vertex: 0 });
+/// assert_eq!(steps[1], PrimStep::Edge { edge: 0, to: 1, accepted: true, tree: vec![0] });
+/// assert_eq!(steps[2], PrimStep::Edge { edge: 1, to: 2, accepted: true, tree: vec![0, 1] });
+/// assert_eq!(steps[3], PrimStep::Edge { edge: 2, to: 2, accepted: false, tree: vec![0, 1] });
+/// assert!(matches!(&steps[4], PrimStep::Done { forest } if forest.edges == [0, 1]));
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn prim_trace(g: &WeightedGraph) -> Result<Vec<Frame<PrimStep>>> {
+    let mut counts = Counts::default();
+    let mut recorder = Recorder::new();
+    let forest = prim_observed(g, &mut counts, &mut recorder);
+    recorder.step(&counts, || PrimStep::Done { forest });
+    recorder.finish()
+}
+
+/// Prim's algorithm, telling `obs` about each tree started and each edge out of the heap.
+fn prim_observed<C: Counter, O: Observer<PrimStep, C>>(
+    g: &WeightedGraph,
+    c: &mut C,
+    obs: &mut O,
+) -> SpanningForest {
     let n = g.vertex_count();
     let keys = edge_keys(g);
     let mut in_tree = vec![false; n];
@@ -90,12 +181,20 @@ pub fn prim_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest {
             continue;
         }
         components += 1;
+        obs.step(c, || PrimStep::Root { vertex: root });
         grow(g, &keys, root, &mut in_tree, &mut heap, c);
         while let Some((_, e, t)) = heap.pop(lighter, c) {
-            if !in_tree[t as usize] {
+            let accepted = !in_tree[t as usize];
+            if accepted {
                 chosen.push(e as usize);
                 grow(g, &keys, t as usize, &mut in_tree, &mut heap, c);
             }
+            obs.step(c, || PrimStep::Edge {
+                edge: e as usize,
+                to: t as usize,
+                accepted,
+                tree: chosen.clone(),
+            });
         }
     }
     finish(g, chosen, components)

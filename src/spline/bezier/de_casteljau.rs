@@ -23,10 +23,27 @@
 use super::curve::Bezier;
 use super::reparametrised::Reparametrised;
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, NoCount, Operation};
+use crate::count::{Counter, Counts, NoCount, Operation};
 use crate::spline::curve::{check_interval, Curve, Subsegment};
 use crate::spline::scalar::{validate_parameter, Point, Scalar};
+use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
 use crate::{Error, Result};
+
+/// One level of de Casteljau's scheme (its scaffolding at one parameter), as
+/// [`Bezier::de_casteljau_trace`] records it.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct CasteljauLevel<S, const D: usize> {
+    /// The level k, from 0 (the control polygon) to the degree n (the point b(t)).
+    pub level: usize,
+    /// The n + 1 − k points b₀ᵏ, …, bₙ₋ₖᵏ of the level.
+    pub points: Vec<Point<S, D>>,
+}
+
+impl<S, const D: usize> TraceSize for CasteljauLevel<S, D> {
+    fn entries(&self) -> usize {
+        self.points.len()
+    }
+}
 
 /// The split's [`Declaration`]: its name, bounds, counts, source and claims.
 pub(crate) const SPLIT: Declaration = Declaration {
@@ -139,6 +156,55 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
     pub fn de_casteljau_with<C: Counter>(&self, t: &S, counter: &mut C) -> Result<Point<S, D>> {
         validate_parameter(t, "t")?;
         Ok(self.de_casteljau_unchecked(t, counter))
+    }
+
+    /// The frames of de Casteljau's algorithm at `t`: its scaffolding, level by level, from
+    /// its own run.
+    ///
+    /// The run is [`Bezier::de_casteljau_with`]'s, told about each level: frame k holds the
+    /// points bᵢᵏ of level k (frame 0 the control polygon, frame n the single point b(t)),
+    /// with the n + (n − 1) + … + (n − k + 1) affine combinations counted up to it; the last
+    /// frame's counts are those of [`Bezier::de_casteljau_with`] with [`Counts`]. The first
+    /// points of the levels are the control points of the piece over [0, t], the last ones
+    /// (read backwards) those over [t, 1] ([`Bezier::split`]).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::InvalidParameter`] if `t` is NaN or infinite;
+    /// [`Error::LimitExceeded`] if the (n + 1)(n + 2)/2 points and n + 1 frames pass
+    /// [`TRACE_MAX_ENTRIES`](crate::trace::TRACE_MAX_ENTRIES).
+    ///
+    /// # Complexity
+    ///
+    /// Θ(n²D) time and space (every point of the triangle is kept).
+    ///
+    /// ```
+    /// use compgeo::spline::{Bezier, Point};
+    ///
+    /// let b = Bezier::new(vec![Point::new([0.0, 0.0]), Point::new([2.0, 4.0]), Point::new([4.0, 0.0])])?;
+    /// let frames = b.de_casteljau_trace(&0.5)?;
+    /// assert_eq!(frames.len(), 3);
+    /// assert_eq!(frames[1].step.points, [Point::new([1.0, 2.0]), Point::new([3.0, 2.0])]);
+    /// assert_eq!(frames[2].step.points, [b.de_casteljau(&0.5)?]);
+    /// assert_eq!(frames[2].counts.arithmetic_operations, 3);
+    /// # Ok::<(), compgeo::Error>(())
+    /// ```
+    pub fn de_casteljau_trace(&self, t: &S) -> Result<Vec<Frame<CasteljauLevel<S, D>>>> {
+        validate_parameter(t, "t")?;
+        let mut counts = Counts::default();
+        let mut recorder = Recorder::new();
+        let mut q = self.control().to_vec();
+        recorder.step(&counts, || CasteljauLevel {
+            level: 0,
+            points: q.clone(),
+        });
+        observed_levels(
+            &mut q,
+            std::iter::repeat_n(t, self.degree()),
+            &mut counts,
+            &mut recorder,
+        );
+        recorder.finish()
     }
 
     /// The two halves of the curve at the parameter c: the control points of the same
@@ -383,6 +449,7 @@ impl<S: Scalar, const D: usize> Bezier<S, D> {
 /// Runs one level of de Casteljau's scheme per parameter on the points `q`: level k replaces
 /// `q[i]` by `(1 − u) q[i] + u q[i + 1]` for the first `len − k` points, so after m levels
 /// `q[0..len − m]` are the points of column m. One counted operation per affine combination.
+#[inline]
 pub(crate) fn de_casteljau_levels<'a, S, const D: usize, C>(
     q: &mut [Point<S, D>],
     params: impl IntoIterator<Item = &'a S>,
@@ -391,10 +458,30 @@ pub(crate) fn de_casteljau_levels<'a, S, const D: usize, C>(
     S: Scalar + 'a,
     C: Counter,
 {
+    observed_levels(q, params, counter, &mut NoObserver);
+}
+
+/// [`de_casteljau_levels`], telling `obs` about each level it completes (its points, level
+/// 1 first).
+#[inline]
+fn observed_levels<'a, S, const D: usize, C, O>(
+    q: &mut [Point<S, D>],
+    params: impl IntoIterator<Item = &'a S>,
+    counter: &mut C,
+    obs: &mut O,
+) where
+    S: Scalar + 'a,
+    C: Counter,
+    O: Observer<CasteljauLevel<S, D>, C>,
+{
     for (k, u) in params.into_iter().enumerate() {
         for i in 0..q.len() - k - 1 {
             q[i] = Point::lerp(&q[i], &q[i + 1], u);
             counter.arithmetic_operation();
         }
+        obs.step(counter, || CasteljauLevel {
+            level: k + 1,
+            points: q[..q.len() - k - 1].to_vec(),
+        });
     }
 }

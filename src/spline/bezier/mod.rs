@@ -12,7 +12,7 @@
 //! | `bernstein.rs` | [`bernstein`], [`bernstein_all`], [`bernstein_derivative`]: the basis [PPB, §2.1] | Θ(n), Θ(n²), O(n² + r²) |
 //! | `curve.rs` | the [`Bezier`] type: control polygon, reversal, bounding box [PPB, §2.2] | Θ(nD) |
 //! | `horner.rs` | the fast evaluation ([`Curve::eval`](super::Curve::eval), [`Bezier::at`], [`Bezier::eval_each`], [`Bezier::horner_with`]) [PPB, §2.3, Obs. 4] | Θ(nD) per point |
-//! | `de_casteljau.rs` | [`Bezier::de_casteljau_with`], [`Bezier::split`], [`Bezier::restrict`], [`Bezier::blossom`], the subsegment [PPB, §2.3, §3.1–3.3] | Θ(n²D); restrict Θ(n³D) |
+//! | `de_casteljau.rs` | [`Bezier::de_casteljau_with`], its scaffolding [`Bezier::de_casteljau_trace`], [`Bezier::split`], [`Bezier::restrict`], [`Bezier::blossom`], the subsegment [PPB, §2.3, §3.1–3.3] | Θ(n²D); restrict Θ(n³D) |
 //! | `evaluation.rs` | [`Evaluation`], [`evaluate`], [`evaluate_with`]: the scheme chosen at run time | as the scheme |
 //! | `derivative.rs` | [`Bezier::derivative`], [`Bezier::hodograph`], the tetrahedral algorithm [PPB, §2.4, §2.6] | Θ(r·nD), Θ(n²D) |
 //! | `elevation.rs` | [`Bezier::elevate`], [`Bezier::elevate_to`] (Zhou) [PPB, §3.11–3.12] | Θ(nD), Θ(mnD) |
@@ -61,6 +61,7 @@ pub(crate) mod declarations {
 pub use bernstein::{bernstein, bernstein_all, bernstein_derivative};
 pub use composite::CompositeBezier;
 pub use curve::Bezier;
+pub use de_casteljau::CasteljauLevel;
 pub use evaluation::{evaluate, evaluate_with, Evaluation};
 pub use flatten::MAX_FLATTEN_SEGMENTS;
 pub use intersect::{intersections, intersections_with, Intersection, MAX_INTERSECTION_PAIRS};

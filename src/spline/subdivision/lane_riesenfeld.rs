@@ -27,9 +27,48 @@
 use super::mask::check_degree;
 use super::{finite, output_size, validate_polygon, Topology};
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, NoCount, Operation};
+use crate::count::{Counter, Counts, NoCount, Operation};
 use crate::spline::scalar::{Point, Scalar};
+use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
 use crate::Result;
+
+/// A step of the Lane–Riesenfeld algorithm, as [`lane_riesenfeld_trace`] records it: the
+/// polygon after it.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum LaneRiesenfeldStep<S, const D: usize> {
+    /// The polygon the rounds start from.
+    Input {
+        /// The given polygon.
+        polygon: Vec<Point<S, D>>,
+    },
+    /// Round `round` (from 1) doubled every vertex.
+    Doubled {
+        /// The round, from 1.
+        round: usize,
+        /// The doubled polygon.
+        polygon: Vec<Point<S, D>>,
+    },
+    /// Pass `pass` (1 to d) of round `round` replaced every vertex by the midpoint of it and
+    /// its predecessor (an open polygon loses its first vertex).
+    Averaged {
+        /// The round, from 1.
+        round: usize,
+        /// The pass of midpoints, from 1 to the degree.
+        pass: usize,
+        /// The polygon after the pass.
+        polygon: Vec<Point<S, D>>,
+    },
+}
+
+impl<S, const D: usize> TraceSize for LaneRiesenfeldStep<S, D> {
+    fn entries(&self) -> usize {
+        match self {
+            LaneRiesenfeldStep::Input { polygon }
+            | LaneRiesenfeldStep::Doubled { polygon, .. }
+            | LaneRiesenfeldStep::Averaged { polygon, .. } => polygon.len(),
+        }
+    }
+}
 
 /// The Lane–Riesenfeld algorithm, declared.
 pub(crate) const LANE_RIESENFELD: Declaration = Declaration {
@@ -156,6 +195,69 @@ pub fn lane_riesenfeld_with<S: Scalar, const D: usize, C: Counter>(
     topology: Topology,
     counter: &mut C,
 ) -> Result<Vec<Point<S, D>>> {
+    lane_riesenfeld_observed(points, degree, rounds, topology, counter, &mut NoObserver)
+}
+
+/// The frames of the Lane–Riesenfeld algorithm: its own run, step by step.
+///
+/// The run is [`lane_riesenfeld_with`]'s, told about each step: [`LaneRiesenfeldStep::Input`]
+/// with the given polygon, then per round a [`LaneRiesenfeldStep::Doubled`] and d
+/// [`LaneRiesenfeldStep::Averaged`], one per pass of midpoints: 1 + k(d + 1) frames for k
+/// rounds. The last frame's polygon is the result of [`lane_riesenfeld`], and each frame
+/// carries the midpoints counted so far; the last frame's counts are those of
+/// [`lane_riesenfeld_with`] with [`Counts`].
+///
+/// # Errors
+///
+/// As [`lane_riesenfeld`]; [`Error::LimitExceeded`](crate::Error::LimitExceeded) also if the
+/// polygons of all frames pass [`TRACE_MAX_ENTRIES`](crate::trace::TRACE_MAX_ENTRIES)
+/// points.
+///
+/// # Complexity
+///
+/// Θ(d·N) time and space, N ≤ n·2^k the output size: every pass's polygon is kept.
+///
+/// ```
+/// use compgeo::spline::subdivision::{lane_riesenfeld_trace, LaneRiesenfeldStep, Topology};
+/// use compgeo::spline::Point;
+///
+/// // Chaikin (degree 2) on a closed triangle: double, then two passes of midpoints.
+/// let p = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]].map(Point::new);
+/// let frames = lane_riesenfeld_trace(&p, 2, 1, Topology::Closed)?;
+/// assert_eq!(frames.len(), 4);
+/// let LaneRiesenfeldStep::Doubled { polygon, .. } = &frames[1].step else { panic!() };
+/// assert_eq!(polygon[..2], [Point::new([0.0, 0.0]), Point::new([0.0, 0.0])]);
+/// let LaneRiesenfeldStep::Averaged { pass: 2, polygon, .. } = &frames[3].step else { panic!() };
+/// assert_eq!(polygon[2], Point::new([1.0, 0.0])); // a quarter along the first edge
+/// assert_eq!(frames[3].counts.arithmetic_operations, 2 * 2 * 3);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn lane_riesenfeld_trace<S: Scalar, const D: usize>(
+    points: &[Point<S, D>],
+    degree: usize,
+    rounds: usize,
+    topology: Topology,
+) -> Result<Vec<Frame<LaneRiesenfeldStep<S, D>>>> {
+    let mut counts = Counts::default();
+    let mut recorder = Recorder::new();
+    lane_riesenfeld_observed(points, degree, rounds, topology, &mut counts, &mut recorder)?;
+    recorder.finish()
+}
+
+/// The algorithm, telling `obs` about the input and each doubling and pass.
+fn lane_riesenfeld_observed<S, const D: usize, C, O>(
+    points: &[Point<S, D>],
+    degree: usize,
+    rounds: usize,
+    topology: Topology,
+    counter: &mut C,
+    obs: &mut O,
+) -> Result<Vec<Point<S, D>>>
+where
+    S: Scalar,
+    C: Counter,
+    O: Observer<LaneRiesenfeldStep<S, D>, C>,
+{
     check_degree(degree)?;
     validate_polygon(points, topology, degree + 1, "polygon")?;
     let d = degree as u128;
@@ -165,16 +267,28 @@ pub fn lane_riesenfeld_with<S: Scalar, const D: usize, C: Counter>(
     };
     let half = S::from_ratio(1, 2);
     let mut current = points.to_vec();
-    for _ in 0..rounds {
+    obs.step(counter, || LaneRiesenfeldStep::Input {
+        polygon: current.clone(),
+    });
+    for round in 1..=rounds {
         let mut b: Vec<Point<S, D>> = current
             .iter()
             .flat_map(|c| [c.clone(), c.clone()])
             .collect();
-        for _ in 0..degree {
+        obs.step(counter, || LaneRiesenfeldStep::Doubled {
+            round,
+            polygon: b.clone(),
+        });
+        for pass in 1..=degree {
             match topology {
                 Topology::Closed => closed_midpoints(&mut b, &half, counter),
                 Topology::Open => open_midpoints(&mut b, &half, counter),
             }
+            obs.step(counter, || LaneRiesenfeldStep::Averaged {
+                round,
+                pass,
+                polygon: b.clone(),
+            });
         }
         current = b;
     }

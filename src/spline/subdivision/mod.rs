@@ -40,7 +40,7 @@
 //! | file | problem | time |
 //! |---|---|---|
 //! | `mask.rs` | [`Mask`]: the characteristic polynomial of a scheme, [`Mask::lane_riesenfeld`], [`Mask::four_point`], one or k rounds of any mask ([`Mask::refine`]) [PPB, §8.4, §8.8] | Θ(L·N) |
-//! | `lane_riesenfeld.rs` | [`lane_riesenfeld`] (doubling, then d rounds of midpoints), [`chaikin`] [PPB, §8.2–8.4] | Θ(d·N) |
+//! | `lane_riesenfeld.rs` | [`lane_riesenfeld`] (doubling, then d rounds of midpoints; its steps: [`lane_riesenfeld_trace`]), [`chaikin`] [PPB, §8.2–8.4] | Θ(d·N) |
 //! | `four_point.rs` | [`four_point`]: the interpolating four-point scheme with tension w [PPB, §8.9] | Θ(N) |
 //! | `limit.rs` | [`limit_stencil`], [`limit_points`]: where each vertex goes in the limit, exactly [PPB, §8.1, §8.3] | Θ(d² + n·d·D) |
 //! | `difference.rs` | [`Mask::difference`], [`Mask::divided_difference`], [`Mask::norm`]: the difference schemes of the convergence analysis [PPB, §8.6–8.8, §8.10] | Θ(L) |
@@ -101,7 +101,9 @@ pub(crate) mod declarations {
 }
 
 pub use four_point::{four_point, four_point_with};
-pub use lane_riesenfeld::{chaikin, lane_riesenfeld, lane_riesenfeld_with};
+pub use lane_riesenfeld::{
+    chaikin, lane_riesenfeld, lane_riesenfeld_trace, lane_riesenfeld_with, LaneRiesenfeldStep,
+};
 pub use limit::{limit_points, limit_points_with, limit_stencil};
 pub use mask::Mask;
 
