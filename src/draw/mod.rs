@@ -1,0 +1,60 @@
+//! SVG pictures of the geometric results: a point set with its hull, the calipers' answers,
+//! the Delaunay triangulation, the Voronoi diagram, the closest pair, the Euclidean minimum
+//! spanning tree and the largest empty circle.
+//!
+//! Drawing is not an algorithm of the course: nothing here is declared or measured, and
+//! nothing here computes geometry. Every picture takes the results the other modules return
+//! (hull indices, a [`Triangulation`](crate::delaunay::Triangulation), a
+//! [`Voronoi`](crate::delaunay::Voronoi) diagram and its clipped cells, ...) and only maps and
+//! styles them. The module needs no dependency and no feature: the pictures are strings.
+//!
+//! # The pieces
+//!
+//! | item | what it is | file |
+//! |---|---|---|
+//! | [`Frame`] | the world → picture transform: y up, one power-of-two scale for both axes, every finite input drawable | `frame.rs` |
+//! | [`Picture`], [`Layer`], [`Role`], [`Style`] | a picture's layers (one SVG group each, the style written once), labels, legend and text | `svg.rs` |
+//!
+//! A new kind of picture (curves, surfaces, meshes, graphs) is a new file that builds a
+//! [`Picture`] from its own results, using the same roles.
+//!
+//! # Conventions
+//!
+//! - **Frame.** y grows upwards as everywhere in the crate (SVG's own y grows downwards);
+//!   one scale for both axes, so circles stay round. The frame is written in the root
+//!   element (`data-frame`, see [`Frame`]) so a reader can map the picture back to the
+//!   world. Coordinates of any magnitude, `1e300` or subnormal, are normalised through the
+//!   bounding box; a single point or a vertical segment gets a frame of its own size.
+//! - **Colours by role** ([`Role`]): input points near black, the result blue, a second
+//!   result sky blue and dashed, a highlighted pair vermillion, triangulation edges grey,
+//!   Voronoi edges green, circles purple, construction lines orange and dashed; white
+//!   background, so pictures read in print and on screen.
+//! - **Sizes and labels.** Pictures of up to [`LABEL_LIMIT`] points number their points;
+//!   larger ones have no labels, thinner strokes and smaller dots. The file grows linearly
+//!   with the input: points and edges are subpaths of a few `<path>` elements whose style
+//!   is written once per layer, with coordinates rounded to two decimals (one without
+//!   labels).
+//! - **Legend.** Each layer drawn with a legend text gets an entry below the drawing, after
+//!   the title.
+//! - **Errors.** A drawing function checks the indices it is given against the point set
+//!   ([`Error::InvalidParameter`](crate::Error::InvalidParameter) names the first bad one)
+//!   and refuses an empty point set ([`Error::Empty`](crate::Error::Empty)).
+//!
+//! ```
+//! use compgeo::draw::{Layer, Picture, Role};
+//! use compgeo::geometry::{BoundingBox, Point2};
+//!
+//! let pts = [(0.0, 0.0), (1e300, 0.0), (0.0, 5e-324)].map(Point2::from);
+//! let mut picture = Picture::new("three points", BoundingBox::of(&pts).unwrap(), pts.len());
+//! picture.points(&Layer::new("points", Role::Input).legend("3 points"), pts);
+//! let svg = picture.to_svg();
+//! assert!(svg.contains("data-frame=\"0 0 "));
+//! assert!(!svg.contains("NaN") && !svg.contains("inf"));
+//! ```
+
+mod frame;
+mod labels;
+mod svg;
+
+pub use frame::Frame;
+pub use svg::{escape, Dash, Layer, Picture, Role, Style, LABEL_LIMIT};
