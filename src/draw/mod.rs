@@ -14,6 +14,9 @@
 //! |---|---|---|
 //! | [`Frame`] | the world → picture transform: y up, one power-of-two scale for both axes, every finite input drawable | `frame.rs` |
 //! | [`Picture`], [`Layer`], [`Role`], [`Style`] | a picture's layers (one SVG group each, the style written once), labels, legend and text | `svg.rs` |
+//! | [`hull`], [`calipers`] | a point set with its hull; with antipodal pairs, diameter, width and enclosing rectangles | `hull.rs` |
+//! | [`delaunay`], [`voronoi`] | a triangulation (optionally with circumcircles); Voronoi cells clipped to a box | `delaunay.rs` |
+//! | [`closest_pair`], [`emst`], [`empty_circle`] | the proximity answers over their point set | `proximity.rs` |
 //!
 //! A new kind of picture (curves, surfaces, meshes, graphs) is a new file that builds a
 //! [`Picture`] from its own results, using the same roles.
@@ -52,9 +55,78 @@
 //! assert!(!svg.contains("NaN") && !svg.contains("inf"));
 //! ```
 
+mod delaunay;
 mod frame;
+mod hull;
 mod labels;
+mod proximity;
 mod svg;
 
+pub use delaunay::{delaunay, voronoi};
 pub use frame::Frame;
+pub use hull::{calipers, hull};
+pub use proximity::{closest_pair, empty_circle, emst};
 pub use svg::{escape, Dash, Layer, Picture, Role, Style, LABEL_LIMIT};
+
+use crate::error::{Error, Result};
+use crate::geometry::{BoundingBox, Point2, WideFloat};
+
+/// The bounding box of `points`, or the unit box at the origin for no points (an empty
+/// picture still has a frame).
+fn bounds_of(points: &[Point2]) -> BoundingBox {
+    BoundingBox::of(points).unwrap_or(BoundingBox {
+        min: Point2::new(0.0, 0.0),
+        max: Point2::new(1.0, 1.0),
+    })
+}
+
+/// Checks that every index is below `n`.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] named `name`, giving the first index out of range.
+fn check_indices(
+    name: &'static str,
+    indices: impl IntoIterator<Item = usize>,
+    n: usize,
+) -> Result<()> {
+    match indices.into_iter().find(|&i| i >= n) {
+        None => Ok(()),
+        Some(i) => Err(Error::InvalidParameter {
+            name,
+            reason: format!("index {i} is out of range for {n} points"),
+        }),
+    }
+}
+
+/// Each point of `indices` labelled with its index.
+fn index_labels<'a>(
+    points: &'a [Point2],
+    indices: impl IntoIterator<Item = usize> + 'a,
+) -> impl Iterator<Item = (Point2, String)> + 'a {
+    indices.into_iter().map(|i| (points[i], i.to_string()))
+}
+
+/// The legend text of the input points.
+fn points_legend(n: usize) -> String {
+    match n {
+        1 => "1 point".to_string(),
+        n => format!("{n} points"),
+    }
+}
+
+/// A length, area or distance for a legend: six significant digits when it fits in `f64`,
+/// the decimal value otherwise.
+fn value(w: WideFloat) -> String {
+    match w.to_f64() {
+        Some(v) if v != 0.0 => {
+            let rounded: f64 = format!("{v:.5e}").parse().unwrap_or(v);
+            if (1e-4..1e7).contains(&rounded.abs()) {
+                rounded.to_string()
+            } else {
+                format!("{rounded:e}")
+            }
+        }
+        Some(_) => "0".to_string(),
+        None => w.to_string(),
+    }
+}

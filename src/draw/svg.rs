@@ -387,7 +387,7 @@ impl Picture {
         } else {
             " fill=\"none\"".to_string()
         };
-        let attrs = fill + &self.stroke(layer.style);
+        let attrs = fill + &self.stroke(layer.style, 0.0);
         self.paths(layer, Mark::Area, &attrs, d)
     }
 
@@ -408,7 +408,7 @@ impl Picture {
                 d.chain(&vertices, false);
             }
         }
-        let attrs = format!(" fill=\"none\"{}", self.stroke(layer.style));
+        let attrs = format!(" fill=\"none\"{}", self.stroke(layer.style, 0.0));
         self.paths(layer, Mark::Line, &attrs, d)
     }
 
@@ -424,36 +424,37 @@ impl Picture {
             let b = self.frame.to_picture_constructed(b.into());
             d.chain(&[a, b], false);
         }
-        let attrs = format!(" fill=\"none\"{}", self.stroke(layer.style));
+        let attrs = format!(" fill=\"none\"{}", self.stroke(layer.style, 0.0));
         self.paths(layer, Mark::Line, &attrs, d)
     }
 
-    /// Draws the infinite lines through each pair of points, cut to the picture's drawing
-    /// area and half its margin; a pair that coincides in the picture, or a line that misses
-    /// the area, draws nothing. Returns how many lines were drawn.
-    pub fn lines<P: Into<ConstructedPoint>>(
+    /// Draws the lines parallel to `direction` (from its first point towards its second)
+    /// through each point of `through`, cut to the picture's drawing area; nothing if the direction's points coincide in the picture, and nothing for a
+    /// line that misses the area. Returns how many lines were drawn.
+    pub fn parallels<P: Into<ConstructedPoint>>(
         &mut self,
         layer: &Layer,
-        lines: impl IntoIterator<Item = [P; 2]>,
+        direction: [P; 2],
+        through: impl IntoIterator<Item = P>,
     ) -> usize {
         let [l, t, r, b] = self.frame.area();
-        let pad = self.sizes.margin / 2.0;
-        let window = [l - pad, t - pad, r + pad, b + pad];
+        let window = [l, t, r, b];
+        let [from, to] = direction.map(|p| self.frame.to_picture_constructed(p.into()));
+        let dir = [to[0] - from[0], to[1] - from[1]];
         let mut d = PathData::new(self.sizes.decimals);
-        for [a, b] in lines {
-            let a = self.frame.to_picture_constructed(a.into());
-            let b = self.frame.to_picture_constructed(b.into());
-            if let Some(ends) = clip_line(a, [b[0] - a[0], b[1] - a[1]], window) {
+        for p in through {
+            let a = self.frame.to_picture_constructed(p.into());
+            if let Some(ends) = clip_line(a, dir, window) {
                 d.chain(&ends, false);
             }
         }
-        let attrs = format!(" fill=\"none\"{}", self.stroke(layer.style));
+        let attrs = format!(" fill=\"none\"{}", self.stroke(layer.style, 0.0));
         self.paths(layer, Mark::Line, &attrs, d)
     }
 
     /// Draws circles given by their centre and a point on them; a circle whose centre or
     /// radius is beyond a hundred sides of the picture (a straight line across it) is left
-    /// out. Returns how many were drawn.
+    /// out, and the legend entry says how many were. Returns how many were drawn.
     pub fn circles<P: Into<ConstructedPoint>, Q: Into<ConstructedPoint>>(
         &mut self,
         layer: &Layer,
@@ -461,19 +462,24 @@ impl Picture {
     ) -> usize {
         let limit = CIRCLE_SIDES * self.sizes.side;
         let mut body = String::new();
-        let mut count = 0;
+        let (mut count, mut skipped) = (0, 0);
         for (centre, on) in circles {
             let c = self.frame.to_picture_constructed(centre.into());
             let p = self.frame.to_picture_constructed(on.into());
             let r = (p[0] - c[0]).hypot(p[1] - c[1]);
             if c[0].abs() > limit || c[1].abs() > limit || r > limit {
+                skipped += 1;
                 continue;
             }
             self.circle_element(&mut body, c, r);
             count += 1;
         }
-        let attrs = format!(" fill=\"none\"{}", self.stroke(layer.style));
-        self.group(layer, Mark::Ring, &attrs, &body, count)
+        let attrs = format!(" fill=\"none\"{}", self.stroke(layer.style, 0.0));
+        let mut layer = layer.clone();
+        if let (Some(text), true) = (&mut layer.legend, skipped > 0) {
+            let _ = write!(text, " ({skipped} too large to draw)");
+        }
+        self.group(&layer, Mark::Ring, &attrs, &body, count)
     }
 
     /// Draws a ring of a fixed size (three dots wide) around each point, to find a few
@@ -491,7 +497,7 @@ impl Picture {
             self.circle_element(&mut body, c, r);
             count += 1;
         }
-        let attrs = format!(" fill=\"none\"{}", self.stroke(layer.style));
+        let attrs = format!(" fill=\"none\"{}", self.stroke(layer.style, 0.0));
         self.group(layer, Mark::Ring, &attrs, &body, count)
     }
 
@@ -569,9 +575,9 @@ impl Picture {
         writeln!(out, "</svg>")
     }
 
-    /// The stroke attributes of a style.
-    fn stroke(&self, style: Style) -> String {
-        let width = self.sizes.stroke * style.role.weight();
+    /// The stroke attributes of a style, at least `min_width` wide.
+    fn stroke(&self, style: Style, min_width: f64) -> String {
+        let width = (self.sizes.stroke * style.role.weight()).max(min_width);
         let mut s = format!(
             " stroke=\"{}\" stroke-width=\"{}\" stroke-linejoin=\"round\"",
             style.role.colour(),
@@ -649,14 +655,20 @@ impl Picture {
             short(font),
             Role::Label.colour()
         );
-        let mut y = top + font;
-        let _ = writeln!(
-            out,
-            "<text x=\"{}\" y=\"{}\" font-weight=\"bold\">{}</text>",
-            short(left),
-            short(y),
-            escape(&self.title)
-        );
+        let mut y = top;
+        for (k, line_text) in wrap(&self.title, font * 1.1, width - 2.0 * left)
+            .iter()
+            .enumerate()
+        {
+            y += if k == 0 { font } else { line };
+            let _ = writeln!(
+                out,
+                "<text x=\"{}\" y=\"{}\" font-weight=\"bold\">{}</text>",
+                short(left),
+                short(y),
+                escape(line_text)
+            );
+        }
         let swatch = 2.2 * font;
         let mut x = left;
         if !self.legend.is_empty() {
@@ -686,14 +698,15 @@ impl Picture {
     /// The legend swatch of an entry, `length` wide, centred vertically on `mid`.
     fn swatch(&self, entry: &Entry, x: f64, mid: f64, length: f64) -> String {
         let colour = entry.style.role.colour();
-        let stroke = self.stroke(entry.style);
+        // A swatch stays visible however thin the picture's strokes are.
+        let stroke = self.stroke(entry.style, 0.1 * self.sizes.legend_font);
         let font = self.sizes.legend_font;
         match entry.mark {
             Mark::Dot => format!(
                 "<path d=\"M{} {}h0\" stroke=\"{colour}\" stroke-width=\"{}\" stroke-linecap=\"round\"/>\n",
                 short(x + length / 2.0),
                 short(mid),
-                short(self.sizes.dot.max(4.0))
+                short(self.sizes.dot.max(0.4 * font))
             ),
             Mark::Line => format!(
                 "<path d=\"M{} {}h{}\" fill=\"none\"{stroke}/>\n",
@@ -807,6 +820,27 @@ fn clip_line(a: [f64; 2], dir: [f64; 2], window: [f64; 4]) -> Option<[[f64; 2]; 
     }
     let at = |t: f64| [a[0] + t * dir[0], a[1] + t * dir[1]].map(|v| v.clamp(-FAR, FAR));
     Some([at(lo), at(hi)])
+}
+
+/// `text` broken at spaces into lines of at most `width` (estimated at `font` size); a
+/// word longer than a line gets a line of its own.
+fn wrap(text: &str, font: f64, width: f64) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut current = String::new();
+    for word in text.split(' ') {
+        let candidate = if current.is_empty() {
+            word.to_string()
+        } else {
+            format!("{current} {word}")
+        };
+        if !current.is_empty() && text_width(&candidate, font) > width {
+            lines.push(std::mem::replace(&mut current, word.to_string()));
+        } else {
+            current = candidate;
+        }
+    }
+    lines.push(current);
+    lines
 }
 
 /// The estimated width of `text` at `font` size (sans-serif digits and letters average
