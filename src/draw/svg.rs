@@ -479,7 +479,14 @@ impl Picture {
         if let (Some(text), true) = (&mut layer.legend, skipped > 0) {
             let _ = write!(text, " ({skipped} too large to draw)");
         }
-        self.group(&layer, Mark::Ring, &attrs, &body, count)
+        self.group_with_legend(
+            &layer,
+            Mark::Ring,
+            &attrs,
+            &body,
+            count,
+            count + skipped > 0,
+        )
     }
 
     /// Draws a ring of a fixed size (three dots wide) around each point, to find a few
@@ -503,19 +510,21 @@ impl Picture {
 
     /// Writes each text next to its point, where it overlaps no other label and no dot
     /// when one of eight places around the point is free (else the least crowded), if the
-    /// picture [shows labels](Self::shows_labels); draws nothing otherwise. At most
+    /// picture [shows labels](Self::shows_labels); otherwise the layer is empty. At most
     /// `4 · LABEL_LIMIT` labels are placed. Returns how many were written.
     pub fn labels<P: Into<ConstructedPoint>>(
         &mut self,
         layer: &Layer,
         labels: impl IntoIterator<Item = (P, String)>,
     ) -> usize {
-        if !self.sizes.labels {
-            return 0;
-        }
         let mut body = String::new();
         let mut count = 0;
-        for (p, text) in labels.into_iter().take(4 * LABEL_LIMIT) {
+        let shown = if self.sizes.labels {
+            4 * LABEL_LIMIT
+        } else {
+            0
+        };
+        for (p, text) in labels.into_iter().take(shown) {
             let at = self.frame.to_picture_constructed(p.into());
             let (x, y, anchor) = self.placer.place(at, text.chars().count());
             body.push_str("<text x=\"");
@@ -630,11 +639,24 @@ impl Picture {
 
     /// Appends a layer's group and records it (and its legend entry, if it drew anything).
     fn group(&mut self, layer: &Layer, mark: Mark, attrs: &str, body: &str, count: usize) -> usize {
+        self.group_with_legend(layer, mark, attrs, body, count, count > 0)
+    }
+
+    /// Appends a layer's group and records it, with its legend entry if `legend`.
+    fn group_with_legend(
+        &mut self,
+        layer: &Layer,
+        mark: Mark,
+        attrs: &str,
+        body: &str,
+        count: usize,
+        legend: bool,
+    ) -> usize {
         let _ = writeln!(self.body, "<g class=\"{}\"{attrs}>", escape(&layer.name));
         self.body.push_str(body);
         self.body.push_str("</g>\n");
         self.layers.push((layer.name.clone(), count));
-        if let (Some(text), true) = (&layer.legend, count > 0) {
+        if let (Some(text), true) = (&layer.legend, legend) {
             self.legend.push(Entry {
                 style: layer.style,
                 mark,
