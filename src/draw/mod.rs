@@ -40,19 +40,47 @@
 //! - **Legend.** Each layer drawn with a legend text gets an entry below the drawing, after
 //!   the title.
 //! - **Errors.** A drawing function checks the indices it is given against the point set
-//!   ([`Error::InvalidParameter`](crate::Error::InvalidParameter) names the first bad one)
-//!   and refuses an empty point set ([`Error::Empty`](crate::Error::Empty)).
+//!   ([`Error::InvalidParameter`](crate::Error::InvalidParameter) names the first bad one).
+//!   An empty point set draws an empty picture, as the structures of the other modules
+//!   exist for every input.
+//!
+//! # Complexity
+//!
+//! Every picture takes O(n + k) time and output size for n points and k drawn items
+//! (hull vertices, triangles, cells, edges), plus O(m²) for the m ≤ 4 · [`LABEL_LIMIT`]
+//! labels it places.
+//!
+//! # What the tests check
+//!
+//! `tests/suite/draw.rs` parses every picture with an XML parser and maps it back to the
+//! world through the recorded frame, in exact rationals: the drawn hull is the hull in
+//! order, the triangles and circumcircles are the triangulation's, the cells are
+//! [`Voronoi::clip`](crate::delaunay::Voronoi::clip)'s, the pairs, the width's lines and
+//! the rectangles' corners are the calipers'; labels appear up to [`LABEL_LIMIT`] points
+//! and not beyond; y grows upwards; extreme and degenerate inputs give finite numbers;
+//! files grow linearly. `tests/suite/draw_cli.rs` checks `compgeo draw` against the other
+//! commands.
 //!
 //! ```
-//! use compgeo::draw::{Layer, Picture, Role};
-//! use compgeo::geometry::{BoundingBox, Point2};
+//! use compgeo::delaunay::{dual, incremental};
+//! use compgeo::draw::{self, Layer, Role};
+//! use compgeo::geometry::{Point2, PointSet};
 //!
-//! let pts = [(0.0, 0.0), (1e300, 0.0), (0.0, 5e-324)].map(Point2::from);
-//! let mut picture = Picture::new("three points", BoundingBox::of(&pts).unwrap(), pts.len());
-//! picture.points(&Layer::new("points", Role::Input).legend("3 points"), pts);
+//! let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (1.0, 1.0), (0.0, 3.0)].map(Point2::from);
+//! let t = incremental(&pts)?;
+//! let mut picture = draw::delaunay(&PointSet::new(&pts)?, &t, Some(&dual(&pts, &t)))?;
+//! // A picture is open to more layers before it is written.
+//! picture.points(&Layer::new("origin", Role::Highlight).legend("origin"), [Point2::new(0.0, 0.0)]);
 //! let svg = picture.to_svg();
+//! assert!(svg.contains("<g class=\"triangles\"") && svg.contains("<g class=\"origin\""));
+//! assert!(svg.contains(">4</text>")); // point 4 is labelled
+//!
+//! // Any finite coordinates draw.
+//! let far = [(0.0, 0.0), (1e300, 0.0), (0.0, 5e-324)].map(Point2::from);
+//! let svg = draw::hull(&PointSet::new(&far)?, &[0, 1, 2])?.to_svg();
 //! assert!(svg.contains("data-frame=\"0 0 "));
 //! assert!(!svg.contains("NaN") && !svg.contains("inf"));
+//! # Ok::<(), compgeo::Error>(())
 //! ```
 
 mod delaunay;

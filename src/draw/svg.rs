@@ -429,7 +429,8 @@ impl Picture {
     }
 
     /// Draws the lines parallel to `direction` (from its first point towards its second)
-    /// through each point of `through`, cut to the picture's drawing area; nothing if the direction's points coincide in the picture, and nothing for a
+    /// through each point of `through`, cut to the picture's drawing area and a quarter of
+    /// its margin; nothing if the direction's points coincide in the picture, and nothing for a
     /// line that misses the area. Returns how many lines were drawn.
     pub fn parallels<P: Into<ConstructedPoint>>(
         &mut self,
@@ -438,7 +439,9 @@ impl Picture {
         through: impl IntoIterator<Item = P>,
     ) -> usize {
         let [l, t, r, b] = self.frame.area();
-        let window = [l, t, r, b];
+        // A quarter of the margin around the area: a line along the content's edge stays in.
+        let pad = self.sizes.margin / 4.0;
+        let window = [l - pad, t - pad, r + pad, b + pad];
         let [from, to] = direction.map(|p| self.frame.to_picture_constructed(p.into()));
         let dir = [to[0] - from[0], to[1] - from[1]];
         let mut d = PathData::new(self.sizes.decimals);
@@ -837,7 +840,8 @@ fn clip_line(a: [f64; 2], dir: [f64; 2], window: [f64; 4]) -> Option<[[f64; 2]; 
             hi = hi.min(t0.max(t1));
         }
     }
-    if !(lo < hi) || !lo.is_finite() || !hi.is_finite() {
+    // Neither bound is NaN: the direction is nonzero and every coordinate finite.
+    if lo >= hi || !lo.is_finite() || !hi.is_finite() {
         return None;
     }
     let at = |t: f64| [a[0] + t * dir[0], a[1] + t * dir[1]].map(|v| v.clamp(-FAR, FAR));

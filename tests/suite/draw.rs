@@ -68,7 +68,7 @@ impl RecordedFrame {
     }
 
     /// Where the world point `p` is drawn, computed exactly and rounded once.
-    pub fn to_picture(&self, p: Point2) -> [f64; 2] {
+    pub fn picture_of(&self, p: Point2) -> [f64; 2] {
         let unit = pow2(-self.shift);
         let x = rational(self.left) + (rational(p.x) - rational(self.ox)) * &unit;
         let y = rational(self.bottom) - (rational(p.y) - rational(self.oy)) * &unit;
@@ -366,7 +366,7 @@ fn the_triangles_are_the_triangulation_s_and_the_circumcircles_pass_through_them
         let circles = s.circles("circumcircles");
         let mut k = 0;
         for triangle in 0..t.triangle_count() {
-            let corners = t.triangle(triangle).map(|i| frame.to_picture(pts[i]));
+            let corners = t.triangle(triangle).map(|i| frame.picture_of(pts[i]));
             let Some(&[cx, cy, r]) = circles.get(k) else {
                 break;
             };
@@ -454,12 +454,12 @@ fn the_empty_circle_is_drawn_through_its_sites() {
     };
     assert!(frame.maps_back([cx, cy], c.centre));
     for &i in &c.sites {
-        let p = frame.to_picture(pts[i]);
+        let p = frame.picture_of(pts[i]);
         assert!(((p[0] - cx).hypot(p[1] - cy) - r).abs() < 4.0 * TOLERANCE);
     }
     // No input point is drawn inside the circle.
     for &p in &pts {
-        let q = frame.to_picture(p);
+        let q = frame.picture_of(p);
         assert!((q[0] - cx).hypot(q[1] - cy) > r - 4.0 * TOLERANCE);
     }
     assert_eq!(s.subpaths("radii").len(), c.sites.len());
@@ -493,12 +493,12 @@ fn the_calipers_picture_draws_the_calipers_answers() {
         }
         // The width: two lines parallel to its edge, through the edge and its vertex.
         let w = polygon.width().unwrap();
-        let [a, b] = w.edge.map(|i| frame.to_picture(pts[i]));
+        let [a, b] = w.edge.map(|i| frame.picture_of(pts[i]));
         let dir = [b[0] - a[0], b[1] - a[1]];
         let len = dir[0].hypot(dir[1]);
         let lines = s.subpaths("width");
         assert_eq!(lines.len(), 2);
-        for (line, through) in lines.iter().zip([a, frame.to_picture(pts[w.vertex])]) {
+        for (line, through) in lines.iter().zip([a, frame.picture_of(pts[w.vertex])]) {
             let [p, q] = [line.points[0], line.points[1]];
             let cross = |u: [f64; 2], v: [f64; 2]| u[0] * v[1] - u[1] * v[0];
             let along = [q[0] - p[0], q[1] - p[1]];
@@ -636,8 +636,9 @@ fn an_empty_point_set_draws_an_empty_picture() {
 
 #[test]
 fn files_grow_linearly_with_the_input() {
-    let size = |n: usize, f: &dyn Fn(&[Point2]) -> Picture| f(&uniform(n, 2)).to_svg().len();
-    let pictures: [(&str, &dyn Fn(&[Point2]) -> Picture); 4] = [
+    type Draws = dyn Fn(&[Point2]) -> Picture;
+    let size = |n: usize, f: &Draws| f(&uniform(n, 2)).to_svg().len();
+    let pictures: [(&str, &Draws); 4] = [
         ("hull", &|p| {
             let h = convex_hull(p, Algorithm::Graham, HullOptions::default()).unwrap();
             draw::hull(&PointSet::new(p).unwrap(), &h).unwrap()
