@@ -40,7 +40,7 @@
 //! - **Legend.** Each layer drawn with a legend text gets an entry below the drawing, after
 //!   the title.
 //! - **Errors.** A drawing function checks the indices it is given against the point set
-//!   ([`Error::InvalidParameter`](crate::Error::InvalidParameter) names the first bad one).
+//!   ([`Error::InvalidParameter`] names the first bad one).
 //!   An empty point set draws an empty picture, as the structures of the other modules
 //!   exist for every input.
 //!
