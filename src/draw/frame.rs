@@ -21,7 +21,7 @@ pub(super) const FAR: f64 = 1e6;
 /// scale is a power of two chosen so that the larger side of the content's bounding box
 /// is between half the picture's side and the side: both axes share it, so angles and
 /// circles keep their shape, and y grows upwards as in the rest of the crate. The
-/// content is centred in a drawing area at least a third of the side wide and a quarter
+/// content is centred in a drawing area at least half the side wide and a quarter
 /// high, so a single point or a vertical segment still gets a sensible frame.
 ///
 /// Every picture records its frame in the root element as
@@ -92,7 +92,7 @@ impl Frame {
             area: [0.0; 4],
         };
         let (content_w, content_h) = (frame.length(width), frame.length(height));
-        let area_w = content_w.max(side / 3.0);
+        let area_w = content_w.max(side / 2.0);
         let area_h = content_h.max(side / 4.0);
         frame.left = margin + (area_w - content_w) / 2.0;
         frame.bottom = margin + area_h - (area_h - content_h) / 2.0;

@@ -155,6 +155,18 @@ fn value(w: WideFloat) -> String {
             }
         }
         Some(_) => "0".to_string(),
-        None => w.to_string(),
+        None => {
+            // `d.ddd…e±N` beyond f64: the significand to six digits.
+            let text = w.to_string();
+            match text.split_once('e') {
+                Some((significand, exponent)) => {
+                    let rounded: f64 = format!("{:.5e}", significand.parse::<f64>().unwrap_or(0.0))
+                        .parse()
+                        .unwrap_or(0.0);
+                    format!("{rounded}e{exponent}")
+                }
+                None => text,
+            }
+        }
     }
 }

@@ -563,7 +563,16 @@ impl Picture {
     /// Those of `out`.
     pub fn write_svg<W: io::Write>(&self, out: &mut W) -> io::Result<()> {
         let [_, _, right, bottom] = self.frame.area();
-        let width = right + self.sizes.margin;
+        // Wide enough for the longest legend entry: a narrow drawing (a vertical segment)
+        // widens the picture to its right.
+        let font = self.sizes.legend_font;
+        let entry = |text: &str| 2.0 * self.legend_left() + 2.7 * font + text_width(text, font);
+        let widest = self
+            .legend
+            .iter()
+            .map(|e| entry(&e.text))
+            .fold(0.0, f64::max);
+        let width = (right + self.sizes.margin).max(widest);
         let (legend, legend_height) = self.legend_text(width, bottom + self.sizes.margin * 0.6);
         let height = bottom + self.sizes.margin * 0.6 + legend_height;
         let origin = self.frame.origin();
@@ -674,7 +683,7 @@ impl Picture {
     fn legend_text(&self, width: f64, top: f64) -> (String, f64) {
         let font = self.sizes.legend_font;
         let line = 1.6 * font;
-        let left = self.sizes.margin.min(2.0 * font);
+        let left = self.legend_left();
         let mut out = format!(
             "<g class=\"legend\" font-size=\"{}\" fill=\"{}\">\n",
             short(font),
@@ -718,6 +727,11 @@ impl Picture {
         }
         out.push_str("</g>\n");
         (out, y - top + font)
+    }
+
+    /// The legend's left edge.
+    fn legend_left(&self) -> f64 {
+        self.sizes.margin.min(2.0 * self.sizes.legend_font)
     }
 
     /// The legend swatch of an entry, `length` wide, centred vertically on `mid`.
