@@ -25,6 +25,7 @@
 //! | [`surface`] | tensor-product and triangular surfaces sharing traits ([`Surface`](surface::Surface), [`SurfaceDerivative`](surface::SurfaceDerivative)): the validated [`ControlNet`](surface::ControlNet), [`BezierPatch`](surface::BezierPatch) evaluated in either order or by the tensor de Casteljau algorithm, isoparametric curves, partial derivatives, the blossom, restriction, subdivision, elevation, derivative nets, monomial form, bounding box and Cʳ joins; [`BSplineSurface`](surface::BSplineSurface) and [`NurbsSurface`](surface::NurbsSurface) (insertion, elevation, Bézier patches through the curve code); tensor interpolation, least squares, lofting, bicubic C¹ interpolation; tensor Lane–Riesenfeld subdivision of a regular net; [`normal`](surface::normal) of any surface, [`tessellate`](surface::tessellate) into a [`TriangleMesh`](surface::TriangleMesh) written as OBJ or STL; triangular Bézier patches ([`TriangularPatch`](surface::TriangularPatch), [`surface::triangle`]): the Bernstein basis, de Casteljau, the blossom, directional derivatives, subdivision and the four-way split, degree elevation, Cʳ joins, conversions to and from tensor-product patches, tessellation into the same meshes | `src/surface/`, one algorithm per file; `src/surface/triangle/` |
 //! | [`mesh`] | polygon meshes generic over the scalar and the dimension: the validated [`PolygonMesh`](mesh::PolygonMesh) (oriented manifolds with boundary, every violation a named [`MeshError`](mesh::MeshError) with the face), its half-edge [`MeshTopology`](mesh::MeshTopology) (one-rings, valence, boundary loops, Euler characteristic), Wavefront OBJ reading and writing; subdivision surfaces by [`Scheme`](mesh::Scheme): Catmull–Clark on faces of any size with crease rules on the boundary, the midpoint scheme M₃, Loop (Loop's and Warren's weights) and Doo–Sabin; limit positions for Catmull–Clark and Loop | `src/mesh/`, one algorithm per file |
 //! | [`trace`] | step traces: the [`Frame`](trace::Frame)s of an algorithm's own run (hulls, Lawson's flips, de Casteljau, Lane–Riesenfeld, greedy colouring, Prim, Kruskal), with the counts so far | `src/trace.rs`; each `_trace` function beside its algorithm |
+//! | [`draw`] | SVG pictures of the geometric results (hull, calipers, Delaunay, Voronoi, closest pair, EMST, largest empty circle): the world → picture [`Frame`](draw::Frame), layers styled by [`Role`](draw::Role), labels and legend; not an algorithm, nothing declared | `src/draw/`, one file per kind of picture |
 //! | `cli` (feature `cli`) | the `compgeo` command line: readers, JSON output, one file per command | `src/cli/` |
 //!
 //! Every algorithm's own file is in the table below.
@@ -252,6 +253,7 @@ pub mod calipers;
 pub mod complexity;
 pub mod count;
 pub mod delaunay;
+pub mod draw;
 pub mod error;
 pub mod gen;
 pub mod geometry;

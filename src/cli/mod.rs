@@ -47,6 +47,7 @@ mod bezier;
 mod bspline;
 mod delaunay;
 mod diameter;
+mod draw;
 mod error;
 mod gen;
 mod graph;
@@ -136,6 +137,9 @@ enum Command {
     EmptyCircle(proximity::PointsArgs),
     /// Polygon meshes from OBJ: k rounds of a subdivision scheme (Catmull–Clark, ...)
     Mesh(mesh::MeshArgs),
+    /// Draw a geometric result as an SVG picture: hull, diameter, delaunay, voronoi,
+    /// closest-pair, emst, empty-circle
+    Draw(draw::DrawArgs),
 }
 
 /// Runs the command line with the process arguments and returns the exit code.
@@ -181,6 +185,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Emst(args) => proximity::run_emst(args),
         Command::EmptyCircle(args) => proximity::run_empty_circle(args),
         Command::Mesh(args) => mesh::run(args),
+        Command::Draw(args) => draw::run(args),
     }
 }
 

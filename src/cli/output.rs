@@ -3,7 +3,9 @@
 use super::CliError;
 use serde::Serialize;
 use serde_json::ser::{CompactFormatter, Formatter};
-use std::io::{self, Write};
+use std::fs::File;
+use std::io::{self, BufWriter, Write};
+use std::path::Path;
 
 /// Writes `value` as compact JSON followed by a newline to stdout.
 ///
@@ -32,6 +34,24 @@ pub fn write_json<W: Write, T: Serialize + ?Sized>(out: &mut W, value: &T) -> Re
     writeln!(out)
         .and_then(|()| out.flush())
         .map_err(CliError::Output)
+}
+
+/// Creates the file `path` (a file a command writes: a mesh, a picture) and lets `write`
+/// fill it through a buffer.
+///
+/// # Errors
+/// [`CliError::Write`] naming the path if it cannot be created, written or flushed.
+pub fn write_file(
+    path: &Path,
+    write: impl FnOnce(&mut BufWriter<File>) -> io::Result<()>,
+) -> Result<(), CliError> {
+    let failed = |source| CliError::Write {
+        path: crate::util::quote(&path.display().to_string()),
+        source,
+    };
+    let mut w = BufWriter::new(File::create(path).map_err(failed)?);
+    write(&mut w).map_err(failed)?;
+    w.flush().map_err(failed)
 }
 
 /// serde_json's compact format with `-0.0` written as `0.0`.

@@ -255,7 +255,7 @@ fn ray_outputs(v: &Voronoi, cell: Cell<'_>) -> Vec<RayOutput> {
 
 /// `N` comma-separated numbers; NaN and infinities parse here and are rejected by the
 /// library with a message naming the parameter.
-fn parse_numbers<const N: usize>(flag: &str, text: &str) -> Result<[f64; N], CliError> {
+pub(super) fn parse_numbers<const N: usize>(flag: &str, text: &str) -> Result<[f64; N], CliError> {
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();
     let bad = || {
         CliError::Usage(format!(

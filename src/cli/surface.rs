@@ -21,7 +21,7 @@
 use super::bezier::{point, points, read_number, scalars, JsonScalar};
 use super::input::{inline_or_stdin, parse_number_arrays, parse_number_grid};
 use super::interpolate::{read_scalars, to_points, Knots};
-use super::output::print_json;
+use super::output::{print_json, write_file};
 use super::CliError;
 use crate::count::Counts;
 use crate::spline::{parse_scalar, BSpline, KnotVector, Point, Scalar};
@@ -32,8 +32,6 @@ use crate::surface::{
 use clap::{Args, Subcommand, ValueEnum};
 use num_rational::BigRational;
 use serde_json::{json, Value};
-use std::fs::File;
-use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 /// Arguments of `compgeo surface`.
@@ -678,18 +676,4 @@ pub(super) fn write_mesh(
         out["indices"] = json!(mesh.triangles);
     }
     Ok(out)
-}
-
-/// Creates `path` and lets `write` fill it, naming the path if either fails.
-fn write_file(
-    path: &Path,
-    write: impl FnOnce(&mut BufWriter<File>) -> std::io::Result<()>,
-) -> Result<(), CliError> {
-    let failed = |source| CliError::Write {
-        path: crate::util::quote(&path.display().to_string()),
-        source,
-    };
-    let mut w = BufWriter::new(File::create(path).map_err(failed)?);
-    write(&mut w).map_err(failed)?;
-    w.flush().map_err(failed)
 }

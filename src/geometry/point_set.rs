@@ -158,7 +158,7 @@ impl BoundingBox {
 
     /// Grows the box to hold `p` (a finite point); equal extremes keep the earlier value.
     #[inline]
-    fn extend(&mut self, p: Point2) {
+    pub(crate) fn extend(&mut self, p: Point2) {
         if p.x < self.min.x {
             self.min.x = p.x;
         }

@@ -34,6 +34,8 @@ mod counts;
 mod degenerate;
 mod delaunay;
 mod delaunay_builders;
+mod draw;
+mod draw_cli;
 mod empty_circle;
 mod fortune;
 mod frenet;

@@ -1,0 +1,172 @@
+//! SVG pictures of the geometric results: a point set with its hull, the calipers' answers,
+//! the Delaunay triangulation, the Voronoi diagram, the closest pair, the Euclidean minimum
+//! spanning tree and the largest empty circle.
+//!
+//! Drawing is not an algorithm of the course: nothing here is declared or measured, and
+//! nothing here computes geometry. Every picture takes the results the other modules return
+//! (hull indices, a [`Triangulation`](crate::delaunay::Triangulation), a
+//! [`Voronoi`](crate::delaunay::Voronoi) diagram and its clipped cells, ...) and only maps and
+//! styles them. The module needs no dependency and no feature: the pictures are strings.
+//!
+//! # The pieces
+//!
+//! | item | what it is | file |
+//! |---|---|---|
+//! | [`Frame`] | the world → picture transform: y up, one power-of-two scale for both axes, every finite input drawable | `frame.rs` |
+//! | [`Picture`], [`Layer`], [`Role`], [`Style`] | a picture's layers (one SVG group each, the style written once), labels, legend and text | `svg.rs` |
+//! | [`hull`], [`calipers`] | a point set with its hull; with antipodal pairs, diameter, width and enclosing rectangles | `hull.rs` |
+//! | [`delaunay`], [`voronoi`] | a triangulation (optionally with circumcircles); Voronoi cells clipped to a box | `delaunay.rs` |
+//! | [`closest_pair`], [`emst`], [`empty_circle`] | the proximity answers over their point set | `proximity.rs` |
+//!
+//! A new kind of picture (curves, surfaces, meshes, graphs) is a new file that builds a
+//! [`Picture`] from its own results, using the same roles.
+//!
+//! # Conventions
+//!
+//! - **Frame.** y grows upwards as everywhere in the crate (SVG's own y grows downwards);
+//!   one scale for both axes, so circles stay round. The frame is written in the root
+//!   element (`data-frame`, see [`Frame`]) so a reader can map the picture back to the
+//!   world. Coordinates of any magnitude, `1e300` or subnormal, are normalised through the
+//!   bounding box; a single point or a vertical segment gets a frame of its own size.
+//! - **Colours by role** ([`Role`]): input points near black, the result blue, a second
+//!   result sky blue and dashed, a highlighted pair vermillion, triangulation edges grey,
+//!   Voronoi edges green, circles purple, construction lines orange and dashed; white
+//!   background, so pictures read in print and on screen.
+//! - **Sizes and labels.** Pictures of up to [`LABEL_LIMIT`] points number their points;
+//!   larger ones have no labels, thinner strokes and smaller dots. The file grows linearly
+//!   with the input: points and edges are subpaths of a few `<path>` elements whose style
+//!   is written once per layer, with coordinates rounded to two decimals (one without
+//!   labels).
+//! - **Legend.** Each layer drawn with a legend text gets an entry below the drawing, after
+//!   the title.
+//! - **Errors.** A drawing function checks the indices it is given against the point set
+//!   ([`Error::InvalidParameter`] names the first bad one).
+//!   An empty point set draws an empty picture, as the structures of the other modules
+//!   exist for every input.
+//!
+//! # Complexity
+//!
+//! Every picture takes O(n + k) time and output size for n points and k drawn items
+//! (hull vertices, triangles, cells, edges), plus O(m²) for the m ≤ 4 · [`LABEL_LIMIT`]
+//! labels it places.
+//!
+//! # What the tests check
+//!
+//! `tests/suite/draw.rs` parses every picture with an XML parser and maps it back to the
+//! world through the recorded frame, in exact rationals: the drawn hull is the hull in
+//! order, the triangles and circumcircles are the triangulation's, the cells are
+//! [`Voronoi::clip`](crate::delaunay::Voronoi::clip)'s, the pairs, the width's lines and
+//! the rectangles' corners are the calipers'; labels appear up to [`LABEL_LIMIT`] points
+//! and not beyond; y grows upwards; extreme and degenerate inputs give finite numbers;
+//! files grow linearly. `tests/suite/draw_cli.rs` checks `compgeo draw` against the other
+//! commands.
+//!
+//! ```
+//! use compgeo::delaunay::{dual, incremental};
+//! use compgeo::draw::{self, Layer, Role};
+//! use compgeo::geometry::{Point2, PointSet};
+//!
+//! let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (1.0, 1.0), (0.0, 3.0)].map(Point2::from);
+//! let t = incremental(&pts)?;
+//! let mut picture = draw::delaunay(&PointSet::new(&pts)?, &t, Some(&dual(&pts, &t)))?;
+//! // A picture is open to more layers before it is written.
+//! picture.points(&Layer::new("origin", Role::Highlight).legend("origin"), [Point2::new(0.0, 0.0)]);
+//! let svg = picture.to_svg();
+//! assert!(svg.contains("<g class=\"triangles\"") && svg.contains("<g class=\"origin\""));
+//! assert!(svg.contains(">4</text>")); // point 4 is labelled
+//!
+//! // Any finite coordinates draw.
+//! let far = [(0.0, 0.0), (1e300, 0.0), (0.0, 5e-324)].map(Point2::from);
+//! let svg = draw::hull(&PointSet::new(&far)?, &[0, 1, 2])?.to_svg();
+//! assert!(svg.contains("data-frame=\"0 0 "));
+//! assert!(!svg.contains("NaN") && !svg.contains("inf"));
+//! # Ok::<(), compgeo::Error>(())
+//! ```
+
+mod delaunay;
+mod frame;
+mod hull;
+mod labels;
+mod proximity;
+mod svg;
+
+pub use delaunay::{delaunay, voronoi};
+pub use frame::Frame;
+pub use hull::{calipers, hull};
+pub use proximity::{closest_pair, empty_circle, emst};
+pub use svg::{escape, Dash, Layer, Picture, Role, Style, LABEL_LIMIT};
+
+use crate::error::{Error, Result};
+use crate::geometry::{BoundingBox, Point2, WideFloat};
+
+/// The bounding box of `points`, or the unit box at the origin for no points (an empty
+/// picture still has a frame).
+fn bounds_of(points: &[Point2]) -> BoundingBox {
+    BoundingBox::of(points).unwrap_or(BoundingBox {
+        min: Point2::new(0.0, 0.0),
+        max: Point2::new(1.0, 1.0),
+    })
+}
+
+/// Checks that every index is below `n`.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] named `name`, giving the first index out of range.
+fn check_indices(
+    name: &'static str,
+    indices: impl IntoIterator<Item = usize>,
+    n: usize,
+) -> Result<()> {
+    match indices.into_iter().find(|&i| i >= n) {
+        None => Ok(()),
+        Some(i) => Err(Error::InvalidParameter {
+            name,
+            reason: format!("index {i} is out of range for {n} points"),
+        }),
+    }
+}
+
+/// Each point of `indices` labelled with its index.
+fn index_labels<'a>(
+    points: &'a [Point2],
+    indices: impl IntoIterator<Item = usize> + 'a,
+) -> impl Iterator<Item = (Point2, String)> + 'a {
+    indices.into_iter().map(|i| (points[i], i.to_string()))
+}
+
+/// The legend text of the input points.
+fn points_legend(n: usize) -> String {
+    match n {
+        1 => "1 point".to_string(),
+        n => format!("{n} points"),
+    }
+}
+
+/// A length, area or distance for a legend: six significant digits when it fits in `f64`,
+/// the decimal value otherwise.
+fn value(w: WideFloat) -> String {
+    match w.to_f64() {
+        Some(v) if v != 0.0 => {
+            let rounded: f64 = format!("{v:.5e}").parse().unwrap_or(v);
+            if (1e-4..1e7).contains(&rounded.abs()) {
+                rounded.to_string()
+            } else {
+                format!("{rounded:e}")
+            }
+        }
+        Some(_) => "0".to_string(),
+        None => {
+            // `d.ddd…e±N` beyond f64: the significand to six digits.
+            let text = w.to_string();
+            match text.split_once('e') {
+                Some((significand, exponent)) => {
+                    let rounded: f64 = format!("{:.5e}", significand.parse::<f64>().unwrap_or(0.0))
+                        .parse()
+                        .unwrap_or(0.0);
+                    format!("{rounded}e{exponent}")
+                }
+                None => text,
+            }
+        }
+    }
+}
