@@ -17,6 +17,8 @@
 //! | [`hull`], [`calipers`] | a point set with its hull; with antipodal pairs, diameter, width and enclosing rectangles | `hull.rs` |
 //! | [`delaunay`], [`voronoi`] | a triangulation (optionally with circumcircles); Voronoi cells clipped to a box | `delaunay.rs` |
 //! | [`closest_pair`], [`emst`], [`empty_circle`] | the proximity answers over their point set | `proximity.rs` |
+//! | [`StepPage`], [`StepFrame`] | a run as one self-contained HTML page, a picture per step, a slider and keys | `steps.rs` |
+//! | [`jarvis_steps`], [`graham_steps`], [`monotone_chain_steps`], [`quickhull_steps`], [`lawson_steps`] | step pages of the traced hulls and of Lawson's flips, from the [`trace`](crate::trace) frames | `hull_steps.rs` |
 //!
 //! A new kind of picture (curves, surfaces, meshes, graphs) is a new file that builds a
 //! [`Picture`] from its own results, using the same roles.
@@ -86,14 +88,20 @@
 mod delaunay;
 mod frame;
 mod hull;
+mod hull_steps;
 mod labels;
 mod proximity;
+mod steps;
 mod svg;
 
 pub use delaunay::{delaunay, voronoi};
 pub use frame::Frame;
 pub use hull::{calipers, hull};
+pub use hull_steps::{
+    graham_steps, jarvis_steps, lawson_steps, monotone_chain_steps, quickhull_steps,
+};
 pub use proximity::{closest_pair, empty_circle, emst};
+pub use steps::{StepFrame, StepPage};
 pub use svg::{escape, Dash, Layer, Picture, Role, Style, LABEL_LIMIT};
 
 use crate::error::{Error, Result};

@@ -262,7 +262,7 @@ fn svg(picture: &Picture) -> Svg {
 }
 
 /// Asserts that the subpath's points map back to `expected`, in order.
-fn assert_maps_back(frame: &RecordedFrame, drawn: &Subpath, expected: &[Point2]) {
+pub fn assert_maps_back(frame: &RecordedFrame, drawn: &Subpath, expected: &[Point2]) {
     assert_eq!(
         drawn.points.len(),
         expected.len(),
