@@ -282,7 +282,7 @@ fn picture(problem: &Problem, set: &PointSet<'_>, points: &[Point2]) -> Result<P
             ..
         } => {
             let t = triangulate_with(set, *algorithm, &mut NoCount)?;
-            let circles = circumcircles.then(|| dual(points, &t));
+            let circles = circumcircles.then(|| dual(points, &t)).transpose()?;
             draw::delaunay(set, &t, circles.as_ref())?
         }
         Problem::Voronoi { clip, .. } => {

@@ -70,7 +70,7 @@
 //!
 //! let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (1.0, 1.0), (0.0, 3.0)].map(Point2::from);
 //! let t = incremental(&pts)?;
-//! let mut picture = draw::delaunay(&PointSet::new(&pts)?, &t, Some(&dual(&pts, &t)))?;
+//! let mut picture = draw::delaunay(&PointSet::new(&pts)?, &t, Some(&dual(&pts, &t)?))?;
 //! // A picture is open to more layers before it is written.
 //! picture.points(&Layer::new("origin", Role::Highlight).legend("origin"), [Point2::new(0.0, 0.0)]);
 //! let svg = picture.to_svg();
