@@ -90,6 +90,17 @@ pub enum Error {
     /// vertex or edge), or Wavefront OBJ text that cannot be read (the line number).
     #[error(transparent)]
     Mesh(#[from] crate::mesh::MeshError),
+    /// A line of a text format that cannot be read (a DIMACS graph, an edge list), with its
+    /// 1-based number.
+    #[error("{format} line {line}: {problem}")]
+    Syntax {
+        /// The format, e.g. "DIMACS".
+        format: &'static str,
+        /// The 1-based line number (one past the last line for something missing at the end).
+        line: usize,
+        /// What is wrong, quoting the offending text.
+        problem: String,
+    },
 }
 
 /// A broken invariant, found by one of the crate's checkers

@@ -16,7 +16,7 @@
 //! | [`gen`] | seeded workload generators: point sets, graphs, number sequences, polygon meshes | `src/gen/` |
 //! | [`complexity`] | every algorithm's [`Declaration`](complexity::Declaration), stated bounds, the catalog, measurement, fits and verdicts | `src/complexity/` |
 //! | [`sort`] | the course's sorts, O(n log n) references, radix sort for `f64`, step traces | `src/sort/`, one file per sort |
-//! | [`graph`] | CSR graphs and their edge lists, BFS/DFS, colourings, minimum spanning trees | `src/graph/`: `colouring/` and `mst/` one file per algorithm |
+//! | [`graph`] | CSR graphs and their edge lists (DIMACS `.col` and plain edge lists in and out), BFS/DFS, colourings, minimum spanning trees | `src/graph/`: `colouring/` and `mst/` one file per algorithm |
 //! | [`hull`] | convex hulls: brute force, Jarvis, Graham, monotone chain, Akl–Toussaint, Quickhull, Chan; exact checkers | `src/hull/`, one file per algorithm |
 //! | [`calipers`] | rotating calipers on a [`ConvexPolygon`](calipers::ConvexPolygon): antipodal pairs, diameter, width, minimum-area rectangle; the diameter by brute force | `src/calipers/`, one file per problem |
 //! | [`delaunay`] | Delaunay triangulations in half-edge arrays (incremental builder, the course's divide and conquer, Lawson's flips, Fortune's sweep), the exact checker, the Voronoi diagram and its clipping | `src/delaunay/`, one file per builder |

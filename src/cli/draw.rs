@@ -14,7 +14,7 @@
 //! "points", "frames", "bytes", "out"}`.
 
 use super::input::PointInput;
-use super::output::{print_json, write_file};
+use super::output::{print_json, print_text, write_file};
 use super::proximity::parse_numbers;
 use super::CliError;
 use crate::calipers::{diameter, ConvexPolygon, DiameterAlgorithm};
@@ -32,7 +32,7 @@ use crate::proximity::{
 };
 use clap::{Args, Subcommand};
 use serde_json::{json, Map, Value};
-use std::io::{BufWriter, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Arguments of `compgeo draw`.
@@ -153,12 +153,7 @@ pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
     let svg = picture.to_svg();
     let out = &common.out;
     if out == Path::new("-") {
-        let stdout = std::io::stdout();
-        let mut w = BufWriter::new(stdout.lock());
-        return w
-            .write_all(svg.as_bytes())
-            .and_then(|()| w.flush())
-            .map_err(CliError::Output);
+        return print_text(&svg);
     }
     write_file(out, |w| w.write_all(svg.as_bytes()))?;
     let mut summary = Map::new();
@@ -234,12 +229,7 @@ fn write_page(
 ) -> Result<(), CliError> {
     let html = page.to_html();
     if out == Path::new("-") {
-        let stdout = std::io::stdout();
-        let mut w = BufWriter::new(stdout.lock());
-        return w
-            .write_all(html.as_bytes())
-            .and_then(|()| w.flush())
-            .map_err(CliError::Output);
+        return print_text(&html);
     }
     write_file(out, |w| w.write_all(html.as_bytes()))?;
     print_json(&json!({

@@ -21,6 +21,18 @@ pub fn print_json<T: Serialize + ?Sized>(value: &T) -> Result<(), CliError> {
     write_json(&mut io::BufWriter::new(stdout.lock()), value)
 }
 
+/// Writes `text` to stdout as it is (an SVG, a step page, DIMACS text) and flushes it.
+///
+/// # Errors
+/// [`CliError::Output`] if stdout cannot be written.
+pub fn print_text(text: &str) -> Result<(), CliError> {
+    let stdout = io::stdout();
+    let mut w = io::BufWriter::new(stdout.lock());
+    w.write_all(text.as_bytes())
+        .and_then(|()| w.flush())
+        .map_err(CliError::Output)
+}
+
 /// Writes `value` as compact JSON followed by a newline to `out`, then flushes it; `-0.0` is
 /// written as `0.0` (see [`print_json`]).
 ///

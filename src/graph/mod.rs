@@ -24,6 +24,7 @@ mod colouring;
 #[allow(clippy::module_inception)]
 mod graph;
 mod mst;
+mod text;
 mod traverse;
 mod union_find;
 
@@ -40,6 +41,7 @@ pub use mst::{
     prim_trace, prim_with, spanning_forest, spanning_forest_with, KruskalStep, MstAlgorithm,
     PrimStep, SpanningForest,
 };
+pub use text::{read_dimacs, read_edge_list, write_dimacs};
 pub use traverse::{
     bfs, bfs_with, check_search_tree, components, dfs, dfs_with, is_connected, search,
     search_trace, search_with, trace_table, Components, Search, SearchAlgorithm, TraceRow,

@@ -43,6 +43,7 @@ mod frenet;
 mod fuzz_regressions;
 mod gen;
 mod graph;
+mod graph_text;
 mod hull;
 mod interpolate;
 mod interpolate_cli;

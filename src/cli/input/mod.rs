@@ -66,14 +66,30 @@ pub struct PointInput {
     pub format: Option<Format>,
 }
 
-/// A graph argument: the path of a JSON graph, or `-` for stdin.
+/// A graph argument: the path of a graph file, or `-` for stdin, and its format.
 #[derive(Debug, Clone, clap::Args)]
 pub struct GraphInput {
     /// Graph file: JSON {"vertices": n, "edges": [[u, v], ...]} (edges [u, v, w] with
-    /// weights), or the edge list alone, [[u, v], ...] or [[u, v, w], ...], on vertices 0 to
-    /// the largest id; `-` reads stdin.
+    /// weights) or the edge list alone, [[u, v], ...] or [[u, v, w], ...], on vertices 0 to
+    /// the largest id; DIMACS .col (p edge n m, e u v, from 1); or a plain edge list, lines
+    /// u v [w] from 0; `-` reads stdin
     #[arg(value_name = "G")]
     pub input: PathBuf,
+    /// Graph format [default: dimacs for .col and .dimacs, edges for .edges and .txt, json
+    /// otherwise and for stdin]
+    #[arg(long = "format", value_enum, value_name = "FORMAT")]
+    pub graph_format: Option<GraphFormat>,
+}
+
+/// The text formats a graph can be read from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum GraphFormat {
+    /// `{"vertices": n, "edges": [[u, v], ...]}` or `[[u, v], ...]`.
+    Json,
+    /// DIMACS `.col`: `p edge n m`, `e u v` with vertices from 1, `c` comments.
+    Dimacs,
+    /// Lines `u v` or `u v w`, vertices from 0, `#` comments.
+    Edges,
 }
 
 /// The text formats a point set can be read from.
@@ -111,9 +127,27 @@ impl GraphInput {
     ///
     /// # Errors
     /// [`CliError::Read`] if the input cannot be read, and the errors of
-    /// [`parse_json_graph`].
+    /// [`parse_json_graph`], [`read_dimacs`](crate::graph::read_dimacs) and
+    /// [`read_edge_list`](crate::graph::read_edge_list) (each malformed line by number).
     pub fn read(&self) -> Result<EdgeList, CliError> {
-        parse_json_graph(&read_text(&self.input)?)
+        let text = read_text(&self.input)?;
+        let format = self.graph_format.unwrap_or_else(|| {
+            let ext = self
+                .input
+                .extension()
+                .and_then(|e| e.to_str())
+                .map(str::to_ascii_lowercase);
+            match ext.as_deref() {
+                Some("col" | "dimacs") => GraphFormat::Dimacs,
+                Some("edges" | "txt") => GraphFormat::Edges,
+                _ => GraphFormat::Json,
+            }
+        });
+        match format {
+            GraphFormat::Json => parse_json_graph(&text),
+            GraphFormat::Dimacs => Ok(crate::graph::read_dimacs(&text)?),
+            GraphFormat::Edges => Ok(crate::graph::read_edge_list(&text)?),
+        }
     }
 }
 
@@ -221,7 +255,12 @@ mod tests {
         assert!(matches!(forced.read(), Err(CliError::Json { .. })));
         let g = dir.join("g.json");
         std::fs::write(&g, r#"{"vertices": 2, "edges": [[0, 1]]}"#).unwrap();
-        let graph = GraphInput { input: g }.read().unwrap();
+        let graph = GraphInput {
+            input: g,
+            graph_format: None,
+        }
+        .read()
+        .unwrap();
         assert_eq!((graph.vertices, graph.edges), (2, vec![[0, 1]]));
         // Invalid UTF-8: the offset of the first bad byte.
         let bad = dir.join("bad.json");
@@ -239,6 +278,7 @@ mod tests {
         );
         let missing = GraphInput {
             input: dir.join("missing.json"),
+            graph_format: None,
         };
         match missing.read() {
             Err(CliError::Read { path, .. }) => assert!(path.contains("missing.json")),
