@@ -599,7 +599,13 @@ fn the_readme_tour_runs() {
         if let Some(file) = target {
             std::fs::write(dir.join(file), &stdout).unwrap();
         }
-        if !words.iter().any(|w| w == "--trace" || w == "--help") {
+        let dimacs = words
+            .windows(2)
+            .any(|w| w[0] == "--format" && w[1] == "dimacs")
+            && words[0] == "gen";
+        if dimacs {
+            compgeo::graph::read_dimacs(&stdout).unwrap_or_else(|e| panic!("{line}: {e}"));
+        } else if !words.iter().any(|w| w == "--trace" || w == "--help") {
             assert_eq!(stdout.lines().count(), 1, "{line}: one line of JSON");
             serde_json::from_str::<Value>(&stdout).unwrap_or_else(|e| panic!("{line}: {e}"));
         }
