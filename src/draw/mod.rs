@@ -83,21 +83,83 @@
 //! # Ok::<(), compgeo::Error>(())
 //! ```
 
+mod curves;
 mod delaunay;
 mod frame;
+mod graphs;
 mod hull;
 mod labels;
 mod proximity;
+mod surfaces;
 mod svg;
 
+pub use curves::{bezier, beta, bspline, nurbs, sample_parameters, subdivision, SAMPLES_PER_PIECE};
 pub use delaunay::{delaunay, voronoi};
 pub use frame::Frame;
+pub use graphs::{circle_layout, graph, GraphOverlay};
 pub use hull::{calipers, hull};
 pub use proximity::{closest_pair, empty_circle, emst};
-pub use svg::{escape, Dash, Layer, Picture, Role, Style, LABEL_LIMIT};
+pub use surfaces::{mesh, surface, triangular_patch};
+pub use svg::{escape, Dash, Layer, Picture, Role, Style, CLASS_COLOURS, LABEL_LIMIT};
 
 use crate::error::{Error, Result};
 use crate::geometry::{BoundingBox, Point2, WideFloat};
+use crate::spline::{Point, Scalar};
+
+/// The factor of the cabinet projection, √2 / 4: the y axis recedes at 45° with half its
+/// length (see [`project`]).
+pub const CABINET: f64 = std::f64::consts::SQRT_2 / 4.0;
+
+/// The picture-plane point of a curve's or surface's point, rounded to `f64`: in two
+/// dimensions the point itself; in three the fixed cabinet projection
+///
+/// ```text
+/// (x, y, z) ↦ (x + k·y, z + k·y),   k = √2 / 4 (CABINET)
+/// ```
+///
+/// which keeps x to the right and z up, and draws the y axis receding at 45° up and to the
+/// right at half its length, so that a height field z = f(x, y) reads as a relief seen from
+/// the front and slightly above. Lengths and angles in planes y = const are kept.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] named `"dimension"` for points in a dimension other than 2
+/// or 3; [`Error::Overflow`] if the point or its projection is beyond the range of `f64`.
+///
+/// # Complexity
+/// O(D) time.
+///
+/// ```
+/// use compgeo::draw::{project, CABINET};
+/// use compgeo::geometry::Point2;
+/// use compgeo::spline::Point;
+///
+/// assert_eq!(project(&Point::new([1.0, 2.0]))?, Point2::new(1.0, 2.0));
+/// assert_eq!(project(&Point::new([1.0, 0.0, 3.0]))?, Point2::new(1.0, 3.0));
+/// assert_eq!(project(&Point::new([0.0, 4.0, 0.0]))?, Point2::new(4.0 * CABINET, 4.0 * CABINET));
+/// assert!(project(&Point::new([1.0])).is_err());
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn project<S: Scalar, const D: usize>(p: &Point<S, D>) -> Result<Point2> {
+    let c = p.to_f64();
+    let c = c.coords();
+    let (x, y) = match D {
+        2 => (c[0], c[1]),
+        3 => (c[0] + CABINET * c[1], c[2] + CABINET * c[1]),
+        _ => {
+            return Err(Error::InvalidParameter {
+                name: "dimension",
+                reason: format!("pictures are of points in 2 or 3 dimensions, got {D}"),
+            })
+        }
+    };
+    if x.is_finite() && y.is_finite() {
+        Ok(Point2::new(x, y))
+    } else {
+        Err(Error::Overflow {
+            what: "the projection for drawing",
+        })
+    }
+}
 
 /// The bounding box of `points`, or the unit box at the origin for no points (an empty
 /// picture still has a frame).
