@@ -36,6 +36,7 @@ mod delaunay;
 mod delaunay_builders;
 mod draw;
 mod draw_cli;
+mod draw_curves;
 mod empty_circle;
 mod fortune;
 mod frenet;
