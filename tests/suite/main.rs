@@ -37,6 +37,7 @@ mod delaunay_builders;
 mod draw;
 mod draw_cli;
 mod draw_curves;
+mod draw_curves_cli;
 mod empty_circle;
 mod fortune;
 mod frenet;
