@@ -44,12 +44,12 @@ use crate::graph::{
     colour_with, search_with, spanning_forest_with, ColouringAlgorithm, Graph, MstAlgorithm,
     SearchAlgorithm,
 };
-use crate::mesh::{read_obj, subdivide_with, PolygonMesh, Scheme};
-use crate::spline::{parse_scalar, Bezier};
 use crate::hull::{convex_hull_with, Algorithm as HullAlgorithm, HullOptions};
+use crate::mesh::{read_obj, subdivide_with, PolygonMesh, Scheme};
 use crate::proximity::{
     closest_pair_with, euclidean_mst_with, largest_empty_circle_with, ClosestPairAlgorithm,
 };
+use crate::spline::{parse_scalar, Bezier};
 use clap::{Args, Subcommand};
 use serde_json::{json, Map, Value};
 use std::io::{BufWriter, Write};
@@ -160,7 +160,12 @@ enum Problem {
         #[command(flatten)]
         curve: BsplineArgs,
         /// Draw de Boor's net at this parameter of the domain [t_d, t_n]
-        #[arg(long = "u", visible_alias = "t", value_name = "U", allow_hyphen_values = true)]
+        #[arg(
+            long = "u",
+            visible_alias = "t",
+            value_name = "U",
+            allow_hyphen_values = true
+        )]
         u: Option<String>,
         #[command(flatten)]
         out: Out,
@@ -267,7 +272,12 @@ pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
     let (name, algorithm, out, mut picture) = match &args.problem {
         Problem::Hull {
             algorithm, common, ..
-        } => ("hull", Some(algorithm.name()), &common.out, from_points(common)?),
+        } => (
+            "hull",
+            Some(algorithm.name()),
+            &common.out,
+            from_points(common)?,
+        ),
         Problem::Diameter { algorithm, common } => (
             "diameter",
             Some(algorithm.name()),
@@ -574,7 +584,14 @@ fn graph_picture(
     {
         let search = search_with(&g, start, kind, &mut NoCount)?;
         (
-            draw::graph(&g, &positions, GraphOverlay::Search { search: &search, start })?,
+            draw::graph(
+                &g,
+                &positions,
+                GraphOverlay::Search {
+                    search: &search,
+                    start,
+                },
+            )?,
             Some(kind.name()),
         )
     } else {
@@ -584,7 +601,11 @@ fn graph_picture(
 
 /// The picture of a point problem, each result computed by the library as its own command
 /// does.
-fn point_picture(problem: &Problem, set: &PointSet<'_>, points: &[Point2]) -> Result<Picture, CliError> {
+fn point_picture(
+    problem: &Problem,
+    set: &PointSet<'_>,
+    points: &[Point2],
+) -> Result<Picture, CliError> {
     Ok(match problem {
         Problem::Hull {
             algorithm,

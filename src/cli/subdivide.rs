@@ -87,10 +87,7 @@ pub(super) fn topology(args: &SubdivideArgs) -> Topology {
 /// The scheme's name, with the degree of Lane–Riesenfeld.
 pub(super) fn scheme_title(args: &SubdivideArgs) -> String {
     match args.scheme {
-        Scheme::LaneRiesenfeld => format!(
-            "Lane–Riesenfeld of degree {}",
-            args.degree.unwrap_or(3)
-        ),
+        Scheme::LaneRiesenfeld => format!("Lane–Riesenfeld of degree {}", args.degree.unwrap_or(3)),
         Scheme::Chaikin => "Chaikin".to_string(),
         Scheme::FourPoint => "four-point scheme".to_string(),
     }
@@ -111,9 +108,7 @@ pub(super) fn each_round<S: JsonScalar, const D: usize>(
     for _ in 0..args.rounds {
         let last = rounds.last().expect("the input is round 0");
         let next = match args.scheme {
-            Scheme::LaneRiesenfeld => {
-                lane_riesenfeld(last, args.degree.unwrap_or(3), 1, topology)?
-            }
+            Scheme::LaneRiesenfeld => lane_riesenfeld(last, args.degree.unwrap_or(3), 1, topology)?,
             Scheme::Chaikin => lane_riesenfeld(last, 2, 1, topology)?,
             Scheme::FourPoint => four_point(last, &w, 1, topology)?,
         };

@@ -95,7 +95,7 @@ pub fn bezier<S: Scalar, const D: usize>(curve: &Bezier<S, D>, t: Option<&S>) ->
     let n = curve.degree();
     let mut title = format!("Bézier curve of degree {n}");
     if let Some(t) = t {
-        title.push_str(&format!(", de Casteljau at t = {}", t.to_f64()));
+        title.push_str(&format!(", de Casteljau at t = {}", parameter(t)));
     }
     let mut picture = frame_of(
         &title,
@@ -225,8 +225,8 @@ pub fn beta<S: Scalar, const D: usize>(curve: &BetaSpline<S, D>) -> Result<Pictu
     let p = curve.parameters();
     let title = format!(
         "cubic Beta-spline, β₁ = {}, β₂ = {}, {m} segments",
-        p.beta1().to_f64(),
-        p.beta2().to_f64()
+        parameter(p.beta1()),
+        parameter(p.beta2())
     );
     let mut picture = frame_of(&title, [&samples, &control], control.len());
     control_polygon(&mut picture, &control, false);
@@ -313,7 +313,10 @@ pub fn subdivision<S: Scalar, const D: usize>(
             last,
             closed,
         );
-        picture.points(&Layer::new("result-points", Role::Result), last.iter().copied());
+        picture.points(
+            &Layer::new("result-points", Role::Result),
+            last.iter().copied(),
+        );
     }
     control_points(&mut picture, &polygons[0]);
     Ok(picture)
@@ -354,7 +357,7 @@ fn spline_picture<S: Scalar, const D: usize>(
     };
     let mut title = title.to_string();
     if let Some(u) = u {
-        title.push_str(&format!(", de Boor at u = {}", u.to_f64()));
+        title.push_str(&format!(", de Boor at u = {}", parameter(u)));
     }
     let mut picture = frame_of(
         &title,
@@ -384,6 +387,11 @@ fn spline_picture<S: Scalar, const D: usize>(
         );
     }
     Ok(picture)
+}
+
+/// A parameter for a title, to six significant digits.
+fn parameter<S: Scalar>(t: &S) -> String {
+    super::value(crate::geometry::WideFloat::from(t.to_f64()))
 }
 
 /// The curve's points at [`sample_parameters`] of `breaks`, projected.

@@ -44,8 +44,7 @@ pub enum GraphOverlay<'a> {
 pub fn circle_layout(n: usize) -> Vec<Point2> {
     (0..n)
         .map(|i| {
-            let angle =
-                std::f64::consts::FRAC_PI_2 + std::f64::consts::TAU * i as f64 / n as f64;
+            let angle = std::f64::consts::FRAC_PI_2 + std::f64::consts::TAU * i as f64 / n as f64;
             Point2::new(angle.cos(), angle.sin())
         })
         .collect()
@@ -85,7 +84,10 @@ pub fn graph(g: &Graph, positions: &[Point2], overlay: GraphOverlay<'_>) -> Resu
             reason: format!("{} positions for {n} vertices", positions.len()),
         });
     }
-    if let Some(i) = positions.iter().position(|p| !p.x.is_finite() || !p.y.is_finite()) {
+    if let Some(i) = positions
+        .iter()
+        .position(|p| !p.x.is_finite() || !p.y.is_finite())
+    {
         return Err(Error::InvalidParameter {
             name: "positions",
             reason: format!("the position of vertex {i} is not finite"),
@@ -180,7 +182,10 @@ pub fn graph(g: &Graph, positions: &[Point2], overlay: GraphOverlay<'_>) -> Resu
     }
     picture.labels(
         &Layer::new("labels", Role::Label).legend("vertex"),
-        positions.iter().enumerate().map(|(v, &p)| (p, v.to_string())),
+        positions
+            .iter()
+            .enumerate()
+            .map(|(v, &p)| (p, v.to_string())),
     );
     Ok(picture)
 }

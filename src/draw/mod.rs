@@ -1,6 +1,9 @@
 //! SVG pictures of the geometric results: a point set with its hull, the calipers' answers,
 //! the Delaunay triangulation, the Voronoi diagram, the closest pair, the Euclidean minimum
-//! spanning tree and the largest empty circle.
+//! spanning tree and the largest empty circle; of curves (Bézier curves with de Casteljau's
+//! scaffolding, B-splines with their knots and de Boor's net, NURBS, Beta-splines, the rounds
+//! of a subdivision scheme), of surfaces and meshes as projected wireframes, and of graphs
+//! with a colouring, a spanning tree or a search tree.
 //!
 //! Drawing is not an algorithm of the course: nothing here is declared or measured, and
 //! nothing here computes geometry. Every picture takes the results the other modules return
@@ -17,9 +20,12 @@
 //! | [`hull`], [`calipers`] | a point set with its hull; with antipodal pairs, diameter, width and enclosing rectangles | `hull.rs` |
 //! | [`delaunay`], [`voronoi`] | a triangulation (optionally with circumcircles); Voronoi cells clipped to a box | `delaunay.rs` |
 //! | [`closest_pair`], [`emst`], [`empty_circle`] | the proximity answers over their point set | `proximity.rs` |
+//! | [`bezier`], [`bspline`], [`nurbs`], [`beta`], [`subdivision`] | curves over their control polygons, de Casteljau's scaffolding, de Boor's net, knots, subdivision rounds | `curves.rs` |
+//! | [`surface`], [`triangular_patch`], [`mesh`], [`project`] | projected wireframes: isoparametric lines over the control net, a mesh's edges over the coarse mesh | `surfaces.rs` |
+//! | [`graph`], [`circle_layout`], [`GraphOverlay`] | a graph at coordinates or on a circle, with a colouring, a spanning or a search tree | `graphs.rs` |
 //!
-//! A new kind of picture (curves, surfaces, meshes, graphs) is a new file that builds a
-//! [`Picture`] from its own results, using the same roles.
+//! A new kind of picture is a new file that builds a [`Picture`] from its own results,
+//! using the same roles.
 //!
 //! # Conventions
 //!
@@ -48,7 +54,8 @@
 //!
 //! Every picture takes O(n + k) time and output size for n points and k drawn items
 //! (hull vertices, triangles, cells, edges), plus O(m²) for the m ≤ 4 · [`LABEL_LIMIT`]
-//! labels it places.
+//! labels it places; a curve or surface adds its evaluations at the drawn parameters
+//! ([`SAMPLES_PER_PIECE`] per piece).
 //!
 //! # What the tests check
 //!
@@ -58,8 +65,14 @@
 //! [`Voronoi::clip`](crate::delaunay::Voronoi::clip)'s, the pairs, the width's lines and
 //! the rectangles' corners are the calipers'; labels appear up to [`LABEL_LIMIT`] points
 //! and not beyond; y grows upwards; extreme and degenerate inputs give finite numbers;
-//! files grow linearly. `tests/suite/draw_cli.rs` checks `compgeo draw` against the other
-//! commands.
+//! files grow linearly. `tests/suite/draw_curves.rs` does the same for curves, surfaces, meshes
+//! and graphs against exact oracles: the curve's vertices are the curve's points (de
+//! Casteljau's levels from the Bernstein form, a clamped B-spline against its Bézier curve, a
+//! uniform Beta-spline against its B-spline, a NURBS arc against the circle), the knots sit on
+//! the curve, the wireframes are the projected surface points, the mesh's edges are drawn
+//! once each, the colour classes are the colouring's and proper, the tree edges are the
+//! tree's. `tests/suite/draw_cli.rs` and `draw_curves_cli.rs` check `compgeo draw` against
+//! the other commands.
 //!
 //! ```
 //! use compgeo::delaunay::{dual, incremental};
@@ -93,7 +106,7 @@ mod proximity;
 mod surfaces;
 mod svg;
 
-pub use curves::{bezier, beta, bspline, nurbs, sample_parameters, subdivision, SAMPLES_PER_PIECE};
+pub use curves::{beta, bezier, bspline, nurbs, sample_parameters, subdivision, SAMPLES_PER_PIECE};
 pub use delaunay::{delaunay, voronoi};
 pub use frame::Frame;
 pub use graphs::{circle_layout, graph, GraphOverlay};

@@ -191,7 +191,11 @@ pub fn triangular_patch<S: Scalar, const D: usize>(
             ]);
         }
     }
-    let control = patch.points().iter().map(project).collect::<Result<Vec<_>>>()?;
+    let control = patch
+        .points()
+        .iter()
+        .map(project)
+        .collect::<Result<Vec<_>>>()?;
     let title = format!("triangular Bézier patch of degree {n}, {s} segments a side");
     let all: Vec<Point2> = grid.iter().flatten().chain(&control).copied().collect();
     let mut picture = Picture::new(&title, bounds(&all), control.len());
@@ -253,7 +257,11 @@ pub fn mesh<S: Scalar, const D: usize>(
         .map(project)
         .collect::<Result<Vec<_>>>()?;
     let fine_points = match fine {
-        Some(f) => f.positions().iter().map(project).collect::<Result<Vec<_>>>()?,
+        Some(f) => f
+            .positions()
+            .iter()
+            .map(project)
+            .collect::<Result<Vec<_>>>()?,
         None => Vec::new(),
     };
     let shown = fine.unwrap_or(coarse);

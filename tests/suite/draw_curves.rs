@@ -12,8 +12,8 @@ use crate::spline_common::{q, qi, Q};
 use compgeo::draw::{self, circle_layout, sample_parameters, GraphOverlay, CLASS_COLOURS};
 use compgeo::geometry::Point2;
 use compgeo::graph::{
-    colour, search, spanning_forest, ColouringAlgorithm, Graph,
-    MstAlgorithm, SearchAlgorithm, WeightedGraph,
+    colour, search, spanning_forest, ColouringAlgorithm, Graph, MstAlgorithm, SearchAlgorithm,
+    WeightedGraph,
 };
 use compgeo::mesh::{catmull_clark, PolygonMesh};
 use compgeo::spline::{
@@ -45,7 +45,10 @@ fn assert_drawn(svg: &Svg, class: &str, k: usize, expected: &[Point2]) {
     assert_eq!(drawn.len(), expected.len(), "{class}[{k}]");
     let frame = svg.frame();
     for (i, (at, p)) in drawn.iter().zip(expected).enumerate() {
-        assert!(frame.maps_back(*at, *p), "{class}[{k}][{i}]: {at:?} vs {p:?}");
+        assert!(
+            frame.maps_back(*at, *p),
+            "{class}[{k}][{i}]: {at:?} vs {p:?}"
+        );
     }
 }
 
@@ -153,10 +156,20 @@ fn a_clamped_bspline_without_inner_knots_draws_its_bezier_curve_and_de_casteljau
 #[test]
 fn a_bspline_picture_marks_its_distinct_knots_on_the_curve() {
     // Degree 2, knots 0 0 0 1/3 1/3 2/3 1 1 1 (a double knot): four distinct knots.
-    let knots: Vec<Q> = [(0, 1), (0, 1), (0, 1), (1, 3), (1, 3), (2, 3), (1, 1), (1, 1), (1, 1)]
-        .iter()
-        .map(|&(n, d)| q(n, d))
-        .collect();
+    let knots: Vec<Q> = [
+        (0, 1),
+        (0, 1),
+        (0, 1),
+        (1, 3),
+        (1, 3),
+        (2, 3),
+        (1, 1),
+        (1, 1),
+        (1, 1),
+    ]
+    .iter()
+    .map(|&(n, d)| q(n, d))
+    .collect();
     let control: Vec<Point<Q, 3>> = (0..6)
         .map(|i| Point::new([qi(i), qi(i * i % 5), qi(3 - i)]))
         .collect();
@@ -187,7 +200,12 @@ fn a_nurbs_quarter_circle_is_drawn_on_the_circle() {
         Point::new([r, r]),
         Point::new([0.0, r]),
     ];
-    let arc = Nurbs::new(control, vec![1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0], knots).unwrap();
+    let arc = Nurbs::new(
+        control,
+        vec![1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0],
+        knots,
+    )
+    .unwrap();
     let svg = svg(&draw::nurbs(&arc).unwrap());
     let frame = svg.frame();
     let curve = &svg.subpaths("curve")[0].points;
@@ -210,7 +228,8 @@ fn a_uniform_beta_spline_is_its_uniform_cubic_bspline() {
         .map(|&(x, y)| Point::new([qi(x), qi(y)]))
         .collect();
     let n = control.len();
-    let beta = BetaSpline::new(BetaParameters::new(qi(1), qi(0)).unwrap(), control.clone()).unwrap();
+    let beta =
+        BetaSpline::new(BetaParameters::new(qi(1), qi(0)).unwrap(), control.clone()).unwrap();
     let knots = KnotVector::new(3, (0..n as i64 + 4).map(qi).collect()).unwrap();
     let b = BSpline::new(control.clone(), knots).unwrap();
     let svg = svg(&draw::beta(&beta).unwrap());
@@ -244,8 +263,8 @@ fn subdivision_rounds_are_drawn_one_layer_each_and_the_input_numbered() {
             .collect();
         let svg = svg(&draw::subdivision("Lane–Riesenfeld", &rounds, topology).unwrap());
         assert_drawn(&svg, "control-polygon", 0, &planes(&p));
-        for r in 1..3 {
-            assert_drawn(&svg, &format!("round-{r}"), 0, &planes(&rounds[r]));
+        for (r, round) in rounds.iter().enumerate().take(3).skip(1) {
+            assert_drawn(&svg, &format!("round-{r}"), 0, &planes(round));
         }
         assert_drawn(&svg, "result", 0, &planes(&rounds[3]));
         let closed = topology == Topology::Closed;
@@ -288,8 +307,12 @@ fn a_surface_wireframe_is_the_projected_surface_and_its_net() {
         assert_drawn(&svg, "control-net", 3 + j, &planes(&net.column(j)));
     }
     // The projection keeps z up: the corner with the larger z is drawn higher.
-    let top = svg.frame().picture_of(plane(&Point::<f64, 3>::new([0.0, 0.0, 1.0])));
-    let bottom = svg.frame().picture_of(plane(&Point::<f64, 3>::new([0.0, 0.0, 0.0])));
+    let top = svg
+        .frame()
+        .picture_of(plane(&Point::<f64, 3>::new([0.0, 0.0, 1.0])));
+    let bottom = svg
+        .frame()
+        .picture_of(plane(&Point::<f64, 3>::new([0.0, 0.0, 0.0])));
     assert!(top[1] < bottom[1] && top[0] == bottom[0]);
 }
 
@@ -371,7 +394,9 @@ fn mesh_pictures_draw_each_edge_once_with_the_coarse_mesh_under_the_fine() {
     let fine = catmull_clark(&cube, 1).unwrap();
     let svg = svg(&draw::mesh(&cube, Some(&fine)).unwrap());
     let positions = planes(cube.positions());
-    let drawn: BTreeSet<[usize; 2]> = drawn_pairs(&svg, "coarse", &positions).into_iter().collect();
+    let drawn: BTreeSet<[usize; 2]> = drawn_pairs(&svg, "coarse", &positions)
+        .into_iter()
+        .collect();
     let t = cube.topology();
     let edges: BTreeSet<[usize; 2]> = (0..t.edge_count())
         .map(|e| {
@@ -446,21 +471,34 @@ fn spanning_and_search_trees_are_drawn_as_their_edges() {
         let f = spanning_forest(&w, algorithm);
         let edges: Vec<[usize; 2]> = f.edges.iter().map(|&e| w.endpoints(e)).collect();
         let svg = svg(&draw::graph(&g, &positions, GraphOverlay::Tree(&edges)).unwrap());
-        let drawn: BTreeSet<[usize; 2]> = drawn_pairs(&svg, "tree", &positions).into_iter().collect();
-        let expected: BTreeSet<[usize; 2]> = edges.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect();
+        let drawn: BTreeSet<[usize; 2]> =
+            drawn_pairs(&svg, "tree", &positions).into_iter().collect();
+        let expected: BTreeSet<[usize; 2]> =
+            edges.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect();
         assert_eq!(drawn, expected);
     }
     for kind in [SearchAlgorithm::Bfs, SearchAlgorithm::Dfs] {
         let s = search(&g, 4, kind).unwrap();
-        let svg = svg(&draw::graph(&g, &positions, GraphOverlay::Search { search: &s, start: 4 }).unwrap());
-        let drawn: BTreeSet<[usize; 2]> = drawn_pairs(&svg, "tree", &positions).into_iter().collect();
+        let svg = svg(&draw::graph(
+            &g,
+            &positions,
+            GraphOverlay::Search {
+                search: &s,
+                start: 4,
+            },
+        )
+        .unwrap());
+        let drawn: BTreeSet<[usize; 2]> =
+            drawn_pairs(&svg, "tree", &positions).into_iter().collect();
         let expected: BTreeSet<[usize; 2]> = (0..30)
             .filter_map(|v| s.parent[v].map(|p| [p.min(v), p.max(v)]))
             .collect();
         assert_eq!(drawn, expected);
         assert_eq!(drawn.len(), s.order.len() - 1);
         let ring = svg.circles("start");
-        assert!(svg.frame().maps_back([ring[0][0], ring[0][1]], positions[4]));
+        assert!(svg
+            .frame()
+            .maps_back([ring[0][0], ring[0][1]], positions[4]));
     }
 }
 
@@ -469,7 +507,10 @@ fn bad_drawing_input_is_a_named_error() {
     let line = Bezier::new(vec![Point::new([0.0]), Point::new([1.0])]).unwrap();
     assert!(matches!(
         draw::bezier(&line, None),
-        Err(Error::InvalidParameter { name: "dimension", .. })
+        Err(Error::InvalidParameter {
+            name: "dimension",
+            ..
+        })
     ));
     let b = Bezier::new(vec![Point::new([0.0, 0.0]), Point::new([1.0, 1.0])]).unwrap();
     assert!(matches!(
@@ -500,7 +541,10 @@ fn bad_drawing_input_is_a_named_error() {
     let g = Graph::from_edges(3, &[[0, 1], [1, 2]]).unwrap();
     assert!(matches!(
         draw::graph(&g, &circle_layout(2), GraphOverlay::Plain),
-        Err(Error::InvalidParameter { name: "positions", .. })
+        Err(Error::InvalidParameter {
+            name: "positions",
+            ..
+        })
     ));
     let mut nan = circle_layout(3);
     nan[1].x = f64::NAN;
@@ -511,17 +555,17 @@ fn bad_drawing_input_is_a_named_error() {
     };
     assert!(matches!(
         draw::graph(&g, &circle_layout(3), GraphOverlay::Colouring(&wrong)),
-        Err(Error::InvalidParameter { name: "colouring", .. })
+        Err(Error::InvalidParameter {
+            name: "colouring",
+            ..
+        })
     ));
     assert!(matches!(
         draw::graph(&g, &circle_layout(3), GraphOverlay::Tree(&[[0, 7]])),
         Err(Error::InvalidParameter { name: "tree", .. })
     ));
     let empty: Vec<Vec<Point<f64, 2>>> = Vec::new();
-    assert!(draw::subdivision(
-        "none",
-        &empty,
-        compgeo::spline::subdivision::Topology::Open
-    )
-    .is_err());
+    assert!(
+        draw::subdivision("none", &empty, compgeo::spline::subdivision::Topology::Open).is_err()
+    );
 }

@@ -82,17 +82,31 @@ fn curve_pictures_mark_what_the_curve_commands_compute() {
     assert_eq!(summary["layers"]["scaffolding"], 2);
     assert_eq!(summary["layers"]["curve"], 1);
     let eval = run_json(
-        &["bezier", "eval", "--control", cubic, "--t", "1/3", "--exact"],
+        &[
+            "bezier",
+            "eval",
+            "--control",
+            cubic,
+            "--t",
+            "1/3",
+            "--exact",
+        ],
         None,
     );
     assert!(svg
         .frame()
         .maps_back(firsts(&svg, "point")[0], plane(&eval["point"])));
 
-    let (summary, svg) = draw(&["bspline", "--control", CONTROL, "--u", "0.3"], "bspline.svg");
+    let (summary, svg) = draw(
+        &["bspline", "--control", CONTROL, "--u", "0.3"],
+        "bspline.svg",
+    );
     assert_eq!(summary["layers"]["knots"], 3); // clamped cubic on five points: 0, ½, 1
     assert_eq!(summary["layers"]["de-boor-net"], 3);
-    let eval = run_json(&["bspline", "eval", "--control", CONTROL, "--u", "0.3"], None);
+    let eval = run_json(
+        &["bspline", "eval", "--control", CONTROL, "--u", "0.3"],
+        None,
+    );
     assert!(svg
         .frame()
         .maps_back(firsts(&svg, "point")[0], plane(&eval["point"])));
@@ -104,15 +118,31 @@ fn curve_pictures_mark_what_the_curve_commands_compute() {
 
     let weights = "[1, 2, 1, 3, 1]";
     let (summary, svg) = draw(
-        &["nurbs", "--control", CONTROL, "--weights", weights, "--degree", "2"],
+        &[
+            "nurbs",
+            "--control",
+            CONTROL,
+            "--weights",
+            weights,
+            "--degree",
+            "2",
+        ],
         "nurbs.svg",
     );
     assert_eq!(summary["layers"]["knots"], 4);
     for (at, u) in firsts(&svg, "knots").iter().zip(["0", "1/3", "2/3", "1"]) {
         let eval = run_json(
             &[
-                "nurbs", "eval", "--control", CONTROL, "--weights", weights, "--degree", "2",
-                "--u", u,
+                "nurbs",
+                "eval",
+                "--control",
+                CONTROL,
+                "--weights",
+                weights,
+                "--degree",
+                "2",
+                "--u",
+                u,
             ],
             None,
         );
@@ -186,7 +216,10 @@ fn surface_triangle_and_mesh_pictures_agree_with_their_commands() {
         assert_eq!(summary["layers"]["control-net"], 6);
         let iso_u = svg.subpaths("iso-u");
         for (i, u) in ["0", "1/4", "1/2", "3/4", "1"].iter().enumerate() {
-            for (at, v) in [(iso_u[i].points[0], "0"), (*iso_u[i].points.last().unwrap(), "1")] {
+            for (at, v) in [
+                (iso_u[i].points[0], "0"),
+                (*iso_u[i].points.last().unwrap(), "1"),
+            ] {
                 let mut cmd = vec!["surface", "eval", "--net", net, "--u", u, "--v", v];
                 cmd.extend_from_slice(spline);
                 let eval = run_json(&cmd, None);
@@ -197,7 +230,14 @@ fn surface_triangle_and_mesh_pictures_agree_with_their_commands() {
 
     let control = "[[1,0,0],[0.5,0.5,0.5],[0,1,0],[0.5,0,0],[0,0.5,0],[0,0,0]]";
     let (summary, svg) = draw(
-        &["triangle", "--control", control, "--segments", "4", "--exact"],
+        &[
+            "triangle",
+            "--control",
+            control,
+            "--segments",
+            "4",
+            "--exact",
+        ],
         "triangle.svg",
     );
     assert_eq!(summary["layers"]["iso-u"], 4);
@@ -206,7 +246,16 @@ fn surface_triangle_and_mesh_pictures_agree_with_their_commands() {
         for (j, at) in iso_u[i].points.iter().enumerate() {
             let v = format!("{j}/4");
             let eval = run_json(
-                &["triangle", "eval", "--control", control, "--u", u, "--v", &v],
+                &[
+                    "triangle",
+                    "eval",
+                    "--control",
+                    control,
+                    "--u",
+                    u,
+                    "--v",
+                    &v,
+                ],
                 None,
             );
             assert!(svg.frame().maps_back(*at, plane(&eval["point"])), "{u} {v}");
@@ -226,13 +275,26 @@ fn surface_triangle_and_mesh_pictures_agree_with_their_commands() {
         "mesh-fine.svg",
     );
     let fine = run_json(
-        &["mesh", "subdivide", "--scheme", "catmull-clark", "--rounds", "2", &obj],
+        &[
+            "mesh",
+            "subdivide",
+            "--scheme",
+            "catmull-clark",
+            "--rounds",
+            "2",
+            &obj,
+        ],
         None,
     );
     assert_eq!(summary["algorithm"], "catmull-clark");
     assert_eq!(summary["layers"]["coarse"], 8);
     assert_eq!(summary["layers"]["edges"], fine["output"]["edges"]);
-    let positions: Vec<Point2> = fine["positions"].as_array().unwrap().iter().map(plane).collect();
+    let positions: Vec<Point2> = fine["positions"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(plane)
+        .collect();
     for s in svg.subpaths("edges") {
         for at in s.points {
             assert!(positions.iter().any(|&p| svg.frame().maps_back(at, p)));
@@ -276,7 +338,10 @@ fn graph_pictures_show_what_colour_mst_bfs_and_dfs_print() {
         .unwrap()
         .iter()
         .map(|e| {
-            let (u, v) = (e[0].as_u64().unwrap() as usize, e[1].as_u64().unwrap() as usize);
+            let (u, v) = (
+                e[0].as_u64().unwrap() as usize,
+                e[1].as_u64().unwrap() as usize,
+            );
             [u.min(v), u.max(v)]
         })
         .collect();
@@ -301,7 +366,10 @@ fn graph_pictures_show_what_colour_mst_bfs_and_dfs_print() {
         .collect();
     for kind in ["bfs", "dfs"] {
         let printed = run_json(&[kind, "--start", "2", &g], None);
-        let (summary, svg) = draw(&["graph", &g, "--points", &points, &format!("--{kind}"), "2"], "search.svg");
+        let (summary, svg) = draw(
+            &["graph", &g, "--points", &points, &format!("--{kind}"), "2"],
+            "search.svg",
+        );
         assert_eq!(summary["algorithm"], kind);
         let parent: Vec<Option<usize>> = serde_json::from_value(printed["parent"].clone()).unwrap();
         let expected: BTreeSet<[usize; 2]> = (0..6)
@@ -336,20 +404,43 @@ fn bad_curve_surface_mesh_and_graph_input_exits_2_with_a_named_error() {
     assert!(e.contains("u") && e.contains("outside"), "{e}");
     let e = reject(&["bspline", "--control", "[[0, 0], [1, NaN]]"]);
     assert!(e.contains("control point 1"), "{e}");
-    let e = reject(&["nurbs", "--control", CONTROL, "--weights", "[1, 1, -1, 1, 1]"]);
+    let e = reject(&[
+        "nurbs",
+        "--control",
+        CONTROL,
+        "--weights",
+        "[1, 1, -1, 1, 1]",
+    ]);
     assert!(e.contains("weight"), "{e}");
     let e = reject(&["beta", "--beta1", "0", "--control", CONTROL]);
     assert!(e.contains("beta1") || e.contains("β₁"), "{e}");
-    let e = reject(&["subdivide", "--points", CONTROL, "--scheme", "four-point", "--degree", "3"]);
+    let e = reject(&[
+        "subdivide",
+        "--points",
+        CONTROL,
+        "--scheme",
+        "four-point",
+        "--degree",
+        "3",
+    ]);
     assert!(e.contains("--degree"), "{e}");
-    let e = reject(&["surface", "--net", "[[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]]", "--lines", "0"]);
+    let e = reject(&[
+        "surface",
+        "--net",
+        "[[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]]",
+        "--lines",
+        "0",
+    ]);
     assert!(e.contains("lines"), "{e}");
     let e = reject(&["triangle", "--control", "[[0,0,0],[1,0,0]]"]);
     assert!(e.contains("control points"), "{e}");
     let bad = file("bad.obj", "v 0 0 0\nv 1 0\nf 1 2 3\n");
     let e = reject(&["mesh", &bad]);
     assert!(e.contains("line 2"), "{e}");
-    let g = file("bad-g.json", r#"{"vertices": 3, "edges": [[0, 1], [1, 2]]}"#);
+    let g = file(
+        "bad-g.json",
+        r#"{"vertices": 3, "edges": [[0, 1], [1, 2]]}"#,
+    );
     let e = reject(&["graph", &g, "--bfs", "7"]);
     assert!(e.contains("vertex 7"), "{e}");
     let e = reject(&["graph", &g, "--mst", "kruskal"]);
