@@ -113,6 +113,11 @@ pub const TRACE_MAX_VERTICES: usize = 1000;
 /// indices); a trace is meant for inputs a reader can follow, and about 100 MiB at the limit.
 pub const TRACE_MAX_ENTRIES: usize = 1 << 20;
 
+/// The most frames a step page ([`draw::StepPage`](crate::draw::StepPage), `draw --steps`)
+/// holds: 4096. Each frame is a whole picture, so a page grows with frames times points; a
+/// page is meant for a run a reader steps through.
+pub const STEP_PAGE_MAX_FRAMES: usize = 4096;
+
 /// The most points the incremental and divide-and-conquer Delaunay builders take: 2^29.
 /// About 6n half-edges get 32-bit ids.
 pub const MAX_TRIANGULATION_POINTS: usize = 1 << 29;
@@ -270,6 +275,12 @@ pub(crate) const TRACE_ENTRIES: Limit = Limit {
     max: TRACE_MAX_ENTRIES,
     what: "step trace entry count",
 };
+/// [`STEP_PAGE_MAX_FRAMES`].
+pub(crate) const STEP_PAGE_FRAMES: Limit = Limit {
+    name: "STEP_PAGE_MAX_FRAMES",
+    max: STEP_PAGE_MAX_FRAMES,
+    what: "step page frame count",
+};
 /// [`MAX_TRIANGULATION_POINTS`].
 pub(crate) const TRIANGULATION_POINTS: Limit = Limit {
     name: "MAX_TRIANGULATION_POINTS",
@@ -336,7 +347,7 @@ pub(crate) const MESH_CORNERS: Limit = Limit {
 };
 
 /// Every limit, in the order of the table in `docs/design.md`.
-pub const ALL: [Limit; 21] = [
+pub const ALL: [Limit; 22] = [
     POINTS,
     COCIRCULAR,
     KEYS,
@@ -348,6 +359,7 @@ pub const ALL: [Limit; 21] = [
     TRACE_LEN,
     TRACE_VERTICES,
     TRACE_ENTRIES,
+    STEP_PAGE_FRAMES,
     TRIANGULATION_POINTS,
     FORTUNE_POINTS,
     FLATTEN_SEGMENTS,

@@ -18,6 +18,11 @@
 //! "labels": true, "bytes": b, "out": "FILE.svg"}` (`algorithm` only where there is a
 //! choice, `points` for the point problems). `--out -` writes the SVG to stdout instead, and
 //! nothing else.
+//!
+//! `--steps` (hull: `jarvis`, `graham`, `monotone-chain`, `quickhull`; delaunay: `lawson`)
+//! writes the run as one self-contained HTML page instead, a picture per frame of the
+//! algorithm's own trace ([`crate::draw::StepPage`]), and prints `{"problem", "algorithm",
+//! "points", "frames", "bytes", "out"}`.
 
 use super::beta::{beta_of, ControlArgs, ShapeArgs};
 use super::bezier::{CurveArgs as BezierArgs, JsonScalar};
@@ -35,16 +40,18 @@ use super::triangle::{patch_of, PatchArgs};
 use super::CliError;
 use crate::calipers::{diameter, ConvexPolygon, DiameterAlgorithm};
 use crate::count::NoCount;
+use crate::delaunay::lawson_trace;
 use crate::delaunay::{
     dual, triangulate_with, voronoi_with, Algorithm as DelaunayAlgorithm, ClipBox,
 };
-use crate::draw::{self, circle_layout, GraphOverlay, Picture};
+use crate::draw::{self, circle_layout, GraphOverlay, Picture, StepPage};
 use crate::geometry::{Point2, PointSet};
 use crate::graph::{
     colour_with, search_with, spanning_forest_with, ColouringAlgorithm, Graph, MstAlgorithm,
     SearchAlgorithm,
 };
 use crate::hull::{convex_hull_with, Algorithm as HullAlgorithm, HullOptions};
+use crate::hull::{graham_trace, jarvis_trace, monotone_chain_trace, quickhull_trace};
 use crate::mesh::{read_obj, subdivide_with, PolygonMesh, Scheme};
 use crate::proximity::{
     closest_pair_with, euclidean_mst_with, largest_empty_circle_with, ClosestPairAlgorithm,
@@ -91,6 +98,10 @@ enum Problem {
         /// Also take the points in the middle of hull edges as vertices
         #[arg(long)]
         keep_collinear: bool,
+        /// Write the run step by step as one HTML page (jarvis, graham, monotone-chain,
+        /// quickhull), a picture per step of the algorithm's own trace
+        #[arg(long)]
+        steps: bool,
         #[command(flatten)]
         common: Common,
     },
@@ -112,6 +123,9 @@ enum Problem {
         /// Also draw the circumcircle of every triangle
         #[arg(long)]
         circumcircles: bool,
+        /// Write the run step by step as one HTML page (lawson: the sweep, then every flip)
+        #[arg(long)]
+        steps: bool,
         #[command(flatten)]
         common: Common,
     },
@@ -262,6 +276,28 @@ enum Problem {
 
 /// Runs `compgeo draw`.
 pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
+    let steps = match &args.problem {
+        Problem::Hull {
+            algorithm,
+            common,
+            steps: true,
+            ..
+        } => Some(("hull", algorithm.name(), common)),
+        Problem::Delaunay {
+            algorithm,
+            common,
+            steps: true,
+            ..
+        } => Some(("delaunay", algorithm.name(), common)),
+        _ => None,
+    };
+    if let Some((name, algorithm, common)) = steps {
+        let points = common.input.read()?;
+        let set = PointSet::new(&points)?;
+        if let Some(page) = step_page(&args.problem, &set)? {
+            return write_page(name, Some(algorithm), points.len(), &page, &common.out);
+        }
+    }
     let mut summary = Map::new();
     let mut from_points = |common: &Common| -> Result<Picture, CliError> {
         let points = common.input.read()?;
@@ -444,6 +480,80 @@ pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
     summary.insert("bytes".into(), json!(svg.len()));
     summary.insert("out".into(), json!(out.display().to_string()));
     print_json(&Value::Object(summary))
+}
+
+/// The step page of `problem` when `--steps` asks for one, from the algorithm's own trace.
+fn step_page(problem: &Problem, set: &PointSet<'_>) -> Result<Option<StepPage>, CliError> {
+    let unsupported = |algorithm: &str, traced: &str| {
+        CliError::Usage(format!(
+            "--steps: no step trace for {algorithm}; the traced algorithms are {traced}"
+        ))
+    };
+    Ok(match problem {
+        Problem::Hull {
+            algorithm,
+            keep_collinear,
+            steps: true,
+            ..
+        } => {
+            let options = HullOptions {
+                keep_collinear: *keep_collinear,
+            };
+            Some(match algorithm {
+                HullAlgorithm::Jarvis => draw::jarvis_steps(set, &jarvis_trace(set, options)?)?,
+                HullAlgorithm::Graham => draw::graham_steps(set, &graham_trace(set, options)?)?,
+                HullAlgorithm::MonotoneChain => {
+                    draw::monotone_chain_steps(set, &monotone_chain_trace(set, options)?)?
+                }
+                HullAlgorithm::Quickhull => {
+                    draw::quickhull_steps(set, &quickhull_trace(set, options)?)?
+                }
+                other => {
+                    return Err(unsupported(
+                        other.name(),
+                        "jarvis, graham, monotone-chain and quickhull",
+                    ))
+                }
+            })
+        }
+        Problem::Delaunay {
+            algorithm,
+            steps: true,
+            ..
+        } => match algorithm {
+            DelaunayAlgorithm::Lawson => Some(draw::lawson_steps(set, &lawson_trace(set)?)?),
+            other => return Err(unsupported(other.name(), "lawson")),
+        },
+        _ => None,
+    })
+}
+
+/// Writes a step page to `out` (`-`: stdout, and nothing else) and prints its summary.
+fn write_page(
+    name: &str,
+    algorithm: Option<&str>,
+    points: usize,
+    page: &StepPage,
+    out: &Path,
+) -> Result<(), CliError> {
+    let html = page.to_html();
+    if out == Path::new("-") {
+        let stdout = std::io::stdout();
+        let mut w = BufWriter::new(stdout.lock());
+        return w
+            .write_all(html.as_bytes())
+            .and_then(|()| w.flush())
+            .map_err(CliError::Output);
+    }
+    write_file(out, |w| w.write_all(html.as_bytes()))?;
+    print_json(&json!({
+        "problem": name,
+        "algorithm": algorithm,
+        "points": points,
+        "frames": page.frames().len(),
+        "bytes": html.len(),
+        "out": out.display().to_string(),
+    }))
 }
 
 /// A Bézier curve, with de Casteljau's scaffolding at `t`.
@@ -634,7 +744,7 @@ fn point_picture(
             ..
         } => {
             let t = triangulate_with(set, *algorithm, &mut NoCount)?;
-            let circles = circumcircles.then(|| dual(points, &t));
+            let circles = circumcircles.then(|| dual(points, &t)).transpose()?;
             draw::delaunay(set, &t, circles.as_ref())?
         }
         Problem::Voronoi { clip, .. } => {

@@ -276,33 +276,54 @@ pub fn voronoi(points: &[Point2]) -> Result<Voronoi> {
 pub fn voronoi_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Result<Voronoi> {
     Ok(match incremental_local(points, counter)? {
         Some(t) => dual_local(&t),
-        None => dual(points, &degenerate(points)),
+        None => dual_unchecked(points, &degenerate(points)),
     })
 }
 
-/// The Voronoi diagram dual to `t`, a Delaunay triangulation of `points` from one of the
-/// crate's builders (see [`voronoi`] for what is exact and what is rounded).
+/// The Voronoi diagram dual to `t`, a Delaunay triangulation of `points` (see [`voronoi`]
+/// for what is exact and what is rounded).
 ///
-/// If `t` is not a Delaunay triangulation of `points` the result is the dual of whatever
-/// it is (circumcentres and cells around its vertices), which is not a Voronoi diagram.
+/// `t` is checked first, exactly, by [`check_delaunay`](super::check_delaunay): a
+/// triangulation of other points, or one that is not Delaunay, has no Voronoi diagram as
+/// its dual.
+///
+/// # Errors
+/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) named `"triangulation"`, with
+/// the checker's reason, if `t` is not a Delaunay triangulation of `points` in the crate's
+/// conventions; the point set's own errors for non-finite points.
 ///
 /// # Complexity
-/// O(n + t) time and space for n points and t triangles.
+/// O(n log n + t) time and O(n + t) space for n points and t triangles (the check sorts the
+/// points; the dual itself is linear).
 ///
 /// ```
 /// use compgeo::delaunay::{dual, incremental};
 /// use compgeo::geometry::Point2;
 ///
 /// let pts = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.0)].map(Point2::from);
-/// let v = dual(&pts, &incremental(&pts)?);
+/// let v = dual(&pts, &incremental(&pts)?)?;
 /// // Collinear sites: two half-planes and a strip, bounded by the bisectors x = 0.5, 1.5.
 /// assert!(v.vertices.is_empty());
 /// assert_eq!(v.cell(1).rays.len(), 4);
 /// assert_eq!(v.cell(1).rays[0].origin, Point2::new(0.5, 0.0));
 /// assert_eq!(v.cell(1).rays[2].origin, Point2::new(1.5, 0.0));
+///
+/// // A triangulation of other points is refused.
+/// let more = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (1.0, 1.0)].map(Point2::from);
+/// assert!(dual(&pts, &incremental(&more)?).is_err());
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn dual(points: &[Point2], t: &Triangulation) -> Voronoi {
+pub fn dual(points: &[Point2], t: &Triangulation) -> Result<Voronoi> {
+    super::check_delaunay(points, t).map_err(|v| crate::Error::InvalidParameter {
+        name: "triangulation",
+        reason: v.reason,
+    })?;
+    Ok(dual_unchecked(points, t))
+}
+
+/// [`dual`] of a triangulation known to be a Delaunay triangulation of `points` (the
+/// builders' own).
+pub(crate) fn dual_unchecked(points: &[Point2], t: &Triangulation) -> Voronoi {
     let n = points.len();
     let mut cell_of = vec![usize::MAX; n];
     let mut is_site = vec![true; n];

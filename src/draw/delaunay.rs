@@ -35,7 +35,7 @@ use crate::geometry::{Point2, PointSet};
 /// let set = PointSet::new(&pts)?;
 /// let plain = draw::delaunay(&set, &t, None)?;
 /// assert!(plain.layers().any(|layer| layer == ("triangles", 2)));
-/// let circles = draw::delaunay(&set, &t, Some(&dual(&pts, &t)))?;
+/// let circles = draw::delaunay(&set, &t, Some(&dual(&pts, &t)?))?;
 /// assert!(circles.layers().any(|layer| layer == ("circumcircles", 2)));
 /// # Ok::<(), compgeo::Error>(())
 /// ```

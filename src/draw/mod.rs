@@ -23,6 +23,8 @@
 //! | [`bezier`], [`bspline`], [`nurbs`], [`beta`], [`subdivision`] | curves over their control polygons, de Casteljau's scaffolding, de Boor's net, knots, subdivision rounds | `curves.rs` |
 //! | [`surface`], [`triangular_patch`], [`mesh`], [`project`] | projected wireframes: isoparametric lines over the control net, a mesh's edges over the coarse mesh | `surfaces.rs` |
 //! | [`graph`], [`circle_layout`], [`GraphOverlay`] | a graph at coordinates or on a circle, with a colouring, a spanning or a search tree | `graphs.rs` |
+//! | [`StepPage`], [`StepFrame`] | a run as one self-contained HTML page, a picture per step, a slider and keys | `steps.rs` |
+//! | [`jarvis_steps`], [`graham_steps`], [`monotone_chain_steps`], [`quickhull_steps`], [`lawson_steps`] | step pages of the traced hulls and of Lawson's flips, from the [`trace`](crate::trace) frames | `hull_steps.rs` |
 //!
 //! A new kind of picture is a new file that builds a [`Picture`] from its own results,
 //! using the same roles.
@@ -81,7 +83,7 @@
 //!
 //! let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (1.0, 1.0), (0.0, 3.0)].map(Point2::from);
 //! let t = incremental(&pts)?;
-//! let mut picture = draw::delaunay(&PointSet::new(&pts)?, &t, Some(&dual(&pts, &t)))?;
+//! let mut picture = draw::delaunay(&PointSet::new(&pts)?, &t, Some(&dual(&pts, &t)?))?;
 //! // A picture is open to more layers before it is written.
 //! picture.points(&Layer::new("origin", Role::Highlight).legend("origin"), [Point2::new(0.0, 0.0)]);
 //! let svg = picture.to_svg();
@@ -101,8 +103,10 @@ mod delaunay;
 mod frame;
 mod graphs;
 mod hull;
+mod hull_steps;
 mod labels;
 mod proximity;
+mod steps;
 mod surfaces;
 mod svg;
 
@@ -111,7 +115,11 @@ pub use delaunay::{delaunay, voronoi};
 pub use frame::Frame;
 pub use graphs::{circle_layout, graph, GraphOverlay};
 pub use hull::{calipers, hull};
+pub use hull_steps::{
+    graham_steps, jarvis_steps, lawson_steps, monotone_chain_steps, quickhull_steps,
+};
 pub use proximity::{closest_pair, empty_circle, emst};
+pub use steps::{StepFrame, StepPage};
 pub use surfaces::{mesh, surface, triangular_patch};
 pub use svg::{escape, Dash, Layer, Picture, Role, Style, CLASS_COLOURS, LABEL_LIMIT};
 

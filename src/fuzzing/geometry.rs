@@ -195,7 +195,7 @@ pub fn voronoi(data: &[u8]) {
     if let Err(e) = check_delaunay(&pts, &t) {
         panic!("incremental: {e}");
     }
-    let d = dual(&pts, &t);
+    let d = dual(&pts, &t).expect("a checked Delaunay triangulation");
     let firsts = distinct(&pts);
     let keep = HullOptions {
         keep_collinear: true,

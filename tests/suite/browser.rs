@@ -313,8 +313,22 @@ fn the_harness_sees_console_errors_exceptions_and_key_presses() {
     assert!(errors.contains("missing.svg"), "{errors}");
 }
 
+/// The `src` of every image on the page and whether it loaded with a size.
+fn images(browser: &mut Browser) -> Vec<(String, bool)> {
+    let found = browser.eval(
+        "Array.from(document.images).map(i => [i.getAttribute('src'), i.complete && \
+         i.naturalWidth > 0])",
+    );
+    found
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| (i[0].as_str().unwrap().to_string(), i[1] == true))
+        .collect()
+}
+
 #[test]
-fn the_report_index_renders_without_errors_and_shows_its_charts() {
+fn the_report_index_its_gallery_and_a_step_page_render_without_errors() {
     let Some(mut browser) = Browser::start() else {
         return;
     };
@@ -322,18 +336,57 @@ fn the_report_index_renders_without_errors_and_shows_its_charts() {
     let out = dir.0.to_str().unwrap();
     let (code, _, err) = run(&["report", "--only", "hull/graham/", "--out", out], None);
     assert_eq!(code, 0, "{err}");
+
     browser.open(&dir.path("index.html"));
     assert!(browser.errors().is_empty(), "{:?}", browser.errors());
-    // Every chart the page embeds loaded and has a size.
-    let images = browser.eval(
-        "Array.from(document.images).map(i => [i.getAttribute('src'), i.complete && \
-         i.naturalWidth > 0])",
-    );
-    let images = images.as_array().unwrap();
-    assert!(!images.is_empty(), "the index embeds charts");
-    for image in images {
-        assert_eq!(image[1], true, "{} did not load", image[0]);
+    let charts = images(&mut browser);
+    assert!(!charts.is_empty(), "the index embeds charts");
+    for (src, loaded) in &charts {
+        assert!(loaded, "{src} did not load");
     }
     let rows = browser.eval("document.querySelectorAll('table tr').length");
     assert!(rows.as_u64().unwrap() >= 2, "a summary row: {rows}");
+    let link = browser.eval("document.querySelector('a[href=\"gallery.html\"]') !== null");
+    assert_eq!(link, true, "the index links the gallery");
+
+    browser.open(&dir.path("gallery.html"));
+    assert!(browser.errors().is_empty(), "{:?}", browser.errors());
+    let pictures = images(&mut browser);
+    for problem in [
+        "hull",
+        "diameter",
+        "delaunay",
+        "voronoi",
+        "closest-pair",
+        "emst",
+        "empty-circle",
+    ] {
+        let src = format!("gallery/{problem}.svg");
+        assert!(
+            pictures.iter().any(|(s, loaded)| *s == src && *loaded),
+            "{src} is shown: {pictures:?}"
+        );
+    }
+    let pages = browser.eval(
+        "Array.from(document.querySelectorAll('a')).map(a => a.getAttribute('href'))\
+         .filter(h => h.endsWith('-steps.html'))",
+    );
+    let pages: Vec<String> = pages
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p.as_str().unwrap().to_string())
+        .collect();
+    assert!(pages.len() >= 5, "{pages:?}");
+
+    // One step page from the gallery: it renders, and a key press shows the next frame.
+    let page = pages.iter().find(|p| p.contains("graham")).unwrap();
+    browser.open(&dir.0.join(page));
+    assert!(browser.errors().is_empty(), "{:?}", browser.errors());
+    let shown = "Array.from(document.querySelectorAll('section.frame')).filter(s => \
+                 getComputedStyle(s).display !== 'none').map(s => Number(s.dataset.step))";
+    assert_eq!(browser.eval(shown), json!([0]));
+    browser.press("ArrowRight", 39);
+    assert_eq!(browser.eval(shown), json!([1]));
+    assert!(browser.errors().is_empty(), "{:?}", browser.errors());
 }

@@ -271,7 +271,7 @@ pub fn svg(picture: &Picture) -> Svg {
 }
 
 /// Asserts that the subpath's points map back to `expected`, in order.
-fn assert_maps_back(frame: &RecordedFrame, drawn: &Subpath, expected: &[Point2]) {
+pub fn assert_maps_back(frame: &RecordedFrame, drawn: &Subpath, expected: &[Point2]) {
     assert_eq!(
         drawn.points.len(),
         expected.len(),
@@ -299,7 +299,7 @@ fn every_picture(pts: &[Point2]) -> Vec<(&'static str, Picture)> {
     let t = incremental(pts).unwrap();
     out.push((
         "delaunay",
-        draw::delaunay(&set, &t, Some(&dual(pts, &t))).unwrap(),
+        draw::delaunay(&set, &t, Some(&dual(pts, &t).unwrap())).unwrap(),
     ));
     if let Ok(b) = ClipBox::around(&set) {
         let v = voronoi(pts).unwrap();
@@ -358,7 +358,7 @@ fn the_triangles_are_the_triangulation_s_and_the_circumcircles_pass_through_them
         let pts = generate(kind, n, 3).unwrap();
         let set = PointSet::new(&pts).unwrap();
         let t = incremental(&pts).unwrap();
-        let s = svg(&draw::delaunay(&set, &t, Some(&dual(&pts, &t))).unwrap());
+        let s = svg(&draw::delaunay(&set, &t, Some(&dual(&pts, &t).unwrap())).unwrap());
         let frame = s.frame();
         let drawn = s.subpaths("triangles");
         assert_eq!(drawn.len(), t.triangle_count(), "{kind:?}");
@@ -689,7 +689,7 @@ fn bad_indices_and_mismatched_results_are_named_errors() {
     invalid(draw::hull(&set, &[0, 10]).unwrap_err(), "hull");
     let mut t = incremental(&pts).unwrap();
     let more = uniform(12, 1);
-    let other = dual(&more, &incremental(&more).unwrap());
+    let other = dual(&more, &incremental(&more).unwrap()).unwrap();
     invalid(
         draw::delaunay(&set, &t, Some(&other)).unwrap_err(),
         "circumcircles",
@@ -741,7 +741,7 @@ fn a_beyond_range_constructed_point_is_drawn_finite() {
     // picture stays finite.
     let pts = [(-1e300, 0.0), (1e300, 0.0), (0.0, 1e-300)].map(Point2::from);
     let t = incremental(&pts).unwrap();
-    let v = dual(&pts, &t);
+    let v = dual(&pts, &t).unwrap();
     assert!(matches!(v.vertex(0), ConstructedPoint::BeyondRange(_)));
     let s = svg(&draw::delaunay(&PointSet::new(&pts).unwrap(), &t, Some(&v)).unwrap());
     assert!(s.circles("circumcircles").is_empty());

@@ -197,7 +197,7 @@ fn check_ccw(site: Point2, cell: compgeo::delaunay::Cell<'_>, v: &Voronoi) {
 /// coordinate magnitude of the triangle (the centre is rounded at that scale).
 fn check_vertices(pts: &[Point2]) {
     let t = incremental(pts).unwrap();
-    let v = dual(pts, &t);
+    let v = dual(pts, &t).unwrap();
     assert_eq!(v.vertices.len(), t.triangle_count());
     for k in 0..t.triangle_count() {
         let [a, b, c] = t.triangle(k).map(|i| pts[i]);
@@ -486,7 +486,7 @@ fn cli_prints_cells_and_clipped_cells() {
 /// the same cyclic order, bit for bit, and the same rays.
 fn check_relabelling(pts: &[Point2]) {
     let a = voronoi(pts).unwrap();
-    let b = dual(pts, &incremental(pts).unwrap());
+    let b = dual(pts, &incremental(pts).unwrap()).unwrap();
     assert_eq!(a.cell_count(), b.cell_count());
     for i in 0..pts.len() {
         let (ca, cb) = (a.cell(a.cell_of(i)), b.cell(b.cell_of(i)));
@@ -527,5 +527,66 @@ proptest! {
         check_vertices(&pts);
         check_relabelling(&pts);
         check_clip(&pts, &ClipBox::around(&crate::common::set(&pts)).unwrap());
+    }
+}
+
+#[test]
+fn dual_refuses_a_triangulation_that_is_not_one_of_its_points() {
+    use compgeo::delaunay::{check_delaunay, lawson, Triangulation};
+    use compgeo::geometry::PointSet;
+    let pts = [(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (0.0, 3.0), (1.0, 1.0)].map(Point2::from);
+    let more = [
+        (0.0, 0.0),
+        (4.0, 0.0),
+        (4.0, 3.0),
+        (0.0, 3.0),
+        (1.0, 1.0),
+        (3.0, 2.0),
+        (2.0, 2.5),
+    ]
+    .map(Point2::from);
+    let fewer = &pts[..4];
+    let good = incremental(&pts).unwrap();
+    assert!(dual(&pts, &good).is_ok());
+    // Another builder's triangulation of the same points: the same vertices, in its order.
+    let sorted = |v: compgeo::delaunay::Voronoi| {
+        let mut xs: Vec<(f64, f64)> = v.vertices.iter().map(|p| (p.x, p.y)).collect();
+        xs.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        xs
+    };
+    assert_eq!(
+        sorted(dual(&pts, &lawson(&pts).unwrap()).unwrap()),
+        sorted(dual(&pts, &good).unwrap())
+    );
+    // More points (indices out of range), fewer points, a broken array, a reversed hull, a
+    // triangulation that is not Delaunay: each a named error, never a panic.
+    let mut broken = good.clone();
+    broken.halfedges.pop();
+    let mut wrong_hull = incremental(fewer).unwrap();
+    wrong_hull.hull.reverse();
+    let kite = [(0.0, 0.0), (2.0, 0.0), (1.5, 1.0), (0.0, 1.0)].map(Point2::from);
+    let not_delaunay = Triangulation::from_triangles(
+        &PointSet::new(&kite).unwrap(),
+        &[[0, 1, 3], [1, 2, 3]],
+        Vec::new(),
+    )
+    .unwrap();
+    let cases: [(&[Point2], Triangulation); 5] = [
+        (&pts, incremental(&more).unwrap()),
+        (&pts, incremental(fewer).unwrap()),
+        (&pts, broken),
+        (fewer, wrong_hull),
+        (&kite, not_delaunay),
+    ];
+    for (against, t) in &cases {
+        let err = dual(against, t).unwrap_err();
+        assert!(check_delaunay(against, t).is_err());
+        match err {
+            compgeo::Error::InvalidParameter { name, reason } => {
+                assert_eq!(name, "triangulation");
+                assert!(!reason.is_empty());
+            }
+            other => panic!("{other:?}"),
+        }
     }
 }

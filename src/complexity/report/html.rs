@@ -30,7 +30,8 @@ pub(crate) fn index_html(
         h,
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <title>compgeo complexity report</title>\n<style>{STYLE}</style>\n</head>\n<body>\n\
-         <h1>compgeo complexity report</h1>\n"
+         <h1>compgeo complexity report</h1>\n<p><a href=\"gallery.html\">Gallery</a>: a \
+         picture of every geometric problem and the algorithms of the course step by step.</p>\n"
     );
     let _ = write!(
         h,

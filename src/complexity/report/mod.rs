@@ -6,13 +6,16 @@
 //! - one SVG per entry (`sort-bubble-random.svg`): log-log counts and time against the stated
 //!   bound, scaled to pass through the counts at the median size;
 //! - one SVG per problem (`problem-sort.svg`): its entries' times and counts side by side;
-//! - `DIR/index.html`: the machine, the summary table and every chart.
+//! - `DIR/index.html`: the machine, the summary table and every chart;
+//! - `DIR/gallery.html` and `DIR/gallery/`: a picture per geometric problem and the step
+//!   pages of the traced algorithms, on small seeded workloads.
 //!
 //! [`read_criterion`] and [`write_criterion_report`] draw the same growth charts from the
 //! estimates that criterion saved under `target/criterion`.
 
 mod chart;
 mod criterion;
+mod gallery;
 mod html;
 mod json;
 
@@ -210,6 +213,7 @@ pub(crate) fn write_rows(
         let members: Vec<&Row> = rows.iter().filter(|r| &r.problem == problem).collect();
         chart::problem_chart(&dir.join(problem_chart_file(problem)), problem, &members)?;
     }
+    gallery::write_gallery(dir)?;
     let index = dir.join("index.html");
     std::fs::write(&index, html::index_html(machine, profile, rows, &problems))?;
     Ok(index)

@@ -1,0 +1,221 @@
+//! `gallery.html`: one picture per geometric problem on a small seeded workload, and the step
+//! pages of the algorithms the course traces, next to the growth charts.
+//!
+//! Every picture is the [`draw`](crate::draw) module's, of the library's own result on points
+//! from [`gen::points`] (seed 1, the report's default): the same points for every problem, so
+//! the pictures can be compared. The files go to `DIR/gallery/`; the page links them.
+
+use std::fmt::Write as _;
+use std::io;
+use std::path::Path;
+
+use crate::calipers::ConvexPolygon;
+use crate::delaunay::{incremental, lawson_trace, voronoi as voronoi_of, ClipBox};
+use crate::draw::{self, escape};
+use crate::gen::{points as generate, PointKind};
+use crate::geometry::{Point2, PointSet};
+use crate::hull::{
+    convex_hull, graham_trace, jarvis_trace, monotone_chain_trace, quickhull_trace, Algorithm,
+    HullOptions,
+};
+use crate::proximity::{closest_pair, euclidean_mst, largest_empty_circle, ClosestPairAlgorithm};
+use crate::Result;
+
+/// How many points the pictures show: enough to look like the distribution, few enough to
+/// number them.
+pub(crate) const PICTURE_POINTS: usize = 60;
+
+/// How many points the step pages trace: a run a reader can follow frame by frame.
+pub(crate) const STEP_POINTS: usize = 12;
+
+/// One gallery item: a file in `gallery/` and what it shows.
+pub(crate) struct Item {
+    /// The problem, as the catalog names it.
+    pub problem: &'static str,
+    /// The file's name in `gallery/`.
+    pub file: String,
+    /// What the picture shows.
+    pub caption: String,
+    /// Whether the file is a step page (HTML) rather than a picture (SVG).
+    pub steps: bool,
+}
+
+/// Writes the pictures and step pages into `dir/gallery/` and `dir/gallery.html`; returns
+/// the items written.
+pub(crate) fn write_gallery(dir: &Path) -> io::Result<Vec<Item>> {
+    let folder = dir.join("gallery");
+    std::fs::create_dir_all(&folder)?;
+    let mut items = Vec::new();
+    for (problem, caption, make) in pictures() {
+        let file = format!("{problem}.svg");
+        let svg = make().map_err(|e| io::Error::other(format!("gallery {problem}: {e}")))?;
+        std::fs::write(folder.join(&file), svg)?;
+        items.push(Item {
+            problem,
+            file,
+            caption: caption.to_string(),
+            steps: false,
+        });
+    }
+    for (problem, name, make) in step_pages() {
+        let file = format!("{problem}-{name}-steps.html");
+        let html = make().map_err(|e| io::Error::other(format!("gallery {name}: {e}")))?;
+        std::fs::write(folder.join(&file), html)?;
+        items.push(Item {
+            problem,
+            file,
+            caption: format!("{name}, step by step"),
+            steps: true,
+        });
+    }
+    std::fs::write(dir.join("gallery.html"), gallery_html(&items))?;
+    Ok(items)
+}
+
+/// A picture of the workload: its SVG text.
+type MakePicture = fn() -> Result<String>;
+
+/// The points every picture shows.
+fn picture_points() -> Result<Vec<Point2>> {
+    generate(PointKind::UniformDisk, PICTURE_POINTS, 1)
+}
+
+/// The points every step page traces.
+fn step_points() -> Result<Vec<Point2>> {
+    generate(PointKind::UniformDisk, STEP_POINTS, 1)
+}
+
+/// The pictures: problem, caption, how to draw it.
+fn pictures() -> Vec<(&'static str, &'static str, MakePicture)> {
+    vec![
+        (
+            "hull",
+            "the convex hull, its vertices numbered in hull order",
+            || {
+                let pts = picture_points()?;
+                let hull = convex_hull(&pts, Algorithm::AklToussaint, HullOptions::default())?;
+                Ok(draw::hull(&PointSet::new(&pts)?, &hull)?.to_svg())
+            },
+        ),
+        (
+            "diameter",
+            "rotating calipers: antipodal pairs, diameter, width, enclosing rectangles",
+            || {
+                let pts = picture_points()?;
+                let set = PointSet::new(&pts)?;
+                let polygon = ConvexPolygon::hull(&set);
+                Ok(draw::calipers(&polygon, &polygon.diameter()?)?.to_svg())
+            },
+        ),
+        (
+            "delaunay",
+            "the Delaunay triangulation with its circumcircles",
+            || {
+                let pts = picture_points()?;
+                let t = incremental(&pts)?;
+                let v = crate::delaunay::dual(&pts, &t)?;
+                Ok(draw::delaunay(&PointSet::new(&pts)?, &t, Some(&v))?.to_svg())
+            },
+        ),
+        ("voronoi", "the Voronoi cells, clipped to a box", || {
+            let pts = picture_points()?;
+            let set = PointSet::new(&pts)?;
+            Ok(draw::voronoi(&set, &voronoi_of(&pts)?, &ClipBox::around(&set)?)?.to_svg())
+        }),
+        ("closest-pair", "the closest pair", || {
+            let pts = picture_points()?;
+            let pair = closest_pair(&pts, ClosestPairAlgorithm::Delaunay)?;
+            Ok(draw::closest_pair(&PointSet::new(&pts)?, &pair)?.to_svg())
+        }),
+        ("emst", "the Euclidean minimum spanning tree", || {
+            let pts = picture_points()?;
+            Ok(draw::emst(&PointSet::new(&pts)?, &euclidean_mst(&pts)?)?.to_svg())
+        }),
+        (
+            "empty-circle",
+            "the largest empty circle centred in the hull",
+            || {
+                let pts = picture_points()?;
+                let hull = convex_hull(&pts, Algorithm::AklToussaint, HullOptions::default())?;
+                let circle = largest_empty_circle(&pts)?;
+                Ok(draw::empty_circle(&PointSet::new(&pts)?, &hull, &circle)?.to_svg())
+            },
+        ),
+    ]
+}
+
+/// The step pages: problem, algorithm, how to write it.
+fn step_pages() -> Vec<(&'static str, &'static str, MakePicture)> {
+    vec![
+        ("hull", "jarvis", || {
+            let pts = step_points()?;
+            let set = PointSet::new(&pts)?;
+            let trace = jarvis_trace(&pts, HullOptions::default())?;
+            Ok(draw::jarvis_steps(&set, &trace)?.to_html())
+        }),
+        ("hull", "graham", || {
+            let pts = step_points()?;
+            let set = PointSet::new(&pts)?;
+            let trace = graham_trace(&pts, HullOptions::default())?;
+            Ok(draw::graham_steps(&set, &trace)?.to_html())
+        }),
+        ("hull", "monotone-chain", || {
+            let pts = step_points()?;
+            let set = PointSet::new(&pts)?;
+            let trace = monotone_chain_trace(&pts, HullOptions::default())?;
+            Ok(draw::monotone_chain_steps(&set, &trace)?.to_html())
+        }),
+        ("hull", "quickhull", || {
+            let pts = step_points()?;
+            let set = PointSet::new(&pts)?;
+            let trace = quickhull_trace(&pts, HullOptions::default())?;
+            Ok(draw::quickhull_steps(&set, &trace)?.to_html())
+        }),
+        ("delaunay", "lawson", || {
+            let pts = step_points()?;
+            let set = PointSet::new(&pts)?;
+            Ok(draw::lawson_steps(&set, &lawson_trace(&pts)?)?.to_html())
+        }),
+    ]
+}
+
+/// The gallery page.
+fn gallery_html(items: &[Item]) -> String {
+    let mut h = String::new();
+    let _ = write!(
+        h,
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <title>compgeo gallery</title>\n<style>\
+         body{{font-family:sans-serif;max-width:1700px;margin:1em auto;padding:0 1em;color:#222}}\
+         figure{{display:inline-block;vertical-align:top;margin:.5em;max-width:420px}}\
+         img{{max-width:100%;border:1px solid #ddd}}</style>\n</head>\n<body>\n\
+         <h1>compgeo gallery</h1>\n<p>Each picture is the library's own result on \
+         {PICTURE_POINTS} points of the uniform-disk distribution (seed 1), drawn by \
+         <code>compgeo draw</code>; each step page is the run of an algorithm on \
+         {STEP_POINTS} such points, a picture per frame of its trace (<code>compgeo draw \
+         --steps</code>; ← and → step through it). <a href=\"index.html\">Back to the \
+         report</a>.</p>\n<h2>Pictures</h2>\n"
+    );
+    for item in items.iter().filter(|i| !i.steps) {
+        let _ = writeln!(
+            h,
+            "<figure><a href=\"gallery/{file}\"><img src=\"gallery/{file}\" alt=\"{caption}\"></a>\
+             <figcaption><strong>{problem}</strong>: {caption}</figcaption></figure>",
+            file = escape(&item.file),
+            caption = escape(&item.caption),
+            problem = escape(item.problem),
+        );
+    }
+    h.push_str("<h2>Step pages</h2>\n<ul>\n");
+    for item in items.iter().filter(|i| i.steps) {
+        let _ = writeln!(
+            h,
+            "<li><a href=\"gallery/{}\">{}: {}</a></li>",
+            escape(&item.file),
+            escape(item.problem),
+            escape(&item.caption)
+        );
+    }
+    h.push_str("</ul>\n</body>\n</html>\n");
+    h
+}
