@@ -76,7 +76,7 @@ enum Op {
 
 /// The shape parameters and the arithmetic.
 #[derive(Debug, Args)]
-struct ShapeArgs {
+pub(super) struct ShapeArgs {
     /// The bias β₁ > 0: a number or a fraction such as 3/2
     #[arg(
         long,
@@ -99,16 +99,16 @@ struct ShapeArgs {
     allow_negative_tension: bool,
     /// Compute in exact rationals and print every number as a string such as "79/153"
     #[arg(long)]
-    exact: bool,
+    pub(super) exact: bool,
 }
 
 /// The control polygon.
 #[derive(Debug, Args)]
-struct ControlArgs {
+pub(super) struct ControlArgs {
     /// Control points as JSON [[x, y], ...] (at least four; dimension 1 to 4; numbers or
     /// strings such as "1/3"), or `-` to read them from stdin
     #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
-    control: String,
+    pub(super) control: String,
 }
 
 /// Runs `compgeo beta`.
@@ -147,6 +147,16 @@ fn parameters<S: JsonScalar>(shape: &ShapeArgs) -> Result<BetaParameters<S>, Cli
     })
 }
 
+/// The Beta-spline the arguments describe.
+pub(super) fn beta_of<S: JsonScalar, const D: usize>(
+    shape: &ShapeArgs,
+    rows: &[Vec<String>],
+) -> Result<BetaSpline<S, D>, CliError> {
+    let p = parameters::<S>(shape)?;
+    let control = to_points::<S, D>(rows, |i| format!("control point {i}"))?;
+    Ok(BetaSpline::new(p, control)?)
+}
+
 /// A 4 × 4 matrix printed as its rows.
 fn matrix<S: JsonScalar>(m: &Matrix4<S>, name: &str) -> Result<Value, CliError> {
     m.iter()
@@ -182,9 +192,7 @@ fn run_curve<S: JsonScalar, const D: usize>(
     shape: &ShapeArgs,
     rows: &[Vec<String>],
 ) -> Result<Value, CliError> {
-    let p = parameters::<S>(shape)?;
-    let control = to_points::<S, D>(rows, |i| format!("control point {i}"))?;
-    let s = BetaSpline::new(p, control)?;
+    let s = beta_of::<S, D>(shape, rows)?;
     let mut counts = Counts::default();
     Ok(match op {
         Op::Eval { u, .. } => {

@@ -74,14 +74,14 @@ enum Op {
 
 /// The curve and the arithmetic, shared by every operation.
 #[derive(Debug, Args)]
-struct CurveArgs {
+pub(super) struct CurveArgs {
     /// Control points as JSON [[x, y], ...] (dimension 1 to 4; numbers or strings such as
     /// "1/3"), or `-` to read them from stdin
     #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
-    control: String,
+    pub(super) control: String,
     /// Compute in exact rationals and print every coordinate as a string such as "47/18"
     #[arg(long)]
-    exact: bool,
+    pub(super) exact: bool,
 }
 
 /// Runs `compgeo bezier`.

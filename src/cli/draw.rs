@@ -1,21 +1,42 @@
 //! `compgeo draw <problem> [--algorithm A] IN --out FILE.svg`: the SVG picture of a
 //! geometric result, computed as the problem's own command computes it.
 //!
-//! Problems: `hull`, `diameter` (alias `calipers`), `delaunay` (`--circumcircles`),
+//! Point problems: `hull`, `diameter` (alias `calipers`), `delaunay` (`--circumcircles`),
 //! `voronoi` (`--clip`), `closest-pair`, `emst`, `empty-circle`, with the algorithms of the
-//! command of the same name. The picture goes to `--out` and stdout gets one JSON object:
+//! command of the same name, reading the point file `IN`. Curve, surface, mesh and graph
+//! problems read what their own command reads: `bezier` (`--control`, `--t` for de
+//! Casteljau's scaffolding), `bspline` (`--control`, `--degree`, `--knots`, `--spl`, `--u`
+//! for de Boor's net), `nurbs` (and `--weights`), `beta` (`--beta1`, `--beta2`,
+//! `--control`), `subdivide` (`--points`, `--scheme`, `--rounds`, ...), `surface` (`--net`
+//! and the spline options, `--lines`), `triangle` (`--control`, `--segments`), `mesh` (an OBJ
+//! file, `--scheme`, `--rounds`) and `graph` (a JSON graph, `--points` for coordinates,
+//! and one of `--colour A`, `--mst A`, `--bfs S`, `--dfs S`); `--exact` computes in exact
+//! rationals before the picture rounds to `f64`.
+//!
+//! The picture goes to `--out` and stdout gets one JSON object:
 //! `{"problem": "...", "algorithm": "...", "points": n, "layers": {"hull": 1, ...},
 //! "labels": true, "bytes": b, "out": "FILE.svg"}` (`algorithm` only where there is a
-//! choice). `--out -` writes the SVG to stdout instead, and nothing else.
+//! choice, `points` for the point problems). `--out -` writes the SVG to stdout instead, and
+//! nothing else.
 //!
 //! `--steps` (hull: `jarvis`, `graham`, `monotone-chain`, `quickhull`; delaunay: `lawson`)
 //! writes the run as one self-contained HTML page instead, a picture per frame of the
 //! algorithm's own trace ([`crate::draw::StepPage`]), and prints `{"problem", "algorithm",
 //! "points", "frames", "bytes", "out"}`.
 
-use super::input::PointInput;
+use super::beta::{beta_of, ControlArgs, ShapeArgs};
+use super::bezier::{CurveArgs as BezierArgs, JsonScalar};
+use super::bspline::{curve_of, CurveArgs as BsplineArgs};
+use super::graph::{non_empty, weighted};
+use super::input::{inline_or_stdin, parse_number_arrays, read_text, GraphInput, PointInput};
+use super::interpolate::to_points;
+use super::mesh::{parse_scheme, scheme_help};
+use super::nurbs::{nurbs_of, RationalArgs};
 use super::output::{print_json, print_text, write_file};
 use super::proximity::parse_numbers;
+use super::subdivide::{each_round, polygon_rows, scheme_title, topology, SubdivideArgs};
+use super::surface::{surface_of, NetArgs};
+use super::triangle::{patch_of, PatchArgs};
 use super::CliError;
 use crate::calipers::{diameter, ConvexPolygon, DiameterAlgorithm};
 use crate::count::NoCount;
@@ -23,13 +44,19 @@ use crate::delaunay::lawson_trace;
 use crate::delaunay::{
     dual, triangulate_with, voronoi_with, Algorithm as DelaunayAlgorithm, ClipBox,
 };
-use crate::draw::{self, Picture, StepPage};
+use crate::draw::{self, circle_layout, GraphOverlay, Picture, StepPage};
 use crate::geometry::{Point2, PointSet};
+use crate::graph::{
+    colour_with, search_with, spanning_forest_with, ColouringAlgorithm, Graph, MstAlgorithm,
+    SearchAlgorithm,
+};
 use crate::hull::{convex_hull_with, Algorithm as HullAlgorithm, HullOptions};
 use crate::hull::{graham_trace, jarvis_trace, monotone_chain_trace, quickhull_trace};
+use crate::mesh::{read_obj, subdivide_with, PolygonMesh, Scheme};
 use crate::proximity::{
     closest_pair_with, euclidean_mst_with, largest_empty_circle_with, ClosestPairAlgorithm,
 };
+use crate::spline::{parse_scalar, Bezier};
 use clap::{Args, Subcommand};
 use serde_json::{json, Map, Value};
 use std::io::Write;
@@ -47,6 +74,14 @@ pub(super) struct DrawArgs {
 struct Common {
     #[command(flatten)]
     input: PointInput,
+    /// Write the SVG to this file (`-` for stdout, instead of the JSON summary)
+    #[arg(long, value_name = "FILE.svg")]
+    out: PathBuf,
+}
+
+/// The picture's path, for the problems that read no point file.
+#[derive(Debug, Args)]
+struct Out {
     /// Write the SVG to this file (`-` for stdout, instead of the JSON summary)
     #[arg(long, value_name = "FILE.svg")]
     out: PathBuf,
@@ -121,47 +156,316 @@ enum Problem {
         #[command(flatten)]
         common: Common,
     },
+    /// A Bézier curve (2 or 3 dimensions) with its control polygon, and with --t de
+    /// Casteljau's scaffolding at t
+    Bezier {
+        #[command(flatten)]
+        curve: BezierArgs,
+        /// Draw de Casteljau's scaffolding at this parameter: a decimal or a fraction such as
+        /// 1/3 (any t, also outside [0, 1])
+        #[arg(long = "t", value_name = "T", allow_hyphen_values = true)]
+        t: Option<String>,
+        #[command(flatten)]
+        out: Out,
+    },
+    /// A B-spline curve with its control polygon and its points at the knots, and with --u
+    /// de Boor's net at u
+    Bspline {
+        #[command(flatten)]
+        curve: BsplineArgs,
+        /// Draw de Boor's net at this parameter of the domain [t_d, t_n]
+        #[arg(
+            long = "u",
+            visible_alias = "t",
+            value_name = "U",
+            allow_hyphen_values = true
+        )]
+        u: Option<String>,
+        #[command(flatten)]
+        out: Out,
+    },
+    /// A NURBS curve with its control polygon and its points at the knots
+    Nurbs {
+        #[command(flatten)]
+        curve: RationalArgs,
+        #[command(flatten)]
+        out: Out,
+    },
+    /// A cubic Beta-spline with its control polygon and its joints
+    Beta {
+        #[command(flatten)]
+        shape: ShapeArgs,
+        #[command(flatten)]
+        control: ControlArgs,
+        #[command(flatten)]
+        out: Out,
+    },
+    /// The polygon after each round of a subdivision scheme, earlier rounds lighter
+    Subdivide {
+        #[command(flatten)]
+        scheme: SubdivideArgs,
+        #[command(flatten)]
+        out: Out,
+    },
+    /// A tensor-product surface (Bézier patch, B-spline or NURBS surface) as a projected
+    /// wireframe of isoparametric lines over its dashed control net
+    Surface {
+        #[command(flatten)]
+        net: NetArgs,
+        /// Isoparametric lines each way, less one (1 to 1024)
+        #[arg(long, default_value_t = 8)]
+        lines: usize,
+        #[command(flatten)]
+        out: Out,
+    },
+    /// A triangular Bézier patch as a projected wireframe over its dashed control net
+    Triangle {
+        #[command(flatten)]
+        patch: PatchArgs,
+        /// Segments along each side (1 to 1024)
+        #[arg(long, default_value_t = 8)]
+        segments: usize,
+        #[command(flatten)]
+        out: Out,
+    },
+    /// A polygon mesh read from OBJ as a projected wireframe, and with --rounds k the mesh
+    /// after k rounds of subdivision over it
+    Mesh {
+        /// The mesh: a Wavefront OBJ file, or - for standard input
+        #[arg(value_name = "IN")]
+        input: PathBuf,
+        /// The subdivision scheme of --rounds
+        #[arg(long, default_value = "catmull-clark", value_parser = parse_scheme,
+              long_help = scheme_help())]
+        scheme: Scheme,
+        /// Rounds of subdivision to draw over the mesh
+        #[arg(long, default_value_t = 0)]
+        rounds: usize,
+        /// Read and subdivide in exact rationals
+        #[arg(long)]
+        exact: bool,
+        #[command(flatten)]
+        out: Out,
+    },
+    /// A graph on a circle (or at --points), with its colouring, spanning forest or search
+    /// tree on request
+    Graph {
+        #[command(flatten)]
+        graph: GraphInput,
+        /// Place vertex i at point i of this point file (JSON or CSV) instead of on a circle
+        #[arg(long, value_name = "FILE")]
+        points: Option<PathBuf>,
+        /// Fill each vertex with its colour by this colouring strategy
+        #[arg(long, value_name = "A", group = "overlay", help = ColouringAlgorithm::names(),
+            long_help = ColouringAlgorithm::help())]
+        colour: Option<ColouringAlgorithm>,
+        /// Highlight the minimum spanning forest by this algorithm (weighted edges)
+        #[arg(long, value_name = "A", group = "overlay", help = MstAlgorithm::names(),
+            long_help = MstAlgorithm::help())]
+        mst: Option<MstAlgorithm>,
+        /// Highlight the breadth-first search tree from this vertex
+        #[arg(long, value_name = "S", group = "overlay")]
+        bfs: Option<usize>,
+        /// Highlight the depth-first search tree from this vertex
+        #[arg(long, value_name = "S", group = "overlay")]
+        dfs: Option<usize>,
+        #[command(flatten)]
+        out: Out,
+    },
 }
 
 /// Runs `compgeo draw`.
 pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
-    let (name, algorithm, common) = match &args.problem {
+    let steps = match &args.problem {
+        Problem::Hull {
+            algorithm,
+            common,
+            steps: true,
+            ..
+        } => Some(("hull", algorithm.name(), common)),
+        Problem::Delaunay {
+            algorithm,
+            common,
+            steps: true,
+            ..
+        } => Some(("delaunay", algorithm.name(), common)),
+        _ => None,
+    };
+    if let Some((name, algorithm, common)) = steps {
+        let points = common.input.read()?;
+        let set = PointSet::new(&points)?;
+        if let Some(page) = step_page(&args.problem, &set)? {
+            return write_page(name, Some(algorithm), points.len(), &page, &common.out);
+        }
+    }
+    let mut summary = Map::new();
+    let mut from_points = |common: &Common| -> Result<Picture, CliError> {
+        let points = common.input.read()?;
+        let set = PointSet::new(&points)?;
+        summary.insert("points".into(), json!(points.len()));
+        point_picture(&args.problem, &set, &points)
+    };
+    let (name, algorithm, out, mut picture) = match &args.problem {
         Problem::Hull {
             algorithm, common, ..
-        } => ("hull", Some(algorithm.name()), common),
-        Problem::Diameter { algorithm, common } => ("diameter", Some(algorithm.name()), common),
+        } => (
+            "hull",
+            Some(algorithm.name()),
+            &common.out,
+            from_points(common)?,
+        ),
+        Problem::Diameter { algorithm, common } => (
+            "diameter",
+            Some(algorithm.name()),
+            &common.out,
+            from_points(common)?,
+        ),
         Problem::Delaunay {
             algorithm, common, ..
-        } => ("delaunay", Some(algorithm.name()), common),
-        Problem::Voronoi { common, .. } => ("voronoi", None, common),
-        Problem::ClosestPair { algorithm, common } => {
-            ("closest-pair", Some(algorithm.name()), common)
+        } => (
+            "delaunay",
+            Some(algorithm.name()),
+            &common.out,
+            from_points(common)?,
+        ),
+        Problem::Voronoi { common, .. } => ("voronoi", None, &common.out, from_points(common)?),
+        Problem::ClosestPair { algorithm, common } => (
+            "closest-pair",
+            Some(algorithm.name()),
+            &common.out,
+            from_points(common)?,
+        ),
+        Problem::Emst { common } => ("emst", None, &common.out, from_points(common)?),
+        Problem::EmptyCircle { common } => {
+            ("empty-circle", None, &common.out, from_points(common)?)
         }
-        Problem::Emst { common } => ("emst", None, common),
-        Problem::EmptyCircle { common } => ("empty-circle", None, common),
+        Problem::Bezier { curve, t, out } => {
+            let rows = parse_number_arrays(&inline_or_stdin(&curve.control)?)?;
+            let d = rows[0].len();
+            let p = by_scalar_and_dimension!(
+                curve.exact,
+                d,
+                "control points",
+                bezier_picture(&rows, t.as_deref())
+            )?;
+            ("bezier", None, &out.out, p)
+        }
+        Problem::Bspline { curve, u, out } => {
+            let rows = parse_number_arrays(&inline_or_stdin(&curve.control)?)?;
+            let d = rows[0].len();
+            let p = by_scalar_and_dimension!(
+                curve.exact,
+                d,
+                "control points",
+                bspline_picture(curve, &rows, u.as_deref())
+            )?;
+            ("bspline", None, &out.out, p)
+        }
+        Problem::Nurbs { curve, out } => {
+            let rows = parse_number_arrays(&inline_or_stdin(&curve.curve.control)?)?;
+            let d = rows[0].len();
+            let p = by_scalar_and_dimension!(
+                curve.curve.exact,
+                d,
+                "control points",
+                nurbs_picture(curve, &rows)
+            )?;
+            ("nurbs", None, &out.out, p)
+        }
+        Problem::Beta {
+            shape,
+            control,
+            out,
+        } => {
+            let rows = parse_number_arrays(&inline_or_stdin(&control.control)?)?;
+            let d = rows[0].len();
+            let p = by_scalar_and_dimension!(
+                shape.exact,
+                d,
+                "control points",
+                beta_picture(shape, &rows)
+            )?;
+            ("beta", None, &out.out, p)
+        }
+        Problem::Subdivide { scheme, out } => {
+            let rows = polygon_rows(scheme)?;
+            let d = rows[0].len();
+            let p = by_scalar_and_dimension!(
+                scheme.exact,
+                d,
+                "points",
+                subdivision_picture(scheme, &rows)
+            )?;
+            ("subdivide", None, &out.out, p)
+        }
+        Problem::Surface { net, lines, out } => {
+            let grid = net.grid()?;
+            let d = grid[0][0].len();
+            let p = by_scalar_and_dimension!(
+                net.exact,
+                d,
+                "control points",
+                surface_picture(net, &grid, *lines)
+            )?;
+            ("surface", None, &out.out, p)
+        }
+        Problem::Triangle {
+            patch,
+            segments,
+            out,
+        } => {
+            let rows = parse_number_arrays(&inline_or_stdin(&patch.control)?)?;
+            let d = rows[0].len();
+            let p = by_scalar_and_dimension!(
+                patch.exact,
+                d,
+                "control points",
+                triangle_picture(patch, &rows, *segments)
+            )?;
+            ("triangle", None, &out.out, p)
+        }
+        Problem::Mesh {
+            input,
+            scheme,
+            rounds,
+            exact,
+            out,
+        } => {
+            let p = if *exact {
+                mesh_picture::<num_rational::BigRational>(input, *scheme, *rounds)?
+            } else {
+                mesh_picture::<f64>(input, *scheme, *rounds)?
+            };
+            let algorithm = (*rounds > 0).then(|| scheme.name());
+            ("mesh", algorithm, &out.out, p)
+        }
+        Problem::Graph {
+            graph,
+            points,
+            colour,
+            mst,
+            bfs,
+            dfs,
+            out,
+        } => {
+            let (p, algorithm) =
+                graph_picture(graph, points.as_deref(), *colour, *mst, *bfs, *dfs)?;
+            ("graph", algorithm, &out.out, p)
+        }
     };
-    let points = common.input.read()?;
-    let set = PointSet::new(&points)?;
-    if let Some(page) = step_page(&args.problem, &set)? {
-        return write_page(name, algorithm, points.len(), &page, &common.out);
-    }
-    let mut picture = picture(&args.problem, &set, &points)?;
     if let Some(a) = algorithm {
         let title = format!("{} ({a})", picture.title());
         picture.set_title(&title);
     }
     let svg = picture.to_svg();
-    let out = &common.out;
     if out == Path::new("-") {
         return print_text(&svg);
     }
     write_file(out, |w| w.write_all(svg.as_bytes()))?;
-    let mut summary = Map::new();
     summary.insert("problem".into(), json!(name));
     if let Some(a) = algorithm {
         summary.insert("algorithm".into(), json!(a));
     }
-    summary.insert("points".into(), json!(points.len()));
     let layers: Map<String, Value> = picture
         .layers()
         .map(|(layer, count)| (layer.to_string(), json!(count)))
@@ -242,8 +546,166 @@ fn write_page(
     }))
 }
 
-/// The picture of `problem`, each result computed by the library as its own command does.
-fn picture(problem: &Problem, set: &PointSet<'_>, points: &[Point2]) -> Result<Picture, CliError> {
+/// A Bézier curve, with de Casteljau's scaffolding at `t`.
+fn bezier_picture<S: JsonScalar, const D: usize>(
+    rows: &[Vec<String>],
+    t: Option<&str>,
+) -> Result<Picture, CliError> {
+    let b = Bezier::new(to_points::<S, D>(rows, |i| format!("control point {i}"))?)?;
+    let t: Option<S> = t.map(|t| parse_scalar(t, "t")).transpose()?;
+    Ok(draw::bezier(&b, t.as_ref())?)
+}
+
+/// A B-spline curve, with de Boor's net at `u`.
+fn bspline_picture<S: JsonScalar, const D: usize>(
+    args: &BsplineArgs,
+    rows: &[Vec<String>],
+    u: Option<&str>,
+) -> Result<Picture, CliError> {
+    let s = curve_of::<S, D>(args, rows)?;
+    let u: Option<S> = u.map(|u| parse_scalar(u, "u")).transpose()?;
+    Ok(draw::bspline(&s, u.as_ref())?)
+}
+
+/// A NURBS curve.
+fn nurbs_picture<S: JsonScalar, const D: usize>(
+    args: &RationalArgs,
+    rows: &[Vec<String>],
+) -> Result<Picture, CliError> {
+    Ok(draw::nurbs(&nurbs_of::<S, D>(args, rows)?)?)
+}
+
+/// A Beta-spline.
+fn beta_picture<S: JsonScalar, const D: usize>(
+    shape: &ShapeArgs,
+    rows: &[Vec<String>],
+) -> Result<Picture, CliError> {
+    Ok(draw::beta(&beta_of::<S, D>(shape, rows)?)?)
+}
+
+/// The rounds of a subdivision scheme.
+fn subdivision_picture<S: JsonScalar, const D: usize>(
+    args: &SubdivideArgs,
+    rows: &[Vec<String>],
+) -> Result<Picture, CliError> {
+    let rounds = each_round::<S, D>(args, rows)?;
+    Ok(draw::subdivision(
+        &scheme_title(args),
+        &rounds,
+        topology(args),
+    )?)
+}
+
+/// A tensor-product surface.
+fn surface_picture<S: JsonScalar, const D: usize>(
+    args: &NetArgs,
+    grid: &[Vec<Vec<String>>],
+    lines: usize,
+) -> Result<Picture, CliError> {
+    let s = surface_of::<S, D>(args, grid)?;
+    Ok(draw::surface(s.kind(), &s, s.net(), lines)?)
+}
+
+/// A triangular patch.
+fn triangle_picture<S: JsonScalar, const D: usize>(
+    args: &PatchArgs,
+    rows: &[Vec<String>],
+    segments: usize,
+) -> Result<Picture, CliError> {
+    Ok(draw::triangular_patch(
+        &patch_of::<S, D>(args, rows)?,
+        segments,
+    )?)
+}
+
+/// A mesh read from OBJ, with `rounds` rounds of `scheme` over it.
+fn mesh_picture<S: JsonScalar>(
+    input: &Path,
+    scheme: Scheme,
+    rounds: usize,
+) -> Result<Picture, CliError> {
+    let text = read_text(input)?;
+    let mesh: PolygonMesh<S, 3> = read_obj(text.as_bytes())?;
+    let fine = if rounds > 0 {
+        Some(subdivide_with(&mesh, scheme, rounds, &mut NoCount)?)
+    } else {
+        None
+    };
+    Ok(draw::mesh(&mesh, fine.as_ref())?)
+}
+
+/// A graph with the overlay asked for, and the algorithm that computed it.
+fn graph_picture(
+    input: &GraphInput,
+    points: Option<&Path>,
+    colour: Option<ColouringAlgorithm>,
+    mst: Option<MstAlgorithm>,
+    bfs: Option<usize>,
+    dfs: Option<usize>,
+) -> Result<(Picture, Option<&'static str>), CliError> {
+    let list = non_empty(input.read()?)?;
+    let g = Graph::from_edge_list(&list)?;
+    let n = g.vertex_count();
+    let positions = match points {
+        Some(path) => {
+            let pts = PointInput {
+                input: path.to_path_buf(),
+                format: None,
+            }
+            .read()?;
+            PointSet::new(&pts)?;
+            if pts.len() != n {
+                return Err(CliError::Shape(format!(
+                    "--points gives {} points for {n} vertices",
+                    pts.len()
+                )));
+            }
+            pts
+        }
+        None => circle_layout(n),
+    };
+    Ok(if let Some(a) = colour {
+        let c = colour_with(&g, a, &mut NoCount);
+        (
+            draw::graph(&g, &positions, GraphOverlay::Colouring(&c))?,
+            Some(a.name()),
+        )
+    } else if let Some(a) = mst {
+        let w = weighted(&list)?;
+        let forest = spanning_forest_with(&w, a, &mut NoCount);
+        let edges: Vec<[usize; 2]> = forest.edges.iter().map(|&e| w.endpoints(e)).collect();
+        (
+            draw::graph(&g, &positions, GraphOverlay::Tree(&edges))?,
+            Some(a.name()),
+        )
+    } else if let Some((start, kind)) = bfs
+        .map(|s| (s, SearchAlgorithm::Bfs))
+        .or(dfs.map(|s| (s, SearchAlgorithm::Dfs)))
+    {
+        let search = search_with(&g, start, kind, &mut NoCount)?;
+        (
+            draw::graph(
+                &g,
+                &positions,
+                GraphOverlay::Search {
+                    search: &search,
+                    start,
+                },
+            )?,
+            Some(kind.name()),
+        )
+    } else {
+        (draw::graph(&g, &positions, GraphOverlay::Plain)?, None)
+    })
+}
+
+/// The picture of a point problem, each result computed by the library as its own command
+/// does.
+fn point_picture(
+    problem: &Problem,
+    set: &PointSet<'_>,
+    points: &[Point2],
+) -> Result<Picture, CliError> {
     Ok(match problem {
         Problem::Hull {
             algorithm,
@@ -298,5 +760,6 @@ fn picture(problem: &Problem, set: &PointSet<'_>, points: &[Point2]) -> Result<P
             );
             draw::empty_circle(set, &hull, &largest_empty_circle_with(set, &mut NoCount)?)?
         }
+        _ => unreachable!("only the point problems read a point file"),
     })
 }

@@ -111,14 +111,7 @@ pub(super) fn run_colour(args: ColourArgs) -> Result<(), CliError> {
 
 /// Runs `compgeo mst`.
 pub(super) fn run_mst(args: MstArgs) -> Result<(), CliError> {
-    let list = non_empty(args.graph.read()?)?;
-    if list.weights.is_none() && !list.edges.is_empty() {
-        return Err(CliError::Shape(
-            "mst needs a weight on every edge: [[u, v, w], ...]".to_string(),
-        ));
-    }
-    let weights = list.weights.clone().unwrap_or_default();
-    let g = WeightedGraph::from_edges(list.vertices, &list.edges, &weights)?;
+    let g = weighted(&non_empty(args.graph.read()?)?)?;
     let mut counts = Counts::default();
     let f = spanning_forest_with(&g, args.algorithm, &mut counts);
     print_json(&MstOutput {
@@ -137,8 +130,23 @@ pub(super) fn run_mst(args: MstArgs) -> Result<(), CliError> {
     })
 }
 
+/// The weighted graph of an edge list with a weight on every edge.
+pub(super) fn weighted(list: &EdgeList) -> Result<WeightedGraph, CliError> {
+    if list.weights.is_none() && !list.edges.is_empty() {
+        return Err(CliError::Shape(
+            "mst needs a weight on every edge: [[u, v, w], ...]".to_string(),
+        ));
+    }
+    let weights = list.weights.clone().unwrap_or_default();
+    Ok(WeightedGraph::from_edges(
+        list.vertices,
+        &list.edges,
+        &weights,
+    )?)
+}
+
 /// Rejects a graph without vertices.
-fn non_empty(list: EdgeList) -> Result<EdgeList, CliError> {
+pub(super) fn non_empty(list: EdgeList) -> Result<EdgeList, CliError> {
     if list.vertices == 0 {
         return Err(Error::Empty { what: "graph" }.into());
     }

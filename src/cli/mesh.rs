@@ -65,11 +65,11 @@ enum Op {
     },
 }
 
-fn parse_scheme(s: &str) -> Result<Scheme, String> {
+pub(super) fn parse_scheme(s: &str) -> Result<Scheme, String> {
     s.parse::<Scheme>().map_err(|e| e.to_string())
 }
 
-fn scheme_help() -> String {
+pub(super) fn scheme_help() -> String {
     format!("The scheme:\n{}", Scheme::help())
 }
 

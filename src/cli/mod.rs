@@ -137,8 +137,9 @@ enum Command {
     EmptyCircle(proximity::PointsArgs),
     /// Polygon meshes from OBJ: k rounds of a subdivision scheme (Catmull–Clark, ...)
     Mesh(mesh::MeshArgs),
-    /// Draw a geometric result as an SVG picture: hull, diameter, delaunay, voronoi,
-    /// closest-pair, emst, empty-circle
+    /// Draw a result as an SVG picture: hull, diameter, delaunay, voronoi, closest-pair,
+    /// emst, empty-circle; bezier, bspline, nurbs, beta, subdivide; surface, triangle, mesh;
+    /// graph
     Draw(draw::DrawArgs),
 }
 

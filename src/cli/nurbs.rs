@@ -64,9 +64,9 @@ enum Op {
 
 /// A B-spline curve and its weights.
 #[derive(Debug, Args)]
-struct RationalArgs {
+pub(super) struct RationalArgs {
     #[command(flatten)]
-    curve: CurveArgs,
+    pub(super) curve: CurveArgs,
     /// The weights, JSON [1, "1/2", ...]: one per control point, finite and positive
     /// [default: all 1]
     #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
@@ -103,18 +103,26 @@ fn nurbs_json<S: JsonScalar, const D: usize>(s: &Nurbs<S, D>) -> Result<Value, C
     }))
 }
 
-fn run_typed<S: JsonScalar, const D: usize>(
-    op: &Op,
+/// The curve the arguments describe.
+pub(super) fn nurbs_of<S: JsonScalar, const D: usize>(
     args: &RationalArgs,
     rows: &[Vec<String>],
-) -> Result<Value, CliError> {
+) -> Result<Nurbs<S, D>, CliError> {
     let b = curve_of::<S, D>(&args.curve, rows)?;
     let weights = match &args.weights {
         Some(text) => read_scalars::<S>(text, "weight", "weights")?,
         None => vec![S::one(); b.control().len()],
     };
     let (control, knots) = b.into_parts();
-    let s = Nurbs::new(control, weights, knots)?;
+    Ok(Nurbs::new(control, weights, knots)?)
+}
+
+fn run_typed<S: JsonScalar, const D: usize>(
+    op: &Op,
+    args: &RationalArgs,
+    rows: &[Vec<String>],
+) -> Result<Value, CliError> {
+    let s = nurbs_of::<S, D>(args, rows)?;
     Ok(match op {
         Op::Eval { u, .. } => {
             let u: S = parse_scalar(u, "u")?;

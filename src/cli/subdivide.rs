@@ -17,7 +17,8 @@ use super::output::print_json;
 use super::CliError;
 use crate::count::Counts;
 use crate::spline::subdivision::{
-    four_point_with, lane_riesenfeld_with, limit_points, Mask, Topology,
+    four_point, four_point_with, lane_riesenfeld, lane_riesenfeld_with, limit_points, Mask,
+    Topology,
 };
 use crate::spline::{parse_scalar, Point};
 use clap::{Args, ValueEnum};
@@ -46,7 +47,7 @@ pub(super) struct SubdivideArgs {
     tension: Option<String>,
     /// Compute in exact rationals and print every number as a string such as "47/18"
     #[arg(long)]
-    exact: bool,
+    pub(super) exact: bool,
 }
 
 /// The schemes.
@@ -62,12 +63,58 @@ enum Scheme {
 
 /// Runs `compgeo subdivide`.
 pub(super) fn run(args: SubdivideArgs) -> Result<(), CliError> {
-    check_options(&args)?;
-    let text = inline_or_stdin(&args.points)?;
-    let rows = parse_number_arrays(&text)?;
+    let rows = polygon_rows(&args)?;
     let d = rows[0].len();
     let value = by_scalar_and_dimension!(args.exact, d, "points", run_typed(&args, &rows))?;
     print_json(&value)
+}
+
+/// The polygon's rows of number texts, after checking the options.
+pub(super) fn polygon_rows(args: &SubdivideArgs) -> Result<Vec<Vec<String>>, CliError> {
+    check_options(args)?;
+    parse_number_arrays(&inline_or_stdin(&args.points)?)
+}
+
+/// Whether the polygon is closed.
+pub(super) fn topology(args: &SubdivideArgs) -> Topology {
+    if args.closed {
+        Topology::Closed
+    } else {
+        Topology::Open
+    }
+}
+
+/// The scheme's name, with the degree of Lane–Riesenfeld.
+pub(super) fn scheme_title(args: &SubdivideArgs) -> String {
+    match args.scheme {
+        Scheme::LaneRiesenfeld => format!("Lane–Riesenfeld of degree {}", args.degree.unwrap_or(3)),
+        Scheme::Chaikin => "Chaikin".to_string(),
+        Scheme::FourPoint => "four-point scheme".to_string(),
+    }
+}
+
+/// The polygon after each round 0, 1, …, k (round 0 is the input), one round at a time.
+pub(super) fn each_round<S: JsonScalar, const D: usize>(
+    args: &SubdivideArgs,
+    rows: &[Vec<String>],
+) -> Result<Vec<Vec<Point<S, D>>>, CliError> {
+    let polygon: Vec<Point<S, D>> = to_points(rows, |i| format!("point {i}"))?;
+    let topology = topology(args);
+    let w: S = match &args.tension {
+        Some(text) => parse_scalar(text, "tension")?,
+        None => S::from_ratio(1, 16),
+    };
+    let mut rounds = vec![polygon];
+    for _ in 0..args.rounds {
+        let last = rounds.last().expect("the input is round 0");
+        let next = match args.scheme {
+            Scheme::LaneRiesenfeld => lane_riesenfeld(last, args.degree.unwrap_or(3), 1, topology)?,
+            Scheme::Chaikin => lane_riesenfeld(last, 2, 1, topology)?,
+            Scheme::FourPoint => four_point(last, &w, 1, topology)?,
+        };
+        rounds.push(next);
+    }
+    Ok(rounds)
 }
 
 /// Options the chosen scheme does not take are errors.

@@ -189,7 +189,7 @@ enum Evaluation {
 
 /// The surface and the arithmetic, shared by the operations.
 #[derive(Debug, Args)]
-struct NetArgs {
+pub(super) struct NetArgs {
     /// The control net as JSON [[[x, y, z], ...], ...] (rows of points, dimension 1 to 4),
     /// or `-` to read it from stdin
     #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
@@ -212,10 +212,15 @@ struct NetArgs {
     weights: Option<String>,
     /// Compute in exact rationals and print every number as a string such as "47/18"
     #[arg(long)]
-    exact: bool,
+    pub(super) exact: bool,
 }
 
 impl NetArgs {
+    /// The net's rows of points of number texts.
+    pub(super) fn grid(&self) -> Result<Vec<Vec<Vec<String>>>, CliError> {
+        parse_number_grid(&inline_or_stdin(&self.net)?)
+    }
+
     /// Whether the arguments describe a B-spline or NURBS surface rather than a Bézier patch.
     fn is_spline(&self) -> bool {
         self.degree_u.is_some()
@@ -325,10 +330,30 @@ pub(super) fn run(args: SurfaceArgs) -> Result<(), CliError> {
 }
 
 /// Any of the surfaces the command reads, behind the surface traits.
-enum AnySurface<S, const D: usize> {
+pub(super) enum AnySurface<S, const D: usize> {
     Bezier(BezierPatch<S, D>),
     BSpline(BSplineSurface<S, D>),
     Nurbs(NurbsSurface<S, D>),
+}
+
+impl<S: Scalar, const D: usize> AnySurface<S, D> {
+    /// The control net.
+    pub(super) fn net(&self) -> &ControlNet<S, D> {
+        match self {
+            AnySurface::Bezier(s) => s.net(),
+            AnySurface::BSpline(s) => s.net(),
+            AnySurface::Nurbs(s) => s.net(),
+        }
+    }
+
+    /// What kind of surface it is.
+    pub(super) fn kind(&self) -> &'static str {
+        match self {
+            AnySurface::Bezier(_) => "Bézier patch",
+            AnySurface::BSpline(_) => "B-spline surface",
+            AnySurface::Nurbs(_) => "NURBS surface",
+        }
+    }
 }
 
 impl<S: Scalar, const D: usize> Surface<S, D> for AnySurface<S, D> {
@@ -360,7 +385,7 @@ impl<S: Scalar, const D: usize> SurfaceDerivative<S, D> for AnySurface<S, D> {
 }
 
 /// The surface the arguments describe: a Bézier patch, or a B-spline or NURBS surface.
-fn surface_of<S: JsonScalar, const D: usize>(
+pub(super) fn surface_of<S: JsonScalar, const D: usize>(
     args: &NetArgs,
     grid: &[Vec<Vec<String>>],
 ) -> Result<AnySurface<S, D>, CliError> {

@@ -115,17 +115,17 @@ enum Evaluation {
 
 /// The patch and the arithmetic, shared by the operations.
 #[derive(Debug, Args)]
-struct PatchArgs {
+pub(super) struct PatchArgs {
     /// The control points as JSON [[x, y, z], ...] (dimension 1 to 4), rows of constant k
     /// first, each by increasing j; or `-` to read them from stdin
     #[arg(long, value_name = "JSON", allow_hyphen_values = true)]
-    control: String,
+    pub(super) control: String,
     /// The degree n [default: found from the count (n + 1)(n + 2)/2]
     #[arg(long)]
     degree: Option<usize>,
     /// Compute in exact rationals and print every number as a string such as "47/18"
     #[arg(long)]
-    exact: bool,
+    pub(super) exact: bool,
 }
 
 /// A point of the triangle.
@@ -178,7 +178,7 @@ pub(super) fn run(args: TriangleArgs) -> Result<(), CliError> {
 }
 
 /// The patch the arguments describe, each point named in errors as `control point i`.
-fn patch_of<S: JsonScalar, const D: usize>(
+pub(super) fn patch_of<S: JsonScalar, const D: usize>(
     args: &PatchArgs,
     rows: &[Vec<String>],
 ) -> Result<TriangularPatch<S, D>, CliError> {

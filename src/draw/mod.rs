@@ -1,6 +1,9 @@
 //! SVG pictures of the geometric results: a point set with its hull, the calipers' answers,
 //! the Delaunay triangulation, the Voronoi diagram, the closest pair, the Euclidean minimum
-//! spanning tree and the largest empty circle.
+//! spanning tree and the largest empty circle; of curves (Bézier curves with de Casteljau's
+//! scaffolding, B-splines with their knots and de Boor's net, NURBS, Beta-splines, the rounds
+//! of a subdivision scheme), of surfaces and meshes as projected wireframes, and of graphs
+//! with a colouring, a spanning tree or a search tree.
 //!
 //! Drawing is not an algorithm of the course: nothing here is declared or measured, and
 //! nothing here computes geometry. Every picture takes the results the other modules return
@@ -17,11 +20,14 @@
 //! | [`hull`], [`calipers`] | a point set with its hull; with antipodal pairs, diameter, width and enclosing rectangles | `hull.rs` |
 //! | [`delaunay`], [`voronoi`] | a triangulation (optionally with circumcircles); Voronoi cells clipped to a box | `delaunay.rs` |
 //! | [`closest_pair`], [`emst`], [`empty_circle`] | the proximity answers over their point set | `proximity.rs` |
+//! | [`bezier`], [`bspline`], [`nurbs`], [`beta`], [`subdivision`] | curves over their control polygons, de Casteljau's scaffolding, de Boor's net, knots, subdivision rounds | `curves.rs` |
+//! | [`surface`], [`triangular_patch`], [`mesh`], [`project`] | projected wireframes: isoparametric lines over the control net, a mesh's edges over the coarse mesh | `surfaces.rs` |
+//! | [`graph`], [`circle_layout`], [`GraphOverlay`] | a graph at coordinates or on a circle, with a colouring, a spanning or a search tree | `graphs.rs` |
 //! | [`StepPage`], [`StepFrame`] | a run as one self-contained HTML page, a picture per step, a slider and keys | `steps.rs` |
 //! | [`jarvis_steps`], [`graham_steps`], [`monotone_chain_steps`], [`quickhull_steps`], [`lawson_steps`] | step pages of the traced hulls and of Lawson's flips, from the [`trace`](crate::trace) frames | `hull_steps.rs` |
 //!
-//! A new kind of picture (curves, surfaces, meshes, graphs) is a new file that builds a
-//! [`Picture`] from its own results, using the same roles.
+//! A new kind of picture is a new file that builds a [`Picture`] from its own results,
+//! using the same roles.
 //!
 //! # Conventions
 //!
@@ -50,7 +56,8 @@
 //!
 //! Every picture takes O(n + k) time and output size for n points and k drawn items
 //! (hull vertices, triangles, cells, edges), plus O(m²) for the m ≤ 4 · [`LABEL_LIMIT`]
-//! labels it places.
+//! labels it places; a curve or surface adds its evaluations at the drawn parameters
+//! ([`SAMPLES_PER_PIECE`] per piece).
 //!
 //! # What the tests check
 //!
@@ -60,8 +67,14 @@
 //! [`Voronoi::clip`](crate::delaunay::Voronoi::clip)'s, the pairs, the width's lines and
 //! the rectangles' corners are the calipers'; labels appear up to [`LABEL_LIMIT`] points
 //! and not beyond; y grows upwards; extreme and degenerate inputs give finite numbers;
-//! files grow linearly. `tests/suite/draw_cli.rs` checks `compgeo draw` against the other
-//! commands.
+//! files grow linearly. `tests/suite/draw_curves.rs` does the same for curves, surfaces, meshes
+//! and graphs against exact oracles: the curve's vertices are the curve's points (de
+//! Casteljau's levels from the Bernstein form, a clamped B-spline against its Bézier curve, a
+//! uniform Beta-spline against its B-spline, a NURBS arc against the circle), the knots sit on
+//! the curve, the wireframes are the projected surface points, the mesh's edges are drawn
+//! once each, the colour classes are the colouring's and proper, the tree edges are the
+//! tree's. `tests/suite/draw_cli.rs` and `draw_curves_cli.rs` check `compgeo draw` against
+//! the other commands.
 //!
 //! ```
 //! use compgeo::delaunay::{dual, incremental};
@@ -85,27 +98,89 @@
 //! # Ok::<(), compgeo::Error>(())
 //! ```
 
+mod curves;
 mod delaunay;
 mod frame;
+mod graphs;
 mod hull;
 mod hull_steps;
 mod labels;
 mod proximity;
 mod steps;
+mod surfaces;
 mod svg;
 
+pub use curves::{beta, bezier, bspline, nurbs, sample_parameters, subdivision, SAMPLES_PER_PIECE};
 pub use delaunay::{delaunay, voronoi};
 pub use frame::Frame;
+pub use graphs::{circle_layout, graph, GraphOverlay};
 pub use hull::{calipers, hull};
 pub use hull_steps::{
     graham_steps, jarvis_steps, lawson_steps, monotone_chain_steps, quickhull_steps,
 };
 pub use proximity::{closest_pair, empty_circle, emst};
 pub use steps::{StepFrame, StepPage};
-pub use svg::{escape, Dash, Layer, Picture, Role, Style, LABEL_LIMIT};
+pub use surfaces::{mesh, surface, triangular_patch};
+pub use svg::{escape, Dash, Layer, Picture, Role, Style, CLASS_COLOURS, LABEL_LIMIT};
 
 use crate::error::{Error, Result};
 use crate::geometry::{BoundingBox, Point2, WideFloat};
+use crate::spline::{Point, Scalar};
+
+/// The factor of the cabinet projection, √2 / 4: the y axis recedes at 45° with half its
+/// length (see [`project`]).
+pub const CABINET: f64 = std::f64::consts::SQRT_2 / 4.0;
+
+/// The picture-plane point of a curve's or surface's point, rounded to `f64`: in two
+/// dimensions the point itself; in three the fixed cabinet projection
+///
+/// ```text
+/// (x, y, z) ↦ (x + k·y, z + k·y),   k = √2 / 4 (CABINET)
+/// ```
+///
+/// which keeps x to the right and z up, and draws the y axis receding at 45° up and to the
+/// right at half its length, so that a height field z = f(x, y) reads as a relief seen from
+/// the front and slightly above. Lengths and angles in planes y = const are kept.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] named `"dimension"` for points in a dimension other than 2
+/// or 3; [`Error::Overflow`] if the point or its projection is beyond the range of `f64`.
+///
+/// # Complexity
+/// O(D) time.
+///
+/// ```
+/// use compgeo::draw::{project, CABINET};
+/// use compgeo::geometry::Point2;
+/// use compgeo::spline::Point;
+///
+/// assert_eq!(project(&Point::new([1.0, 2.0]))?, Point2::new(1.0, 2.0));
+/// assert_eq!(project(&Point::new([1.0, 0.0, 3.0]))?, Point2::new(1.0, 3.0));
+/// assert_eq!(project(&Point::new([0.0, 4.0, 0.0]))?, Point2::new(4.0 * CABINET, 4.0 * CABINET));
+/// assert!(project(&Point::new([1.0])).is_err());
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn project<S: Scalar, const D: usize>(p: &Point<S, D>) -> Result<Point2> {
+    let c = p.to_f64();
+    let c = c.coords();
+    let (x, y) = match D {
+        2 => (c[0], c[1]),
+        3 => (c[0] + CABINET * c[1], c[2] + CABINET * c[1]),
+        _ => {
+            return Err(Error::InvalidParameter {
+                name: "dimension",
+                reason: format!("pictures are of points in 2 or 3 dimensions, got {D}"),
+            })
+        }
+    };
+    if x.is_finite() && y.is_finite() {
+        Ok(Point2::new(x, y))
+    } else {
+        Err(Error::Overflow {
+            what: "the projection for drawing",
+        })
+    }
+}
 
 /// The bounding box of `points`, or the unit box at the origin for no points (an empty
 /// picture still has a frame).

@@ -18,6 +18,13 @@ use std::io;
 /// no labels and thinner strokes.
 pub const LABEL_LIMIT: usize = 300;
 
+/// The fill colours of classes of points (a graph's colour classes): class k is filled with
+/// `CLASS_COLOURS[k % 8]`, outlined in near black. The first seven are the Okabe–Ito
+/// palette's colours, the eighth a mid grey.
+pub const CLASS_COLOURS: [&str; 8] = [
+    "#e69f00", "#56b4e9", "#009e73", "#f0e442", "#0072b2", "#d55e00", "#cc79a7", "#999999",
+];
+
 /// The side of the drawing area grows as `40 √n` between these bounds (so the typical gap
 /// between two of n spread-out points stays about 40 units until the largest side).
 const MIN_SIDE: f64 = 480.0;
@@ -216,6 +223,7 @@ enum Mark {
     Area,
     Ring,
     Text,
+    Filled(&'static str),
 }
 
 /// The sizes of a picture, from the number of points it shows.
@@ -490,6 +498,32 @@ impl Picture {
             count,
             count + skipped > 0,
         )
+    }
+
+    /// Draws discs twice a dot wide filled with `fill` (one of [`CLASS_COLOURS`], say) and
+    /// outlined in near black, centred on `points`; returns how many. The legend entry shows
+    /// the fill.
+    pub fn filled_points<P: Into<ConstructedPoint>>(
+        &mut self,
+        layer: &Layer,
+        fill: &'static str,
+        points: impl IntoIterator<Item = P>,
+    ) -> usize {
+        let r = self.sizes.dot;
+        let mut body = String::new();
+        let mut count = 0;
+        for p in points {
+            let c = self.frame.to_picture_constructed(p.into());
+            self.placer.avoid(c);
+            self.circle_element(&mut body, c, r);
+            count += 1;
+        }
+        let attrs = format!(
+            " fill=\"{fill}\" stroke=\"{}\" stroke-width=\"{}\"",
+            Role::Input.colour(),
+            short((0.5 * self.sizes.stroke).max(0.2))
+        );
+        self.group(layer, Mark::Filled(fill), &attrs, &body, count)
     }
 
     /// Draws a ring of a fixed size (three dots wide) around each point, to find a few
@@ -772,6 +806,13 @@ impl Picture {
                 short(x + length / 2.0),
                 short(mid),
                 short(0.45 * font)
+            ),
+            Mark::Filled(fill) => format!(
+                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{fill}\" stroke=\"{}\"/>\n",
+                short(x + length / 2.0),
+                short(mid),
+                short(0.45 * font),
+                Role::Input.colour()
             ),
             Mark::Text => format!(
                 "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"{}\">12</text>\n",

@@ -183,6 +183,15 @@ impl Svg {
         self.elements(class, "text", |n| n.text().unwrap_or("").to_string())
     }
 
+    /// The attribute `name` of the layer `class`'s group.
+    pub fn layer_attribute(&self, class: &str, name: &str) -> Option<String> {
+        let doc = self.doc();
+        let group = doc
+            .descendants()
+            .find(|n| n.has_tag_name("g") && n.attribute("class") == Some(class))?;
+        group.attribute(name).map(str::to_string)
+    }
+
     /// The `<title>`.
     pub fn title(&self) -> String {
         let doc = self.doc();
@@ -253,7 +262,7 @@ fn parse_path(d: &str) -> Vec<Subpath> {
 }
 
 /// The picture's SVG, parsed and checked.
-fn svg(picture: &Picture) -> Svg {
+pub fn svg(picture: &Picture) -> Svg {
     let text = picture.to_svg();
     let mut written = Vec::new();
     picture.write_svg(&mut written).unwrap();

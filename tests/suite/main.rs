@@ -36,6 +36,8 @@ mod delaunay;
 mod delaunay_builders;
 mod draw;
 mod draw_cli;
+mod draw_curves;
+mod draw_curves_cli;
 mod draw_steps;
 mod empty_circle;
 mod fortune;
