@@ -360,6 +360,13 @@ fn the_report_index_its_gallery_and_a_step_page_render_without_errors() {
         "closest-pair",
         "emst",
         "empty-circle",
+        "bezier",
+        "bspline",
+        "beta",
+        "subdivision",
+        "surface",
+        "mesh",
+        "colouring",
     ] {
         let src = format!("gallery/{problem}.svg");
         assert!(

@@ -1,9 +1,11 @@
-//! `gallery.html`: one picture per geometric problem on a small seeded workload, and the step
-//! pages of the algorithms the course traces, next to the growth charts.
+//! `gallery.html`: one picture per problem on a small seeded workload, and the step pages of
+//! the algorithms the course traces, next to the growth charts.
 //!
-//! Every picture is the [`draw`](crate::draw) module's, of the library's own result on points
-//! from [`gen::points`] (seed 1, the report's default): the same points for every problem, so
-//! the pictures can be compared. The files go to `DIR/gallery/`; the page links them.
+//! Every picture is the [`draw`](crate::draw) module's, of the library's own result: the
+//! point problems on the same points from [`gen::points`] (seed 1, the report's default), so
+//! the pictures can be compared; the curves on seeded control polygons; the surface, the mesh
+//! and the graph on fixed or generated inputs. The files go to `DIR/gallery/`; the page links
+//! them.
 
 use std::fmt::Write as _;
 use std::io;
@@ -11,14 +13,21 @@ use std::path::Path;
 
 use crate::calipers::ConvexPolygon;
 use crate::delaunay::{incremental, lawson_trace, voronoi as voronoi_of, ClipBox};
-use crate::draw::{self, escape};
-use crate::gen::{points as generate, PointKind};
+use crate::draw::{self, circle_layout, escape, GraphOverlay};
+use crate::gen::{cube, graph as generate_graph, points as generate, GraphKind, PointKind};
 use crate::geometry::{Point2, PointSet};
+use crate::graph::{colour, ColouringAlgorithm, Graph};
 use crate::hull::{
     convex_hull, graham_trace, jarvis_trace, monotone_chain_trace, quickhull_trace, Algorithm,
     HullOptions,
 };
+use crate::mesh::{subdivide, Scheme};
 use crate::proximity::{closest_pair, euclidean_mst, largest_empty_circle, ClosestPairAlgorithm};
+use crate::spline::beta::{BetaParameters, BetaSpline};
+use crate::spline::bspline::{BSpline, KnotVector};
+use crate::spline::subdivision::{lane_riesenfeld, Topology};
+use crate::spline::{Bezier, Point};
+use crate::surface::{BezierPatch, ControlNet};
 use crate::Result;
 
 /// How many points the pictures show: enough to look like the distribution, few enough to
@@ -141,7 +150,94 @@ fn pictures() -> Vec<(&'static str, &'static str, MakePicture)> {
                 Ok(draw::empty_circle(&PointSet::new(&pts)?, &hull, &circle)?.to_svg())
             },
         ),
+        (
+            "bezier",
+            "a cubic Bézier curve with de Casteljau's scaffolding at t = 1/3",
+            || {
+                let curve = Bezier::new(control_polygon(4))?;
+                Ok(draw::bezier(&curve, Some(&(1.0 / 3.0)))?.to_svg())
+            },
+        ),
+        (
+            "bspline",
+            "a cubic B-spline, its knots on the curve and de Boor's net at u = 0.4",
+            || {
+                let control = control_polygon(7);
+                let knots = KnotVector::clamped_uniform(3, control.len(), 0.0, 1.0)?;
+                Ok(draw::bspline(&BSpline::new(control, knots)?, Some(&0.4))?.to_svg())
+            },
+        ),
+        (
+            "beta",
+            "a cubic Beta-spline with β₁ = 2, β₂ = 4 and its control polygon",
+            || {
+                let curve = BetaSpline::new(BetaParameters::new(2.0, 4.0)?, control_polygon(7))?;
+                Ok(draw::beta(&curve)?.to_svg())
+            },
+        ),
+        (
+            "subdivision",
+            "Chaikin's algorithm: a closed polygon and three rounds",
+            || {
+                let polygon = control_polygon(6);
+                let rounds = (0..=3)
+                    .map(|k| lane_riesenfeld(&polygon, 2, k, Topology::Closed))
+                    .collect::<Result<Vec<_>>>()?;
+                Ok(draw::subdivision("Chaikin", &rounds, Topology::Closed)?.to_svg())
+            },
+        ),
+        (
+            "surface",
+            "a bicubic Bézier patch: isoparametric lines over its control net",
+            || {
+                let rows = (0..4)
+                    .map(|i| {
+                        (0..4)
+                            .map(|j| {
+                                let (x, y) = (i as f64, j as f64);
+                                let bump = if (1..3).contains(&i) && (1..3).contains(&j) {
+                                    2.0
+                                } else {
+                                    0.0
+                                };
+                                Point::new([x, y, bump + 0.25 * (x - y)])
+                            })
+                            .collect()
+                    })
+                    .collect();
+                let net = ControlNet::new(rows)?;
+                let patch = BezierPatch::new(net.clone())?;
+                Ok(draw::surface("bicubic Bézier patch", &patch, &net, 8)?.to_svg())
+            },
+        ),
+        (
+            "mesh",
+            "Catmull–Clark: a cube and two rounds of subdivision",
+            || {
+                let coarse = cube();
+                let fine = subdivide(&coarse, Scheme::CatmullClark, 2)?;
+                Ok(draw::mesh(&coarse, Some(&fine))?.to_svg())
+            },
+        ),
+        (
+            "colouring",
+            "the 6 × 6 queen graph coloured by DSatur",
+            || {
+                let g = Graph::from_edge_list(&generate_graph(GraphKind::Queen, 6, 0, 1)?)?;
+                let c = colour(&g, ColouringAlgorithm::Dsatur);
+                let layout = circle_layout(g.vertex_count());
+                Ok(draw::graph(&g, &layout, GraphOverlay::Colouring(&c))?.to_svg())
+            },
+        ),
     ]
+}
+
+/// The `n` control points of the curve pictures: seeded points of the unit square, sorted
+/// by x so the polygon runs left to right.
+fn control_polygon(n: usize) -> Vec<Point<f64, 2>> {
+    let mut pts = generate(PointKind::UniformSquare, n, 1).unwrap_or_default();
+    pts.sort_by(|a, b| a.x.total_cmp(&b.x));
+    pts.into_iter().map(|p| Point::new([p.x, p.y])).collect()
 }
 
 /// The step pages: problem, algorithm, how to write it.
@@ -189,9 +285,10 @@ fn gallery_html(items: &[Item]) -> String {
          body{{font-family:sans-serif;max-width:1700px;margin:1em auto;padding:0 1em;color:#222}}\
          figure{{display:inline-block;vertical-align:top;margin:.5em;max-width:420px}}\
          img{{max-width:100%;border:1px solid #ddd}}</style>\n</head>\n<body>\n\
-         <h1>compgeo gallery</h1>\n<p>Each picture is the library's own result on \
-         {PICTURE_POINTS} points of the uniform-disk distribution (seed 1), drawn by \
-         <code>compgeo draw</code>; each step page is the run of an algorithm on \
+         <h1>compgeo gallery</h1>\n<p>Each picture is the library's own result, drawn by \
+         <code>compgeo draw</code>: the point problems on the same {PICTURE_POINTS} points of the \
+         uniform-disk distribution (seed 1), the curves on seeded control polygons, the surface, \
+         the mesh and the graph on fixed inputs. Each step page is the run of an algorithm on \
          {STEP_POINTS} such points, a picture per frame of its trace (<code>compgeo draw \
          --steps</code>; ← and → step through it). <a href=\"index.html\">Back to the \
          report</a>.</p>\n<h2>Pictures</h2>\n"
