@@ -8,7 +8,8 @@
 //! "labels": true, "bytes": b, "out": "FILE.svg"}` (`algorithm` only where there is a
 //! choice). `--out -` writes the SVG to stdout instead, and nothing else.
 //!
-//! `--steps` (hull: `jarvis`, `graham`, `monotone-chain`, `quickhull`; delaunay: `lawson`)
+//! `--steps` (hull: `jarvis`, `graham`, `monotone-chain`, `quickhull`; delaunay: `lawson`,
+//! `fortune`)
 //! writes the run as one self-contained HTML page instead, a picture per frame of the
 //! algorithm's own trace ([`crate::draw::StepPage`]), and prints `{"problem", "algorithm",
 //! "points", "frames", "bytes", "out"}`.
@@ -19,10 +20,10 @@ use super::proximity::parse_numbers;
 use super::CliError;
 use crate::calipers::{diameter, ConvexPolygon, DiameterAlgorithm};
 use crate::count::NoCount;
-use crate::delaunay::lawson_trace;
 use crate::delaunay::{
     dual, triangulate_with, voronoi_with, Algorithm as DelaunayAlgorithm, ClipBox,
 };
+use crate::delaunay::{fortune_trace, lawson_trace};
 use crate::draw::{self, Picture, StepPage};
 use crate::geometry::{Point2, PointSet};
 use crate::hull::{convex_hull_with, Algorithm as HullAlgorithm, HullOptions};
@@ -88,7 +89,8 @@ enum Problem {
         /// Also draw the circumcircle of every triangle
         #[arg(long)]
         circumcircles: bool,
-        /// Write the run step by step as one HTML page (lawson: the sweep, then every flip)
+        /// Write the run step by step as one HTML page (lawson: the sweep, then every flip;
+        /// fortune: every site and circle event with the sweep and beach lines)
         #[arg(long)]
         steps: bool,
         #[command(flatten)]
@@ -218,7 +220,8 @@ fn step_page(problem: &Problem, set: &PointSet<'_>) -> Result<Option<StepPage>, 
             ..
         } => match algorithm {
             DelaunayAlgorithm::Lawson => Some(draw::lawson_steps(set, &lawson_trace(set)?)?),
-            other => return Err(unsupported(other.name(), "lawson")),
+            DelaunayAlgorithm::Fortune => Some(draw::fortune_steps(set, &fortune_trace(set)?)?),
+            other => return Err(unsupported(other.name(), "lawson and fortune")),
         },
         _ => None,
     })

@@ -19,6 +19,7 @@
 //! | [`closest_pair`], [`emst`], [`empty_circle`] | the proximity answers over their point set | `proximity.rs` |
 //! | [`StepPage`], [`StepFrame`] | a run as one self-contained HTML page, a picture per step, a slider and keys | `steps.rs` |
 //! | [`jarvis_steps`], [`graham_steps`], [`monotone_chain_steps`], [`quickhull_steps`], [`lawson_steps`] | step pages of the traced hulls and of Lawson's flips, from the [`trace`](crate::trace) frames | `hull_steps.rs` |
+//! | [`fortune_steps`] | the step page of Fortune's sweep: the sweep line, the beach line's arcs, the triangles and Voronoi vertices so far, each event | `fortune_steps.rs` |
 //!
 //! A new kind of picture (curves, surfaces, meshes, graphs) is a new file that builds a
 //! [`Picture`] from its own results, using the same roles.
@@ -86,6 +87,7 @@
 //! ```
 
 mod delaunay;
+mod fortune_steps;
 mod frame;
 mod hull;
 mod hull_steps;
@@ -95,6 +97,7 @@ mod steps;
 mod svg;
 
 pub use delaunay::{delaunay, voronoi};
+pub use fortune_steps::fortune_steps;
 pub use frame::Frame;
 pub use hull::{calipers, hull};
 pub use hull_steps::{
