@@ -19,7 +19,8 @@
 //! choice, `points` for the point problems). `--out -` writes the SVG to stdout instead, and
 //! nothing else.
 //!
-//! `--steps` (hull: `jarvis`, `graham`, `monotone-chain`, `quickhull`; delaunay: `lawson`)
+//! `--steps` (hull: `jarvis`, `graham`, `monotone-chain`, `quickhull`; delaunay: `lawson`,
+//! `fortune`)
 //! writes the run as one self-contained HTML page instead, a picture per frame of the
 //! algorithm's own trace ([`crate::draw::StepPage`]), and prints `{"problem", "algorithm",
 //! "points", "frames", "bytes", "out"}`.
@@ -40,10 +41,10 @@ use super::triangle::{patch_of, PatchArgs};
 use super::CliError;
 use crate::calipers::{diameter, ConvexPolygon, DiameterAlgorithm};
 use crate::count::NoCount;
-use crate::delaunay::lawson_trace;
 use crate::delaunay::{
     dual, triangulate_with, voronoi_with, Algorithm as DelaunayAlgorithm, ClipBox,
 };
+use crate::delaunay::{fortune_trace, lawson_trace};
 use crate::draw::{self, circle_layout, GraphOverlay, Picture, StepPage};
 use crate::geometry::{Point2, PointSet};
 use crate::graph::{
@@ -123,7 +124,8 @@ enum Problem {
         /// Also draw the circumcircle of every triangle
         #[arg(long)]
         circumcircles: bool,
-        /// Write the run step by step as one HTML page (lawson: the sweep, then every flip)
+        /// Write the run step by step as one HTML page (lawson: the sweep, then every flip;
+        /// fortune: every site and circle event with the sweep and beach lines)
         #[arg(long)]
         steps: bool,
         #[command(flatten)]
@@ -517,7 +519,8 @@ fn step_page(problem: &Problem, set: &PointSet<'_>) -> Result<Option<StepPage>, 
             ..
         } => match algorithm {
             DelaunayAlgorithm::Lawson => Some(draw::lawson_steps(set, &lawson_trace(set)?)?),
-            other => return Err(unsupported(other.name(), "lawson")),
+            DelaunayAlgorithm::Fortune => Some(draw::fortune_steps(set, &fortune_trace(set)?)?),
+            other => return Err(unsupported(other.name(), "lawson and fortune")),
         },
         _ => None,
     })

@@ -82,6 +82,21 @@ impl BeachLine {
         self.arcs[a as usize].parent != a
     }
 
+    /// The sites of the arcs from left to right (for traces: O(number of arcs)).
+    pub(super) fn sites_in_order(&self) -> Vec<u32> {
+        let mut first = self.root;
+        while first != NIL && self.arcs[first as usize].left != NIL {
+            first = self.arcs[first as usize].left;
+        }
+        let mut sites = Vec::new();
+        let mut a = first;
+        while a != NIL {
+            sites.push(self.site(a));
+            a = self.next(a);
+        }
+        sites
+    }
+
     /// The first arc from the left for which `right_of_site` is false, given that it is
     /// true for a prefix of the arcs and false for the rest; the last arc if it is true for
     /// all. `right_of_site(a)` is called only on arcs with a right neighbour. [`NIL`] if
@@ -267,7 +282,9 @@ mod tests {
             }
         }
         assert_eq!(in_order, listed);
-        listed.iter().map(|&a| line.site(a)).collect()
+        let sites: Vec<u32> = listed.iter().map(|&a| line.site(a)).collect();
+        assert_eq!(line.sites_in_order(), sites);
+        sites
     }
 
     #[test]

@@ -5,13 +5,15 @@
 use super::beach_line::{BeachLine, NIL};
 use super::Triangulation;
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, NoCount, Operation};
+use crate::count::{Counter, Counts, NoCount, Operation};
 use crate::error::Result;
+use crate::geometry::construct::circumcentre;
 use crate::geometry::lex_sort::{sorted_items_with, yx_key};
 use crate::geometry::sweep_predicates::{
-    breakpoint_side, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
+    breakpoint_side, circle_top_floor, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
 };
-use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
+use crate::geometry::{ConstructedPoint, CountedPredicates, Orientation, Point2, PointSet};
+use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
 use crate::util::Heap;
 use std::cmp::Ordering;
 
@@ -32,6 +34,72 @@ pub(super) const DECLARATION: Declaration = Declaration {
         on("parabola", Bound::NLogN, Operation::Comparisons),
     ],
 };
+
+/// A step of Fortune's sweep, as [`fortune_trace`] records it: one per event the sweep
+/// processes. Sites are indices into the input (a duplicate goes by the index kept); the
+/// state is the one right after the event.
+///
+/// - `sweep` is the height of the sweep line `y = sweep` (it moves upwards);
+/// - `beach` lists the sites of the beach line's arcs from left to right (a site can own
+///   several arcs; a site on the sweep line owns a vertical spike);
+/// - `triangles` holds the Delaunay triangles found so far, three vertices each,
+///   counter-clockwise: those of [`fortune`]'s result, in its order (the k-th circle event
+///   found triangle k).
+#[derive(Debug, Clone, PartialEq)]
+pub enum FortuneStep {
+    /// The sweep line reached a site, whose arc entered the beach line (splitting the arc
+    /// above it, or beside the others in the lowest row).
+    Site {
+        /// The site.
+        site: usize,
+        /// The sweep line's height: the site's `y`.
+        sweep: f64,
+        /// The beach line after the event.
+        beach: Vec<usize>,
+        /// The triangles found so far.
+        triangles: Vec<usize>,
+    },
+    /// An arc shrank to a point and left the beach line: the sweep line left the circle
+    /// through its site and its two neighbours' at the top, and the circle's centre is a
+    /// Voronoi vertex, the dual of a new Delaunay triangle.
+    Circle {
+        /// The new triangle, counter-clockwise: the sites of the left arc, of the vanished
+        /// arc and of the right arc.
+        triangle: [usize; 3],
+        /// The Voronoi vertex: the triangle's circumcentre, constructed within
+        /// [`ConstructedPoint::RELATIVE_ERROR`].
+        vertex: ConstructedPoint,
+        /// The sweep line's height: the circle's top, rounded down to an `f64` (exactly:
+        /// the largest `f64` not above it, so the heights of successive frames never
+        /// decrease).
+        sweep: f64,
+        /// The beach line after the event.
+        beach: Vec<usize>,
+        /// The triangles found so far, this one last.
+        triangles: Vec<usize>,
+    },
+    /// No event is left: the result of [`fortune`].
+    Done {
+        /// The triangulation, as [`fortune`] returns it.
+        triangulation: Triangulation,
+    },
+}
+
+impl TraceSize for FortuneStep {
+    fn entries(&self) -> usize {
+        match self {
+            FortuneStep::Site {
+                beach, triangles, ..
+            } => 1 + beach.len() + triangles.len(),
+            FortuneStep::Circle {
+                beach, triangles, ..
+            } => 4 + beach.len() + triangles.len(),
+            FortuneStep::Done { triangulation } => {
+                triangulation.triangles.len() + triangulation.hull.len()
+            }
+        }
+    }
+}
 
 /// The Delaunay triangulation of `points` by Fortune's sweep. See [`fortune_with`].
 ///
@@ -129,6 +197,69 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn fortune_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Result<Triangulation> {
+    fortune_observed(points, counter, &mut NoObserver)
+}
+
+/// The frames of Fortune's sweep on `points`: the algorithm's own run, event by event.
+///
+/// The run is [`fortune_with`]'s, told about each event it processes: a
+/// [`FortuneStep::Site`] per distinct site, a [`FortuneStep::Circle`] per circle event that
+/// fires (one per triangle; the false alarms, events whose arc changed neighbours before
+/// their turn, are skipped as the sweep skips them), and last [`FortuneStep::Done`] with the
+/// triangulation [`fortune`] returns. Each frame carries the sweep line's height, the beach
+/// line and the triangles so far, and the operations counted so far; the last frame's
+/// counts are those of [`fortune_with`] with [`Counts`]. The frames' own extras (the beach
+/// line's list, the Voronoi vertex, the sweep height of a circle event) are built for the
+/// trace only and counted nowhere.
+///
+/// # Errors
+///
+/// As [`fortune_with`], and [`Error::LimitExceeded`](crate::Error::LimitExceeded) if the
+/// frames would hold more than [`TRACE_MAX_ENTRIES`](crate::trace::TRACE_MAX_ENTRIES)
+/// entries (about 200 points in general position).
+///
+/// # Complexity
+///
+/// That of [`fortune_with`] plus O(n) per frame for its copy of the state: O(n²) time and
+/// space for n points (n site events and at most 2n − 5 circle events).
+///
+/// ```
+/// use compgeo::delaunay::{fortune, fortune_trace, FortuneStep};
+/// use compgeo::geometry::Point2;
+///
+/// // Two sites in the lowest row, then one above their breakpoint: three site events and
+/// // one circle event.
+/// let pts = [(0.0, 0.0), (4.0, 0.0), (2.0, 1.0)].map(Point2::from);
+/// let frames = fortune_trace(&pts)?;
+/// assert_eq!(frames.len(), 3 + 1 + 1);
+/// let FortuneStep::Site { site, beach, .. } = &frames[2].step else { panic!() };
+/// // Site 2 lands on the breakpoint of 0 and 1: it splits 0's arc, leaving a sliver.
+/// assert_eq!((*site, beach.as_slice()), (2, &[0, 2, 0, 1][..]));
+/// let FortuneStep::Circle { triangle, vertex, sweep, beach, .. } = &frames[3].step else {
+///     panic!()
+/// };
+/// assert_eq!((*triangle, beach.as_slice()), ([2, 0, 1], &[0, 2, 1][..]));
+/// // The circle through the three sites: centre (2, -1.5), radius 2.5, top at y = 1.
+/// assert_eq!(vertex.finite(), Some(Point2::new(2.0, -1.5)));
+/// assert_eq!(*sweep, 1.0);
+/// assert_eq!(frames[4].step, FortuneStep::Done { triangulation: fortune(&pts)? });
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn fortune_trace(points: &[Point2]) -> Result<Vec<Frame<FortuneStep>>> {
+    let points = PointSet::new(points)?;
+    let mut counts = Counts::default();
+    let mut recorder = Recorder::new();
+    let triangulation = fortune_observed(&points, &mut counts, &mut recorder)?;
+    recorder.step(&counts, || FortuneStep::Done { triangulation });
+    recorder.finish()
+}
+
+/// Fortune's sweep, telling `obs` about each event it processes.
+fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
+    points: &PointSet<'_>,
+    counter: &mut C,
+    obs: &mut O,
+) -> Result<Triangulation> {
     crate::limits::FORTUNE_POINTS.check(points.len() as u128)?;
     let (mut sites, index, duplicates) = sorted_by_y(points, counter);
     // An exact power-of-two scaling changes no decision and keeps the filters away from
@@ -136,7 +267,10 @@ pub fn fortune_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Resul
     normalize_scale(&mut sites);
     let mut sweep = Sweep {
         sites: &sites,
+        input: points,
+        index: &index,
         counter,
+        obs,
         line: BeachLine::with_capacity(2 * sites.len()),
         queue: Heap::with_capacity(sites.len()),
         next_id: 0,
@@ -162,9 +296,15 @@ struct Event {
 }
 
 /// The sweep's state over the sites (sorted by y, then x, distinct).
-struct Sweep<'a, C> {
+struct Sweep<'a, C, O> {
+    /// The distinct sites, sorted and scaled (see [`normalize_scale`]).
     sites: &'a [Point2],
+    /// The input points, for the observer's frames.
+    input: &'a [Point2],
+    /// The input index of each site.
+    index: &'a [usize],
     counter: &'a mut C,
+    obs: &'a mut O,
     line: BeachLine,
     /// A binary min-heap of circle events by event point.
     queue: Heap<Event>,
@@ -173,7 +313,7 @@ struct Sweep<'a, C> {
     triangles: Vec<[u32; 3]>,
 }
 
-impl<C: Counter> Sweep<'_, C> {
+impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
     fn run(&mut self) {
         let n = self.sites.len();
         let mut next_site = 0;
@@ -208,20 +348,30 @@ impl<C: Counter> Sweep<'_, C> {
         });
         if found == NIL {
             self.line.insert_after(NIL, s);
-            return;
+        } else {
+            let above = self.line.site(found);
+            self.line.set_event(found, NIL);
+            let new = self.line.insert_after(found, s);
+            if self.sites[above as usize].y == p.y {
+                // The first row: arcs are vertical strips, and the new one goes to the right.
+                self.check_circle(found);
+                self.check_circle(new);
+            } else {
+                let copy = self.line.insert_after(new, above);
+                self.check_circle(found);
+                self.check_circle(copy);
+            }
         }
-        let above = self.line.site(found);
-        self.line.set_event(found, NIL);
-        let new = self.line.insert_after(found, s);
-        if self.sites[above as usize].y == p.y {
-            // The first row: arcs are vertical strips, and the new one goes to the right.
-            self.check_circle(found);
-            self.check_circle(new);
-            return;
-        }
-        let copy = self.line.insert_after(new, above);
-        self.check_circle(found);
-        self.check_circle(copy);
+        let (input, index, line, triangles) = (self.input, self.index, &self.line, &self.triangles);
+        self.obs.step(self.counter, || {
+            let site = index[s as usize];
+            FortuneStep::Site {
+                site,
+                sweep: input[site].y,
+                beach: beach_sites(line, index),
+                triangles: input_triangles(triangles, index),
+            }
+        });
     }
 
     fn circle_event(&mut self, e: Event) {
@@ -235,6 +385,18 @@ impl<C: Counter> Sweep<'_, C> {
         self.line.set_event(right, NIL);
         self.check_circle(left);
         self.check_circle(right);
+        let (input, index, line, triangles) = (self.input, self.index, &self.line, &self.triangles);
+        self.obs.step(self.counter, || {
+            let triangle = e.sites.map(|v| index[v as usize]);
+            let [a, b, c] = triangle.map(|v| input[v]);
+            FortuneStep::Circle {
+                triangle,
+                vertex: circumcentre(a, b, c),
+                sweep: circle_top_floor([a, b, c]),
+                beach: beach_sites(line, index),
+                triangles: input_triangles(triangles, index),
+            }
+        });
     }
 
     /// Queues the circle event of arc `m` if its neighbours' breakpoints converge.
@@ -280,6 +442,22 @@ impl<C: Counter> Sweep<'_, C> {
             .pop(|x, y| before(sites, x, y), &mut *self.counter)
             .expect("pop is only called on a non-empty queue")
     }
+}
+
+/// The input index of the site of every arc of `line`, from left to right.
+fn beach_sites(line: &BeachLine, index: &[usize]) -> Vec<usize> {
+    line.sites_in_order()
+        .into_iter()
+        .map(|v| index[v as usize])
+        .collect()
+}
+
+/// The triangles as input indices, flat.
+fn input_triangles(triangles: &[[u32; 3]], index: &[usize]) -> Vec<usize> {
+    triangles
+        .iter()
+        .flat_map(|t| t.map(|v| index[v as usize]))
+        .collect()
 }
 
 /// Whether event `x` comes strictly before event `y` (their circles' tops on the sweep line).

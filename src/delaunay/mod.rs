@@ -31,7 +31,7 @@
 //! | [`incremental`] | O(n log n) expected on every input | `incremental.rs` (+ `hilbert.rs`, its insertion order) |
 //! | [`divide_and_conquer`] | O(n log n) worst case (the course's algorithm) | `divide_conquer.rs` (+ `quad_edge.rs`, its working structure) |
 //! | [`lawson`] | O(n²) worst case (flips from a sweep triangulation; for teaching; [`lawson_trace`] records each flip) | `lawson.rs` |
-//! | [`fortune`] | O(n log n) expected on every input (Fortune's sweep, the Voronoi diagram first) | `fortune.rs` (+ `beach_line.rs`, its treap; exact predicates in `geometry/sweep_predicates.rs`) |
+//! | [`fortune`] | O(n log n) expected on every input (Fortune's sweep, the Voronoi diagram first; [`fortune_trace`] records each event) | `fortune.rs` (+ `beach_line.rs`, its treap; exact predicates in `geometry/sweep_predicates.rs`) |
 //!
 //! # On top of the triangulation
 //!
@@ -69,7 +69,7 @@ mod voronoi;
 pub use check::{check_delaunay, check_delaunay_with};
 pub use clip::ClipBox;
 pub use divide_conquer::{divide_and_conquer, divide_and_conquer_with};
-pub use fortune::{fortune, fortune_with};
+pub use fortune::{fortune, fortune_trace, fortune_with, FortuneStep};
 pub use incremental::{incremental, incremental_with};
 pub use lawson::{lawson, lawson_trace, lawson_with, LawsonStep};
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};

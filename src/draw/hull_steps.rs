@@ -12,7 +12,7 @@ use super::steps::{StepFrame, StepPage};
 use super::svg::{Layer, Picture, Role};
 use super::{bounds_of, check_indices, index_labels, points_legend};
 use crate::delaunay::LawsonStep;
-use crate::geometry::{Point2, PointSet};
+use crate::geometry::{BoundingBox, Point2, PointSet};
 use crate::hull::{Chain, ChainStep, GrahamStep, JarvisStep, QuickhullStep};
 use crate::trace::Frame;
 use crate::Result;
@@ -20,7 +20,17 @@ use crate::Result;
 /// A picture of `points` with `draw` on top of them: the layers `draw` adds go under the
 /// points and their labels.
 fn picture_of(points: &[Point2], title: &str, draw: impl FnOnce(&mut Picture)) -> Picture {
-    let mut picture = Picture::new(title, bounds_of(points), points.len());
+    picture_in(bounds_of(points), points, title, draw)
+}
+
+/// [`picture_of`] with the world box `bounds` (which holds the points).
+pub(super) fn picture_in(
+    bounds: BoundingBox,
+    points: &[Point2],
+    title: &str,
+    draw: impl FnOnce(&mut Picture),
+) -> Picture {
+    let mut picture = Picture::new(title, bounds, points.len());
     draw(&mut picture);
     picture.points(
         &Layer::new("points", Role::Input).legend(points_legend(points.len())),
@@ -50,7 +60,7 @@ fn polygon(picture: &mut Picture, points: &[Point2], indices: &[usize]) {
 }
 
 /// Rings the points at `indices` (the point a step is about).
-fn mark(picture: &mut Picture, points: &[Point2], legend: &str, indices: &[usize]) {
+pub(super) fn mark(picture: &mut Picture, points: &[Point2], legend: &str, indices: &[usize]) {
     picture.rings(
         &Layer::new("current", Role::Highlight).legend(legend),
         indices.iter().map(|&i| points[i]),
@@ -73,7 +83,10 @@ fn segments(
 }
 
 /// Every index a step names, to check them against the point set once.
-fn check<'a>(points: &PointSet<'_>, indices: impl IntoIterator<Item = &'a usize>) -> Result<()> {
+pub(super) fn check<'a>(
+    points: &PointSet<'_>,
+    indices: impl IntoIterator<Item = &'a usize>,
+) -> Result<()> {
     check_indices("trace", indices.into_iter().copied(), points.len())
 }
 

@@ -25,6 +25,7 @@
 //! | [`graph`], [`circle_layout`], [`GraphOverlay`] | a graph at coordinates or on a circle, with a colouring, a spanning or a search tree | `graphs.rs` |
 //! | [`StepPage`], [`StepFrame`] | a run as one self-contained HTML page, a picture per step, a slider and keys | `steps.rs` |
 //! | [`jarvis_steps`], [`graham_steps`], [`monotone_chain_steps`], [`quickhull_steps`], [`lawson_steps`] | step pages of the traced hulls and of Lawson's flips, from the [`trace`](crate::trace) frames | `hull_steps.rs` |
+//! | [`fortune_steps`] | the step page of Fortune's sweep: the sweep line, the beach line's arcs, the triangles and Voronoi vertices so far, each event | `fortune_steps.rs` |
 //!
 //! A new kind of picture is a new file that builds a [`Picture`] from its own results,
 //! using the same roles.
@@ -100,6 +101,7 @@
 
 mod curves;
 mod delaunay;
+mod fortune_steps;
 mod frame;
 mod graphs;
 mod hull;
@@ -112,6 +114,7 @@ mod svg;
 
 pub use curves::{beta, bezier, bspline, nurbs, sample_parameters, subdivision, SAMPLES_PER_PIECE};
 pub use delaunay::{delaunay, voronoi};
+pub use fortune_steps::fortune_steps;
 pub use frame::Frame;
 pub use graphs::{circle_layout, graph, GraphOverlay};
 pub use hull::{calipers, hull};

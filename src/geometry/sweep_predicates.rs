@@ -119,23 +119,68 @@ pub(crate) fn cmp_circle_site(key: &CircleKey, t: [Point2; 3], s: Point2) -> Ord
     let v = exact_coords(&coords);
     let circle = ExactCircle::new(&v[..6]);
     let (sx, sy) = (&v[6], &v[7]);
-    // (P + √Q) / D vs sy  <=>  √Q vs sy·D − P.
-    let t = sy.mul(&circle.d).sub(&circle.p);
-    let top = if t.signum() <= 0 {
-        if t.signum() == 0 && circle.q.signum() == 0 {
-            Ordering::Equal
-        } else {
-            Ordering::Greater
-        }
-    } else {
-        ordering(circle.q.sub(&t.mul(&t)).signum())
-    };
-    top.then_with(|| {
+    circle.cmp_top(sy).then_with(|| {
         key.x.cmp(site.x).unwrap_or_else(|| {
             // X / D vs sx.
             ordering(circle.x.sub(&sx.mul(&circle.d)).signum())
         })
     })
+}
+
+/// The largest `f64` not above the top of the circumcircle of `t` (not collinear), the
+/// height of the sweep line at that circle's event rounded down: rounding down keeps the
+/// order of the events, site heights included. `f64::MAX` if the top is beyond it.
+///
+/// Exact for every finite input: a bisection over the doubles between the filter's
+/// enclosure of the top (or the highest of the three sites and `f64::MAX`), each step one
+/// exact comparison of the top with a double.
+pub(crate) fn circle_top_floor(t: [Point2; 3]) -> f64 {
+    let [a, b, c] = t;
+    let key = CircleKey::new(a, b, c);
+    let not_above_top = |y: f64| cmp_circle_top(&key, t, y) != Ordering::Less;
+    // The top is at least as high as every site on the circle.
+    let mut lo = a.y.max(b.y).max(c.y);
+    if key.top.lo.is_finite() && key.top.lo > lo {
+        lo = key.top.lo;
+    }
+    let hi = if key.top.hi.is_finite() {
+        key.top.hi.max(lo)
+    } else {
+        f64::MAX
+    };
+    if not_above_top(hi) {
+        return hi;
+    }
+    // The doubles in their order as integers (the map of `f64::total_cmp`, its own
+    // inverse); not_above_top(lo) holds and not_above_top(hi) does not.
+    let ordered = |v: f64| {
+        let b = v.to_bits() as i64;
+        i128::from(b ^ ((((b >> 63) as u64) >> 1) as i64))
+    };
+    let double = |k: i128| {
+        let b = k as i64;
+        f64::from_bits((b ^ ((((b >> 63) as u64) >> 1) as i64)) as u64)
+    };
+    let (mut l, mut h) = (ordered(lo), ordered(hi));
+    while h - l > 1 {
+        let m = l + (h - l) / 2;
+        if not_above_top(double(m)) {
+            l = m;
+        } else {
+            h = m;
+        }
+    }
+    double(l)
+}
+
+/// Compares the top of the circle of `t` (its filter's `key`) with the height `y`.
+fn cmp_circle_top(key: &CircleKey, t: [Point2; 3], y: f64) -> Ordering {
+    if let Some(order) = key.top.cmp(Interval::point(y)) {
+        return order;
+    }
+    let [a, b, c] = t;
+    let v = exact_coords(&[a.x, a.y, b.x, b.y, c.x, c.y, y]);
+    ExactCircle::new(&v[..6]).cmp_top(&v[6])
 }
 
 /// Compares the event points of two circles (lexicographically: top `y`, then the
@@ -457,6 +502,21 @@ impl ExactCircle {
             d,
         }
     }
+
+    /// Compares the top `(p + √q) / d` with `y` (in the same integer scaling).
+    fn cmp_top(&self, y: &BigInt) -> Ordering {
+        // (P + √Q) / D vs y  <=>  √Q vs y·D − P.
+        let t = y.mul(&self.d).sub(&self.p);
+        if t.signum() <= 0 {
+            if t.signum() == 0 && self.q.signum() == 0 {
+                Ordering::Equal
+            } else {
+                Ordering::Greater
+            }
+        } else {
+            ordering(self.q.sub(&t.mul(&t)).signum())
+        }
+    }
 }
 
 /// Bits of the coordinates [`cmp_small_circles`] takes: its largest terms, `D2² Q1`, have
@@ -729,6 +789,20 @@ mod tests {
             let s = if pick < 3 { Point2::new(s.x, t[pick].y) } else { s };
             let key = CircleKey::new(t[0], t[1], t[2]);
             prop_assert_eq!(cmp_circle_site(&key, t, s), oracle_circle_site(t, s));
+        }
+
+        #[test]
+        fn circle_top_floor_is_the_largest_double_not_above_the_top(t in ccw_triple()) {
+            let y = circle_top_floor(t);
+            let (_, cy, r2) = circle(t);
+            // cy + r vs v  <=>  (cy − v) + √r2 vs √0.
+            let top_vs = |v: f64| cmp_root_sum(&(&cy - q(v)), &r2, &Q::zero());
+            prop_assert_ne!(top_vs(y), Ordering::Less, "{} is above the top", y);
+            if y < f64::MAX {
+                let next = f64::from_bits(if y >= 0.0 { y.to_bits() + 1 } else { y.to_bits() - 1 });
+                let next = if y == 0.0 { f64::from_bits(1) } else { next };
+                prop_assert_eq!(top_vs(next), Ordering::Less, "{} is not the largest", y);
+            }
         }
 
         #[test]

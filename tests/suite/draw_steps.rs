@@ -5,10 +5,10 @@
 
 use crate::draw::{assert_maps_back, Svg};
 use compgeo::count::{Counts, Operation};
-use compgeo::delaunay::{lawson, lawson_trace, LawsonStep};
+use compgeo::delaunay::{fortune, fortune_trace, lawson, lawson_trace, FortuneStep, LawsonStep};
 use compgeo::draw::{
-    graham_steps, jarvis_steps, lawson_steps, monotone_chain_steps, quickhull_steps, Layer,
-    Picture, Role, StepFrame, StepPage,
+    fortune_steps, graham_steps, jarvis_steps, lawson_steps, monotone_chain_steps, quickhull_steps,
+    Layer, Picture, Role, StepFrame, StepPage,
 };
 use compgeo::gen::{points as generate, PointKind};
 use compgeo::geometry::{BoundingBox, Point2, PointSet};
@@ -334,6 +334,133 @@ fn lawson_pages_draw_each_flip_and_end_with_the_delaunay_triangles() {
     }
 }
 
+/// Checks a beach line as drawn, in picture units: every drawn point `p` lies as far from
+/// the sweep line as from its nearest site among the beach's (up to the rounding of the
+/// drawing), and no site passed by the sweep line is nearer to it than the line (the beach
+/// line is the envelope of the parabolas, so its arcs end at the right breakpoints).
+fn assert_beach_drawn(
+    s: &ShownFrame,
+    pts: &[Point2],
+    beach: &[usize],
+    passed: &[usize],
+    sweep: f64,
+) {
+    let frame = s.svg.frame();
+    let drawn = s.svg.subpaths("beach");
+    assert!(!drawn.is_empty(), "frame {}: no beach line", s.step);
+    let line = frame.picture_of(Point2::new(pts[beach[0]].x, sweep))[1];
+    let drawn_sites: Vec<[f64; 2]> = pts.iter().map(|&p| frame.picture_of(p)).collect();
+    let at = |i: usize| drawn_sites[i];
+    let dist = |p: [f64; 2], q: [f64; 2]| (p[0] - q[0]).hypot(p[1] - q[1]);
+    let tolerance = 0.2;
+    for p in drawn.iter().flat_map(|d| &d.points) {
+        let to_line = p[1] - line; // y grows downwards in the picture
+        assert!(
+            to_line >= -tolerance,
+            "frame {}: {p:?} above the sweep line",
+            s.step
+        );
+        let nearest = beach
+            .iter()
+            .map(|&i| dist(*p, at(i)))
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            (nearest - to_line).abs() <= tolerance,
+            "frame {}: {p:?} is {nearest} from the beach's sites, {to_line} from the line",
+            s.step
+        );
+        for &i in passed {
+            assert!(
+                dist(*p, at(i)) >= to_line - tolerance,
+                "frame {}: site {i}",
+                s.step
+            );
+        }
+    }
+}
+
+#[test]
+fn fortune_pages_draw_the_sweep_line_the_beach_line_and_each_event() {
+    for pts in [
+        generate(PointKind::UniformDisk, 15, 11).unwrap(),
+        generate(PointKind::Grid, 16, 12).unwrap(),
+        generate(PointKind::Cocircular, 10, 13).unwrap(),
+        generate(PointKind::Huge, 12, 14).unwrap(),
+        [(0.0, 0.0), (1.0, 1.0), (2.0, 2.0), (3.0, 3.0)]
+            .map(Point2::from)
+            .to_vec(),
+    ] {
+        let set = PointSet::new(&pts).unwrap();
+        let trace = fortune_trace(&pts).unwrap();
+        let html = fortune_steps(&set, &trace).unwrap().to_html();
+        let kind = |s: &FortuneStep| match s {
+            FortuneStep::Site { .. } => "site",
+            FortuneStep::Circle { .. } => "circle",
+            FortuneStep::Done { .. } => "done",
+        };
+        let shown = check_page(&html, &trace, kind, &pts);
+        let mut passed: Vec<usize> = Vec::new();
+        for (s, f) in shown.iter().zip(&trace) {
+            let frame = s.svg.frame();
+            let (sweep, beach, triangles) = match &f.step {
+                FortuneStep::Site {
+                    site,
+                    sweep,
+                    beach,
+                    triangles,
+                } => {
+                    passed.push(*site);
+                    let ring = s.svg.subpaths("current");
+                    let rings = s.svg.circles("current");
+                    assert!(ring.is_empty() && rings.len() == 1, "frame {}", s.step);
+                    let want = frame.picture_of(pts[*site]);
+                    assert!((rings[0][0] - want[0]).abs() < 0.051);
+                    assert!((rings[0][1] - want[1]).abs() < 0.051);
+                    (*sweep, beach, triangles)
+                }
+                FortuneStep::Circle {
+                    triangle,
+                    sweep,
+                    beach,
+                    triangles,
+                    ..
+                } => {
+                    let event = s.svg.subpaths("event");
+                    assert_eq!(event.len(), 1);
+                    assert_maps_back(&frame, &event[0], &triangle.map(|i| pts[i]));
+                    (*sweep, beach, triangles)
+                }
+                FortuneStep::Done { triangulation } => {
+                    assert_eq!(triangulation, &fortune(&pts).unwrap());
+                    let drawn = s.svg.subpaths("triangles");
+                    assert_eq!(drawn.len(), triangulation.triangle_count());
+                    let circles = triangulation.triangle_count();
+                    assert!(s.caption.contains(&format!("{circles} Voronoi vertices")));
+                    continue;
+                }
+            };
+            let drawn = s.svg.subpaths("triangles");
+            assert_eq!(drawn.len(), triangles.len() / 3);
+            for (d, t) in drawn.iter().zip(triangles.chunks_exact(3)) {
+                assert_maps_back(&frame, d, &[pts[t[0]], pts[t[1]], pts[t[2]]]);
+            }
+            // The sweep line: one horizontal line at the frame's height, or a caption
+            // saying it is above the picture.
+            let lines = s.svg.subpaths("sweep");
+            if s.caption.contains("above the picture") {
+                assert!(lines.is_empty());
+            } else {
+                assert_eq!(lines.len(), 1, "frame {}", s.step);
+                let y = frame.picture_of(Point2::new(pts[0].x, sweep))[1];
+                for p in &lines[0].points {
+                    assert!((p[1] - y).abs() < 0.051, "frame {}: {p:?} vs {y}", s.step);
+                }
+            }
+            assert_beach_drawn(s, &pts, beach, &passed, sweep);
+        }
+    }
+}
+
 #[test]
 fn a_page_refuses_frames_beyond_its_limit_and_escapes_its_text() {
     let pts = [Point2::new(0.0, 0.0)];
@@ -391,7 +518,7 @@ mod cli {
         let dir = TempDir::new("draw-steps");
         let pts = generate(PointKind::UniformDisk, 14, 9).unwrap();
         let input = points_file(&dir, &pts);
-        let cases: [(&str, &str, usize); 5] = [
+        let cases: [(&str, &str, usize); 6] = [
             (
                 "hull",
                 "jarvis",
@@ -415,6 +542,7 @@ mod cli {
                 quickhull_trace(&pts, HullOptions::default()).unwrap().len(),
             ),
             ("delaunay", "lawson", lawson_trace(&pts).unwrap().len()),
+            ("delaunay", "fortune", fortune_trace(&pts).unwrap().len()),
         ];
         for (problem, algorithm, frames) in cases {
             let out = dir.path(&format!("{algorithm}.html"));

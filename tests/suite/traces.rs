@@ -1103,3 +1103,273 @@ mod curves {
         }
     }
 }
+
+/// Fortune's sweep, checked event by event against independent oracles (exact rationals):
+/// one site frame per distinct site in (y, x) order, one circle frame per triangle of an
+/// independent builder's triangulation (every Delaunay triangulation of a point set has
+/// the same number of triangles), each new arc under the highest parabola above its site,
+/// each vanished arc between the two sites of its triangle, the sweep height monotone and
+/// at each circle's top rounded down, each Voronoi vertex within the stated error of the
+/// exact circumcentre, and the last frame the result of the counted run.
+mod fortune {
+    use super::*;
+    use crate::common::wide_q;
+    use compgeo::delaunay::{fortune, fortune_trace, fortune_with, incremental, FortuneStep};
+    use compgeo::geometry::ConstructedPoint;
+    use num_rational::BigRational as Q;
+    use num_traits::Signed;
+
+    fn q(v: f64) -> Q {
+        Q::from_float(v).unwrap()
+    }
+
+    /// Centre and squared radius of the circle through the three points.
+    fn circle([a, b, c]: [Point2; 3]) -> (Q, Q, Q) {
+        let (ax, ay) = (q(a.x), q(a.y));
+        let (bx, by) = (q(b.x) - &ax, q(b.y) - &ay);
+        let (cx, cy) = (q(c.x) - &ax, q(c.y) - &ay);
+        let d = (&bx * &cy - &by * &cx) * Q::from_integer(2.into());
+        let (bb, cc) = (&bx * &bx + &by * &by, &cx * &cx + &cy * &cy);
+        let ux = (&cy * &bb - &by * &cc) / &d;
+        let uy = (&bx * &cc - &cx * &bb) / &d;
+        let r2 = &ux * &ux + &uy * &uy;
+        (ax + ux, ay + uy, r2)
+    }
+
+    /// Whether `y` is at most the top `cy + r` of a circle, exactly.
+    fn below_top(y: f64, cy: &Q, r2: &Q) -> bool {
+        let up = q(y) - cy; // y <= cy + r  <=>  y − cy <= r
+        !up.is_positive() || &up * &up <= *r2
+    }
+
+    /// The next double above `y` (finite, below `f64::MAX`).
+    fn next_up(y: f64) -> f64 {
+        if y == 0.0 {
+            f64::from_bits(1)
+        } else if y > 0.0 {
+            f64::from_bits(y.to_bits() + 1)
+        } else {
+            f64::from_bits(y.to_bits() - 1)
+        }
+    }
+
+    /// The height at `x` of the parabola of site `p` under the sweep line `y = line`
+    /// (`p.y < line`): `(line + p.y) / 2 − (x − p.x)² / (2 (line − p.y))`.
+    fn parabola(p: Point2, line: f64, x: f64) -> Q {
+        let two = Q::from_integer(2.into());
+        let dx = q(x) - q(p.x);
+        (q(line) + q(p.y)) / &two - &dx * &dx / (two * (q(line) - q(p.y)))
+    }
+
+    /// `beach` is `before` with `[site, before[k]]` inserted after some arc `k`, whose site
+    /// is returned; or with `site` appended (the lowest row, or the first site).
+    fn split_arc(before: &[usize], beach: &[usize], site: usize) -> Option<usize> {
+        if beach.len() == before.len() + 1 && beach[..before.len()] == *before {
+            assert_eq!(beach.last(), Some(&site));
+            return None;
+        }
+        assert_eq!(beach.len(), before.len() + 2, "{before:?} -> {beach:?}");
+        let k = (0..before.len())
+            .find(|&k| {
+                let mut want = before[..=k].to_vec();
+                want.extend([site, before[k]]);
+                want.extend(&before[k + 1..]);
+                want == beach
+            })
+            .unwrap_or_else(|| panic!("site {site}: {before:?} -> {beach:?}"));
+        Some(before[k])
+    }
+
+    pub(super) fn check_fortune(pts: &[Point2]) {
+        let frames = fortune_trace(pts).unwrap();
+        let mut counts = Counts::default();
+        let result = fortune_with(&set(pts), &mut counts).unwrap();
+        assert_eq!(result, fortune(pts).unwrap());
+        let last = frames.last().unwrap();
+        assert_eq!(
+            last.step,
+            FortuneStep::Done {
+                triangulation: result.clone()
+            }
+        );
+        assert_eq!(last.counts, counts);
+        counts_grow(&frames);
+        // The events: the distinct sites in (y, x) order, and a circle per triangle.
+        let mut sites = distinct(pts);
+        sites.sort_by(|&i, &j| {
+            let (a, b) = (pts[i], pts[j]);
+            a.y.total_cmp(&b.y).then(a.x.total_cmp(&b.x))
+        });
+        let triangles = incremental(pts).unwrap().triangle_count();
+        assert_eq!(frames.len(), sites.len() + triangles + 1);
+        let lowest = sites.first().map(|&i| pts[i].y);
+        let (mut beach, mut found): (Vec<usize>, Vec<usize>) = (Vec::new(), Vec::new());
+        let mut height = f64::NEG_INFINITY;
+        let mut next_site = sites.iter();
+        for f in &frames[..frames.len() - 1] {
+            match &f.step {
+                FortuneStep::Site {
+                    site,
+                    sweep,
+                    beach: after,
+                    triangles,
+                } => {
+                    assert_eq!(Some(site), next_site.next());
+                    assert_eq!(*sweep, pts[*site].y);
+                    assert_eq!(triangles, &found);
+                    let above = split_arc(&beach, after, *site);
+                    match above {
+                        None => assert!(beach.is_empty() || Some(*sweep) == lowest),
+                        Some(a) => {
+                            // The split arc is the highest parabola above the site.
+                            let s = pts[*site];
+                            let top = parabola(pts[a], *sweep, s.x);
+                            for &other in beach.iter().filter(|&&o| pts[o].y < *sweep) {
+                                assert!(parabola(pts[other], *sweep, s.x) <= top, "{other}");
+                            }
+                        }
+                    }
+                    beach.clone_from(after);
+                    height = height.max(*sweep);
+                    assert_eq!(height, *sweep, "the sweep moves up");
+                }
+                FortuneStep::Circle {
+                    triangle,
+                    vertex,
+                    sweep,
+                    beach: after,
+                    triangles,
+                } => {
+                    let [a, b, c] = triangle.map(|i| pts[i]);
+                    assert_eq!(orient2d(a, b, c), Orientation::CounterClockwise);
+                    // The middle arc vanished from between its two neighbours.
+                    let k = (1..beach.len().saturating_sub(1))
+                        .find(|&k| {
+                            beach[k - 1..=k + 1] == *triangle && {
+                                let mut want = beach.clone();
+                                want.remove(k);
+                                want == *after
+                            }
+                        })
+                        .unwrap_or_else(|| panic!("{triangle:?}: {beach:?} -> {after:?}"));
+                    assert!(k > 0);
+                    found.extend(triangle);
+                    assert_eq!(triangles, &found);
+                    let (cx, cy, r2) = circle([a, b, c]);
+                    // The sweep height: the largest double not above the circle's top.
+                    assert!(below_top(*sweep, &cy, &r2));
+                    assert!(*sweep == f64::MAX || !below_top(next_up(*sweep), &cy, &r2));
+                    assert!(*sweep >= height, "the sweep moves up");
+                    height = *sweep;
+                    // The Voronoi vertex within the stated error of the circumcentre.
+                    let [x, y] = vertex.wide().map(wide_q);
+                    let tol = cx.abs().max(cy.abs()) * q(ConstructedPoint::RELATIVE_ERROR)
+                        + q(f64::from_bits(1)) / Q::from_integer(2.into());
+                    assert!(
+                        (x - &cx).abs() <= tol && (y - &cy).abs() <= tol,
+                        "{vertex:?}"
+                    );
+                    beach.clone_from(after);
+                }
+                FortuneStep::Done { .. } => panic!("Done before the end"),
+            }
+            assert!(beach.iter().all(|&s| pts[s].y <= height));
+        }
+        assert_eq!(found, result.triangles);
+        assert!(next_site.next().is_none());
+        // After the last event the beach line holds the sites of the unbounded Voronoi cells
+        // (the hull's) clockwise, from the cell below everything: the lowest site's, on both
+        // ends, or with a lowest row from its leftmost to its rightmost site. The cells of the
+        // row's inner sites are strips open downwards only, which the beach line never meets.
+        if triangles > 0 {
+            let min_y = sites
+                .iter()
+                .map(|&i| pts[i].y)
+                .fold(f64::INFINITY, f64::min);
+            let row: Vec<usize> = sites
+                .iter()
+                .copied()
+                .filter(|&i| pts[i].y == min_y)
+                .collect();
+            let (first, last) = (row[0], row[row.len() - 1]);
+            assert_eq!(
+                (beach[0], beach[beach.len() - 1]),
+                (first, last),
+                "{beach:?}"
+            );
+            let core = if row.len() == 1 {
+                &beach[..beach.len() - 1]
+            } else {
+                &beach[..]
+            };
+            let inner = if row.len() > 2 {
+                &row[1..row.len() - 1]
+            } else {
+                &[][..]
+            };
+            let mut clockwise: Vec<usize> = result.hull.iter().rev().copied().collect();
+            clockwise.retain(|i| !inner.contains(i));
+            let start = clockwise.iter().position(|&i| i == first).unwrap();
+            clockwise.rotate_left(start);
+            assert_eq!(core, clockwise, "beach {beach:?}, hull {:?}", result.hull);
+        }
+    }
+}
+
+#[test]
+fn fortune_traces_on_small_and_degenerate_inputs() {
+    use compgeo::gen::{points, PointKind};
+    fortune::check_fortune(&[]);
+    fortune::check_fortune(&[Point2::new(1.0, 2.0)]);
+    // Duplicates, a collinear row, the lowest row then sites on its breakpoints.
+    fortune::check_fortune(&[
+        Point2::new(1.0, 1.0),
+        Point2::new(1.0, 1.0),
+        Point2::new(2.0, 2.0),
+        Point2::new(3.0, 3.0),
+    ]);
+    fortune::check_fortune(&[(0.0, 0.0), (4.0, 0.0), (2.0, 1.0), (2.0, 5.0)].map(Point2::from));
+    for (kind, n) in [
+        (PointKind::Grid, 25),
+        (PointKind::Cocircular, 12),
+        (PointKind::Parabola, 20),
+        (PointKind::UniformDisk, 40),
+        (PointKind::Huge, 15),
+    ] {
+        fortune::check_fortune(&points(kind, n, 7).unwrap());
+    }
+}
+
+#[test]
+fn fortune_trace_beyond_the_limit_is_refused_by_name() {
+    use compgeo::delaunay::fortune_trace;
+    let pts = compgeo::gen::points(compgeo::gen::PointKind::UniformSquare, 600, 1).unwrap();
+    let e = fortune_trace(&pts).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::LimitExceeded {
+                limit: "TRACE_MAX_ENTRIES",
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert!(fortune_trace(&pts[..60]).is_ok());
+    let bad = [Point2::new(0.0, 0.0), Point2::new(1.0, f64::INFINITY)];
+    assert!(matches!(fortune_trace(&bad), Err(Error::NonFinite { .. })));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    #[test]
+    fn fortune_traces_on_lattices(pts in lattice(-4..=4, 0..18)) {
+        fortune::check_fortune(&pts);
+    }
+
+    #[test]
+    fn fortune_traces_on_uniform_points(pts in uniform(100.0, 3..25)) {
+        fortune::check_fortune(&pts);
+    }
+}

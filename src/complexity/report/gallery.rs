@@ -12,7 +12,7 @@ use std::io;
 use std::path::Path;
 
 use crate::calipers::ConvexPolygon;
-use crate::delaunay::{incremental, lawson_trace, voronoi as voronoi_of, ClipBox};
+use crate::delaunay::{fortune_trace, incremental, lawson_trace, voronoi as voronoi_of, ClipBox};
 use crate::draw::{self, circle_layout, escape, GraphOverlay};
 use crate::gen::{cube, graph as generate_graph, points as generate, GraphKind, PointKind};
 use crate::geometry::{Point2, PointSet};
@@ -271,6 +271,11 @@ fn step_pages() -> Vec<(&'static str, &'static str, MakePicture)> {
             let pts = step_points()?;
             let set = PointSet::new(&pts)?;
             Ok(draw::lawson_steps(&set, &lawson_trace(&pts)?)?.to_html())
+        }),
+        ("delaunay", "fortune", || {
+            let pts = step_points()?;
+            let set = PointSet::new(&pts)?;
+            Ok(draw::fortune_steps(&set, &fortune_trace(&pts)?)?.to_html())
         }),
     ]
 }
