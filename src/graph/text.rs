@@ -56,7 +56,9 @@ fn number(format: &'static str, line: usize, what: &str, token: Option<&str>) ->
     })
 }
 
-/// Reads a DIMACS `.col` graph (see the [module docs](self)).
+/// Reads a DIMACS `.col` graph: `c` comment lines, one `p edge n m` (or `p col n m`) line and
+/// m lines `e u v` with vertices 1 to n, which become 0 to n − 1. Repeated edges are kept as
+/// given; [`Graph`](super::Graph) merges them.
 ///
 /// # Errors
 /// [`Error::Syntax`] naming the line: a line that is not a comment, the `p` line or an `e`
@@ -181,8 +183,8 @@ pub fn write_dimacs(graph: &EdgeList) -> String {
     out
 }
 
-/// Reads a plain edge list (see the [module docs](self)): lines `u v` or `u v w`, vertices
-/// from 0.
+/// Reads a plain edge list: lines `u v` or `u v w` with vertices from 0, `#` or `%` starting a
+/// comment, blank lines ignored; the vertices are 0 to the largest id.
 ///
 /// # Errors
 /// [`Error::Syntax`] naming the line: a vertex that is not a non-negative integer, a weight
