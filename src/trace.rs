@@ -74,6 +74,22 @@ pub(crate) trait TraceSize {
     fn entries(&self) -> usize;
 }
 
+/// Runs `run` with a fresh [`Counts`] and [`Recorder`], records the step it returns as the
+/// last frame (the algorithm's result, `Done`), and returns the frames: the body of every
+/// trace function whose algorithm ends with a result step.
+///
+/// # Errors
+/// Those of `run`, and [`Recorder::finish`]'s beyond [`TRACE_MAX_ENTRIES`].
+pub(crate) fn record<S: TraceSize>(
+    run: impl FnOnce(&mut Counts, &mut Recorder<S>) -> Result<S>,
+) -> Result<Vec<Frame<S>>> {
+    let mut counts = Counts::default();
+    let mut recorder = Recorder::new();
+    let last = run(&mut counts, &mut recorder)?;
+    recorder.step(&counts, || last);
+    recorder.finish()
+}
+
 /// The observer of a trace function: a frame per step, up to [`TRACE_MAX_ENTRIES`].
 pub(crate) struct Recorder<S> {
     frames: Vec<Frame<S>>,

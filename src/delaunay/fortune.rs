@@ -5,7 +5,7 @@
 use super::beach_line::{BeachLine, NIL};
 use super::Triangulation;
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, Counts, NoCount, Operation};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::construct::circumcentre;
 use crate::geometry::lex_sort::{sorted_items_with, yx_key};
@@ -13,7 +13,7 @@ use crate::geometry::sweep_predicates::{
     breakpoint_side, circle_top_floor, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
 };
 use crate::geometry::{ConstructedPoint, CountedPredicates, Orientation, Point2, PointSet};
-use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
+use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 use crate::util::Heap;
 use std::cmp::Ordering;
 
@@ -247,11 +247,10 @@ pub fn fortune_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Resul
 /// ```
 pub fn fortune_trace(points: &[Point2]) -> Result<Vec<Frame<FortuneStep>>> {
     let points = PointSet::new(points)?;
-    let mut counts = Counts::default();
-    let mut recorder = Recorder::new();
-    let triangulation = fortune_observed(&points, &mut counts, &mut recorder)?;
-    recorder.step(&counts, || FortuneStep::Done { triangulation });
-    recorder.finish()
+    record(|counts, recorder| {
+        let triangulation = fortune_observed(&points, counts, recorder)?;
+        Ok(FortuneStep::Done { triangulation })
+    })
 }
 
 /// Fortune's sweep, telling `obs` about each event it processes.

@@ -4,11 +4,10 @@
 use super::divide_conquer::sorted_distinct;
 use super::{next_halfedge, prev_halfedge, Triangulation, EMPTY};
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::Counts;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::{CountedPredicates, InCircle, Orientation, Point2, PointSet};
-use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
+use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -184,11 +183,10 @@ pub fn lawson_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Result
 /// ```
 pub fn lawson_trace(points: &[Point2]) -> Result<Vec<Frame<LawsonStep>>> {
     let points = PointSet::new(points)?;
-    let mut counts = Counts::default();
-    let mut recorder = Recorder::new();
-    let triangulation = lawson_observed(&points, &mut counts, &mut recorder)?;
-    recorder.step(&counts, || LawsonStep::Done { triangulation });
-    recorder.finish()
+    record(|counts, recorder| {
+        let triangulation = lawson_observed(&points, counts, recorder)?;
+        Ok(LawsonStep::Done { triangulation })
+    })
 }
 
 /// Lawson's algorithm, telling `obs` about the sweep and each flip.

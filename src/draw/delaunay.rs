@@ -1,7 +1,7 @@
 //! Pictures of the Delaunay triangulation (optionally with its circumcircles) and of the
 //! Voronoi diagram clipped to a box.
 
-use super::{bounds_of, check_indices, index_labels, points_legend, Layer, Picture, Role};
+use super::{bounds_of, check_indices, indexed_points, Layer, Picture, Role};
 use crate::delaunay::{ClipBox, Triangulation, Voronoi};
 use crate::error::{Error, Result};
 use crate::geometry::{Point2, PointSet};
@@ -92,14 +92,7 @@ pub fn delaunay(
             (0..triangles).map(|k| (v.vertex(k), points[t.triangle(k)[0]])),
         );
     }
-    picture.points(
-        &Layer::new("points", Role::Input).legend(points_legend(n)),
-        points.iter().copied(),
-    );
-    picture.labels(
-        &Layer::new("labels", Role::Label).legend("point index"),
-        index_labels(points, 0..n),
-    );
+    indexed_points(&mut picture, points, "point index");
     Ok(picture)
 }
 
@@ -156,13 +149,6 @@ pub fn voronoi(points: &PointSet<'_>, v: &Voronoi, bounds: &ClipBox) -> Result<P
             .filter(|c| !c.is_empty())
             .map(|c| c.iter().copied()),
     );
-    picture.points(
-        &Layer::new("points", Role::Input).legend(points_legend(n)),
-        points.iter().copied(),
-    );
-    picture.labels(
-        &Layer::new("labels", Role::Label).legend("site index"),
-        index_labels(points, 0..n),
-    );
+    indexed_points(&mut picture, points, "site index");
     Ok(picture)
 }

@@ -185,12 +185,7 @@ pub fn fortune_steps(points: &PointSet<'_>, trace: &[TraceFrame<FortuneStep>]) -
                 ("done", caption, picture)
             }
         };
-        page.push(StepFrame {
-            kind,
-            caption,
-            picture,
-            counts: frame.counts,
-        })?;
+        page.push(StepFrame::new(kind, caption, picture, frame.counts))?;
     }
     Ok(page)
 }

@@ -10,7 +10,7 @@
 
 use super::steps::{StepFrame, StepPage};
 use super::svg::{Layer, Picture, Role};
-use super::{bounds_of, check_indices, index_labels, points_legend};
+use super::{bounds_of, check_indices, indexed_points, points_legend};
 use crate::delaunay::LawsonStep;
 use crate::geometry::{BoundingBox, Point2, PointSet};
 use crate::hull::{Chain, ChainStep, GrahamStep, JarvisStep, QuickhullStep};
@@ -32,14 +32,7 @@ pub(super) fn picture_in(
 ) -> Picture {
     let mut picture = Picture::new(title, bounds, points.len());
     draw(&mut picture);
-    picture.points(
-        &Layer::new("points", Role::Input).legend(points_legend(points.len())),
-        points.iter().copied(),
-    );
-    picture.labels(
-        &Layer::new("labels", Role::Label),
-        index_labels(points, 0..points.len()),
-    );
+    indexed_points(&mut picture, points, "point index");
     picture
 }
 
@@ -187,12 +180,7 @@ pub fn jarvis_steps(points: &PointSet<'_>, trace: &[Frame<JarvisStep>]) -> Resul
             }
             JarvisStep::Done { hull } => done(points, &title, hull)?,
         };
-        page.push(StepFrame {
-            kind,
-            caption,
-            picture,
-            counts: frame.counts,
-        })?;
+        page.push(StepFrame::new(kind, caption, picture, frame.counts))?;
     }
     Ok(page)
 }
@@ -280,12 +268,7 @@ pub fn graham_steps(points: &PointSet<'_>, trace: &[Frame<GrahamStep>]) -> Resul
             }
             GrahamStep::Done { hull } => done(points, &title, hull)?,
         };
-        page.push(StepFrame {
-            kind,
-            caption,
-            picture,
-            counts: frame.counts,
-        })?;
+        page.push(StepFrame::new(kind, caption, picture, frame.counts))?;
     }
     Ok(page)
 }
@@ -382,12 +365,7 @@ pub fn monotone_chain_steps(points: &PointSet<'_>, trace: &[Frame<ChainStep>]) -
             }
             ChainStep::Done { hull } => done(points, &title, hull)?,
         };
-        page.push(StepFrame {
-            kind,
-            caption,
-            picture,
-            counts: frame.counts,
-        })?;
+        page.push(StepFrame::new(kind, caption, picture, frame.counts))?;
     }
     Ok(page)
 }
@@ -477,12 +455,7 @@ pub fn quickhull_steps(points: &PointSet<'_>, trace: &[Frame<QuickhullStep>]) ->
             }
             QuickhullStep::Done { hull } => done(points, &title, hull)?,
         };
-        page.push(StepFrame {
-            kind,
-            caption,
-            picture,
-            counts: frame.counts,
-        })?;
+        page.push(StepFrame::new(kind, caption, picture, frame.counts))?;
     }
     Ok(page)
 }
@@ -579,12 +552,7 @@ pub fn lawson_steps(points: &PointSet<'_>, trace: &[Frame<LawsonStep>]) -> Resul
                 )
             }
         };
-        page.push(StepFrame {
-            kind,
-            caption,
-            picture,
-            counts: frame.counts,
-        })?;
+        page.push(StepFrame::new(kind, caption, picture, frame.counts))?;
     }
     Ok(page)
 }

@@ -220,6 +220,19 @@ fn index_labels<'a>(
     indices.into_iter().map(|i| (points[i], i.to_string()))
 }
 
+/// Draws `points` as the input layer (dots) and numbers each by its index, `what` saying in
+/// the legend what the numbers are: the top layers of most pictures.
+fn indexed_points(picture: &mut Picture, points: &[Point2], what: &str) {
+    picture.points(
+        &Layer::new("points", Role::Input).legend(points_legend(points.len())),
+        points.iter().copied(),
+    );
+    picture.labels(
+        &Layer::new("labels", Role::Label).legend(what),
+        index_labels(points, 0..points.len()),
+    );
+}
+
 /// The legend text of the input points.
 fn points_legend(n: usize) -> String {
     match n {

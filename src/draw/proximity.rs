@@ -1,7 +1,7 @@
 //! Pictures of the proximity answers over their point set: the closest pair, the Euclidean
 //! minimum spanning tree and the largest empty circle.
 
-use super::{bounds_of, check_indices, index_labels, points_legend, value, Layer, Picture, Role};
+use super::{bounds_of, check_indices, indexed_points, value, Layer, Picture, Role};
 use crate::error::Result;
 use crate::geometry::{PointPair, PointSet, WideFloat};
 use crate::graph::SpanningForest;
@@ -41,14 +41,7 @@ pub fn closest_pair(points: &PointSet<'_>, pair: &PointPair) -> Result<Picture> 
         [ends],
     );
     picture.rings(&Layer::new("closest-pair-rings", Role::Highlight), ends);
-    picture.points(
-        &Layer::new("points", Role::Input).legend(points_legend(n)),
-        points.iter().copied(),
-    );
-    picture.labels(
-        &Layer::new("labels", Role::Label).legend("point index"),
-        index_labels(points, 0..n),
-    );
+    indexed_points(&mut picture, points, "point index");
     Ok(picture)
 }
 
@@ -87,14 +80,7 @@ pub fn emst(points: &PointSet<'_>, tree: &SpanningForest<[usize; 2]>) -> Result<
         )),
         tree.edges.iter().map(|e| e.map(|i| points[i])),
     );
-    picture.points(
-        &Layer::new("points", Role::Input).legend(points_legend(n)),
-        points.iter().copied(),
-    );
-    picture.labels(
-        &Layer::new("labels", Role::Label).legend("point index"),
-        index_labels(points, 0..n),
-    );
+    indexed_points(&mut picture, points, "point index");
     Ok(picture)
 }
 
@@ -163,13 +149,6 @@ pub fn empty_circle(
     );
     picture.rings(&Layer::new("sites", Role::Highlight), sites.iter().copied());
     picture.points(&Layer::new("centre", Role::Highlight).legend("centre"), [c]);
-    picture.points(
-        &Layer::new("points", Role::Input).legend(points_legend(n)),
-        points.iter().copied(),
-    );
-    picture.labels(
-        &Layer::new("labels", Role::Label).legend("point index"),
-        index_labels(points, 0..n),
-    );
+    indexed_points(&mut picture, points, "point index");
     Ok(picture)
 }

@@ -33,6 +33,18 @@ pub struct StepFrame {
     pub counts: Counts,
 }
 
+impl StepFrame {
+    /// A frame of kind `kind` with its caption, picture and counts so far.
+    pub fn new(kind: &'static str, caption: String, picture: Picture, counts: Counts) -> StepFrame {
+        StepFrame {
+            kind,
+            caption,
+            picture,
+            counts,
+        }
+    }
+}
+
 /// An algorithm's run, a picture per step, as one HTML page.
 ///
 /// ```

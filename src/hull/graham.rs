@@ -5,11 +5,10 @@ use super::collinear::finish;
 use super::lex::lex_min;
 use super::HullOptions;
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::Counts;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
-use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
+use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 use std::cmp::Ordering;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -183,11 +182,10 @@ pub fn graham_scan_with<C: Counter>(
 /// ```
 pub fn graham_trace(points: &[Point2], options: HullOptions) -> Result<Vec<Frame<GrahamStep>>> {
     let points = PointSet::new(points)?;
-    let mut counts = Counts::default();
-    let mut recorder = Recorder::new();
-    let hull = graham(points.points(), options, &mut counts, &mut recorder);
-    recorder.step(&counts, || GrahamStep::Done { hull });
-    recorder.finish()
+    record(|counts, recorder| {
+        let hull = graham(points.points(), options, counts, recorder);
+        Ok(GrahamStep::Done { hull })
+    })
 }
 
 /// The scan, telling `obs` about each step.

@@ -5,11 +5,10 @@ use super::collinear::finish;
 use super::lex::lex_min;
 use super::HullOptions;
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::Counts;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
-use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
+use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 use std::cmp::Ordering;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -185,11 +184,10 @@ pub fn jarvis_march_with<C: Counter>(
 /// ```
 pub fn jarvis_trace(points: &[Point2], options: HullOptions) -> Result<Vec<Frame<JarvisStep>>> {
     let points = PointSet::new(points)?;
-    let mut counts = Counts::default();
-    let mut recorder = Recorder::new();
-    let hull = jarvis(points.points(), options, &mut counts, &mut recorder);
-    recorder.step(&counts, || JarvisStep::Done { hull });
-    recorder.finish()
+    record(|counts, recorder| {
+        let hull = jarvis(points.points(), options, counts, recorder);
+        Ok(JarvisStep::Done { hull })
+    })
 }
 
 /// The march, telling `obs` about each step.

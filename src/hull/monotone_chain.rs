@@ -6,11 +6,10 @@ use super::graham::{push_left_turn, Move};
 use super::lex::lex_sorted_items;
 use super::HullOptions;
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::Counts;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
-use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
+use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -208,11 +207,10 @@ pub fn monotone_chain_trace(
     options: HullOptions,
 ) -> Result<Vec<Frame<ChainStep>>> {
     let points = PointSet::new(points)?;
-    let mut counts = Counts::default();
-    let mut recorder = Recorder::new();
-    let hull = monotone(points.points(), options, &mut counts, &mut recorder);
-    recorder.step(&counts, || ChainStep::Done { hull });
-    recorder.finish()
+    record(|counts, recorder| {
+        let hull = monotone(points.points(), options, counts, recorder);
+        Ok(ChainStep::Done { hull })
+    })
 }
 
 /// The monotone chain, telling `obs` about each step.

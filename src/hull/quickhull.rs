@@ -4,11 +4,10 @@ use super::collinear::finish;
 use super::lex::lex_min;
 use super::HullOptions;
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::Counts;
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::geometry::{CountedPredicates, Orientation, Point2, PointSet};
-use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
+use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 use std::cmp::Ordering;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -199,11 +198,10 @@ pub fn quickhull_trace(
     options: HullOptions,
 ) -> Result<Vec<Frame<QuickhullStep>>> {
     let points = PointSet::new(points)?;
-    let mut counts = Counts::default();
-    let mut recorder = Recorder::new();
-    let hull = quick(points.points(), options, &mut counts, &mut recorder);
-    recorder.step(&counts, || QuickhullStep::Done { hull });
-    recorder.finish()
+    record(|counts, recorder| {
+        let hull = quick(points.points(), options, counts, recorder);
+        Ok(QuickhullStep::Done { hull })
+    })
 }
 
 /// Quickhull, telling `obs` about each split.

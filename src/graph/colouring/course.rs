@@ -2,10 +2,10 @@
 
 use super::{check_colouring, check_order, Colouring};
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, Counts, NoCount, Operation};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::graph::Graph;
-use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
+use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -160,11 +160,10 @@ pub fn course_greedy_colouring_trace(
     order: &[usize],
 ) -> Result<Vec<Frame<CourseColouringStep>>> {
     check_order(g, order)?;
-    let mut counts = Counts::default();
-    let mut recorder = Recorder::new();
-    let colouring = course(g, order, &mut counts, &mut recorder);
-    recorder.step(&counts, || CourseColouringStep::Done { colouring });
-    recorder.finish()
+    record(|counts, recorder| {
+        let colouring = course(g, order, counts, recorder);
+        Ok(CourseColouringStep::Done { colouring })
+    })
 }
 
 /// The course's algorithm on a checked order, telling `obs` about each vertex coloured.

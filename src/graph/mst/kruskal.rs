@@ -2,10 +2,10 @@
 
 use super::{edge_keys, finish, SpanningForest};
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, Counts, NoCount, Operation};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::graph::{UnionFind, WeightedGraph};
-use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
+use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -145,11 +145,10 @@ pub fn kruskal_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest 
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn kruskal_trace(g: &WeightedGraph) -> Result<Vec<Frame<KruskalStep>>> {
-    let mut counts = Counts::default();
-    let mut recorder = Recorder::new();
-    let forest = kruskal_observed(g, &mut counts, &mut recorder);
-    recorder.step(&counts, || KruskalStep::Done { forest });
-    recorder.finish()
+    record(|counts, recorder| {
+        let forest = kruskal_observed(g, counts, recorder);
+        Ok(KruskalStep::Done { forest })
+    })
 }
 
 /// Kruskal's algorithm, telling `obs` about the sort and each edge examined.

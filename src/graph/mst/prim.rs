@@ -3,10 +3,10 @@
 
 use super::{edge_keys, finish, SpanningForest};
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, Counts, NoCount, Operation};
+use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
 use crate::graph::WeightedGraph;
-use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
+use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 use crate::util::Heap;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -152,11 +152,10 @@ pub fn prim_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest {
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn prim_trace(g: &WeightedGraph) -> Result<Vec<Frame<PrimStep>>> {
-    let mut counts = Counts::default();
-    let mut recorder = Recorder::new();
-    let forest = prim_observed(g, &mut counts, &mut recorder);
-    recorder.step(&counts, || PrimStep::Done { forest });
-    recorder.finish()
+    record(|counts, recorder| {
+        let forest = prim_observed(g, counts, recorder);
+        Ok(PrimStep::Done { forest })
+    })
 }
 
 /// Prim's algorithm, telling `obs` about each tree started and each edge out of the heap.
