@@ -208,7 +208,7 @@ pub fn fortune_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Resul
 /// their turn, are skipped as the sweep skips them), and last [`FortuneStep::Done`] with the
 /// triangulation [`fortune`] returns. Each frame carries the sweep line's height, the beach
 /// line and the triangles so far, and the operations counted so far; the last frame's
-/// counts are those of [`fortune_with`] with [`Counts`]. The frames' own extras (the beach
+/// counts are those of [`fortune_with`] with [`Counts`](crate::count::Counts). The frames' own extras (the beach
 /// line's list, the Voronoi vertex, the sweep height of a circle event) are built for the
 /// trace only and counted nowhere.
 ///

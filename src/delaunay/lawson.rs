@@ -152,7 +152,7 @@ pub fn lawson_with<C: Counter>(points: &PointSet<'_>, counter: &mut C) -> Result
 /// triangulation, one [`LawsonStep::Flip`] per flip with the triangles after it, and last
 /// [`LawsonStep::Done`] with the triangulation [`lawson`] returns. Each frame carries the
 /// operations counted so far (the in-circle tests of the edge checks among them); the last
-/// frame's are those of [`lawson_with`] with [`Counts`].
+/// frame's are those of [`lawson_with`] with [`Counts`](crate::count::Counts).
 ///
 /// # Errors
 ///

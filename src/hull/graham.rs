@@ -146,7 +146,7 @@ pub fn graham_scan_with<C: Counter>(
 /// [`GrahamStep::Pop`] per point the scan removes, each with the stack after it (the
 /// course's step 4), and last [`GrahamStep::Done`] with the hull [`graham_scan`] returns.
 /// Each frame carries the operations counted so far; the last frame's are those of
-/// [`graham_scan_with`] with [`Counts`].
+/// [`graham_scan_with`] with [`Counts`](crate::count::Counts).
 ///
 /// # Errors
 ///

@@ -152,7 +152,7 @@ pub fn jarvis_march_with<C: Counter>(
 /// current vertex) and a [`JarvisStep::Wrap`] when the scan's winner joins the hull, and
 /// last a [`JarvisStep::Done`] with the hull [`jarvis_march`] returns. Each frame carries
 /// the operations counted so far; the last frame's are those of [`jarvis_march_with`] with
-/// [`Counts`].
+/// [`Counts`](crate::count::Counts).
 ///
 /// # Errors
 ///

@@ -169,7 +169,7 @@ pub fn monotone_chain_with<C: Counter>(
 /// and one [`ChainStep::Pop`] per point the scan removes, each with the stack after it, and
 /// last [`ChainStep::Done`] with the hull [`monotone_chain`] returns. Each frame carries the
 /// operations counted so far; the last frame's are those of [`monotone_chain_with`] with
-/// [`Counts`] (which sorts by comparisons).
+/// [`Counts`](crate::count::Counts) (which sorts by comparisons).
 ///
 /// # Errors
 ///

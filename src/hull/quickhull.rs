@@ -161,7 +161,7 @@ pub fn quickhull_with<C: Counter>(
 /// the explicit stack takes them (the lower chain first, each edge's first half before its
 /// second), and last [`QuickhullStep::Done`] with the hull [`quickhull`] returns. Each frame
 /// carries the operations counted so far; the last frame's are those of [`quickhull_with`]
-/// with [`Counts`].
+/// with [`Counts`](crate::count::Counts).
 ///
 /// # Errors
 ///

@@ -112,7 +112,7 @@ pub fn kruskal_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest 
 /// sort, one [`KruskalStep::Edge`] per edge examined (accepted or rejected, with the forest
 /// so far), and last [`KruskalStep::Done`] with the forest [`kruskal`] returns. Each frame
 /// carries the operations counted so far; the last frame's are those of [`kruskal_with`]
-/// with [`Counts`].
+/// with [`Counts`](crate::count::Counts).
 ///
 /// # Errors
 ///

@@ -125,7 +125,7 @@ pub fn prim_with<C: Counter>(g: &WeightedGraph, c: &mut C) -> SpanningForest {
 /// forest so far), and last [`PrimStep::Done`] with the forest [`prim`] returns. Every edge
 /// that is not a loop enters the heap exactly once (from the end that joins the tree first),
 /// so there are as many edge frames as such edges. Each frame carries the operations
-/// counted so far; the last frame's are those of [`prim_with`] with [`Counts`].
+/// counted so far; the last frame's are those of [`prim_with`] with [`Counts`](crate::count::Counts).
 ///
 /// # Errors
 ///
