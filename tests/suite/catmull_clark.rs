@@ -510,6 +510,24 @@ pub fn opensubdiv_refine(
     points
 }
 
+/// Asserts that `ours` and OpenSubdiv's points `theirs` are the same set, each point of ours
+/// within `close` of one of theirs in every coordinate.
+pub fn assert_near_opensubdiv(ours: &PolygonMesh<f64, 3>, mut theirs: Vec<[f64; 3]>, close: f64) {
+    assert_eq!(ours.vertex_count(), theirs.len());
+    theirs.sort_by(|p, q| p[0].total_cmp(&q[0]));
+    for p in ours.positions() {
+        let p = p.0;
+        let from = theirs.partition_point(|q| q[0] < p[0] - close);
+        assert!(
+            theirs[from..]
+                .iter()
+                .take_while(|q| q[0] <= p[0] + close)
+                .any(|q| (0..3).all(|i| (p[i] - q[i]).abs() < close)),
+            "no OpenSubdiv point near {p:?}"
+        );
+    }
+}
+
 /// OpenSubdiv's Catmull–Clark (sharp boundaries with pinned corners, the rules of
 /// `catmull_clark`).
 fn opensubdiv(mesh: &PolygonMesh<f64, 3>, rounds: usize) -> Vec<[f64; 3]> {
@@ -533,19 +551,7 @@ fn opensubdiv_makes_the_same_points() {
         cube(),
     ] {
         let ours = catmull_clark(&mesh, 2).unwrap();
-        let mut theirs = opensubdiv(&mesh, 2);
-        assert_eq!(ours.vertex_count(), theirs.len());
-        theirs.sort_by(|p, q| p[0].total_cmp(&q[0]));
-        for p in ours.positions() {
-            let p = p.0;
-            let from = theirs.partition_point(|q| q[0] < p[0] - CLOSE);
-            assert!(
-                theirs[from..]
-                    .iter()
-                    .take_while(|q| q[0] <= p[0] + CLOSE)
-                    .any(|q| (0..3).all(|i| (p[i] - q[i]).abs() < CLOSE)),
-                "no OpenSubdiv point near {p:?}"
-            );
-        }
+        let theirs = opensubdiv(&mesh, 2);
+        assert_near_opensubdiv(&ours, theirs, CLOSE);
     }
 }
