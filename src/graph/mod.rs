@@ -10,7 +10,7 @@
 //!
 //! | function | bound (n vertices, m edges) | counted |
 //! |---|---|---|
-//! | [`bfs`], [`dfs`] | O(n + m) | vertex and edge visits |
+//! | [`bfs`], [`dfs`] (their steps: [`search_trace`]) | O(n + m) | vertex and edge visits |
 //! | [`course_greedy_colouring`] (its steps: [`course_greedy_colouring_trace`]) | O(n²), exactly n(n−1)/2 adjacency tests | adjacency tests |
 //! | [`greedy_colouring`] (any order, [`largest_first_order`], [`smallest_last_order`]) | O(n + m) | edge visits |
 //! | [`dsatur`] | O((n + m) log n) | heap comparisons |
@@ -44,7 +44,7 @@ pub use mst::{
 pub use text::{read_dimacs, read_edge_list, write_dimacs};
 pub use traverse::{
     bfs, bfs_with, check_search_tree, components, dfs, dfs_with, is_connected, search,
-    search_trace, search_with, trace_table, Components, Search, SearchAlgorithm, TraceRow,
+    search_trace, search_with, trace_table, Components, Search, SearchAlgorithm, SearchStep,
     TRACE_MAX_VERTICES,
 };
 pub use union_find::UnionFind;

@@ -1,5 +1,6 @@
 //! Breadth-first and depth-first search from a start vertex: visit order, the spanning tree
-//! as a parent array, connected components, and the course's add/remove trace of the list Q.
+//! as a parent array, connected components, and the course's add/remove trace of the list Q
+//! (the [`trace`](crate::trace) frames of the searches' own run).
 //!
 //! Both searches follow the course's scheme ([RD, §2.1] "Algoritmos de
 //! búsqueda"): keep a list Q holding the start; look at the first (BFS, a queue) or the last
@@ -9,12 +10,15 @@
 //! total (once from each end) and the searches run in O(n + m) without recursion.
 //!
 //! The tests check that every vertex of the start's component is visited exactly once, that
-//! the parent array is a tree of graph edges rooted at the start, and the course's two tables.
+//! the parent array is a tree of graph edges rooted at the start, the course's two tables, and
+//! that a trace has 2·n_c + 1 frames ending with the plain search's result and the counted
+//! run's counts.
 
 use super::graph::Graph;
 use crate::complexity::{algorithm_family, on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::{Result, Violation};
+use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 use std::fmt::Write;
 
 /// Breadth-first search's [`Declaration`]: its name, bounds, counts, source and claims.
@@ -117,16 +121,42 @@ pub struct Search {
     pub parent: Vec<Option<usize>>,
 }
 
-/// One row of the course's search table: the vertex added to Q or removed from it, and Q after
-/// the step.
+/// A step of a search, as [`search_trace`] records it: the rows of the course's table
+/// (a vertex added to Q or removed from it, with Q after the step), then the result.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct TraceRow {
-    /// The vertex appended to Q in this step, if any.
-    pub added: Option<usize>,
-    /// The vertex removed from Q in this step, if any (exactly one of the two is set).
-    pub removed: Option<usize>,
-    /// Q after the step, first element first.
-    pub list: Vec<usize>,
+pub enum SearchStep {
+    /// `vertex` was appended to Q (the course's "Añadir").
+    Add {
+        /// The vertex added: the search reached it.
+        vertex: usize,
+        /// The vertex whose neighbour it is, the one Q was looked at for (its parent in the
+        /// search tree); `None` for the start.
+        parent: Option<usize>,
+        /// Q after the step, first element first.
+        list: Vec<usize>,
+    },
+    /// `vertex` left Q: it has no unreached neighbour left (the course's "Quitar").
+    Remove {
+        /// The vertex removed.
+        vertex: usize,
+        /// Q after the step, first element first.
+        list: Vec<usize>,
+    },
+    /// Q is empty: the result of [`bfs`] or [`dfs`].
+    Done {
+        /// The search, as [`bfs`] or [`dfs`] returns it.
+        search: Search,
+    },
+}
+
+impl TraceSize for SearchStep {
+    fn entries(&self) -> usize {
+        match self {
+            SearchStep::Add { list, .. } => 2 + list.len(),
+            SearchStep::Remove { list, .. } => 1 + list.len(),
+            SearchStep::Done { search } => search.order.len() + search.parent.len(),
+        }
+    }
 }
 
 /// The connected components of a graph.
@@ -193,26 +223,7 @@ pub fn bfs(g: &Graph, start: usize) -> Result<Search> {
 /// ```
 pub fn bfs_with<C: Counter>(g: &Graph, start: usize, c: &mut C) -> Result<Search> {
     g.check_vertex(start)?;
-    let n = g.vertex_count();
-    let mut parent = vec![NONE; n];
-    // The visit order doubles as the queue: the queue is order[head..].
-    let mut order: Vec<u32> = Vec::with_capacity(n);
-    parent[start] = start as u32;
-    order.push(start as u32);
-    let mut head = 0;
-    while head < order.len() {
-        let x = order[head] as usize;
-        head += 1;
-        c.vertex_visit();
-        for &y in g.adjacent(x) {
-            c.edge_visit();
-            if parent[y as usize] == NONE {
-                parent[y as usize] = x as u32;
-                order.push(y);
-            }
-        }
-    }
-    Ok(finish(order, parent, start))
+    Ok(bfs_observed(g, start, c, &mut NoObserver))
 }
 
 /// Depth-first search from `start`; see [`dfs_with`].
@@ -267,144 +278,94 @@ pub fn dfs(g: &Graph, start: usize) -> Result<Search> {
 /// ```
 pub fn dfs_with<C: Counter>(g: &Graph, start: usize, c: &mut C) -> Result<Search> {
     g.check_vertex(start)?;
-    let n = g.vertex_count();
-    let mut parent = vec![NONE; n];
-    let mut order: Vec<u32> = Vec::with_capacity(n);
-    // (vertex, how many of its neighbours have been looked at)
-    let mut stack: Vec<(u32, u32)> = Vec::new();
-    parent[start] = start as u32;
-    order.push(start as u32);
-    c.vertex_visit();
-    stack.push((start as u32, 0));
-    while let Some(top) = stack.last_mut() {
-        let x = top.0 as usize;
-        let adjacent = g.adjacent(x);
-        let mut cursor = top.1 as usize;
-        let mut next = None;
-        while cursor < adjacent.len() {
-            let y = adjacent[cursor];
-            cursor += 1;
-            c.edge_visit();
-            if parent[y as usize] == NONE {
-                next = Some(y);
-                break;
-            }
-        }
-        top.1 = cursor as u32;
-        match next {
-            Some(y) => {
-                parent[y as usize] = x as u32;
-                order.push(y);
-                c.vertex_visit();
-                stack.push((y, 0));
-            }
-            None => {
-                stack.pop();
-            }
-        }
-    }
-    Ok(finish(order, parent, start))
+    Ok(dfs_observed(g, start, c, &mut NoObserver))
 }
 
-/// The course's step table of a search: one row per vertex added to Q and one per vertex
-/// removed, with Q after each step.
+/// The frames of a search of `g` from `start`: its own run, step by step, as the course's
+/// table has it.
 ///
-/// The rows are exactly those of the course's tables ([RD, §2.1]
-/// "Algoritmos de búsqueda", columns Añadir / Quitar / Q): the first row adds the start, and
-/// a component of n_c vertices gives 2·n_c rows. The visit order is the order of the `added`
-/// entries, the same as [`bfs`] or [`dfs`] return. [`trace_table`] prints the rows.
+/// The run is [`bfs_with`]'s or [`dfs_with`]'s, told about each step: one
+/// [`SearchStep::Add`] per vertex appended to Q and one [`SearchStep::Remove`] per vertex
+/// removed, each with Q after it (exactly the rows of the course's tables, [RD, §2.1]
+/// "Algoritmos de búsqueda", columns Añadir / Quitar / Q), then [`SearchStep::Done`] with the
+/// search [`bfs`] or [`dfs`] returns. The first frame adds the start, and a component of n_c
+/// vertices gives 2·n_c + 1 frames. The visit order is the order of the added vertices. Each
+/// frame carries the operations counted so far; the last frame's are those of the `_with`
+/// function with [`Counts`](crate::count::Counts). [`trace_table`] prints the rows.
 ///
 /// # Errors
-/// [`Error::NoSuchVertex`](crate::Error::NoSuchVertex) if `start >= n`; [`Error::LimitExceeded`](crate::Error::LimitExceeded) if the graph has more
-/// than [`TRACE_MAX_VERTICES`] vertices (each row copies the list Q).
+/// [`Error::NoSuchVertex`](crate::Error::NoSuchVertex) if `start >= n`;
+/// [`Error::LimitExceeded`](crate::Error::LimitExceeded) if the graph has more than
+/// [`TRACE_MAX_VERTICES`] vertices (each row copies the list Q).
 ///
 /// # Complexity
-/// O(n + m + n_c²) time and O(n_c²) space for the rows.
+/// O(n + m + n_c²) time and O(n + n_c²) space for the frames.
 ///
 /// ```
-/// use compgeo::graph::{search_trace, Graph, SearchAlgorithm};
+/// use compgeo::graph::{search_trace, Graph, SearchAlgorithm, SearchStep};
 ///
 /// let g = Graph::from_edges(3, &[[0, 1], [0, 2]])?;
-/// let rows = search_trace(&g, 0, SearchAlgorithm::Dfs)?;
-/// let added: Vec<_> = rows.iter().filter_map(|r| r.added).collect();
+/// let frames = search_trace(&g, 0, SearchAlgorithm::Dfs)?;
+/// let added: Vec<usize> = frames
+///     .iter()
+///     .filter_map(|f| match f.step {
+///         SearchStep::Add { vertex, .. } => Some(vertex),
+///         _ => None,
+///     })
+///     .collect();
 /// assert_eq!(added, [0, 1, 2]);
-/// assert_eq!(rows[2].list, [0]); // 1 was removed before 2 was added
+/// // 1 was removed before 2 was added
+/// assert_eq!(frames[2].step, SearchStep::Remove { vertex: 1, list: vec![0] });
+/// assert!(matches!(&frames[6].step, SearchStep::Done { search } if search.order == added));
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn search_trace(g: &Graph, start: usize, kind: SearchAlgorithm) -> Result<Vec<TraceRow>> {
+pub fn search_trace(
+    g: &Graph,
+    start: usize,
+    kind: SearchAlgorithm,
+) -> Result<Vec<Frame<SearchStep>>> {
     g.check_vertex(start)?;
     crate::limits::TRACE_VERTICES.check(g.vertex_count() as u128)?;
-    let mut seen = vec![false; g.vertex_count()];
-    let mut cursor = vec![0usize; g.vertex_count()];
-    let mut list = std::collections::VecDeque::from([start]);
-    seen[start] = true;
-    let mut rows = vec![TraceRow {
-        added: Some(start),
-        removed: None,
-        list: vec![start],
-    }];
-    while let Some(&x) = match kind {
-        SearchAlgorithm::Bfs => list.front(),
-        SearchAlgorithm::Dfs => list.back(),
-    } {
-        let adjacent = g.adjacent(x);
-        let mut next = None;
-        while cursor[x] < adjacent.len() {
-            let y = adjacent[cursor[x]] as usize;
-            cursor[x] += 1;
-            if !seen[y] {
-                next = Some(y);
-                break;
-            }
-        }
-        let (added, removed) = match next {
-            Some(y) => {
-                seen[y] = true;
-                list.push_back(y);
-                (Some(y), None)
-            }
-            None => {
-                match kind {
-                    SearchAlgorithm::Bfs => list.pop_front(),
-                    SearchAlgorithm::Dfs => list.pop_back(),
-                };
-                (None, Some(x))
-            }
+    record(|counts, recorder| {
+        let search = match kind {
+            SearchAlgorithm::Bfs => bfs_observed(g, start, counts, recorder),
+            SearchAlgorithm::Dfs => dfs_observed(g, start, counts, recorder),
         };
-        rows.push(TraceRow {
-            added,
-            removed,
-            list: list.iter().copied().collect(),
-        });
-    }
-    Ok(rows)
+        Ok(SearchStep::Done { search })
+    })
 }
 
-/// Prints search rows as the course's three-column table, `Add`, `Remove`, `Q`, tab-separated,
-/// with `-` for an empty cell and `∅` for an empty Q; `name` writes a vertex (the course uses
-/// letters). Q's vertices are run together when every name is a single letter, as in the
-/// seed (`abce`), and separated by spaces otherwise.
+/// Prints a search's frames as the course's three-column table, `Add`, `Remove`, `Q`,
+/// tab-separated, one row per added or removed vertex (the last frame, the result, prints
+/// nothing), with `-` for an empty cell and `∅` for an empty Q; `name` writes a vertex (the
+/// course uses letters). Q's vertices are run together when every name is a single letter, as
+/// in the seed (`abce`), and separated by spaces otherwise.
 ///
 /// ```
 /// use compgeo::graph::{search_trace, trace_table, Graph, SearchAlgorithm};
 ///
 /// let g = Graph::from_edges(2, &[[0, 1]])?;
-/// let rows = search_trace(&g, 0, SearchAlgorithm::Bfs)?;
+/// let frames = search_trace(&g, 0, SearchAlgorithm::Bfs)?;
 /// let letter = |v: usize| char::from(b'a' + v as u8).to_string();
 /// assert_eq!(
-///     trace_table(&rows, letter),
+///     trace_table(&frames, letter),
 ///     "Add\tRemove\tQ\na\t-\ta\nb\t-\tab\n-\ta\tb\n-\tb\t∅\n"
 /// );
 /// # Ok::<(), compgeo::Error>(())
 /// ```
-pub fn trace_table(rows: &[TraceRow], name: impl Fn(usize) -> String) -> String {
+pub fn trace_table(frames: &[Frame<SearchStep>], name: impl Fn(usize) -> String) -> String {
     let mut out = String::from("Add\tRemove\tQ\n");
     let cell = |v: Option<usize>| v.map_or_else(|| "-".to_string(), &name);
-    for row in rows {
-        let list: String = if row.list.is_empty() {
+    for frame in frames {
+        let (added, removed, list) = match &frame.step {
+            SearchStep::Add { vertex, list, .. } => (Some(*vertex), None, list),
+            SearchStep::Remove { vertex, list } => (None, Some(*vertex), list),
+            SearchStep::Done { .. } => continue,
+        };
+        let list: String = if list.is_empty() {
             "∅".to_string()
         } else {
-            let names: Vec<String> = row.list.iter().map(|&v| name(v)).collect();
+            let names: Vec<String> = list.iter().map(|&v| name(v)).collect();
             // Single letters read like the course's "abce"; numbers and longer names need a
             // separator.
             let single_letter = |s: &String| {
@@ -418,7 +379,7 @@ pub fn trace_table(rows: &[TraceRow], name: impl Fn(usize) -> String) -> String 
             };
             names.join(sep)
         };
-        let _ = writeln!(out, "{}\t{}\t{}", cell(row.added), cell(row.removed), list);
+        let _ = writeln!(out, "{}\t{}\t{}", cell(added), cell(removed), list);
     }
     out
 }
@@ -560,6 +521,118 @@ pub fn check_search_tree(
         }
     }
     Ok(())
+}
+
+/// Breadth-first search from a valid `start`, telling `obs` about each vertex added to Q and
+/// removed from it.
+fn bfs_observed<C: Counter, O: Observer<SearchStep, C>>(
+    g: &Graph,
+    start: usize,
+    c: &mut C,
+    obs: &mut O,
+) -> Search {
+    let n = g.vertex_count();
+    let mut parent = vec![NONE; n];
+    // The visit order doubles as the queue: Q is order[head..].
+    let mut order: Vec<u32> = Vec::with_capacity(n);
+    parent[start] = start as u32;
+    order.push(start as u32);
+    obs.step(c, || SearchStep::Add {
+        vertex: start,
+        parent: None,
+        list: vec![start],
+    });
+    let mut head = 0;
+    while head < order.len() {
+        let x = order[head] as usize;
+        c.vertex_visit();
+        for &y in g.adjacent(x) {
+            c.edge_visit();
+            if parent[y as usize] == NONE {
+                parent[y as usize] = x as u32;
+                order.push(y);
+                obs.step(c, || SearchStep::Add {
+                    vertex: y as usize,
+                    parent: Some(x),
+                    list: widen(&order[head..]),
+                });
+            }
+        }
+        // x stays first in Q while it adds its neighbours, then leaves.
+        head += 1;
+        obs.step(c, || SearchStep::Remove {
+            vertex: x,
+            list: widen(&order[head..]),
+        });
+    }
+    finish(order, parent, start)
+}
+
+/// Depth-first search from a valid `start`, telling `obs` about each vertex pushed on Q and
+/// popped from it.
+fn dfs_observed<C: Counter, O: Observer<SearchStep, C>>(
+    g: &Graph,
+    start: usize,
+    c: &mut C,
+    obs: &mut O,
+) -> Search {
+    let n = g.vertex_count();
+    let mut parent = vec![NONE; n];
+    let mut order: Vec<u32> = Vec::with_capacity(n);
+    // (vertex, how many of its neighbours have been looked at)
+    let mut stack: Vec<(u32, u32)> = Vec::new();
+    let list = |stack: &[(u32, u32)]| stack.iter().map(|&(v, _)| v as usize).collect();
+    parent[start] = start as u32;
+    order.push(start as u32);
+    c.vertex_visit();
+    stack.push((start as u32, 0));
+    obs.step(c, || SearchStep::Add {
+        vertex: start,
+        parent: None,
+        list: vec![start],
+    });
+    while let Some(top) = stack.last_mut() {
+        let x = top.0 as usize;
+        let adjacent = g.adjacent(x);
+        let mut cursor = top.1 as usize;
+        let mut next = None;
+        while cursor < adjacent.len() {
+            let y = adjacent[cursor];
+            cursor += 1;
+            c.edge_visit();
+            if parent[y as usize] == NONE {
+                next = Some(y);
+                break;
+            }
+        }
+        top.1 = cursor as u32;
+        match next {
+            Some(y) => {
+                parent[y as usize] = x as u32;
+                order.push(y);
+                c.vertex_visit();
+                stack.push((y, 0));
+                obs.step(c, || SearchStep::Add {
+                    vertex: y as usize,
+                    parent: Some(x),
+                    list: list(&stack),
+                });
+            }
+            None => {
+                stack.pop();
+                obs.step(c, || SearchStep::Remove {
+                    vertex: x,
+                    list: list(&stack),
+                });
+            }
+        }
+    }
+    finish(order, parent, start)
+}
+
+/// Compact vertex ids as `usize`.
+fn widen(vertices: &[u32]) -> Vec<usize> {
+    vertices.iter().map(|&v| v as usize).collect()
 }
 
 /// "No parent yet" in the searches' compact parent arrays.

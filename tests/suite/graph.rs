@@ -4,6 +4,7 @@
 
 use compgeo::count::Counts;
 use compgeo::graph::*;
+use compgeo::trace::Frame;
 use compgeo::Error;
 use proptest::prelude::*;
 
@@ -82,6 +83,17 @@ fn letter(v: usize) -> String {
 }
 
 /// The course's table as (add, remove, Q) strings, `-` for empty, `∅` for an empty Q.
+/// The vertices a search trace added, in order.
+fn added(frames: &[Frame<SearchStep>]) -> Vec<usize> {
+    frames
+        .iter()
+        .filter_map(|f| match f.step {
+            SearchStep::Add { vertex, .. } => Some(vertex),
+            _ => None,
+        })
+        .collect()
+}
+
 fn seed_rows(rows: &[(&str, &str, &str)]) -> String {
     let mut s = String::from("Add\tRemove\tQ\n");
     for (a, r, q) in rows {
@@ -110,7 +122,7 @@ fn seed_dfs_table() {
         ("-", "a", "∅"),
     ]);
     assert_eq!(trace_table(&rows, letter), expected);
-    let added: Vec<_> = rows.iter().filter_map(|r| r.added).collect();
+    let added = added(&rows);
     assert_eq!(added, dfs(&seed_toys(), 0).unwrap().order);
 }
 
@@ -134,7 +146,7 @@ fn seed_bfs_table() {
         ("-", "g", "∅"),
     ]);
     assert_eq!(trace_table(&rows, letter), expected);
-    let added: Vec<_> = rows.iter().filter_map(|r| r.added).collect();
+    let added = added(&rows);
     assert_eq!(added, bfs(&seed_toys(), 0).unwrap().order);
 }
 
@@ -217,8 +229,16 @@ proptest! {
         let degree_sum: usize = r.order.iter().map(|&v| g.degree(v)).sum();
         prop_assert_eq!(c.edge_visits, degree_sum as u64);
         let trace = search_trace(&g, s, SearchAlgorithm::Dfs).unwrap();
-        prop_assert_eq!(trace.len(), 2 * order.len());
-        prop_assert!(trace.last().unwrap().list.is_empty());
+        // A row per vertex added and removed, then the result: the plain search's, with the
+        // counted run's counts.
+        prop_assert_eq!(trace.len(), 2 * order.len() + 1);
+        prop_assert_eq!(
+            &trace[trace.len() - 2].step,
+            &SearchStep::Remove { vertex: s, list: vec![] }
+        );
+        let last = trace.last().unwrap();
+        prop_assert_eq!(&last.step, &SearchStep::Done { search: r.clone() });
+        prop_assert_eq!(last.counts, c);
     }
 
     #[test]
