@@ -20,10 +20,10 @@
 //! nothing else.
 //!
 //! `--steps` (hull: `jarvis`, `graham`, `monotone-chain`, `quickhull`; delaunay: `lawson`,
-//! `fortune`)
+//! `fortune`; graph: `--bfs S`, `--dfs S`, `--colour course`, `--mst prim`, `--mst kruskal`)
 //! writes the run as one self-contained HTML page instead, a picture per frame of the
 //! algorithm's own trace ([`crate::draw::StepPage`]), and prints `{"problem", "algorithm",
-//! "points", "frames", "bytes", "out"}`.
+//! "points", "frames", "bytes", "out"}` (`vertices` instead of `points` for a graph).
 
 use super::beta::{beta_of, ControlArgs, ShapeArgs};
 use super::bezier::{CurveArgs as BezierArgs, JsonScalar};
@@ -50,6 +50,9 @@ use crate::geometry::{Point2, PointSet};
 use crate::graph::{
     colour_with, search_with, spanning_forest_with, ColouringAlgorithm, Graph, MstAlgorithm,
     SearchAlgorithm,
+};
+use crate::graph::{
+    course_greedy_colouring_trace, kruskal_trace, prim_trace, search_trace, EdgeList,
 };
 use crate::hull::{convex_hull_with, Algorithm as HullAlgorithm, HullOptions};
 use crate::hull::{graham_trace, jarvis_trace, monotone_chain_trace, quickhull_trace};
@@ -271,6 +274,10 @@ enum Problem {
         /// Highlight the depth-first search tree from this vertex
         #[arg(long, value_name = "S", group = "overlay")]
         dfs: Option<usize>,
+        /// Write the run step by step as one HTML page (--bfs, --dfs, --colour course, --mst
+        /// prim or kruskal), a picture per step of the algorithm's own trace
+        #[arg(long)]
+        steps: bool,
         #[command(flatten)]
         out: Out,
     },
@@ -278,6 +285,27 @@ enum Problem {
 
 /// Runs `compgeo draw`.
 pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
+    if let Problem::Graph {
+        graph,
+        points,
+        colour,
+        mst,
+        bfs,
+        dfs,
+        steps: true,
+        out,
+    } = &args.problem
+    {
+        let (algorithm, vertices, page) =
+            graph_step_page(graph, points.as_deref(), *colour, *mst, *bfs, *dfs)?;
+        return write_page(
+            "graph",
+            Some(algorithm),
+            ("vertices", vertices),
+            &page,
+            &out.out,
+        );
+    }
     let steps = match &args.problem {
         Problem::Hull {
             algorithm,
@@ -297,7 +325,13 @@ pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
         let points = common.input.read()?;
         let set = PointSet::new(&points)?;
         if let Some(page) = step_page(&args.problem, &set)? {
-            return write_page(name, Some(algorithm), points.len(), &page, &common.out);
+            return write_page(
+                name,
+                Some(algorithm),
+                ("points", points.len()),
+                &page,
+                &common.out,
+            );
         }
     }
     let mut summary = Map::new();
@@ -449,6 +483,7 @@ pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
             bfs,
             dfs,
             out,
+            ..
         } => {
             let (p, algorithm) =
                 graph_picture(graph, points.as_deref(), *colour, *mst, *bfs, *dfs)?;
@@ -526,11 +561,12 @@ fn step_page(problem: &Problem, set: &PointSet<'_>) -> Result<Option<StepPage>, 
     })
 }
 
-/// Writes a step page to `out` (`-`: stdout, and nothing else) and prints its summary.
+/// Writes a step page to `out` (`-`: stdout, and nothing else) and prints its summary, with
+/// the input's `size` (`("points", n)`, `("vertices", n)`).
 fn write_page(
     name: &str,
     algorithm: Option<&str>,
-    points: usize,
+    size: (&str, usize),
     page: &StepPage,
     out: &Path,
 ) -> Result<(), CliError> {
@@ -539,14 +575,15 @@ fn write_page(
         return print_text(&html);
     }
     write_file(out, |w| w.write_all(html.as_bytes()))?;
-    print_json(&json!({
+    let mut summary = json!({
         "problem": name,
         "algorithm": algorithm,
-        "points": points,
         "frames": page.frames().len(),
         "bytes": html.len(),
         "out": out.display().to_string(),
-    }))
+    });
+    summary[size.0] = json!(size.1);
+    print_json(&summary)
 }
 
 /// A Bézier curve, with de Casteljau's scaffolding at `t`.
@@ -637,15 +674,12 @@ fn mesh_picture<S: JsonScalar>(
     Ok(draw::mesh(&mesh, fine.as_ref())?)
 }
 
-/// A graph with the overlay asked for, and the algorithm that computed it.
-fn graph_picture(
+/// The graph of `input`, as an edge list and a graph, and its vertices' positions: the
+/// points of the file `points`, or the circle.
+fn graph_input(
     input: &GraphInput,
     points: Option<&Path>,
-    colour: Option<ColouringAlgorithm>,
-    mst: Option<MstAlgorithm>,
-    bfs: Option<usize>,
-    dfs: Option<usize>,
-) -> Result<(Picture, Option<&'static str>), CliError> {
+) -> Result<(EdgeList, Graph, Vec<Point2>), CliError> {
     let list = non_empty(input.read()?)?;
     let g = Graph::from_edge_list(&list)?;
     let n = g.vertex_count();
@@ -667,6 +701,74 @@ fn graph_picture(
         }
         None => circle_layout(n),
     };
+    Ok((list, g, positions))
+}
+
+/// The step page of the graph algorithm `--steps` asks for, its name and the vertex count.
+fn graph_step_page(
+    input: &GraphInput,
+    points: Option<&Path>,
+    colour: Option<ColouringAlgorithm>,
+    mst: Option<MstAlgorithm>,
+    bfs: Option<usize>,
+    dfs: Option<usize>,
+) -> Result<(&'static str, usize, StepPage), CliError> {
+    const TRACED: &str = "--bfs S, --dfs S, --colour course, --mst prim and --mst kruskal";
+    let unsupported = |algorithm: &str| {
+        CliError::Usage(format!(
+            "--steps: no step trace for {algorithm}; the traced algorithms are {TRACED}"
+        ))
+    };
+    let read = || graph_input(input, points);
+    Ok(match (colour, mst, bfs, dfs) {
+        (Some(a @ ColouringAlgorithm::Course), ..) => {
+            let (_, g, positions) = read()?;
+            let order: Vec<usize> = (0..g.vertex_count()).collect();
+            let trace = course_greedy_colouring_trace(&g, &order)?;
+            let page = draw::colouring_steps(&g, &positions, &trace)?;
+            (a.name(), g.vertex_count(), page)
+        }
+        (Some(other), ..) => return Err(unsupported(other.name())),
+        (_, Some(a @ (MstAlgorithm::Prim | MstAlgorithm::Kruskal)), ..) => {
+            let (list, g, positions) = read()?;
+            let w = weighted(&list)?;
+            let page = if a == MstAlgorithm::Prim {
+                draw::prim_steps(&w, &positions, &prim_trace(&w)?)?
+            } else {
+                draw::kruskal_steps(&w, &positions, &kruskal_trace(&w)?)?
+            };
+            (a.name(), g.vertex_count(), page)
+        }
+        (_, Some(other), ..) => return Err(unsupported(other.name())),
+        (_, _, Some(start), _) | (_, _, None, Some(start)) => {
+            let kind = if bfs.is_some() {
+                SearchAlgorithm::Bfs
+            } else {
+                SearchAlgorithm::Dfs
+            };
+            let (_, g, positions) = read()?;
+            let trace = search_trace(&g, start, kind)?;
+            let page = draw::search_steps(&g, &positions, kind, &trace)?;
+            (kind.name(), g.vertex_count(), page)
+        }
+        (None, None, None, None) => {
+            return Err(CliError::Usage(format!(
+                "--steps on a graph needs an algorithm: one of {TRACED}"
+            )))
+        }
+    })
+}
+
+/// A graph with the overlay asked for, and the algorithm that computed it.
+fn graph_picture(
+    input: &GraphInput,
+    points: Option<&Path>,
+    colour: Option<ColouringAlgorithm>,
+    mst: Option<MstAlgorithm>,
+    bfs: Option<usize>,
+    dfs: Option<usize>,
+) -> Result<(Picture, Option<&'static str>), CliError> {
+    let (list, g, positions) = graph_input(input, points)?;
     Ok(if let Some(a) = colour {
         let c = colour_with(&g, a, &mut NoCount);
         (

@@ -78,21 +78,7 @@ pub fn circle_layout(n: usize) -> Vec<Point2> {
 /// ```
 pub fn graph(g: &Graph, positions: &[Point2], overlay: GraphOverlay<'_>) -> Result<Picture> {
     let n = g.vertex_count();
-    if positions.len() != n {
-        return Err(Error::InvalidParameter {
-            name: "positions",
-            reason: format!("{} positions for {n} vertices", positions.len()),
-        });
-    }
-    if let Some(i) = positions
-        .iter()
-        .position(|p| !p.x.is_finite() || !p.y.is_finite())
-    {
-        return Err(Error::InvalidParameter {
-            name: "positions",
-            reason: format!("the position of vertex {i} is not finite"),
-        });
-    }
+    check_positions(n, positions)?;
     let tree: Vec<[usize; 2]> = match overlay {
         GraphOverlay::Plain | GraphOverlay::Colouring(_) => Vec::new(),
         GraphOverlay::Tree(edges) => {
@@ -127,7 +113,6 @@ pub fn graph(g: &Graph, positions: &[Point2], overlay: GraphOverlay<'_>) -> Resu
             });
         }
     }
-    let bounds = bounds_of(positions);
     let title = match overlay {
         GraphOverlay::Plain => format!("graph of {n} vertices and {} edges", g.edge_count()),
         GraphOverlay::Colouring(c) => format!(
@@ -143,42 +128,161 @@ pub fn graph(g: &Graph, positions: &[Point2], overlay: GraphOverlay<'_>) -> Resu
             search.order.len()
         ),
     };
-    let mut picture = Picture::new(&title, bounds, n);
-    picture.segments(
-        &Layer::new("edges", Role::Triangulation).legend(format!("{} edges", g.edge_count())),
-        g.edges().map(|e| e.map(|v| positions[v])),
-    );
-    picture.segments(
-        &Layer::new("tree", Role::Result).legend(format!("{} tree edges", tree.len())),
-        tree.iter().map(|e| e.map(|v| positions[v])),
-    );
+    let mut scene = Scene {
+        tree,
+        ..Scene::default()
+    };
     match overlay {
         GraphOverlay::Colouring(c) => {
-            let mut classes = vec![Vec::new(); c.count];
-            for (v, &k) in c.colour.iter().enumerate() {
-                classes[k].push(positions[v]);
-            }
-            for (k, class) in classes.iter().enumerate() {
-                picture.filled_points(
-                    &Layer::new(&format!("colour-{k}"), Role::Input)
-                        .legend(format!("colour {k} ({} vertices)", class.len())),
-                    CLASS_COLOURS[k % CLASS_COLOURS.len()],
-                    class.iter().copied(),
-                );
+            scene.fill = Fill::Colours {
+                colour: c.colour.iter().map(|&k| Some(k)).collect(),
+                count: c.count,
             }
         }
-        _ => {
+        GraphOverlay::Search { start, .. } => scene.rings.push((
+            Layer::new("start", Role::Highlight).legend("start"),
+            vec![start],
+        )),
+        GraphOverlay::Plain | GraphOverlay::Tree(_) => {}
+    }
+    let edges: Vec<[usize; 2]> = g.edges().collect();
+    Ok(scene_picture(&title, positions, &edges, &scene))
+}
+
+/// Checks that there is one finite position per vertex of a graph of `n` vertices.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] named `"positions"`.
+pub(super) fn check_positions(n: usize, positions: &[Point2]) -> Result<()> {
+    if positions.len() != n {
+        return Err(Error::InvalidParameter {
+            name: "positions",
+            reason: format!("{} positions for {n} vertices", positions.len()),
+        });
+    }
+    if let Some(i) = positions
+        .iter()
+        .position(|p| !p.x.is_finite() || !p.y.is_finite())
+    {
+        return Err(Error::InvalidParameter {
+            name: "positions",
+            reason: format!("the position of vertex {i} is not finite"),
+        });
+    }
+    Ok(())
+}
+
+/// How the vertices of a graph picture are drawn.
+#[derive(Debug, Clone, Default)]
+pub(super) enum Fill {
+    /// Every vertex a dot (layer `vertices`).
+    #[default]
+    Plain,
+    /// The coloured vertices filled with their class's colour (layers `colour-k` for k below
+    /// `count`), the others dots (layer `vertices`, drawn only if there are some).
+    Colours {
+        /// Each vertex's colour, `None` for those not coloured (yet).
+        colour: Vec<Option<usize>>,
+        /// The number of classes drawn.
+        count: usize,
+    },
+    /// Every vertex a dot, and these vertices filled in the result's colour (layer
+    /// `reached`).
+    Reached(Vec<usize>),
+}
+
+/// What a graph picture draws over the graph's edges: the state of a result ([`graph`]) or
+/// of one step of an algorithm (the step pages), so both are drawn by [`scene_picture`].
+#[derive(Debug, Clone, Default)]
+pub(super) struct Scene {
+    /// Edges drawn over the graph's edges and under the tree, each layer with its pairs of
+    /// vertices.
+    pub under: Vec<(Layer, Vec<[usize; 2]>)>,
+    /// The tree or forest so far (layer `tree`, blue).
+    pub tree: Vec<[usize; 2]>,
+    /// Edges drawn over the tree.
+    pub over: Vec<(Layer, Vec<[usize; 2]>)>,
+    /// How the vertices are drawn.
+    pub fill: Fill,
+    /// Vertices ringed, each layer with its vertices.
+    pub rings: Vec<(Layer, Vec<usize>)>,
+    /// A text at the middle of each of these edges (layer `weights`), after the vertices'
+    /// numbers.
+    pub edge_labels: Vec<([usize; 2], String)>,
+}
+
+/// The picture of a graph of `positions.len()` vertices with `edges` at `positions` (checked
+/// by the caller, as every index in `scene`), and the `scene` over it: the one body of every
+/// graph picture, whole or step by step.
+pub(super) fn scene_picture(
+    title: &str,
+    positions: &[Point2],
+    edges: &[[usize; 2]],
+    scene: &Scene,
+) -> Picture {
+    let n = positions.len();
+    let at = |pairs: &[[usize; 2]]| -> Vec<[Point2; 2]> {
+        pairs.iter().map(|e| e.map(|v| positions[v])).collect()
+    };
+    let mut picture = Picture::new(title, bounds_of(positions), n);
+    picture.segments(
+        &Layer::new("edges", Role::Triangulation).legend(format!("{} edges", edges.len())),
+        at(edges),
+    );
+    for (layer, pairs) in &scene.under {
+        picture.segments(layer, at(pairs));
+    }
+    picture.segments(
+        &Layer::new("tree", Role::Result).legend(format!("{} tree edges", scene.tree.len())),
+        at(&scene.tree),
+    );
+    for (layer, pairs) in &scene.over {
+        picture.segments(layer, at(pairs));
+    }
+    match &scene.fill {
+        Fill::Plain | Fill::Reached(_) => {
             picture.points(
                 &Layer::new("vertices", Role::Input).legend(format!("{n} vertices")),
                 positions.iter().copied(),
             );
         }
+        Fill::Colours { colour, count } => {
+            let mut classes = vec![Vec::new(); *count];
+            let mut uncoloured = Vec::new();
+            for (v, k) in colour.iter().enumerate() {
+                match k {
+                    Some(k) => classes[*k].push(positions[v]),
+                    None => uncoloured.push(positions[v]),
+                }
+            }
+            if !uncoloured.is_empty() {
+                picture.points(
+                    &Layer::new("vertices", Role::Input)
+                        .legend(format!("{} not coloured yet", uncoloured.len())),
+                    uncoloured,
+                );
+            }
+            for (k, class) in classes.iter().enumerate() {
+                picture.filled_points(
+                    &Layer::new(&format!("colour-{k}"), Role::Input).legend(match class.len() {
+                        1 => format!("colour {k} (1 vertex)"),
+                        size => format!("colour {k} ({size} vertices)"),
+                    }),
+                    CLASS_COLOURS[k % CLASS_COLOURS.len()],
+                    class.iter().copied(),
+                );
+            }
+        }
     }
-    if let GraphOverlay::Search { start, .. } = overlay {
-        picture.rings(
-            &Layer::new("start", Role::Highlight).legend("start"),
-            [positions[start]],
+    if let Fill::Reached(reached) = &scene.fill {
+        picture.filled_points(
+            &Layer::new("reached", Role::Result).legend(format!("{} reached", reached.len())),
+            Role::Result.colour(),
+            reached.iter().map(|&v| positions[v]),
         );
+    }
+    for (layer, vertices) in &scene.rings {
+        picture.rings(layer, vertices.iter().map(|&v| positions[v]));
     }
     picture.labels(
         &Layer::new("labels", Role::Label).legend("vertex"),
@@ -187,5 +291,17 @@ pub fn graph(g: &Graph, positions: &[Point2], overlay: GraphOverlay<'_>) -> Resu
             .enumerate()
             .map(|(v, &p)| (p, v.to_string())),
     );
-    Ok(picture)
+    if !scene.edge_labels.is_empty() {
+        picture.labels(
+            &Layer::new("weights", Role::Label).legend("edge weight"),
+            scene.edge_labels.iter().map(|([u, v], text)| {
+                let (p, q) = (positions[*u], positions[*v]);
+                (
+                    Point2::new(0.5 * p.x + 0.5 * q.x, 0.5 * p.y + 0.5 * q.y),
+                    text.clone(),
+                )
+            }),
+        );
+    }
+    picture
 }

@@ -84,7 +84,7 @@ pub(super) fn check<'a>(
 }
 
 /// `indices` as text, shortened after a dozen.
-fn list(indices: &[usize]) -> String {
+pub(super) fn list(indices: &[usize]) -> String {
     let shown: Vec<String> = indices.iter().take(12).map(usize::to_string).collect();
     let more = if indices.len() > 12 { ", …" } else { "" };
     format!("[{}{more}]", shown.join(", "))

@@ -26,6 +26,7 @@
 //! | [`StepPage`], [`StepFrame`] | a run as one self-contained HTML page, a picture per step, a slider and keys | `steps.rs` |
 //! | [`jarvis_steps`], [`graham_steps`], [`monotone_chain_steps`], [`quickhull_steps`], [`lawson_steps`] | step pages of the traced hulls and of Lawson's flips, from the [`trace`](crate::trace) frames | `hull_steps.rs` |
 //! | [`fortune_steps`] | the step page of Fortune's sweep: the sweep line, the beach line's arcs, the triangles and Voronoi vertices so far, each event | `fortune_steps.rs` |
+//! | [`search_steps`], [`colouring_steps`], [`prim_steps`], [`kruskal_steps`] | step pages of breadth- and depth-first search (Q, the vertices reached, the tree so far), the course's greedy colouring (the colours so far, the neighbours that ruled colours out) and Prim's and Kruskal's trees (the tree so far, each edge accepted or rejected), drawn by the body of [`graph`] | `graph_steps.rs` |
 //!
 //! A new kind of picture is a new file that builds a [`Picture`] from its own results,
 //! using the same roles.
@@ -103,6 +104,7 @@ mod curves;
 mod delaunay;
 mod fortune_steps;
 mod frame;
+mod graph_steps;
 mod graphs;
 mod hull;
 mod hull_steps;
@@ -116,6 +118,7 @@ pub use curves::{beta, bezier, bspline, nurbs, sample_parameters, subdivision, S
 pub use delaunay::{delaunay, voronoi};
 pub use fortune_steps::fortune_steps;
 pub use frame::Frame;
+pub use graph_steps::{colouring_steps, kruskal_steps, prim_steps, search_steps};
 pub use graphs::{circle_layout, graph, GraphOverlay};
 pub use hull::{calipers, hull};
 pub use hull_steps::{

@@ -38,6 +38,7 @@ mod draw;
 mod draw_cli;
 mod draw_curves;
 mod draw_curves_cli;
+mod draw_graph_steps;
 mod draw_steps;
 mod empty_circle;
 mod fortune;

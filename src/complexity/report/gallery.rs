@@ -14,9 +14,14 @@ use std::path::Path;
 use crate::calipers::ConvexPolygon;
 use crate::delaunay::{fortune_trace, incremental, lawson_trace, voronoi as voronoi_of, ClipBox};
 use crate::draw::{self, circle_layout, escape, GraphOverlay};
+use crate::gen::with_random_weights;
 use crate::gen::{cube, graph as generate_graph, points as generate, GraphKind, PointKind};
 use crate::geometry::{Point2, PointSet};
 use crate::graph::{colour, ColouringAlgorithm, Graph};
+use crate::graph::{
+    course_greedy_colouring_trace, kruskal_trace, prim_trace, search_trace, SearchAlgorithm,
+    WeightedGraph,
+};
 use crate::hull::{
     convex_hull, graham_trace, jarvis_trace, monotone_chain_trace, quickhull_trace, Algorithm,
     HullOptions,
@@ -277,7 +282,47 @@ fn step_pages() -> Vec<(&'static str, &'static str, MakePicture)> {
             let set = PointSet::new(&pts)?;
             Ok(draw::fortune_steps(&set, &fortune_trace(&pts)?)?.to_html())
         }),
+        ("search", "bfs", || search_page(SearchAlgorithm::Bfs)),
+        ("search", "dfs", || search_page(SearchAlgorithm::Dfs)),
+        ("colour", "course", || {
+            let g = Graph::from_edge_list(&generate_graph(GraphKind::Queen, 5, 0, 1)?)?;
+            let order: Vec<usize> = (0..g.vertex_count()).collect();
+            let trace = course_greedy_colouring_trace(&g, &order)?;
+            let layout = circle_layout(g.vertex_count());
+            Ok(draw::colouring_steps(&g, &layout, &trace)?.to_html())
+        }),
+        ("mst", "prim", || {
+            let g = step_weighted_graph()?;
+            let layout = circle_layout(g.vertex_count());
+            Ok(draw::prim_steps(&g, &layout, &prim_trace(&g)?)?.to_html())
+        }),
+        ("mst", "kruskal", || {
+            let g = step_weighted_graph()?;
+            let layout = circle_layout(g.vertex_count());
+            Ok(draw::kruskal_steps(&g, &layout, &kruskal_trace(&g)?)?.to_html())
+        }),
     ]
+}
+
+/// The search step pages: the Petersen graph on a circle, from vertex 0.
+fn search_page(algorithm: SearchAlgorithm) -> Result<String> {
+    let g = Graph::from_edge_list(&generate_graph(GraphKind::Petersen, 10, 0, 1)?)?;
+    let trace = search_trace(&g, 0, algorithm)?;
+    let layout = circle_layout(g.vertex_count());
+    Ok(draw::search_steps(&g, &layout, algorithm, &trace)?.to_html())
+}
+
+/// The graph the spanning-tree step pages trace: 9 vertices and 16 seeded edges, with
+/// weights 1 to 9 (seeded) so the labels stay short.
+fn step_weighted_graph() -> Result<WeightedGraph> {
+    let list = with_random_weights(generate_graph(GraphKind::Gnm, 9, 16, 1)?, 1);
+    let weights: Vec<f64> = list
+        .weights
+        .iter()
+        .flatten()
+        .map(|w| (1.0 + 9.0 * w).floor().min(9.0))
+        .collect();
+    WeightedGraph::from_edges(list.vertices, &list.edges, &weights)
 }
 
 /// The gallery page.
@@ -294,7 +339,7 @@ fn gallery_html(items: &[Item]) -> String {
          <code>compgeo draw</code>: the point problems on the same {PICTURE_POINTS} points of the \
          uniform-disk distribution (seed 1), the curves on seeded control polygons, the surface, \
          the mesh and the graph on fixed inputs. Each step page is the run of an algorithm on \
-         {STEP_POINTS} such points, a picture per frame of its trace (<code>compgeo draw \
+         {STEP_POINTS} such points (the graph algorithms on small fixed graphs), a picture per frame of its trace (<code>compgeo draw \
          --steps</code>; ← and → step through it). <a href=\"index.html\">Back to the \
          report</a>.</p>\n<h2>Pictures</h2>\n"
     );
