@@ -826,6 +826,90 @@ fn check_kruskal_trace(n: usize, edges: &[[usize; 2]], weights: &[f64]) {
     assert_eq!(frames.len() - 2, expected);
 }
 
+/// The course's search scheme written out here, as an oracle: Q holds the start; look at its
+/// first (BFS) or last (DFS) vertex x; append its smallest neighbour not reached yet, else
+/// remove x. Returns the rows (added, removed, Q after).
+fn course_search(
+    n: usize,
+    edges: &[[usize; 2]],
+    start: usize,
+    breadth_first: bool,
+) -> Vec<(Option<usize>, Option<usize>, Vec<usize>)> {
+    let adjacent = |u: usize, v: usize| {
+        u != v
+            && edges
+                .iter()
+                .any(|&[a, b]| [a, b] == [u, v] || [a, b] == [v, u])
+    };
+    let mut seen = vec![false; n];
+    seen[start] = true;
+    let mut q = std::collections::VecDeque::from([start]);
+    let mut rows = vec![(Some(start), None, vec![start])];
+    while let Some(&x) = if breadth_first { q.front() } else { q.back() } {
+        match (0..n).find(|&y| !seen[y] && adjacent(x, y)) {
+            Some(y) => {
+                seen[y] = true;
+                q.push_back(y);
+                rows.push((Some(y), None, q.iter().copied().collect()));
+            }
+            None => {
+                if breadth_first {
+                    q.pop_front();
+                } else {
+                    q.pop_back();
+                }
+                rows.push((None, Some(x), q.iter().copied().collect()));
+            }
+        }
+    }
+    rows
+}
+
+fn check_search_trace(n: usize, edges: &[[usize; 2]], start: usize) {
+    use compgeo::graph::{search, search_trace, search_with, Graph, SearchAlgorithm, SearchStep};
+    let g = Graph::from_edges(n, edges).unwrap();
+    for (kind, breadth_first) in [(SearchAlgorithm::Bfs, true), (SearchAlgorithm::Dfs, false)] {
+        let frames = search_trace(&g, start, kind).unwrap();
+        let rows = course_search(n, edges, start, breadth_first);
+        // A row per vertex of the start's component added and removed, then the result.
+        let label = labels(n, edges);
+        let component = (0..n).filter(|&v| label[v] == label[start]).count();
+        assert_eq!(rows.len(), 2 * component);
+        assert_eq!(frames.len(), rows.len() + 1);
+        let mut parent_of = vec![None; n];
+        for (f, (added, removed, q)) in frames.iter().zip(&rows) {
+            match &f.step {
+                SearchStep::Add {
+                    vertex,
+                    parent,
+                    list,
+                } => {
+                    assert_eq!((Some(*vertex), None, list), (*added, *removed, q));
+                    // The parent is the vertex Q was looked at for: its first or last
+                    // before the step.
+                    if let Some(p) = parent {
+                        let looked_at = if breadth_first { q[0] } else { q[q.len() - 2] };
+                        assert_eq!(*p, looked_at);
+                    }
+                    parent_of[*vertex] = *parent;
+                }
+                SearchStep::Remove { vertex, list } => {
+                    assert_eq!((None, Some(*vertex), list), (*added, *removed, q));
+                }
+                SearchStep::Done { .. } => panic!("done before the end"),
+            }
+        }
+        let mut counts = Counts::default();
+        let result = search_with(&g, start, kind, &mut counts).unwrap();
+        assert_eq!(result, search(&g, start, kind).unwrap());
+        assert_eq!(result.parent, parent_of);
+        let last = frames.last().unwrap();
+        assert_eq!(last.step, SearchStep::Done { search: result });
+        assert_eq!(last.counts, counts);
+        counts_grow(&frames);
+    }
+}
+
 #[test]
 fn graph_traces_on_small_graphs() {
     // The course's search toy graph shape: a 5-cycle with a chord, in two orders.
@@ -843,6 +927,9 @@ fn graph_traces_on_small_graphs() {
     check_kruskal_trace(6, &edges, &weights);
     check_prim_trace(0, &[], &[]);
     check_kruskal_trace(0, &[], &[]);
+    for start in [0, 2, 5] {
+        check_search_trace(6, &edges, start);
+    }
 }
 
 #[test]
@@ -867,6 +954,7 @@ proptest! {
             order.swap(i, (x % (i as u64 + 1)) as usize);
         }
         check_colouring_trace(n, &edges, &order);
+        check_search_trace(n, &edges, order.first().copied().unwrap_or(0).min(n - 1));
         check_prim_trace(n, &edges, &weights);
         check_kruskal_trace(n, &edges, &weights);
     }
