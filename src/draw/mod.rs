@@ -77,6 +77,11 @@
 //! once each, the colour classes are the colouring's and proper, the tree edges are the
 //! tree's. `tests/suite/draw_cli.rs` and `draw_curves_cli.rs` check `compgeo draw` against
 //! the other commands.
+//! `tests/suite/draw_graph_steps.rs` reads the graph step pages back: one frame per trace
+//! frame with its counts, Q and the tree so far as the trace has them, each colouring frame a
+//! prefix of the plain colouring, Kruskal's drawn edges a forest in every frame (an edge
+//! rejected exactly when its ends are already joined), and the last frame the plain
+//! function's tree or colouring with the counted run's counts.
 //!
 //! ```
 //! use compgeo::delaunay::{dual, incremental};
