@@ -26,6 +26,7 @@
 //! | [`StepPage`], [`StepFrame`] | a run as one self-contained HTML page, a picture per step, a slider and keys | `steps.rs` |
 //! | [`jarvis_steps`], [`graham_steps`], [`monotone_chain_steps`], [`quickhull_steps`], [`lawson_steps`] | step pages of the traced hulls and of Lawson's flips, from the [`trace`](crate::trace) frames | `hull_steps.rs` |
 //! | [`fortune_steps`] | the step page of Fortune's sweep: the sweep line, the beach line's arcs, the triangles and Voronoi vertices so far, each event | `fortune_steps.rs` |
+//! | [`de_casteljau_steps`], [`de_boor_steps`], [`lane_riesenfeld_steps`] | step pages of the curve traces: de Casteljau's scaffolding and de Boor's net level by level over the curve, the Lane–Riesenfeld polygon after each doubling and pass over the original | `curve_steps.rs` |
 //!
 //! A new kind of picture is a new file that builds a [`Picture`] from its own results,
 //! using the same roles.
@@ -99,6 +100,7 @@
 //! # Ok::<(), compgeo::Error>(())
 //! ```
 
+mod curve_steps;
 mod curves;
 mod delaunay;
 mod fortune_steps;
@@ -112,6 +114,7 @@ mod steps;
 mod surfaces;
 mod svg;
 
+pub use curve_steps::{de_boor_steps, de_casteljau_steps, lane_riesenfeld_steps};
 pub use curves::{beta, bezier, bspline, nurbs, sample_parameters, subdivision, SAMPLES_PER_PIECE};
 pub use delaunay::{delaunay, voronoi};
 pub use fortune_steps::fortune_steps;
