@@ -21,17 +21,17 @@ use compgeo::trace::Frame;
 use compgeo::Error;
 
 /// One frame as the page shows it.
-struct ShownFrame {
-    step: usize,
-    kind: String,
-    hidden: bool,
-    caption: String,
-    svg: Svg,
-    counts: Vec<(String, u64)>,
+pub struct ShownFrame {
+    pub step: usize,
+    pub kind: String,
+    pub hidden: bool,
+    pub caption: String,
+    pub svg: Svg,
+    pub counts: Vec<(String, u64)>,
 }
 
 /// Parses a page as XML and returns its frames, checking the controls on the way.
-fn frames_of(html: &str) -> Vec<ShownFrame> {
+pub fn frames_of(html: &str) -> Vec<ShownFrame> {
     // `<!DOCTYPE html>` is a DTD to an XML parser.
     let options = roxmltree::ParsingOptions {
         allow_dtd: true,
@@ -106,7 +106,7 @@ fn frames_of(html: &str) -> Vec<ShownFrame> {
 }
 
 /// The non-zero counts, as the page lists them.
-fn listed(counts: &Counts) -> Vec<(String, u64)> {
+pub fn listed(counts: &Counts) -> Vec<(String, u64)> {
     Operation::ALL
         .iter()
         .filter(|&&op| counts.get(op) > 0)
