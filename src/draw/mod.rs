@@ -76,7 +76,11 @@
 //! the curve, the wireframes are the projected surface points, the mesh's edges are drawn
 //! once each, the colour classes are the colouring's and proper, the tree edges are the
 //! tree's. `tests/suite/draw_cli.rs` and `draw_curves_cli.rs` check `compgeo draw` against
-//! the other commands.
+//! the other commands. `tests/suite/draw_steps.rs` and `draw_curve_steps.rs` read the step
+//! pages: one frame per trace frame with its counts, each frame's state drawn where the
+//! trace has it (the curve pages' levels mapped back exactly, the last point the curve's
+//! value from the Bernstein form or the B-spline basis, the last polygon the subdivision's
+//! result), and every page of the report's gallery parses.
 //!
 //! ```
 //! use compgeo::delaunay::{dual, incremental};
