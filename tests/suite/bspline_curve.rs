@@ -68,7 +68,7 @@ proptest! {
         prop_assert_eq!(c.arithmetic_operations, ((d - r) * (d - r + 1) / 2) as u64);
         let net = s.de_boor_trace(&u).unwrap();
         let last = net.last().unwrap();
-        prop_assert_eq!(&last.step.points, &[p.clone()]);
+        prop_assert_eq!(&last.step.points, std::slice::from_ref(&p));
         prop_assert_eq!(last.counts, c);
         let level0 = &net[0].step;
         prop_assert_eq!(level0.multiplicity, r);
@@ -106,8 +106,8 @@ proptest! {
                 // Boor net at u [PPB, §6.1].
                 let net = s.de_boor_trace(&u).unwrap();
                 let (mu, m) = (net[0].step.span, net[0].step.multiplicity);
-                for k in 1..=times {
-                    let level = &net[k].step.points;
+                for frame in &net[1..=times] {
+                    let (k, level) = (frame.step.level, &frame.step.points);
                     prop_assert_eq!(&r.control()[mu - d + k], &level[0]);
                     prop_assert_eq!(&r.control()[mu + times - k - m], level.last().unwrap());
                 }
