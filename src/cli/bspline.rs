@@ -296,14 +296,13 @@ fn run_typed<S: JsonScalar, const D: usize>(
             if *trace {
                 let net = s.de_boor_trace(&u)?;
                 let levels = net
-                    .levels()
                     .iter()
                     .enumerate()
-                    .map(|(k, level)| points(level, &format!("trace.levels[{k}]")))
+                    .map(|(k, f)| points(&f.step.points, &format!("trace.levels[{k}]")))
                     .collect::<Result<Vec<_>, _>>()?;
                 out["trace"] = json!({
-                    "first": net.first(),
-                    "multiplicity": net.multiplicity(),
+                    "first": net[0].step.first(),
+                    "multiplicity": net[0].step.multiplicity,
                     "levels": levels,
                 });
             }

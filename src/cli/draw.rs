@@ -20,10 +20,16 @@
 //! nothing else.
 //!
 //! `--steps` (hull: `jarvis`, `graham`, `monotone-chain`, `quickhull`; delaunay: `lawson`,
-//! `fortune`; graph: `--bfs S`, `--dfs S`, `--colour course`, `--mst prim`, `--mst kruskal`)
+//! `fortune`; `bezier --t T`: de Casteljau's scaffolding level by level; `bspline --u U`:
+//! de Boor's net level by level; `subdivide` with `--scheme lane-riesenfeld` or `chaikin`:
+//! the polygon after each doubling and pass of midpoints; graph: `--bfs S`, `--dfs S`,
+//! `--colour course`, `--mst prim`, `--mst kruskal`)
 //! writes the run as one self-contained HTML page instead, a picture per frame of the
 //! algorithm's own trace ([`crate::draw::StepPage`]), and prints `{"problem", "algorithm",
-//! "points", "frames", "bytes", "out"}` (`vertices` instead of `points` for a graph).
+//! "points", "frames", "bytes", "out"}` (`points`: the control points or polygon vertices
+//! of a curve; `vertices` instead of `points` for a graph). `--steps` on a curve without
+//! `--t` / `--u`, or on the four-point scheme (which has no trace), is a usage error, as is
+//! `--steps` on a graph without one of its traced algorithms.
 
 use super::beta::{beta_of, ControlArgs, ShapeArgs};
 use super::bezier::{CurveArgs as BezierArgs, JsonScalar};
@@ -35,7 +41,10 @@ use super::mesh::{parse_scheme, scheme_help};
 use super::nurbs::{nurbs_of, RationalArgs};
 use super::output::{print_json, print_text, write_file};
 use super::proximity::parse_numbers;
-use super::subdivide::{each_round, polygon_rows, scheme_title, topology, SubdivideArgs};
+use super::subdivide::{
+    each_round, lane_riesenfeld_degree, polygon_rows, scheme_name, scheme_title, topology,
+    SubdivideArgs,
+};
 use super::surface::{surface_of, NetArgs};
 use super::triangle::{patch_of, PatchArgs};
 use super::CliError;
@@ -60,6 +69,7 @@ use crate::mesh::{read_obj, subdivide_with, PolygonMesh, Scheme};
 use crate::proximity::{
     closest_pair_with, euclidean_mst_with, largest_empty_circle_with, ClosestPairAlgorithm,
 };
+use crate::spline::subdivision::lane_riesenfeld_trace;
 use crate::spline::{parse_scalar, Bezier};
 use clap::{Args, Subcommand};
 use serde_json::{json, Map, Value};
@@ -170,6 +180,10 @@ enum Problem {
         /// 1/3 (any t, also outside [0, 1])
         #[arg(long = "t", value_name = "T", allow_hyphen_values = true)]
         t: Option<String>,
+        /// Write de Casteljau's run at --t step by step as one HTML page: the control
+        /// polygon, each level of the scaffolding, the point b(t)
+        #[arg(long)]
+        steps: bool,
         #[command(flatten)]
         out: Out,
     },
@@ -186,6 +200,10 @@ enum Problem {
             allow_hyphen_values = true
         )]
         u: Option<String>,
+        /// Write de Boor's run at --u step by step as one HTML page: the control points that
+        /// matter, each level of the net, the point s(u)
+        #[arg(long)]
+        steps: bool,
         #[command(flatten)]
         out: Out,
     },
@@ -209,6 +227,10 @@ enum Problem {
     Subdivide {
         #[command(flatten)]
         scheme: SubdivideArgs,
+        /// Write the run step by step as one HTML page (lane-riesenfeld, chaikin): the
+        /// polygon after each doubling and each pass of midpoints
+        #[arg(long)]
+        steps: bool,
         #[command(flatten)]
         out: Out,
     },
@@ -334,6 +356,9 @@ pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
             );
         }
     }
+    if let Some((name, algorithm, points, page, out)) = curve_step_page(&args.problem)? {
+        return write_page(name, Some(&algorithm), ("points", points), &page, out);
+    }
     let mut summary = Map::new();
     let mut from_points = |common: &Common| -> Result<Picture, CliError> {
         let points = common.input.read()?;
@@ -375,7 +400,7 @@ pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
         Problem::EmptyCircle { common } => {
             ("empty-circle", None, &common.out, from_points(common)?)
         }
-        Problem::Bezier { curve, t, out } => {
+        Problem::Bezier { curve, t, out, .. } => {
             let rows = parse_number_arrays(&inline_or_stdin(&curve.control)?)?;
             let d = rows[0].len();
             let p = by_scalar_and_dimension!(
@@ -386,7 +411,7 @@ pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
             )?;
             ("bezier", None, &out.out, p)
         }
-        Problem::Bspline { curve, u, out } => {
+        Problem::Bspline { curve, u, out, .. } => {
             let rows = parse_number_arrays(&inline_or_stdin(&curve.control)?)?;
             let d = rows[0].len();
             let p = by_scalar_and_dimension!(
@@ -423,7 +448,7 @@ pub(super) fn run(args: DrawArgs) -> Result<(), CliError> {
             )?;
             ("beta", None, &out.out, p)
         }
-        Problem::Subdivide { scheme, out } => {
+        Problem::Subdivide { scheme, out, .. } => {
             let rows = polygon_rows(scheme)?;
             let d = rows[0].len();
             let p = by_scalar_and_dimension!(
@@ -559,6 +584,118 @@ fn step_page(problem: &Problem, set: &PointSet<'_>) -> Result<Option<StepPage>, 
         },
         _ => None,
     })
+}
+
+/// A curve's step page when `--steps` asks for one: the problem's name, the algorithm, the
+/// number of control points, the page and where it goes.
+type CurvePage<'a> = (&'static str, String, usize, StepPage, &'a Path);
+
+/// The step page of a curve problem when `--steps` asks for one, from the algorithm's own
+/// trace; `--steps` without the parameter the trace needs, or on a scheme with no trace, is
+/// a usage error.
+fn curve_step_page(problem: &Problem) -> Result<Option<CurvePage<'_>>, CliError> {
+    let needs = |option: &str, algorithm: &str| {
+        CliError::Usage(format!(
+            "--steps: {algorithm}'s steps are at one parameter; give it with {option}"
+        ))
+    };
+    Ok(match problem {
+        Problem::Bezier {
+            curve,
+            t,
+            out,
+            steps: true,
+        } => {
+            let t = t.as_deref().ok_or_else(|| needs("--t", "de Casteljau"))?;
+            let rows = parse_number_arrays(&inline_or_stdin(&curve.control)?)?;
+            let d = rows[0].len();
+            let page = by_scalar_and_dimension!(
+                curve.exact,
+                d,
+                "control points",
+                de_casteljau_page(&rows, t)
+            )?;
+            let name = "de-casteljau".to_string();
+            Some(("bezier", name, rows.len(), page, &out.out))
+        }
+        Problem::Bspline {
+            curve,
+            u,
+            out,
+            steps: true,
+        } => {
+            let u = u.as_deref().ok_or_else(|| needs("--u", "de Boor"))?;
+            let rows = parse_number_arrays(&inline_or_stdin(&curve.control)?)?;
+            let d = rows[0].len();
+            let page = by_scalar_and_dimension!(
+                curve.exact,
+                d,
+                "control points",
+                de_boor_page(curve, &rows, u)
+            )?;
+            Some(("bspline", "de-boor".to_string(), rows.len(), page, &out.out))
+        }
+        Problem::Subdivide {
+            scheme,
+            out,
+            steps: true,
+        } => {
+            let rows = polygon_rows(scheme)?;
+            let d = rows[0].len();
+            let page = by_scalar_and_dimension!(
+                scheme.exact,
+                d,
+                "points",
+                lane_riesenfeld_page(scheme, &rows)
+            )?;
+            Some(("subdivide", scheme_name(scheme), rows.len(), page, &out.out))
+        }
+        _ => None,
+    })
+}
+
+/// De Casteljau's step page at `t`.
+fn de_casteljau_page<S: JsonScalar, const D: usize>(
+    rows: &[Vec<String>],
+    t: &str,
+) -> Result<StepPage, CliError> {
+    let b = Bezier::new(to_points::<S, D>(rows, |i| format!("control point {i}"))?)?;
+    let t: S = parse_scalar(t, "t")?;
+    Ok(draw::de_casteljau_steps(
+        &b,
+        &t,
+        &b.de_casteljau_trace(&t)?,
+    )?)
+}
+
+/// De Boor's step page at `u`.
+fn de_boor_page<S: JsonScalar, const D: usize>(
+    args: &BsplineArgs,
+    rows: &[Vec<String>],
+    u: &str,
+) -> Result<StepPage, CliError> {
+    let s = curve_of::<S, D>(args, rows)?;
+    let u: S = parse_scalar(u, "u")?;
+    Ok(draw::de_boor_steps(&s, &u, &s.de_boor_trace(&u)?)?)
+}
+
+/// The Lane–Riesenfeld step page of the subdivision's polygon and rounds.
+fn lane_riesenfeld_page<S: JsonScalar, const D: usize>(
+    args: &SubdivideArgs,
+    rows: &[Vec<String>],
+) -> Result<StepPage, CliError> {
+    let degree = lane_riesenfeld_degree(args).ok_or_else(|| {
+        CliError::Usage(format!(
+            "--steps: no step trace for {}; the traced schemes are lane-riesenfeld and chaikin",
+            scheme_name(args)
+        ))
+    })?;
+    let polygon = to_points::<S, D>(rows, |i| format!("point {i}"))?;
+    let topology = topology(args);
+    let trace = lane_riesenfeld_trace(&polygon, degree, args.rounds, topology)?;
+    Ok(draw::lane_riesenfeld_steps(
+        &polygon, degree, topology, &trace,
+    )?)
 }
 
 /// Writes a step page to `out` (`-`: stdout, and nothing else) and prints its summary, with

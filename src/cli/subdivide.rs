@@ -38,7 +38,7 @@ pub(super) struct SubdivideArgs {
     degree: Option<usize>,
     /// How many rounds (each doubles the vertices)
     #[arg(long, default_value_t = 1)]
-    rounds: usize,
+    pub(super) rounds: usize,
     /// The polygon is closed (its last vertex joined to its first); else it is open
     #[arg(long)]
     closed: bool,
@@ -90,6 +90,24 @@ pub(super) fn scheme_title(args: &SubdivideArgs) -> String {
         Scheme::LaneRiesenfeld => format!("Lane–Riesenfeld of degree {}", args.degree.unwrap_or(3)),
         Scheme::Chaikin => "Chaikin".to_string(),
         Scheme::FourPoint => "four-point scheme".to_string(),
+    }
+}
+
+/// The scheme's name on the command line (`lane-riesenfeld`, `chaikin`, `four-point`).
+pub(super) fn scheme_name(args: &SubdivideArgs) -> String {
+    args.scheme
+        .to_possible_value()
+        .map(|v| v.get_name().to_string())
+        .unwrap_or_default()
+}
+
+/// The degree of a Lane–Riesenfeld scheme (Chaikin's is 2); `None` for the four-point
+/// scheme.
+pub(super) fn lane_riesenfeld_degree(args: &SubdivideArgs) -> Option<usize> {
+    match args.scheme {
+        Scheme::LaneRiesenfeld => Some(args.degree.unwrap_or(3)),
+        Scheme::Chaikin => Some(2),
+        Scheme::FourPoint => None,
     }
 }
 

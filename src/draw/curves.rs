@@ -10,7 +10,8 @@ use super::{bounds_of, project, Layer, Picture, Role};
 use crate::error::Result;
 use crate::geometry::Point2;
 use crate::spline::subdivision::Topology;
-use crate::spline::{BSpline, BetaSpline, Bezier, Curve, DeBoorTrace, Nurbs, Point, Scalar};
+use crate::spline::{BSpline, BetaSpline, Bezier, Curve, DeBoorLevel, Nurbs, Point, Scalar};
+use crate::trace::Frame;
 
 /// How many straight pieces a curve is drawn with per piece of its parameter: per knot
 /// interval of a B-spline or NURBS, per segment of a Beta-spline, over [0, 1] for a Bézier
@@ -104,13 +105,12 @@ pub fn bezier<S: Scalar, const D: usize>(curve: &Bezier<S, D>, t: Option<&S>) ->
     );
     control_polygon(&mut picture, &control, false);
     let inner = levels.get(1..n).unwrap_or(&[]);
-    picture.polylines(
-        &Layer::new("scaffolding", Role::Triangulation).legend("de Casteljau's levels"),
-        inner.iter().map(|level| level.iter().copied()),
-    );
-    picture.points(
-        &Layer::new("scaffolding-points", Role::Triangulation),
-        inner.iter().flatten().copied(),
+    net_layers(
+        &mut picture,
+        ["scaffolding", "scaffolding-points"],
+        Role::Triangulation,
+        "de Casteljau's levels",
+        inner,
     );
     curve_layer(&mut picture, &samples);
     control_points(&mut picture, &control);
@@ -158,7 +158,7 @@ pub fn bspline<S: Scalar, const D: usize>(curve: &BSpline<S, D>, u: Option<&S>) 
         curve.control().len()
     );
     let knots = curve.knots().knots();
-    spline_picture(&title, curve, curve.control(), knots, net.as_ref(), u)
+    spline_picture(&title, curve, curve.control(), knots, net.as_deref(), u)
 }
 
 /// The NURBS curve as [`bspline`] draws a B-spline (without a de Boor net): the curve, its
@@ -328,30 +328,15 @@ fn spline_picture<S: Scalar, const D: usize>(
     curve: &impl Curve<S, D>,
     control: &[Point<S, D>],
     knots: &[S],
-    net: Option<&DeBoorTrace<S, D>>,
+    net: Option<&[Frame<DeBoorLevel<S, D>>]>,
     u: Option<&S>,
 ) -> Result<Picture> {
-    // The distinct knots of the domain [t_d, t_n], ascending (the knot vector is sorted).
-    let mut breaks: Vec<S> = match curve.domain().bounds() {
-        Some((start, end)) => knots
-            .iter()
-            .filter(|&k| start <= k && k <= end)
-            .cloned()
-            .collect(),
-        None => Vec::new(),
-    };
-    breaks.dedup();
-    let samples = curve_points(curve, &breaks)?;
-    let knots = breaks
-        .iter()
-        .map(|u| project(&curve.eval(u)?))
-        .collect::<Result<Vec<_>>>()?;
+    let (samples, knots) = spline_samples(curve, knots)?;
     let control = projected(control)?;
     let levels = match net {
         Some(net) => net
-            .levels()
             .iter()
-            .map(|level| projected(level))
+            .map(|frame| projected(&frame.step.points))
             .collect::<Result<Vec<_>>>()?,
         None => Vec::new(),
     };
@@ -366,13 +351,12 @@ fn spline_picture<S: Scalar, const D: usize>(
     );
     control_polygon(&mut picture, &control, false);
     let inner = &levels[..levels.len().saturating_sub(1)];
-    picture.polylines(
-        &Layer::new("de-boor-net", Role::Triangulation).legend("de Boor's net"),
-        inner.iter().map(|level| level.iter().copied()),
-    );
-    picture.points(
-        &Layer::new("de-boor-points", Role::Triangulation),
-        inner.iter().flatten().copied(),
+    net_layers(
+        &mut picture,
+        ["de-boor-net", "de-boor-points"],
+        Role::Triangulation,
+        "de Boor's net",
+        inner,
     );
     curve_layer(&mut picture, &samples);
     picture.points(
@@ -389,13 +373,56 @@ fn spline_picture<S: Scalar, const D: usize>(
     Ok(picture)
 }
 
+/// A spline curve's points at [`sample_parameters`] of the distinct knots of its domain
+/// [t_d, t_n], and its points at those knots, projected.
+pub(super) fn spline_samples<S: Scalar, const D: usize>(
+    curve: &impl Curve<S, D>,
+    knots: &[S],
+) -> Result<(Vec<Point2>, Vec<Point2>)> {
+    // The distinct knots of the domain, ascending (the knot vector is sorted).
+    let mut breaks: Vec<S> = match curve.domain().bounds() {
+        Some((start, end)) => knots
+            .iter()
+            .filter(|&k| start <= k && k <= end)
+            .cloned()
+            .collect(),
+        None => Vec::new(),
+    };
+    breaks.dedup();
+    let samples = curve_points(curve, &breaks)?;
+    let at_knots = breaks
+        .iter()
+        .map(|u| project(&curve.eval(u)?))
+        .collect::<Result<Vec<_>>>()?;
+    Ok((samples, at_knots))
+}
+
+/// The levels of a de Casteljau or de Boor scheme: each level's polyline in the layer
+/// `names[0]` (with the legend entry) and all their points as dots in `names[1]`.
+pub(super) fn net_layers(
+    picture: &mut Picture,
+    names: [&str; 2],
+    role: Role,
+    legend: &str,
+    levels: &[Vec<Point2>],
+) {
+    picture.polylines(
+        &Layer::new(names[0], role).legend(legend),
+        levels.iter().map(|level| level.iter().copied()),
+    );
+    picture.points(
+        &Layer::new(names[1], role),
+        levels.iter().flatten().copied(),
+    );
+}
+
 /// A parameter for a title, to six significant digits.
-fn parameter<S: Scalar>(t: &S) -> String {
+pub(super) fn parameter<S: Scalar>(t: &S) -> String {
     super::value(crate::geometry::WideFloat::from(t.to_f64()))
 }
 
 /// The curve's points at [`sample_parameters`] of `breaks`, projected.
-fn curve_points<S: Scalar, const D: usize>(
+pub(super) fn curve_points<S: Scalar, const D: usize>(
     curve: &impl Curve<S, D>,
     breaks: &[S],
 ) -> Result<Vec<Point2>> {
@@ -406,12 +433,12 @@ fn curve_points<S: Scalar, const D: usize>(
 }
 
 /// The points, projected.
-fn projected<S: Scalar, const D: usize>(points: &[Point<S, D>]) -> Result<Vec<Point2>> {
+pub(super) fn projected<S: Scalar, const D: usize>(points: &[Point<S, D>]) -> Result<Vec<Point2>> {
     points.iter().map(project).collect()
 }
 
 /// A picture whose frame holds every point of `sets`, sized for `count` points.
-fn frame_of<'a>(
+pub(super) fn frame_of<'a>(
     title: &str,
     sets: impl IntoIterator<Item = &'a Vec<Point2>>,
     count: usize,
@@ -421,13 +448,13 @@ fn frame_of<'a>(
 }
 
 /// The control polygon layer (open or closed).
-fn control_polygon(picture: &mut Picture, control: &[Point2], closed: bool) {
+pub(super) fn control_polygon(picture: &mut Picture, control: &[Point2], closed: bool) {
     let layer = Layer::new("control-polygon", Role::Construction).legend("control polygon");
     draw_polygon(picture, &layer, control, closed);
 }
 
 /// A polygon, open or closed, as one subpath.
-fn draw_polygon(picture: &mut Picture, layer: &Layer, polygon: &[Point2], closed: bool) {
+pub(super) fn draw_polygon(picture: &mut Picture, layer: &Layer, polygon: &[Point2], closed: bool) {
     if closed {
         picture.polygons(layer, [polygon.iter().copied()]);
     } else {
@@ -436,7 +463,7 @@ fn draw_polygon(picture: &mut Picture, layer: &Layer, polygon: &[Point2], closed
 }
 
 /// The curve's polyline.
-fn curve_layer(picture: &mut Picture, samples: &[Point2]) {
+pub(super) fn curve_layer(picture: &mut Picture, samples: &[Point2]) {
     picture.polylines(
         &Layer::new("curve", Role::Result).legend("curve"),
         [samples.iter().copied()],
@@ -444,7 +471,7 @@ fn curve_layer(picture: &mut Picture, samples: &[Point2]) {
 }
 
 /// The control points as dots, numbered from 0 when the picture shows labels.
-fn control_points(picture: &mut Picture, control: &[Point2]) {
+pub(super) fn control_points(picture: &mut Picture, control: &[Point2]) {
     picture.points(
         &Layer::new("control-points", Role::Input),
         control.iter().copied(),

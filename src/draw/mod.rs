@@ -26,6 +26,7 @@
 //! | [`StepPage`], [`StepFrame`] | a run as one self-contained HTML page, a picture per step, a slider and keys | `steps.rs` |
 //! | [`jarvis_steps`], [`graham_steps`], [`monotone_chain_steps`], [`quickhull_steps`], [`lawson_steps`] | step pages of the traced hulls and of Lawson's flips, from the [`trace`](crate::trace) frames | `hull_steps.rs` |
 //! | [`fortune_steps`] | the step page of Fortune's sweep: the sweep line, the beach line's arcs, the triangles and Voronoi vertices so far, each event | `fortune_steps.rs` |
+//! | [`de_casteljau_steps`], [`de_boor_steps`], [`lane_riesenfeld_steps`] | step pages of the curve traces: de Casteljau's scaffolding and de Boor's net level by level over the curve, the Lane–Riesenfeld polygon after each doubling and pass over the original | `curve_steps.rs` |
 //! | [`search_steps`], [`colouring_steps`], [`prim_steps`], [`kruskal_steps`] | step pages of breadth- and depth-first search (Q, the vertices reached, the tree so far), the course's greedy colouring (the colours so far, the neighbours that ruled colours out) and Prim's and Kruskal's trees (the tree so far, each edge accepted or rejected), drawn by the body of [`graph`] | `graph_steps.rs` |
 //!
 //! A new kind of picture is a new file that builds a [`Picture`] from its own results,
@@ -76,12 +77,16 @@
 //! the curve, the wireframes are the projected surface points, the mesh's edges are drawn
 //! once each, the colour classes are the colouring's and proper, the tree edges are the
 //! tree's. `tests/suite/draw_cli.rs` and `draw_curves_cli.rs` check `compgeo draw` against
-//! the other commands.
-//! `tests/suite/draw_graph_steps.rs` reads the graph step pages back: one frame per trace
-//! frame with its counts, Q and the tree so far as the trace has them, each colouring frame a
-//! prefix of the plain colouring, Kruskal's drawn edges a forest in every frame (an edge
-//! rejected exactly when its ends are already joined), and the last frame the plain
-//! function's tree or colouring with the counted run's counts.
+//! the other commands. `tests/suite/draw_steps.rs` and `draw_curve_steps.rs` read the step
+//! pages: one frame per trace frame with its counts, each frame's state drawn where the
+//! trace has it (the curve pages' levels mapped back exactly, the last point the curve's
+//! value from the Bernstein form or the B-spline basis, the last polygon the subdivision's
+//! result), and every page of the report's gallery parses.
+//! `tests/suite/draw_graph_steps.rs` reads the graph step pages back the same way: Q and the
+//! tree so far as the trace has them, each colouring frame a prefix of the plain colouring,
+//! Kruskal's drawn edges a forest in every frame (an edge rejected exactly when its ends are
+//! already joined), and the last frame the plain function's tree or colouring with the
+//! counted run's counts.
 //!
 //! ```
 //! use compgeo::delaunay::{dual, incremental};
@@ -105,6 +110,7 @@
 //! # Ok::<(), compgeo::Error>(())
 //! ```
 
+mod curve_steps;
 mod curves;
 mod delaunay;
 mod fortune_steps;
@@ -119,6 +125,7 @@ mod steps;
 mod surfaces;
 mod svg;
 
+pub use curve_steps::{de_boor_steps, de_casteljau_steps, lane_riesenfeld_steps};
 pub use curves::{beta, bezier, bspline, nurbs, sample_parameters, subdivision, SAMPLES_PER_PIECE};
 pub use delaunay::{delaunay, voronoi};
 pub use fortune_steps::fortune_steps;

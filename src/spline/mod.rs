@@ -28,7 +28,7 @@
 //! | `parse.rs` | [`parse_scalar`]: exact reading of integers, decimals and fractions, bounded by [`MAX_EXACT_DIGITS`] and [`MAX_EXACT_EXPONENT`] |
 //! | `curve.rs` | the curve traits and [`Domain`] |
 //! | [`bezier`] | Bernstein basis, [`Bezier`] and its algorithms (one per file), [`Reparametrised`], [`CompositeBezier`] and its joins, intersection, the evaluation schemes ([`BezierEvaluation`]) |
-//! | [`bspline`] | [`KnotVector`] (validation, builders, multiplicities, domain, span search, the SPL adapter), the basis ([`Basis`], [`BasisDerivatives`]), [`BSpline`] curves with de Boor's algorithm ([`DeBoorTrace`]) and Boehm's insertion |
+//! | [`bspline`] | [`KnotVector`] (validation, builders, multiplicities, domain, span search, the SPL adapter), the basis ([`Basis`], [`BasisDerivatives`]), [`BSpline`] curves with de Boor's algorithm (its net as [`DeBoorLevel`] frames) and Boehm's insertion |
 //! | [`beta`] | cubic Beta-splines: [`BetaParameters`] (β₁, β₂, the normaliser δ), the basis and its Bernstein matrix C, [`BetaSpline`] curves, [`SubdivisionMatrices`] S_L = C⁻¹S_Lᴮ C and S_R = C⁻¹S_Rᴮ C at any c, recursive subdivision, the β-continuity check [`is_beta_continuous`] |
 //! | [`rational`] | [`RationalBezier`] and [`Nurbs`] in homogeneous coordinates (de Casteljau, de Boor, insertion, derivatives by the quotient rule), exact conics ([`Nurbs::circle`], [`RationalBezier::circular_arc`], [`ConicKind`]) |
 //! | [`interpolate`] | polynomial, Lagrange/Aitken, Newton and Hermite interpolation, cubic and quadratic splines, least squares, parameterisations |
@@ -80,7 +80,7 @@ pub use bezier::{
     Intersection, Join, Reparametrised, MAX_FLATTEN_SEGMENTS, MAX_INTERSECTION_PAIRS,
 };
 pub use bspline::{
-    BSpline, BandMatrix, Basis, BasisDerivatives, DeBoorTrace, KnotVector, ParameterFit,
+    BSpline, BandMatrix, Basis, BasisDerivatives, DeBoorLevel, KnotVector, ParameterFit,
 };
 pub use curve::{Curve, CurveDerivative, Domain, Subsegment};
 pub use frenet::{

@@ -117,11 +117,15 @@ proptest! {
         prop_assert_eq!(out["span"].as_u64().unwrap() as usize, s.knots().span(&u).unwrap());
         let net = s.de_boor_trace(&u).unwrap();
         let levels = out["trace"]["levels"].as_array().unwrap();
-        prop_assert_eq!(levels.len(), net.levels().len());
-        for (got, want) in levels.iter().zip(net.levels()) {
-            prop_assert_eq!(&exact_points(got), want);
+        prop_assert_eq!(levels.len(), net.len());
+        for (got, want) in levels.iter().zip(&net) {
+            prop_assert_eq!(&exact_points(got), &want.step.points);
         }
-        prop_assert_eq!(out["trace"]["first"].as_u64().unwrap() as usize, net.first());
+        prop_assert_eq!(out["trace"]["first"].as_u64().unwrap() as usize, net[0].step.first());
+        prop_assert_eq!(
+            out["trace"]["multiplicity"].as_u64().unwrap() as usize,
+            net[0].step.multiplicity
+        );
         let f = run_op("eval", &s, &["--u", &ut], false);
         close(&f["point"], &want);
         prop_assert!(f.get("trace").is_none());

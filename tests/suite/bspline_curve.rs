@@ -67,11 +67,17 @@ proptest! {
         let r = skipped(s.knots(), &u);
         prop_assert_eq!(c.arithmetic_operations, ((d - r) * (d - r + 1) / 2) as u64);
         let net = s.de_boor_trace(&u).unwrap();
-        prop_assert_eq!(net.point(), &p);
-        prop_assert_eq!(net.multiplicity(), r);
-        prop_assert_eq!(net.level(0), &s.control()[net.first()..=net.span() - r]);
-        for (k, level) in net.levels().iter().enumerate() {
-            prop_assert_eq!(level.len(), d - r + 1 - k);
+        let last = net.last().unwrap();
+        prop_assert_eq!(&last.step.points, std::slice::from_ref(&p));
+        prop_assert_eq!(last.counts, c);
+        let level0 = &net[0].step;
+        prop_assert_eq!(level0.multiplicity, r);
+        prop_assert_eq!(level0.span, s.knots().span(&u).unwrap());
+        prop_assert_eq!(&level0.points[..], &s.control()[level0.first()..=level0.span - r]);
+        for (k, f) in net.iter().enumerate() {
+            prop_assert_eq!(f.step.level, k);
+            prop_assert_eq!(f.step.points.len(), d - r + 1 - k);
+            prop_assert_eq!(f.step.first(), level0.first() + k);
         }
     }
 
@@ -99,9 +105,9 @@ proptest! {
                 // The new control points are the borders of the first r levels of the de
                 // Boor net at u [PPB, §6.1].
                 let net = s.de_boor_trace(&u).unwrap();
-                let (mu, m) = (net.span(), net.multiplicity());
-                for k in 1..=times {
-                    let level = net.level(k);
+                let (mu, m) = (net[0].step.span, net[0].step.multiplicity);
+                for frame in &net[1..=times] {
+                    let (k, level) = (frame.step.level, &frame.step.points);
                     prop_assert_eq!(&r.control()[mu - d + k], &level[0]);
                     prop_assert_eq!(&r.control()[mu + times - k - m], level.last().unwrap());
                 }

@@ -21,7 +21,7 @@ use compgeo::trace::Frame;
 use compgeo::Error;
 
 /// One frame as the page shows it.
-pub(crate) struct ShownFrame {
+pub struct ShownFrame {
     pub step: usize,
     pub kind: String,
     pub hidden: bool,
@@ -31,7 +31,7 @@ pub(crate) struct ShownFrame {
 }
 
 /// Parses a page as XML and returns its frames, checking the controls on the way.
-pub(crate) fn frames_of(html: &str) -> Vec<ShownFrame> {
+pub fn frames_of(html: &str) -> Vec<ShownFrame> {
     // `<!DOCTYPE html>` is a DTD to an XML parser.
     let options = roxmltree::ParsingOptions {
         allow_dtd: true,
@@ -106,7 +106,7 @@ pub(crate) fn frames_of(html: &str) -> Vec<ShownFrame> {
 }
 
 /// The non-zero counts, as the page lists them.
-pub(crate) fn listed(counts: &Counts) -> Vec<(String, u64)> {
+pub fn listed(counts: &Counts) -> Vec<(String, u64)> {
     Operation::ALL
         .iter()
         .filter(|&&op| counts.get(op) > 0)

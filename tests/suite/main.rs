@@ -36,6 +36,7 @@ mod delaunay;
 mod delaunay_builders;
 mod draw;
 mod draw_cli;
+mod draw_curve_steps;
 mod draw_curves;
 mod draw_curves_cli;
 mod draw_graph_steps;

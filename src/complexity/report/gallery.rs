@@ -3,8 +3,9 @@
 //!
 //! Every picture is the [`draw`](crate::draw) module's, of the library's own result: the
 //! point problems on the same points from [`gen::points`] (seed 1, the report's default), so
-//! the pictures can be compared; the curves on seeded control polygons; the surface, the mesh
-//! and the graph on fixed or generated inputs. The files go to `DIR/gallery/`; the page links
+//! the pictures can be compared; the curves on seeded control polygons (also for the step
+//! pages of de Casteljau, de Boor and Lane–Riesenfeld); the surface, the mesh and the graph
+//! on fixed or generated inputs. The files go to `DIR/gallery/`; the page links
 //! them.
 
 use std::fmt::Write as _;
@@ -30,7 +31,7 @@ use crate::mesh::{subdivide, Scheme};
 use crate::proximity::{closest_pair, euclidean_mst, largest_empty_circle, ClosestPairAlgorithm};
 use crate::spline::beta::{BetaParameters, BetaSpline};
 use crate::spline::bspline::{BSpline, KnotVector};
-use crate::spline::subdivision::{lane_riesenfeld, Topology};
+use crate::spline::subdivision::{lane_riesenfeld, lane_riesenfeld_trace, Topology};
 use crate::spline::{Bezier, Point};
 use crate::surface::{BezierPatch, ControlNet};
 use crate::Result;
@@ -282,6 +283,22 @@ fn step_pages() -> Vec<(&'static str, &'static str, MakePicture)> {
             let set = PointSet::new(&pts)?;
             Ok(draw::fortune_steps(&set, &fortune_trace(&pts)?)?.to_html())
         }),
+        ("bezier", "de-casteljau", || {
+            let curve = Bezier::new(control_polygon(5))?;
+            let t = 1.0 / 3.0;
+            Ok(draw::de_casteljau_steps(&curve, &t, &curve.de_casteljau_trace(&t)?)?.to_html())
+        }),
+        ("bspline", "de-boor", || {
+            let control = control_polygon(7);
+            let knots = KnotVector::clamped_uniform(3, control.len(), 0.0, 1.0)?;
+            let curve = BSpline::new(control, knots)?;
+            Ok(draw::de_boor_steps(&curve, &0.4, &curve.de_boor_trace(&0.4)?)?.to_html())
+        }),
+        ("subdivision", "lane-riesenfeld", || {
+            let polygon = control_polygon(6);
+            let trace = lane_riesenfeld_trace(&polygon, 3, 2, Topology::Closed)?;
+            Ok(draw::lane_riesenfeld_steps(&polygon, 3, Topology::Closed, &trace)?.to_html())
+        }),
         ("search", "bfs", || search_page(SearchAlgorithm::Bfs)),
         ("search", "dfs", || search_page(SearchAlgorithm::Dfs)),
         ("colour", "course", || {
@@ -339,9 +356,7 @@ fn gallery_html(items: &[Item]) -> String {
          <code>compgeo draw</code>: the point problems on the same {PICTURE_POINTS} points of the \
          uniform-disk distribution (seed 1), the curves on seeded control polygons, the surface, \
          the mesh and the graph on fixed inputs. Each step page is the run of an algorithm on \
-         {STEP_POINTS} such points (the graph algorithms on small fixed graphs), a picture per frame of its trace (<code>compgeo draw \
-         --steps</code>; ← and → step through it). <a href=\"index.html\">Back to the \
-         report</a>.</p>\n<h2>Pictures</h2>\n"
+         {STEP_POINTS} such points (the curve algorithms on seeded control polygons, the graph          algorithms on small fixed graphs), a picture per frame of its trace (<code>compgeo draw          --steps</code>; ← and → step through it). <a href=\"index.html\">Back to the          report</a>.</p>\n<h2>Pictures</h2>\n"
     );
     for item in items.iter().filter(|i| !i.steps) {
         let _ = writeln!(

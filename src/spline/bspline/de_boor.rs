@@ -1,5 +1,5 @@
 //! De Boor's algorithm: the point s(u) of a B-spline curve by repeated affine combinations of
-//! its control points, and the whole scheme (the de Boor net) as a value.
+//! its control points, and its trace (the de Boor net, level by level).
 //!
 //! The problem: the point s(u) = Σ cᵢ Nᵢ(u) without computing the basis. The idea: on the span
 //! t_μ ≤ u < t_{μ+1} only c_{μ−d}, …, c_μ matter, and the recursion of the basis regroups the
@@ -25,9 +25,10 @@
 
 use super::BSpline;
 use crate::complexity::{on, Bound, Declaration};
-use crate::count::{Counter, NoCount, Operation};
+use crate::count::{Counter, Counts, NoCount, Operation};
 use crate::spline::bspline::basis::affine;
 use crate::spline::scalar::{Point, Scalar};
+use crate::trace::{Frame, NoObserver, Observer, Recorder, TraceSize};
 use crate::Result;
 
 /// De Boor's evaluation, declared.
@@ -45,112 +46,60 @@ pub(crate) const DE_BOOR: Declaration = Declaration {
     claims: &[on("random-degree", Bound::Quadratic, Operation::ArithmeticOperations), on("random-control", Bound::Log, Operation::Comparisons)],
 };
 
-/// The whole scheme of de Boor's algorithm at one parameter (the de Boor net, as the course
-/// draws it [PPB, §5.4, Fig. 5.6]): every intermediate point, level by level.
+/// One level of de Boor's scheme at one parameter (a row of the de Boor net, as the course
+/// draws it [PPB, §5.4, Fig. 5.6]), as [`BSpline::de_boor_trace`] records it.
 ///
 /// Level k holds the points c_i^k for i = μ − d + k, …, μ − r (μ the span, r the
 /// multiplicity of u as a knot, at most d): level 0 is the control points the parameter
-/// depends on, the last level the single point s(u). By [PPB, §6.1] the first and the last
-/// point of each level are the new control points after inserting u.
+/// depends on, the last level d − r the single point s(u). By [PPB, §6.1] the first and the
+/// last point of each level are the new control points after inserting u.
 ///
 /// ```
 /// use compgeo::spline::{BSpline, KnotVector, Point};
 ///
-/// // The uniform quadratic on 0, 1, …, 5 at u = 2.5: two levels.
+/// // The uniform quadratic on 0, 1, …, 5 at u = 2.5: levels 0, 1 and 2.
 /// let t = KnotVector::new(2, vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0])?;
 /// let c = vec![Point::new([0.0]), Point::new([4.0]), Point::new([8.0])];
-/// let net = BSpline::new(c, t)?.de_boor_trace(&2.5)?;
-/// assert_eq!((net.span(), net.multiplicity(), net.first()), (2, 0, 0));
-/// assert_eq!(net.levels().len(), 3);
-/// assert_eq!(net.level(1), [Point::new([3.0]), Point::new([5.0])]);
-/// assert_eq!(net.point(), &Point::new([4.0]));
+/// let frames = BSpline::new(c, t)?.de_boor_trace(&2.5)?;
+/// let level = &frames[1].step;
+/// assert_eq!((level.level, level.span, level.multiplicity, level.first()), (1, 2, 0, 1));
+/// assert_eq!(level.points, [Point::new([3.0]), Point::new([5.0])]);
+/// assert_eq!(frames[2].step.points, [Point::new([4.0])]);
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
-pub struct DeBoorTrace<S, const D: usize> {
-    span: usize,
-    multiplicity: usize,
-    levels: Vec<Vec<Point<S, D>>>,
+pub struct DeBoorLevel<S, const D: usize> {
+    /// The level k, from 0 (the control points c_{μ−d}, …, c_{μ−r}) to d − r (the point
+    /// s(u)).
+    pub level: usize,
+    /// The span μ of the parameter (t_μ ≤ u < t_{μ+1}, or the last non-empty span at t_n).
+    pub span: usize,
+    /// The multiplicity r of u as the knot t_μ (0 when u is not a knot, and at the end of
+    /// the domain), at most d: the levels the scheme skips.
+    pub multiplicity: usize,
+    /// The d − r + 1 − k points c^k_{μ−d+k}, …, c^k_{μ−r} of the level.
+    pub points: Vec<Point<S, D>>,
 }
 
-impl<S: Scalar, const D: usize> DeBoorTrace<S, D> {
-    /// The span μ of the parameter (t_μ ≤ u < t_{μ+1}, or the last non-empty span at t_n).
+impl<S, const D: usize> DeBoorLevel<S, D> {
+    /// The index i of the level's first point c_i^k: μ − d + k (at level 0, the index of the
+    /// first control point the point s(u) depends on).
     ///
     /// ```
     /// # use compgeo::spline::{BSpline, KnotVector, Point};
     /// let s = BSpline::new(vec![Point::new([0.0]); 3], KnotVector::clamped_uniform(1, 3, 0.0, 2.0)?)?;
-    /// assert_eq!(s.de_boor_trace(&1.5)?.span(), 2);
-    /// # Ok::<(), compgeo::Error>(())
-    /// ```
-    pub fn span(&self) -> usize {
-        self.span
-    }
-
-    /// How many levels were skipped: the multiplicity r of u as a knot t_μ = u (0 when u is
-    /// not a knot, and at the end of the domain), at most d.
-    ///
-    /// ```
-    /// # use compgeo::spline::{BSpline, KnotVector, Point};
-    /// let s = BSpline::new(vec![Point::new([0.0]); 3], KnotVector::clamped_uniform(1, 3, 0.0, 2.0)?)?;
-    /// assert_eq!(s.de_boor_trace(&1.0)?.multiplicity(), 1);
-    /// # Ok::<(), compgeo::Error>(())
-    /// ```
-    pub fn multiplicity(&self) -> usize {
-        self.multiplicity
-    }
-
-    /// The index μ − d of the first control point of level 0 (the point j of level k is
-    /// c^k_{first + k + j}).
-    ///
-    /// ```
-    /// # use compgeo::spline::{BSpline, KnotVector, Point};
-    /// let s = BSpline::new(vec![Point::new([0.0]); 3], KnotVector::clamped_uniform(1, 3, 0.0, 2.0)?)?;
-    /// assert_eq!(s.de_boor_trace(&1.5)?.first(), 1);
+    /// let frames = s.de_boor_trace(&1.5)?;
+    /// assert_eq!((frames[0].step.first(), frames[1].step.first()), (1, 2));
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn first(&self) -> usize {
-        self.span + 1 - self.levels[0].len() - self.multiplicity
+        self.span + 1 - self.multiplicity - self.points.len()
     }
+}
 
-    /// The levels 0, …, d − r, each one point shorter than the one before.
-    ///
-    /// ```
-    /// # use compgeo::spline::{BSpline, KnotVector, Point};
-    /// let s = BSpline::new(vec![Point::new([0.0]); 4], KnotVector::clamped_uniform(3, 4, 0.0, 1.0)?)?;
-    /// let lengths: Vec<usize> = s.de_boor_trace(&0.5)?.levels().iter().map(Vec::len).collect();
-    /// assert_eq!(lengths, [4, 3, 2, 1]);
-    /// # Ok::<(), compgeo::Error>(())
-    /// ```
-    pub fn levels(&self) -> &[Vec<Point<S, D>>] {
-        &self.levels
-    }
-
-    /// The points c^k_{μ−d+k}, …, c^k_{μ−r} of level k.
-    ///
-    /// # Panics
-    ///
-    /// If `k` exceeds d − r (the last level).
-    ///
-    /// ```
-    /// # use compgeo::spline::{BSpline, KnotVector, Point};
-    /// let s = BSpline::new(vec![Point::new([0.0]), Point::new([2.0])], KnotVector::clamped_uniform(1, 2, 0.0, 1.0)?)?;
-    /// assert_eq!(s.de_boor_trace(&0.25)?.level(1), [Point::new([0.5])]);
-    /// # Ok::<(), compgeo::Error>(())
-    /// ```
-    pub fn level(&self, k: usize) -> &[Point<S, D>] {
-        &self.levels[k]
-    }
-
-    /// The point s(u), the single point of the last level.
-    ///
-    /// ```
-    /// # use compgeo::spline::{BSpline, KnotVector, Point};
-    /// let s = BSpline::new(vec![Point::new([0.0]), Point::new([2.0])], KnotVector::clamped_uniform(1, 2, 0.0, 1.0)?)?;
-    /// assert_eq!(s.de_boor_trace(&0.25)?.point(), &Point::new([0.5]));
-    /// # Ok::<(), compgeo::Error>(())
-    /// ```
-    pub fn point(&self) -> &Point<S, D> {
-        &self.levels[self.levels.len() - 1][0]
+impl<S, const D: usize> TraceSize for DeBoorLevel<S, D> {
+    fn entries(&self) -> usize {
+        self.points.len()
     }
 }
 
@@ -239,7 +188,7 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
             5 => self.de_boor_on_stack::<6, C>(span, r, u, counter),
             m => {
                 let mut q = self.window(span, r);
-                self.de_boor_levels(span, r, u, &mut q, counter, |_| {});
+                self.de_boor_levels(span, r, u, &mut q, counter, &mut NoObserver);
                 q.swap_remove(m)
             }
         })
@@ -257,42 +206,59 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
     ) -> Point<S, D> {
         let window = &self.control()[span - self.degree()..=span - r];
         let mut q: [Point<S, D>; N] = std::array::from_fn(|j| window[j].clone());
-        self.de_boor_levels(span, r, u, &mut q, counter, |_| {});
+        self.de_boor_levels(span, r, u, &mut q, counter, &mut NoObserver);
         q.into_iter().next_back().expect("N = d − r + 1 ≥ 1 points")
     }
 
-    /// The de Boor net at `u`: every intermediate point of [`BSpline::de_boor`], by level.
+    /// The frames of de Boor's algorithm at `u`: the de Boor net, level by level, from its
+    /// own run.
+    ///
+    /// The run is [`BSpline::de_boor_with`]'s, told about each level: frame k holds level k
+    /// ([`DeBoorLevel`]; frame 0 the d − r + 1 control points that matter, found by the span
+    /// search, the last frame d − r the single point s(u)), with the comparisons of the span
+    /// search and the affine combinations counted up to it; the last frame's counts are
+    /// those of [`BSpline::de_boor_with`] with [`Counts`].
     ///
     /// # Errors
     ///
-    /// As [`BSpline::de_boor`].
+    /// As [`BSpline::de_boor`]; [`Error::LimitExceeded`](crate::Error::LimitExceeded) if
+    /// the (d + 1)(d + 2)/2 points and d + 1 frames pass
+    /// [`TRACE_MAX_ENTRIES`](crate::trace::TRACE_MAX_ENTRIES).
     ///
     /// # Complexity
     ///
-    /// Θ(d²D) time and space (the (d + 1)(d + 2)/2 points of the net).
+    /// Θ(d²D) time and space (the (d + 1)(d + 2)/2 points of the net) after the
+    /// O(log(n − d)) span search.
     ///
     /// ```
+    /// use compgeo::count::Counts;
     /// use compgeo::spline::{BSpline, KnotVector, Point};
     ///
     /// let t = KnotVector::clamped_uniform(2, 3, 0.0, 1.0)?; // a Bézier parabola
     /// let c = vec![Point::new([0.0, 0.0]), Point::new([1.0, 2.0]), Point::new([2.0, 0.0])];
-    /// let net = BSpline::new(c, t)?.de_boor_trace(&0.5)?;
-    /// assert_eq!(net.level(1), [Point::new([0.5, 1.0]), Point::new([1.5, 1.0])]);
-    /// assert_eq!(net.point(), &Point::new([1.0, 1.0]));
+    /// let s = BSpline::new(c, t)?;
+    /// let frames = s.de_boor_trace(&0.5)?;
+    /// assert_eq!(frames.len(), 3);
+    /// assert_eq!(frames[1].step.points, [Point::new([0.5, 1.0]), Point::new([1.5, 1.0])]);
+    /// assert_eq!(frames[2].step.points, [Point::new([1.0, 1.0])]);
+    /// let mut counts = Counts::default();
+    /// s.de_boor_with(&0.5, &mut counts)?;
+    /// assert_eq!(frames[2].counts, counts);
     /// # Ok::<(), compgeo::Error>(())
     /// ```
-    pub fn de_boor_trace(&self, u: &S) -> Result<DeBoorTrace<S, D>> {
-        let (span, r) = self.locate(u, &mut NoCount)?;
+    pub fn de_boor_trace(&self, u: &S) -> Result<Vec<Frame<DeBoorLevel<S, D>>>> {
+        let mut counts = Counts::default();
+        let (span, r) = self.locate(u, &mut counts)?;
+        let mut recorder = Recorder::new();
         let mut q = self.window(span, r);
-        let mut levels = vec![q.clone()];
-        self.de_boor_levels(span, r, u, &mut q, &mut NoCount, |level| {
-            levels.push(level.to_vec());
-        });
-        Ok(DeBoorTrace {
+        recorder.step(&counts, || DeBoorLevel {
+            level: 0,
             span,
             multiplicity: r,
-            levels,
-        })
+            points: q.clone(),
+        });
+        self.de_boor_levels(span, r, u, &mut q, &mut counts, &mut recorder);
+        recorder.finish()
     }
 
     /// The span μ of `u` (checked) and the multiplicity r ≤ d of u as the knot t_μ.
@@ -310,18 +276,18 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         self.control()[span - d..=span - r].to_vec()
     }
 
-    /// Runs levels 1, …, d − r of the scheme on `q` (level 0, d − r + 1 points), calling
-    /// `level` with each level's points; `q[k..]` holds level k afterwards, so the last
-    /// point of `q` is s(u).
+    /// Runs levels 1, …, d − r of the scheme on `q` (level 0, d − r + 1 points), telling
+    /// `obs` about each level; `q[k..]` holds level k afterwards, so the last point of `q`
+    /// is s(u).
     #[inline]
-    fn de_boor_levels<C: Counter>(
+    fn de_boor_levels<C: Counter, O: Observer<DeBoorLevel<S, D>, C>>(
         &self,
         span: usize,
         r: usize,
         u: &S,
         q: &mut [Point<S, D>],
         counter: &mut C,
-        mut level: impl FnMut(&[Point<S, D>]),
+        obs: &mut O,
     ) {
         let d = self.degree();
         let t = self.knots().knots();
@@ -329,7 +295,12 @@ impl<S: Scalar, const D: usize> BSpline<S, D> {
         debug_assert_eq!(q.len(), m + 1);
         for k in 1..=m {
             de_boor_level(t, d, span, k, u, q, counter);
-            level(&q[k..]);
+            obs.step(counter, || DeBoorLevel {
+                level: k,
+                span,
+                multiplicity: r,
+                points: q[k..].to_vec(),
+            });
         }
     }
 }
@@ -376,9 +347,11 @@ mod tests {
             let mut c = Counts::default();
             s.de_boor_with(&u, &mut c).unwrap();
             assert_eq!(c.arithmetic_operations, ops, "u = {u}");
-            let net = s.de_boor_trace(&u).unwrap();
-            assert_eq!(net.point(), &s.de_boor(&u).unwrap());
-            assert_eq!(net.levels().len(), 4 - net.multiplicity());
+            let frames = s.de_boor_trace(&u).unwrap();
+            let last = &frames[frames.len() - 1];
+            assert_eq!(last.step.points, [s.de_boor(&u).unwrap()]);
+            assert_eq!(frames.len(), 4 - last.step.multiplicity);
+            assert_eq!(last.counts.arithmetic_operations, ops);
         }
         // At the triple knot the curve passes through c_{μ−3}.
         assert_eq!(s.de_boor(&3.0).unwrap(), Point::new([6.0]));
@@ -391,7 +364,8 @@ mod tests {
         let c = [0.0, 1.0, 5.0, 6.0].map(|x| Point::new([x])).to_vec();
         let s = BSpline::new(c, t).unwrap();
         assert_eq!(s.de_boor(&1.0).unwrap(), Point::new([5.0]));
-        let net = s.de_boor_trace(&1.0).unwrap();
-        assert_eq!((net.span(), net.multiplicity(), net.first()), (3, 1, 2));
+        let frames = s.de_boor_trace(&1.0).unwrap();
+        let level = &frames[0].step;
+        assert_eq!((level.span, level.multiplicity, level.first()), (3, 1, 2));
     }
 }

@@ -38,7 +38,7 @@
 //! | `knots.rs` | [`KnotVector`]: validation, [`clamped_uniform`](KnotVector::clamped_uniform), [`uniform`](KnotVector::uniform), [`averaged`](KnotVector::averaged), [`from_spl`](KnotVector::from_spl), [`multiplicities`](KnotVector::multiplicities), [`domain`](KnotVector::domain), [`span`](KnotVector::span) [PPB, §5.1, §5.4, §5.7], [SPL, §12] | Θ(n + d); span O(log(n − d)) |
 //! | `basis.rs` | [`KnotVector::basis`] ([`Basis`]), [`KnotVector::basis_derivatives`] ([`BasisDerivatives`]) [PPB, §5.3, §5.7] | Θ(d²); O(d² + d·K²) |
 //! | `curve.rs` | [`BSpline`]: validation, the curve traits, the derivative curve [PPB, §5.6] | Θ(nD); Θ((n + d)D) |
-//! | `de_boor.rs` | [`BSpline::de_boor`], [`BSpline::de_boor_with`], the net [`BSpline::de_boor_trace`] ([`DeBoorTrace`]) [PPB, §5.4] | Θ(d²D) |
+//! | `de_boor.rs` | [`BSpline::de_boor`], [`BSpline::de_boor_with`], the net [`BSpline::de_boor_trace`] ([`DeBoorLevel`] frames) [PPB, §5.4] | Θ(d²D) |
 //! | `derivatives.rs` | [`BSpline::derivatives`], [`BSpline::derivatives_with`]: s(u), s′(u), …, s⁽ᵏ⁾(u) at once by the extended de Boor algorithm (the tetrahedral scheme) [PPB, §5.9] | Θ((d² + K³)D) |
 //! | `insert.rs` | [`BSpline::insert`], [`BSpline::insert_with`]: Boehm's insertion, once or r times [PPB, §6.1] | Θ((n + d + rd)D) |
 //! | `to_bezier.rs` | [`BSpline::to_bezier`], [`BSpline::to_bezier_with`] (a [`CompositeBezier`](crate::spline::CompositeBezier) over the distinct knots of the domain), [`BSpline::from_bezier`] (interior knots of multiplicity d) [PPB, §5.10] | Θ(n + d + p·d·D) plus O(n·d²·D); Θ(p·d·D) |
@@ -140,6 +140,6 @@ pub(crate) mod declarations {
 pub use banded::BandMatrix;
 pub use basis::{Basis, BasisDerivatives};
 pub use curve::BSpline;
-pub use de_boor::DeBoorTrace;
+pub use de_boor::DeBoorLevel;
 pub use fit::ParameterFit;
 pub use knots::KnotVector;
