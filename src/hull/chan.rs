@@ -47,16 +47,23 @@ pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
 
 /// The convex hull of `points` by Chan's algorithm, recording its operations in `counter`.
 ///
-/// Idea: guess m = 2^(2^t) for t = 1, 2, ... (4, 16, 256, 65 536, ...). Split the input
-/// into groups of m consecutive points and hull each group by the monotone chain
-/// (O(n log m)). Then run Jarvis's march from the lexicographically smallest point, but
-/// instead of scanning every point, ask each group for its tangent from the current vertex:
-/// the vertex of the group's hull that every point of the group is left of (the farthest of
-/// two on one ray), found by binary search in O(log m). The best of the n/m tangents is the
-/// next hull vertex (O((n/m) log m) per step). If the march has not closed after m steps,
-/// h > m: square m and start again. The round that succeeds has m < h², and the rounds'
-/// costs grow geometrically in log m, so the total is O(n log h). When m reaches n the
-/// single group's hull is the answer.
+/// Idea: guess m = 2^(2^t) for t = 3, 4, 5 (256, 65 536, 2^32). Split the input into
+/// groups of m consecutive points and hull each group: the Akl–Toussaint filter inside the
+/// group, then the monotone chain on its survivors (O(m log m) per group). Then run Jarvis's
+/// march from the lexicographically smallest point, but instead of scanning every point, ask
+/// each group for its tangent from the current vertex: the vertex of the group's hull that
+/// every point of the group is left of (the farthest of two on one ray), found by binary
+/// search in O(log m). The best of the n/m tangents is the next hull vertex (O((n/m) log m)
+/// per step). If the march has not closed after m steps, h > m: square m and start again,
+/// this time on the group hulls' vertices only (the hull of all points is theirs), which
+/// come in sorted runs. The round that succeeds has m < h², and the rounds' costs grow
+/// geometrically in log m, so the total is O(n log h).
+///
+/// Two cuts keep the constant small. A march stops early once its tangent tests would
+/// outnumber the vertices the next round sorts, so a failed march never costs more than the
+/// next round; and when the next guess would make at most two groups, the candidates are
+/// sorted as one group (two groups of at least s/2 cost as much as one) and the monotone
+/// chain ends the run. Inputs of at most 256 points are a single group.
 ///
 /// The binary search is exact: seen from the current vertex p (a strict hull vertex, so
 /// outside every group's hull or equal to one of its vertices), the group's vertices ordered
@@ -86,8 +93,9 @@ pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
 ///
 /// # Counts
 ///
-/// Per round with group size m: the monotone chain's comparisons (O(n log m)) and
-/// orientation tests (at most 3n) on the groups, then per step of the march O(log m)
+/// Per round with group size m: the filter's comparisons and orientation tests (first round
+/// only), the monotone chain's comparisons (O(n log m), the merge of the runs in later
+/// rounds) and orientation tests (at most 3n) on the groups, then per step of the march O(log m)
 /// comparisons and at most 2⌈log₂ m⌉ + 3 orientation tests per group, and up to n/m more to
 /// pick the best tangent. In all O(n log h) comparisons and orientation tests, plus a
 /// distance evaluation for each tie between vertices on one ray, and n − 1 comparisons to
