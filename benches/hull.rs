@@ -26,9 +26,23 @@
 //! | uniform-square, 10⁶ | chan 459 ms | 77 ms | 0.17× |
 //!
 //! An earlier run of the same code under heavier load: monotone-chain 23.4 ms against geo's
-//! 78.7 ms on the circle (3.4×). Chan's algorithm is here for its bound, not its speed: it
-//! rebuilds the group hulls for every guess of h (m = 4, 16, 256, 65 536), and on 10⁵ points
-//! on a circle the round with m = 65 536 runs 65 536 wrapping steps before it gives up.
+//! 78.7 ms on the circle (3.4×). Chan's algorithm then rebuilt the group hulls for every guess
+//! of h (m = 4, 16, 256, 65 536), and on 10⁵ points on a circle the round with m = 65 536 ran
+//! 65 536 wrapping steps before it gave up.
+//!
+//! Chan's hull reworked (2026-12-03; first guess 256, each group filtered by Akl–Toussaint,
+//! the next round built from the group hulls' vertices, marches cut at the cost of the next
+//! round, at most two groups merged into one; the Akl–Toussaint filter tests only the edges
+//! facing the box sides a point is beyond). Medians of 15 interleaved runs in one process, 2
+//! cores under heavy load from other builds, so only the ratios mean something:
+//!
+//! | input, n | chan / monotone-chain | chan / akl-toussaint |
+//! |---|---|---|
+//! | uniform-disk, 10⁶ | 0.52–0.57 | 1.60–1.91 |
+//! | uniform-disk, 10⁵ | 0.81–0.93 | 1.33–1.86 |
+//! | cocircular (h = n), 10⁵ | 2.36–2.73 | 0.98–1.06 |
+//!
+//! The `hull/uniform-disk` group has the same inputs for criterion.
 
 use compgeo::count::{NoCount, Silent};
 use compgeo::delaunay::{triangulate_with, Algorithm as Builder};
@@ -51,11 +65,12 @@ fn to_coords(pts: &[Point2]) -> Vec<Coord<f64>> {
 }
 
 fn hulls(c: &mut Criterion) {
-    let groups: [(PointKind, &[usize]); 3] = [
+    let groups: [(PointKind, &[usize]); 4] = [
         (
             PointKind::UniformSquare,
             &[1_000, 10_000, 100_000, 1_000_000],
         ),
+        (PointKind::UniformDisk, &[10_000, 100_000, 1_000_000]),
         (PointKind::Cocircular, &[1_000, 10_000, 100_000]),
         (PointKind::Collinear, &[1_000, 100_000]),
     ];

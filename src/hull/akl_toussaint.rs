@@ -20,7 +20,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     time: "O(n log n) worst case, O(n) expected on uniform input",
     space: "O(n)",
     operation: Some(Operation::Comparisons),
-    counts: "up to four per point for the filter box",
+    counts: "four per point for the filter box",
     source: "[RD, §2.2]",
     claims: &[on("uniform-square", Bound::Linear, Operation::Comparisons)],
 };
@@ -127,8 +127,9 @@ pub fn akl_toussaint_with<C: Counter>(
 ///
 /// # Counts
 ///
-/// Comparisons: up to four per point for the box, and those of the polygon's construction;
-/// orientation tests: up to eight per point outside the box, and at most 160 to verify the box.
+/// Comparisons: four per point for the box, and those of the polygon's construction;
+/// orientation tests: per point outside the box, one per polygon edge facing a side of the box
+/// it is beyond (at most eight), and at most 160 to verify the box.
 ///
 /// ```
 /// use compgeo::gen::{points, PointKind};
@@ -146,7 +147,11 @@ pub fn akl_toussaint_with<C: Counter>(
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn akl_toussaint_filter<C: Counter>(points: &PointSet, counter: &mut C) -> Vec<usize> {
-    let points = points.points();
+    filter(points.points(), counter)
+}
+
+/// [`akl_toussaint_filter`] on finite points (Chan's hull filters each of its groups).
+pub(super) fn filter<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
     if points.len() < 4 {
         return (0..points.len()).collect();
     }
@@ -159,19 +164,69 @@ pub fn akl_toussaint_filter<C: Counter>(points: &PointSet, counter: &mut C) -> V
     if polygon.len() < 3 {
         return (0..points.len()).collect();
     }
-    let inner = inner_box(points, &extremes, &polygon, counter);
+    let facing = facing_sides(&polygon);
+    let inner = inner_box(points, &extremes, &polygon, &facing, counter);
     let mut survivors = Vec::new();
     for (i, &p) in points.iter().enumerate() {
-        if let Some(b) = &inner {
-            if in_box(p, b, counter) {
-                continue;
-            }
-        }
-        if !strictly_inside(&polygon, p, counter) {
+        let sides = match &inner {
+            Some(b) => match sides_outside(p, b, counter) {
+                0 => continue,
+                sides => sides,
+            },
+            None => ALL_SIDES,
+        };
+        if !strictly_inside(&polygon, &facing, sides, p, counter) {
             survivors.push(i);
         }
     }
     survivors
+}
+
+/// Bits of [`sides_outside`] and [`facing_sides`]: west, east, south, north.
+const WEST: u8 = 1;
+const EAST: u8 = 2;
+const SOUTH: u8 = 4;
+const NORTH: u8 = 8;
+const ALL_SIDES: u8 = WEST | EAST | SOUTH | NORTH;
+
+/// Per edge of the counter-clockwise `polygon` (from vertex k to k + 1), the sides its
+/// outward normal `(Δy, −Δx)` points to, decided exactly by comparing coordinates: west when
+/// the edge goes down, east when it goes up, south when it goes right, north when it goes
+/// left.
+fn facing_sides(polygon: &[Point2]) -> Vec<u8> {
+    let h = polygon.len();
+    (0..h)
+        .map(|k| {
+            let (a, c) = (polygon[k], polygon[(k + 1) % h]);
+            let mut sides = 0;
+            if c.y < a.y {
+                sides |= WEST;
+            }
+            if c.y > a.y {
+                sides |= EAST;
+            }
+            if c.x > a.x {
+                sides |= SOUTH;
+            }
+            if c.x < a.x {
+                sides |= NORTH;
+            }
+            sides
+        })
+        .collect()
+}
+
+/// The sides of the box `b` that `p` is on or beyond (0 when strictly inside): four
+/// comparisons.
+#[inline]
+fn sides_outside<C: Counter>(p: Point2, b: &Box, counter: &mut C) -> u8 {
+    for _ in 0..4 {
+        counter.comparison();
+    }
+    u8::from(p.x <= b[0]) * WEST
+        | u8::from(p.x >= b[1]) * EAST
+        | u8::from(p.y <= b[2]) * SOUTH
+        | u8::from(p.y >= b[3]) * NORTH
 }
 
 /// An axis-parallel box `[x_lo, x_hi, y_lo, y_hi]`.
@@ -208,6 +263,7 @@ fn inner_box<C: Counter>(
     points: &[Point2],
     extremes: &[usize; 8],
     polygon: &[Point2],
+    facing: &[u8],
     counter: &mut C,
 ) -> Option<Box> {
     // extremes: min x+y (south-west), min x−y (north-west), max x+y (north-east),
@@ -239,34 +295,30 @@ fn inner_box<C: Counter>(
                 && b[2] < b[3]
                 && [(b[0], b[2]), (b[1], b[2]), (b[1], b[3]), (b[0], b[3])]
                     .into_iter()
-                    .all(|c| strictly_inside(polygon, c.into(), counter))
+                    .all(|c| strictly_inside(polygon, facing, ALL_SIDES, c.into(), counter))
         })
 }
 
-/// Whether `p` is strictly inside the box.
+/// Whether `p` is strictly left of every edge of the counter-clockwise convex `polygon`,
+/// testing only the edges that face one of `sides` (`facing` from [`facing_sides`]).
+///
+/// A point on or beyond the west side of a box strictly inside the polygon, and not beyond
+/// the other sides, is the point q on that side moved west: moving west cannot take it out
+/// through an edge whose outward normal has no westward part, so only the west-facing edges
+/// can have it outside; likewise for the other sides and their unions. With every side this
+/// tests every edge.
 #[inline]
-fn in_box<C: Counter>(p: Point2, b: &Box, counter: &mut C) -> bool {
-    counter.comparison();
-    if p.x <= b[0] {
-        return false;
-    }
-    counter.comparison();
-    if p.x >= b[1] {
-        return false;
-    }
-    counter.comparison();
-    if p.y <= b[2] {
-        return false;
-    }
-    counter.comparison();
-    p.y < b[3]
-}
-
-/// Whether `p` is strictly left of every edge of the counter-clockwise convex `polygon`.
-#[inline]
-fn strictly_inside<C: Counter>(polygon: &[Point2], p: Point2, counter: &mut C) -> bool {
+fn strictly_inside<C: Counter>(
+    polygon: &[Point2],
+    facing: &[u8],
+    sides: u8,
+    p: Point2,
+    counter: &mut C,
+) -> bool {
     let h = polygon.len();
     (0..h).all(|k| {
-        counter.orient2d(polygon[k], polygon[(k + 1) % h], p) == Orientation::CounterClockwise
+        facing[k] & sides == 0
+            || counter.orient2d(polygon[k], polygon[(k + 1) % h], p)
+                == Orientation::CounterClockwise
     })
 }

@@ -1,9 +1,9 @@
 //! Chan's output-sensitive hull: monotone-chain hulls of small groups, then Jarvis's march
 //! over the groups with a binary search for each group's tangent.
 
+use super::akl_toussaint::filter;
 use super::collinear::finish;
-use super::lex::lex_min;
-use super::lex::lex_sorted_items;
+use super::lex::{lex_merged_items, lex_min, lex_sorted_items, lex_sorted_items_by_comparisons};
 use super::monotone_chain::chains;
 use super::HullOptions;
 use crate::complexity::{on, Bound, Declaration};
@@ -47,16 +47,23 @@ pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
 
 /// The convex hull of `points` by Chan's algorithm, recording its operations in `counter`.
 ///
-/// Idea: guess m = 2^(2^t) for t = 1, 2, ... (4, 16, 256, 65 536, ...). Split the input
-/// into groups of m consecutive points and hull each group by the monotone chain
-/// (O(n log m)). Then run Jarvis's march from the lexicographically smallest point, but
-/// instead of scanning every point, ask each group for its tangent from the current vertex:
-/// the vertex of the group's hull that every point of the group is left of (the farthest of
-/// two on one ray), found by binary search in O(log m). The best of the n/m tangents is the
-/// next hull vertex (O((n/m) log m) per step). If the march has not closed after m steps,
-/// h > m: square m and start again. The round that succeeds has m < h², and the rounds'
-/// costs grow geometrically in log m, so the total is O(n log h). When m reaches n the
-/// single group's hull is the answer.
+/// Idea: guess m = 2^(2^t) for t = 3, 4, 5 (256, 65 536, 2^32). Split the input into
+/// groups of m consecutive points and hull each group: the Akl–Toussaint filter inside the
+/// group, then the monotone chain on its survivors (O(m log m) per group). Then run Jarvis's
+/// march from the lexicographically smallest point, but instead of scanning every point, ask
+/// each group for its tangent from the current vertex: the vertex of the group's hull that
+/// every point of the group is left of (the farthest of two on one ray), found by binary
+/// search in O(log m). The best of the n/m tangents is the next hull vertex (O((n/m) log m)
+/// per step). If the march has not closed after m steps, h > m: square m and start again,
+/// this time on the group hulls' vertices only (the hull of all points is theirs), which
+/// come in sorted runs. The round that succeeds has m < h², and the rounds' costs grow
+/// geometrically in log m, so the total is O(n log h).
+///
+/// Two cuts keep the constant small. A march stops early once its tangent tests would
+/// outnumber the vertices the next round sorts, so a failed march never costs more than the
+/// next round; and when the next guess would make at most two groups, the candidates are
+/// sorted as one group (two groups of at least s/2 cost as much as one) and the monotone
+/// chain ends the run. Inputs of at most 256 points are a single group.
 ///
 /// The binary search is exact: seen from the current vertex p (a strict hull vertex, so
 /// outside every group's hull or equal to one of its vertices), the group's vertices ordered
@@ -86,8 +93,9 @@ pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
 ///
 /// # Counts
 ///
-/// Per round with group size m: the monotone chain's comparisons (O(n log m)) and
-/// orientation tests (at most 3n) on the groups, then per step of the march O(log m)
+/// Per round with group size m: the filter's comparisons and orientation tests (first round
+/// only), the monotone chain's comparisons (O(n log m), the merge of the runs in later
+/// rounds) and orientation tests (at most 3n) on the groups, then per step of the march O(log m)
 /// comparisons and at most 2⌈log₂ m⌉ + 3 orientation tests per group, and up to n/m more to
 /// pick the best tangent. In all O(n log h) comparisons and orientation tests, plus a
 /// distance evaluation for each tie between vertices on one ray, and n − 1 comparisons to
@@ -118,23 +126,57 @@ pub fn chan_with<C: Counter>(
         return Vec::new();
     }
     let start = lex_min(points, counter);
-    let mut exponent = 2u32;
-    let strict = loop {
-        let m = group_size(exponent, n);
-        if m >= n {
-            let sorted = lex_sorted_items(points, 0..n, counter);
-            break chains(&sorted, counter);
+    let mut exponent = FIRST_EXPONENT;
+    let mut m = group_size(exponent, n);
+    let strict = if m >= n {
+        chains(&lex_sorted_items(points, 0..n, counter), counter)
+    } else {
+        let mut groups = Groups::of_input(points, m, counter);
+        loop {
+            let limit = groups.march_limit(m);
+            if let Some(hull) = wrap(points, &groups, start, limit, counter) {
+                break hull;
+            }
+            // The hull of all points is the hull of the group hulls' vertices: the next
+            // round groups only them, already sorted in runs.
+            let candidates = groups.lex_runs();
+            exponent = exponent.saturating_mul(2);
+            m = group_size(exponent, candidates.len());
+            // At most two groups: one costs no more (sorting s candidates in two groups of
+            // at least s/2 costs as much as sorting them at once) and needs no march.
+            if 2 * m >= candidates.len() {
+                break chains(&sorted_candidates(points, candidates, counter), counter);
+            }
+            groups = Groups::of_runs(points, candidates, m, counter);
         }
-        let groups = Groups::new(points, m, counter);
-        if let Some(hull) = wrap(points, &groups, start, m, counter) {
-            break hull;
-        }
-        exponent *= 2;
     };
     finish(points, 0..n, strict, options, counter)
 }
 
-/// The hulls of consecutive groups of points, stored one after another.
+/// `items`, sorted lexicographically without duplicates: merged from their runs when the
+/// counter records (O(s log k) comparisons for k runs), by the radix sort otherwise, which
+/// gives the same order faster.
+fn sorted_candidates<C: Counter>(
+    points: &[Point2],
+    items: Vec<(Point2, usize)>,
+    counter: &mut C,
+) -> Vec<(Point2, usize)> {
+    if C::DISCARDS {
+        lex_sorted_items(points, items.into_iter().map(|item| item.1), counter)
+    } else {
+        lex_merged_items(items, counter)
+    }
+}
+
+/// The first guess of the group size is 2^`FIRST_EXPONENT`; each failed round squares it.
+///
+/// Chan's analysis allows any constant start. Starting at 256 rather than 4 skips two rounds
+/// whose marches cost as much as their groups' hulls and rarely close (uniform points have
+/// more than 16 hull vertices from about 100 points on); inputs of up to 256 points are one
+/// group, that is the monotone chain.
+const FIRST_EXPONENT: u32 = 8;
+
+/// The hulls of groups of points, stored one after another.
 struct Groups {
     /// Every group's strictly convex hull, counter-clockwise from its lexicographically
     /// smallest vertex: the point and its index in the input.
@@ -152,25 +194,95 @@ struct Span {
 }
 
 impl Groups {
-    /// The hulls of the groups `points[0..m]`, `points[m..2m]`, ...
-    fn new<C: Counter>(points: &[Point2], m: usize, counter: &mut C) -> Groups {
-        let mut vertices = Vec::with_capacity(points.len());
-        let mut spans = Vec::with_capacity(points.len().div_ceil(m));
+    /// The hulls of the groups `points[0..m]`, `points[m..2m]`, ...: each group's
+    /// Akl–Toussaint survivors (most points of a group are strictly inside the polygon of
+    /// its extreme points and are never sorted), sorted, then the monotone chain. The filter
+    /// is skipped after a group where it kept more than three quarters of the points, until a
+    /// group's hull has at most three quarters of its points.
+    fn of_input<C: Counter>(points: &[Point2], m: usize, counter: &mut C) -> Groups {
+        let mut groups = Groups::with_capacity(points.len(), m);
+        let mut filtering = true;
         for lo in (0..points.len()).step_by(m) {
             let hi = (lo + m).min(points.len());
-            let sorted = lex_sorted_items(points, lo..hi, counter);
-            let hull = chains(&sorted, counter);
-            let start = vertices.len();
-            vertices.extend(hull.iter().map(|&i| (points[i], i)));
-            let len = hull.len();
-            // Lexicographically increasing up to the top vertex, decreasing after it.
-            let v = &vertices[start..];
-            let top = partition_point(0..len - 1, |k| {
-                counter.cmp_lex(v[k].0, v[k + 1].0) == Ordering::Less
-            });
-            spans.push(Span { start, len, top });
+            let sorted = if filtering {
+                let kept = filter(&points[lo..hi], counter);
+                // Points in convex position all survive: stop filtering while the filter
+                // keeps more than three quarters of a group.
+                filtering = 4 * kept.len() <= 3 * (hi - lo);
+                lex_sorted_items_by_comparisons(points, kept.into_iter().map(|i| i + lo), counter)
+            } else {
+                lex_sorted_items_by_comparisons(points, lo..hi, counter)
+            };
+            let before = groups.vertices.len();
+            groups.push(points, &sorted, counter);
+            // ... and take it up again once a group's hull keeps at most three quarters.
+            filtering = filtering || 4 * (groups.vertices.len() - before) <= 3 * (hi - lo);
         }
-        Groups { vertices, spans }
+        groups
+    }
+
+    /// The hulls of the groups `items[0..m]`, `items[m..2m]`, ... of points given in sorted
+    /// runs (the last round's hulls, from [`Groups::lex_runs`]): each group is merged, then
+    /// the monotone chain.
+    fn of_runs<C: Counter>(
+        points: &[Point2],
+        items: Vec<(Point2, usize)>,
+        m: usize,
+        counter: &mut C,
+    ) -> Groups {
+        let mut groups = Groups::with_capacity(items.len(), m);
+        for chunk in items.chunks(m) {
+            let sorted = sorted_candidates(points, chunk.to_vec(), counter);
+            groups.push(points, &sorted, counter);
+        }
+        groups
+    }
+
+    fn with_capacity(n: usize, m: usize) -> Groups {
+        Groups {
+            vertices: Vec::with_capacity(n),
+            spans: Vec::with_capacity(n.div_ceil(m)),
+        }
+    }
+
+    /// Adds the hull of `sorted` (distinct points in lexicographic order) as a group.
+    fn push<C: Counter>(&mut self, points: &[Point2], sorted: &[(Point2, usize)], counter: &mut C) {
+        let start = self.vertices.len();
+        let hull = chains(sorted, counter);
+        self.vertices
+            .extend(hull.into_iter().map(|i| (points[i], i)));
+        let len = self.vertices.len() - start;
+        // Lexicographically increasing up to the top vertex, decreasing after it.
+        let v = &self.vertices[start..];
+        let top = partition_point(0..len - 1, |k| {
+            counter.cmp_lex(v[k].0, v[k + 1].0) == Ordering::Less
+        });
+        self.spans.push(Span { start, len, top });
+    }
+
+    /// Every group's vertices in two lexicographically increasing runs (the lower chain,
+    /// then the upper chain reversed), one group after another.
+    fn lex_runs(&self) -> Vec<(Point2, usize)> {
+        let mut runs = Vec::with_capacity(self.vertices.len());
+        for &Span { start, len, top } in &self.spans {
+            let v = &self.vertices[start..start + len];
+            runs.extend_from_slice(&v[..=top]);
+            runs.extend(v[top + 1..].iter().rev());
+        }
+        runs
+    }
+
+    /// The most vertices the march over these groups may find before the round gives up:
+    /// `m`, or fewer when that many steps would cost more tangent tests than there are
+    /// vertices in all the groups (about 4 log₂ a + 3 per group and step for groups of a
+    /// vertices: two binary searches for the current vertex, one for the tangent). A march cut short costs no more than the next round's sorting of those
+    /// vertices, so the rounds' total stays O(n log h); without the cut, uniform points
+    /// (h ≈ 3.4 n^(1/3) in a disk) pay a march of 256 steps over n/256 groups, several
+    /// times the cost of the whole hull, before the round with m = 65 536 closes.
+    fn march_limit(&self, m: usize) -> usize {
+        let (s, g) = (self.vertices.len(), self.spans.len());
+        let log = (usize::BITS - (s / g).leading_zeros()) as usize;
+        (s / (g * (4 * log + 3))).clamp(1, m)
     }
 
     /// The tangent of group `g` from `p`: the vertex of its hull that no vertex is right of
@@ -221,13 +333,13 @@ fn group_size(exponent: u32, n: usize) -> usize {
     }
 }
 
-/// Jarvis's march from `start` over the group hulls; `None` if it has not closed after `m`
-/// vertices.
+/// Jarvis's march from `start` over the group hulls; `None` if it has not closed after
+/// `limit` vertices.
 fn wrap<C: Counter>(
     points: &[Point2],
     groups: &Groups,
     start: usize,
-    m: usize,
+    limit: usize,
     counter: &mut C,
 ) -> Option<Vec<usize>> {
     let first = points[start];
@@ -247,7 +359,7 @@ fn wrap<C: Counter>(
         }
         match next {
             Some((q, i)) if counter.cmp_lex(q, first) != Ordering::Equal => {
-                if hull.len() == m {
+                if hull.len() == limit {
                     return None;
                 }
                 hull.push(i);
@@ -312,7 +424,7 @@ mod tests {
         ]
         .map(Point2::from)
         .to_vec();
-        let groups = Groups::new(&polygon, polygon.len(), &mut NoCount);
+        let groups = Groups::of_input(&polygon, polygon.len(), &mut NoCount);
         let hull: Vec<Point2> = groups.vertices.iter().map(|v| v.0).collect();
         let outside = |q: Point2| {
             (0..hull.len()).any(|k| {
@@ -338,29 +450,63 @@ mod tests {
         }
     }
 
-    /// 300 points in convex position: the marches with m = 4, 16 and 256 stop early, and
-    /// the round with m = 65 536 >= n is the single group's hull.
+    /// 300 points in convex position: the march over two groups of at most 256 stops
+    /// early, the next guess (65 536) holds every candidate, and the last round is one group.
     #[test]
     fn restarts_with_squared_group_size() {
         let pts: Vec<Point2> = (0..300)
             .map(|i| Point2::new(f64::from(i), f64::from(i * i)))
             .collect();
-        assert_eq!([2, 4, 8, 16].map(|e| group_size(e, 300)), [4, 16, 256, 300]);
+        assert_eq!([8, 16, 32].map(|e| group_size(e, 300)), [256, 300, 300]);
         assert_eq!(group_size(64, 300), 300);
-        for m in [4, 16, 256] {
-            let groups = Groups::new(&pts, m, &mut NoCount);
-            assert_eq!(groups.spans.len(), 300usize.div_ceil(m));
-            assert!(wrap(&pts, &groups, 0, m, &mut NoCount).is_none(), "m = {m}");
-        }
+        let groups = Groups::of_input(&pts, 256, &mut NoCount);
+        assert_eq!(groups.spans.len(), 2);
+        assert_eq!(groups.vertices.len(), 300, "every point is a group vertex");
+        let limit = groups.march_limit(256);
+        assert!((1..=256).contains(&limit));
+        assert!(wrap(&pts, &groups, 0, limit, &mut NoCount).is_none());
         let oracle = brute_force_hull(&pts, HullOptions::default()).unwrap();
         assert_eq!(oracle.len(), 300);
         assert_eq!(chan(&pts, HullOptions::default()).unwrap(), oracle);
-        // With m = h the march closes: the first 16 points have 16 vertices.
-        let groups = Groups::new(&pts[..16], 4, &mut NoCount);
+        // With a limit of h the march closes: the first 16 points have 16 vertices.
+        let groups = Groups::of_input(&pts[..16], 4, &mut NoCount);
         let small = wrap(&pts[..16], &groups, 0, 16, &mut NoCount).unwrap();
         assert_eq!(
             small,
             brute_force_hull(&pts[..16], HullOptions::default()).unwrap()
         );
+    }
+
+    /// The next round's groups, built from the last round's vertices in runs, are the hulls
+    /// that grouping the input afresh would give (points in a disk, several group sizes).
+    #[test]
+    fn regrouped_runs_give_the_hulls_of_the_merged_groups() {
+        let pts = crate::gen::points(crate::gen::PointKind::UniformDisk, 3000, 11).unwrap();
+        for (m, m2) in [(4, 16), (16, 256), (256, 65536)] {
+            let groups = Groups::of_input(&pts, m, &mut NoCount);
+            let runs = groups.lex_runs();
+            assert_eq!(runs.len(), groups.vertices.len());
+            // Runs rise; a fall starts a new run, at most two per group.
+            let falls = runs
+                .windows(2)
+                .filter(|w| crate::geometry::cmp_lex(w[0].0, w[1].0) != Ordering::Less)
+                .count();
+            assert!(falls < 2 * groups.spans.len(), "m = {m}");
+            let regrouped = Groups::of_runs(&pts, runs.clone(), m2, &mut NoCount);
+            for (k, chunk) in runs.chunks(m2).enumerate() {
+                let sub: Vec<Point2> = chunk.iter().map(|c| c.0).collect();
+                let expected: Vec<usize> = brute_force_hull(&sub, HullOptions::default())
+                    .unwrap()
+                    .into_iter()
+                    .map(|i| chunk[i].1)
+                    .collect();
+                let Span { start, len, .. } = regrouped.spans[k];
+                let got: Vec<usize> = regrouped.vertices[start..start + len]
+                    .iter()
+                    .map(|v| v.1)
+                    .collect();
+                assert_eq!(got, expected, "m = {m}, group {k}");
+            }
+        }
     }
 }

@@ -277,6 +277,45 @@ fn chan_makes_o_n_log_h_orientation_tests() {
     }
 }
 
+/// Chan's later rounds: 140 000 points on a circle keep every point in the first round's
+/// group hulls, so the second round regroups them into three groups of at most 65 536 (the
+/// merged runs when counting, the radix sort when not); a circle inside a far triangle closes
+/// in the first round's march. Both equal the monotone chain, counted or not.
+#[test]
+fn chan_rounds_give_the_monotone_chain_hull() {
+    let circle = points(PointKind::Cocircular, 140_000, 5).unwrap();
+    let mut framed = points(PointKind::Cocircular, 20_000, 6).unwrap();
+    let r = framed
+        .iter()
+        .map(|p| p.x.abs().max(p.y.abs()))
+        .fold(0.0, f64::max);
+    framed.extend([(-8.0 * r, -8.0 * r), (8.0 * r, -8.0 * r), (0.0, 8.0 * r)].map(Point2::from));
+    for pts in [&circle, &framed] {
+        let set = PointSet::new(pts).unwrap();
+        let reference = convex_hull(pts, Algorithm::MonotoneChain, STRICT).unwrap();
+        let mut counts = Counts::default();
+        assert_eq!(
+            convex_hull_with(&set, Algorithm::Chan, STRICT, &mut counts),
+            reference
+        );
+        assert_eq!(
+            convex_hull(pts, Algorithm::Chan, STRICT).unwrap(),
+            reference
+        );
+    }
+    // The triangle's march closes after three vertices, long before the rounds end.
+    let set = PointSet::new(&framed).unwrap();
+    let mut counts = Counts::default();
+    let hull = convex_hull_with(&set, Algorithm::Chan, STRICT, &mut counts);
+    assert_eq!(hull.len(), 3);
+    let mut chain = Counts::default();
+    convex_hull_with(&set, Algorithm::MonotoneChain, STRICT, &mut chain);
+    assert!(
+        counts.comparisons < chain.comparisons,
+        "{counts:?} vs {chain:?}"
+    );
+}
+
 #[test]
 fn algorithm_names_round_trip() {
     for a in Algorithm::ALL {
