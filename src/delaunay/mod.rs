@@ -66,6 +66,7 @@ mod quad_edge;
 mod triangulation;
 mod voronoi;
 
+pub(crate) use hilbert::{curve_order, grid_scale};
 pub use check::{check_delaunay, check_delaunay_with};
 pub use clip::ClipBox;
 pub use divide_conquer::{divide_and_conquer, divide_and_conquer_with};
