@@ -11,7 +11,7 @@
 //! move to the neighbour nearest to the query while that one is strictly nearer. A site that
 //! is not a nearest one always has a strictly nearer Delaunay neighbour, so the walk ends at
 //! a nearest site from *any* start; the start only decides how long the walk is. The start
-//! comes from a uniform grid of about n/2 cells over the sites' bounding box, each cell
+//! comes from a uniform grid of about n cells over the sites' bounding box, each cell
 //! holding the site nearest to its centre (found by walks at build time, cell after
 //! neighbouring cell): the bucketing of Bentley, Weide and Yao (1980) used as a hint, as
 //! Mücke, Saias and Zhu's jump-and-walk (1996) uses a random sample. The grid is computed
@@ -23,11 +23,14 @@
 //!
 //! **Complexity.** O(n log n) expected time to build (the triangulation, the curve sort, the
 //! O(n) grid walks), O(n) space. A query costs O(d) per step for a vertex of degree d
-//! (about six): O(1) expected steps for sites and queries uniform in a square (a query's
-//! cell entry is the site nearest to a point within half a cell diagonal, and a cell holds
-//! two sites on average), O(n) steps in the worst case (each step strictly decreases the
-//! distance, so no site is visited twice; clustered sites in one cell can make the walk
-//! cross a cluster).
+//! (about six). Every step moves to a site strictly nearer to the query than the entry e,
+//! so the steps are at most the sites in the disc about q through e, whose radius is at
+//! most |q − c| + |c − e| for the cell's centre c: half a cell diagonal plus the distance
+//! from c to its nearest site. For sites uniform in a square (one per cell on average) and
+//! queries in their box both are O(1/√n) in expectation, and the disc holds O(1) expected
+//! sites: O(1) expected steps. On any input the walk visits no site twice, so O(n) steps
+//! in the worst case (a dense cluster inside one cell is crossed step by step; a query
+//! far outside the box starts at a border cell).
 //!
 //! **Invariants tested** (`tests/suite/nearest.rs` and the unit tests below): the answer
 //! equals a brute-force scan with exact comparisons and the smallest-index tie rule on
@@ -702,7 +705,11 @@ mod tests {
 
     #[test]
     fn every_cell_entry_is_nearest_to_its_centre() {
-        for kind in [PointKind::UniformSquare, PointKind::Clustered, PointKind::Grid] {
+        for kind in [
+            PointKind::UniformSquare,
+            PointKind::Clustered,
+            PointKind::Grid,
+        ] {
             let pts = points(kind, 300, 5).unwrap();
             let g = search_graph(&pts);
             let grid = &g.grid;
@@ -723,8 +730,19 @@ mod tests {
     fn cells_clamp_far_queries_and_extreme_boxes() {
         let sub = 5e-324;
         let sets: [&[(f64, f64)]; 5] = [
-            &[(-f64::MAX, -f64::MAX), (f64::MAX, f64::MAX), (0.0, 0.0), (1.0, -1.0)],
-            &[(0.0, 0.0), (sub, 0.0), (0.0, sub), (sub, sub), (2.0 * sub, sub)],
+            &[
+                (-f64::MAX, -f64::MAX),
+                (f64::MAX, f64::MAX),
+                (0.0, 0.0),
+                (1.0, -1.0),
+            ],
+            &[
+                (0.0, 0.0),
+                (sub, 0.0),
+                (0.0, sub),
+                (sub, sub),
+                (2.0 * sub, sub),
+            ],
             &[(0.0, 0.0), (1e300, 0.0), (2e300, 0.0), (-1e300, 0.0)],
             &[(0.0, 0.0), (sub, 1e300), (0.0, -1e300), (sub, 5.0)],
             &[(3.0, 3.0), (3.0, 3.0), (3.0, 3.0)],
@@ -750,7 +768,9 @@ mod tests {
             for &q in &far {
                 assert!(grid.cell_of(q) < grid.entry.len());
                 let k = g.walk(q, None, &mut NoCount).unwrap();
-                assert!(pts.iter().all(|&p| cmp_dist(q, p, q, pts[k]) != Ordering::Less));
+                assert!(pts
+                    .iter()
+                    .all(|&p| cmp_dist(q, p, q, pts[k]) != Ordering::Less));
             }
         }
     }
@@ -790,7 +810,13 @@ mod tests {
         }
         assert!(g.local[200..].iter().all(|&v| v == NO_VERTEX));
         // The stars follow the curve: the first 200 input ids in curve order.
-        let order: Vec<usize> = curve_order(&pts[..200]).into_iter().map(|i| i as usize).collect();
-        assert_eq!(vertices.iter().map(|&v| g.input(v)).collect::<Vec<_>>(), order);
+        let order: Vec<usize> = curve_order(&pts[..200])
+            .into_iter()
+            .map(|i| i as usize)
+            .collect();
+        assert_eq!(
+            vertices.iter().map(|&v| g.input(v)).collect::<Vec<_>>(),
+            order
+        );
     }
 }

@@ -81,7 +81,10 @@ fn check(pts: &[Point2], qs: &[Point2]) {
 fn every_generator_kind_against_brute_force() {
     for kind in PointKind::ALL {
         // The extreme magnitudes take the exact fallback often, slow in a debug build.
-        let extreme = matches!(kind, PointKind::Huge | PointKind::Tiny | PointKind::Parabola);
+        let extreme = matches!(
+            kind,
+            PointKind::Huge | PointKind::Tiny | PointKind::Parabola
+        );
         let sizes = [(1, 3), (2, 4), (7, 5), (60, 6), (300, 7)];
         for &(n, seed) in &sizes[..if extreme { 4 } else { 5 }] {
             let pts = points(kind, n, seed).unwrap();
@@ -99,9 +102,13 @@ fn clustered_collinear_and_duplicated_sets() {
     let qs = points(PointKind::UniformSquare, 300, 12).unwrap();
     check(&clustered, &qs);
     // Collinear: a path along a line, horizontal and diagonal, with duplicates.
-    let line: Vec<Point2> = (0..50).map(|i| Point2::new(f64::from(i * 7 % 50), 2.0)).collect();
+    let line: Vec<Point2> = (0..50)
+        .map(|i| Point2::new(f64::from(i * 7 % 50), 2.0))
+        .collect();
     check(&line, &queries_for(&line));
-    let mut diagonal: Vec<Point2> = (0..40).map(|i| Point2::new(f64::from(i), f64::from(i))).collect();
+    let mut diagonal: Vec<Point2> = (0..40)
+        .map(|i| Point2::new(f64::from(i), f64::from(i)))
+        .collect();
     diagonal.extend_from_within(5..15);
     check(&diagonal, &queries_for(&diagonal));
     // Every point duplicated, the copies first: the answer is the smallest index.
@@ -256,7 +263,10 @@ fn bad_queries_and_starts_are_errors() {
     }
     let qs = [Point2::new(0.5, 0.5), Point2::new(f64::INFINITY, 0.0)];
     match search.nearest_all(&qs) {
-        Err(Error::InvalidParameter { name: "queries", reason }) => {
+        Err(Error::InvalidParameter {
+            name: "queries",
+            reason,
+        }) => {
             assert!(reason.contains("query 1"), "{reason}")
         }
         other => panic!("{other:?}"),
@@ -286,10 +296,12 @@ fn scaled_lattice() -> impl Strategy<Value = (Vec<Point2>, Vec<Point2>)> {
         .prop_map(|(p, q, s)| {
             let at = |(x, y): (i32, i32)| Point2::new(f64::from(x) * s, f64::from(y) * s);
             // Queries on the half-lattice: ties between two and four points are common.
-            let half = |(x, y): (i32, i32)| {
-                Point2::new(f64::from(x) * 0.5 * s, f64::from(y) * 0.5 * s)
-            };
-            (p.into_iter().map(at).collect(), q.into_iter().map(half).collect())
+            let half =
+                |(x, y): (i32, i32)| Point2::new(f64::from(x) * 0.5 * s, f64::from(y) * 0.5 * s);
+            (
+                p.into_iter().map(at).collect(),
+                q.into_iter().map(half).collect(),
+            )
         })
 }
 
