@@ -84,7 +84,13 @@ const NO_VERTEX: u32 = u32::MAX;
 const STAR_HEADER: usize = 3;
 
 /// Nearest-neighbour queries on a fixed point set: its Delaunay graph and a grid of entry
-/// vertices, built once (see the [module docs](self) for the idea).
+/// vertices, built once.
+///
+/// A query starts at the entry of its grid cell (about one cell per site, each entered at
+/// the site nearest to its centre) and walks the Delaunay graph greedily towards the query
+/// ([`nearest_with`](Self::nearest_with)): O(1) expected steps on uniform points, an exact
+/// answer on every input, since the walk is correct from any start and the grid is only a
+/// hint. Batches of queries go faster through [`nearest_all`](Self::nearest_all).
 ///
 /// ```
 /// use compgeo::geometry::{Point2, PointSet};
