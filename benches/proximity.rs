@@ -56,10 +56,11 @@
 //! | empty-circle/uniform-square, clustered, grid | 10⁵ | 114 ms, 86.9 ms, 155 ms | | | no peer |
 //!
 //! At 10³ and 10⁴ the ratios are similar (closest pair 0.44 to 0.64 on uniform points, the
-//! Shamos divide and conquer the fastest of all there: 295 µs and 5.23 ms). Where we lose:
-//! a nearest query (`NearestSearch::nearest`) walks the Delaunay graph from a hull vertex,
-//! O(√n) steps on uniform points, where spade's hierarchy and rstar's tree descend in O(log n); an R-tree is
-//! also cheaper to build than any triangulation. On the grid the EMST's Kruskal sorts every
+//! Shamos divide and conquer the fastest of all there: 295 µs and 5.23 ms). Where we lost:
+//! the `nearest-query` rows above were measured when a nearest query walked the Delaunay
+//! graph from a hull vertex, O(√n) steps on uniform points; it now starts at a grid cell's
+//! entry vertex, O(1) expected steps, measured against spade and kiddo at 10⁶ in
+//! `benches/nearest.rs`. An R-tree is also cheaper to build than any triangulation. On the grid the EMST's Kruskal sorts every
 //! Delaunay edge by its exact squared length, and the ties of the grid make that sort and
 //! the union–find work harder than petgraph's on rounded weights.
 

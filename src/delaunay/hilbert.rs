@@ -69,7 +69,7 @@ pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<
 ///
 /// O(n log n) time, O(n) auxiliary space; O(n log r) for points that come as r runs already
 /// in curve order, as the BRIO rounds do (the stable sort merges natural runs).
-pub(super) fn curve_order(points: &[Point2]) -> Vec<u32> {
+pub(crate) fn curve_order(points: &[Point2]) -> Vec<u32> {
     let Some(bounds) = BoundingBox::of(points) else {
         return Vec::new();
     };
@@ -115,8 +115,9 @@ impl Grid {
     }
 }
 
-/// The factor that maps `0.5 * (v - min)` onto `[0, cells]`, 0 for an empty range.
-fn grid_scale(min: f64, max: f64, cells: f64) -> f64 {
+/// The factor that maps `0.5 * (v - min)` onto `[0, cells]`, 0 for an empty range (also the
+/// nearest-point search's grid of entry vertices).
+pub(crate) fn grid_scale(min: f64, max: f64, cells: f64) -> f64 {
     let half_width = 0.5 * max - 0.5 * min;
     if half_width > 0.0 {
         let scale = cells / half_width;

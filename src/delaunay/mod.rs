@@ -70,6 +70,7 @@ pub use check::{check_delaunay, check_delaunay_with};
 pub use clip::ClipBox;
 pub use divide_conquer::{divide_and_conquer, divide_and_conquer_with};
 pub use fortune::{fortune, fortune_trace, fortune_with, FortuneStep};
+pub(crate) use hilbert::{curve_order, grid_scale};
 pub use incremental::{incremental, incremental_with};
 pub use lawson::{lawson, lawson_trace, lawson_with, LawsonStep};
 pub use triangulation::{find_duplicates, next_halfedge, prev_halfedge, Triangulation, EMPTY};

@@ -58,6 +58,7 @@ mod mesh_cli;
 mod mesh_cli_schemes;
 mod mesh_doo_sabin;
 mod mesh_loop;
+mod nearest;
 mod nurbs;
 mod nurbs_cli;
 mod overflow;

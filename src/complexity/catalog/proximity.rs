@@ -11,10 +11,11 @@
 //!
 //! The exact Delaunay checker is measured on a triangulation built while preparing: one
 //! in-circle test per interior edge, Θ(n). Nearest-point queries walk the Delaunay graph
-//! (built while preparing) greedily from a hull vertex, about six distance evaluations per
-//! step, in each of their two sizes: 64 queries uniform in the unit square against n uniform
-//! sites, where a walk crosses the set in Θ(√n) expected steps (`uniform-square`, O(√n)), and
-//! n such queries against 1024 sites (`random-queries`, Θ(n)).
+//! (built while preparing, with its grid of entry vertices) greedily from the entry of the
+//! query's cell, about six distance evaluations per step, in each of their two sizes: 64
+//! queries uniform in the unit square against n uniform sites, where a walk takes O(1)
+//! expected steps whatever n (`uniform-square`, O(1)), and n such queries against 1024
+//! sites (`random-queries`, Θ(n)).
 
 use std::rc::Rc;
 
@@ -123,8 +124,8 @@ enum Nearest {
 }
 
 impl Workload for Nearest {
-    /// The sites, their Delaunay graph and the queries; shared, since no run changes them.
-    type Input = Rc<(Vec<Point2>, DelaunayGraph, Vec<Point2>)>;
+    /// The sites' Delaunay graph and the queries; shared, since no run changes them.
+    type Input = Rc<(DelaunayGraph, Vec<Point2>)>;
     /// The sum of the answers.
     type Output = usize;
 
@@ -135,16 +136,16 @@ impl Workload for Nearest {
         };
         let pts = points(PointKind::UniformSquare, sites, seed)?;
         let set = PointSet::new(&pts)?;
-        let graph = DelaunayGraph::new(pts.len(), &incremental_with(&set, &mut NoCount)?);
+        let graph = DelaunayGraph::new(&pts, &incremental_with(&set, &mut NoCount)?);
         let queries = points(PointKind::UniformSquare, queries, seed ^ 1)?;
-        Ok(Rc::new((pts, graph, queries)))
+        Ok(Rc::new((graph, queries)))
     }
 
     fn run<C: Counter>(&self, input: &mut Self::Input, counter: &mut C) -> Result<usize> {
-        let (pts, graph, queries) = &**input;
+        let (graph, queries) = &**input;
         let mut sum = 0;
         for &q in queries {
-            sum += graph.walk(pts, q, None, counter)?;
+            sum += graph.walk(q, None, counter)?;
         }
         Ok(sum)
     }
