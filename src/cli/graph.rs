@@ -45,14 +45,14 @@ pub(super) struct ColourArgs {
     algorithm: ColouringAlgorithm,
     /// The search's step budget (dsatur-tabu and hea; default 20(n + 2m), or none with
     /// --time alone); the same seed and steps give the same colouring on every machine
-    #[arg(long, value_name = "STEPS")]
+    #[arg(long, value_name = "STEPS", allow_negative_numbers = true)]
     effort: Option<u64>,
     /// The search's time limit in seconds (dsatur-tabu and hea); with --effort, whichever
     /// ends first
     #[arg(long, value_name = "SECONDS", allow_negative_numbers = true)]
     time: Option<f64>,
     /// The seed of the search's random choices (dsatur-tabu and hea)
-    #[arg(long, value_name = "S")]
+    #[arg(long, value_name = "S", allow_negative_numbers = true)]
     seed: Option<u64>,
     #[command(flatten)]
     graph: GraphInput,

@@ -146,7 +146,9 @@ pub fn hea_budget(g: &Graph, budget: Budget, seed: u64) -> Result<(Colouring, Se
 /// improved by the tabu search, then crosses two at random with the greedy partition
 /// crossover, improves the offspring by the tabu search and lets it replace the worse parent,
 /// until some tabu search ends without conflicts (the next target) or the budget ends. Each
-/// tabu search makes at most 10·n iterations for a core of n vertices (at least 2 000). It
+/// tabu search makes at most 10·n iterations for a core of n vertices (at least 2 000),
+/// except the first member's, which stops only after that many iterations without finding
+/// fewer conflicts. It
 /// returns the fewest colours reached, with a [`SearchReport`]. For a given seed and step
 /// budget the result is the same on every machine; a time limit only cuts the same search
 /// short.
@@ -206,10 +208,17 @@ fn evolve<C: Counter>(
     let iterations = local_iterations(core);
     let mut search = TabuCol::new(core);
     // Improves a member; `Ok` when the tabu search removed every conflict.
-    let mut improve = |colour: &[u32], meter: &mut Meter, rng: &mut Rng, c: &mut C| {
+    let mut improve = |colour: &[u32], first: bool, meter: &mut Meter, rng: &mut Rng, c: &mut C| {
         search.load(colour, meter, c);
         let mut kept = Vec::new();
-        let fewest = search.run(iterations, Some(&mut kept), meter, rng, c);
+        // The first member searches on while it keeps improving: the plain tabu descent,
+        // until it stalls.
+        let (limit, patience) = if first {
+            (u64::MAX, iterations)
+        } else {
+            (iterations, u64::MAX)
+        };
+        let fewest = search.run(limit, patience, Some(&mut kept), meter, rng, c);
         if fewest == 0 {
             Ok(kept)
         } else {
@@ -223,7 +232,7 @@ fn evolve<C: Counter>(
         } else {
             random_greedy(core, meter, rng, c)
         };
-        match improve(&member, meter, rng, c) {
+        match improve(&member, population.is_empty(), meter, rng, c) {
             Ok(proper) => return Some(proper),
             Err(kept) => population.push(kept),
         }
@@ -235,7 +244,7 @@ fn evolve<C: Counter>(
         let a = rng.index(POPULATION);
         let b = (a + 1 + rng.index(POPULATION - 1)) % POPULATION;
         let child = gpx(&population[a].0, &population[b].0, core.colours, meter, rng);
-        match improve(&child, meter, rng, c) {
+        match improve(&child, false, meter, rng, c) {
             Ok(proper) => return Some(proper),
             Err(kept) => {
                 let worse = if population[a].1 > population[b].1 {

@@ -303,7 +303,7 @@ fn search<C: Counter>(
         |core, colour, meter, rng, c| {
             let mut state = TabuCol::new(core);
             state.load(&core.start_from(colour, c), meter, c);
-            let fewest = state.run(u64::MAX, None, meter, rng, c);
+            let fewest = state.run(u64::MAX, u64::MAX, None, meter, rng, c);
             (fewest == 0).then(|| state.colour)
         },
     )
@@ -388,12 +388,15 @@ impl<'a> TabuCol<'a> {
         meter.charge((self.colour.len() * k) as u64 + self.core.edge_ends());
     }
 
-    /// Makes at most `iterations` moves, stopping early when no edge conflicts or the meter
-    /// refuses the next iteration's evaluations. Returns the fewest conflicts seen (from the
-    /// start of the run); if `best` is given it receives the colouring that had them.
+    /// Makes at most `iterations` moves, stopping early when no edge conflicts, when
+    /// `patience` iterations in a row have not lowered the fewest conflicts seen, or when the
+    /// meter refuses the next iteration's evaluations. Returns the fewest conflicts seen
+    /// (from the start of the run); if `best` is given it receives the colouring that had
+    /// them.
     pub(super) fn run<C: Counter>(
         &mut self,
         iterations: u64,
+        patience: u64,
         mut best: Option<&mut Vec<u32>>,
         meter: &mut Meter,
         rng: &mut Rng,
@@ -404,8 +407,8 @@ impl<'a> TabuCol<'a> {
         if let Some(best) = best.as_deref_mut() {
             best.clone_from(&self.colour);
         }
-        let mut done = 0;
-        while self.conflicts > 0 && done < iterations {
+        let (mut done, mut improved_at) = (0, 0);
+        while self.conflicts > 0 && done < iterations && done - improved_at < patience {
             let evaluations = (self.conflicting.len() * (k - 1)) as u64;
             if !meter.spend(evaluations) {
                 break;
@@ -430,6 +433,7 @@ impl<'a> TabuCol<'a> {
             meter.charge(self.core.neighbours(v).len() as u64);
             if self.conflicts < fewest {
                 fewest = self.conflicts;
+                improved_at = done;
                 if let Some(best) = best.as_deref_mut() {
                     best.copy_from_slice(&self.colour);
                     meter.charge(self.colour.len() as u64);
@@ -601,7 +605,14 @@ mod tests {
                 assert!(state.consistent(), "seed {seed} after move {step}");
             }
             let mut best = Vec::new();
-            let fewest = state.run(300, Some(&mut best), &mut meter, &mut rng, &mut NoCount);
+            let fewest = state.run(
+                300,
+                u64::MAX,
+                Some(&mut best),
+                &mut meter,
+                &mut rng,
+                &mut NoCount,
+            );
             assert!(state.consistent(), "seed {seed} after the search");
             let recount = g
                 .edges()
