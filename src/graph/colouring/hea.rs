@@ -22,7 +22,7 @@
 //! the seed, so a graph, a seed and a step budget give the same colouring on every machine.
 //!
 //! Source: P. Galinier and J.-K. Hao, *Hybrid evolutionary algorithms for graph coloring*,
-//! Journal of Combinatorial Optimization 3(4), 379–397, 1999 (cited as [GH99] in
+//! Journal of Combinatorial Optimization 3(4), 379–397, 1999 (cited as \[GH99, HEA\] in
 //! `docs/references.md`).
 //!
 //! The tests check every colouring with [`check_colouring`](super::check_colouring), that
@@ -53,7 +53,7 @@ pub(super) const DECLARATION: Declaration = Declaration {
     space: "O(n + m)",
     operation: Some(Operation::Comparisons),
     counts: "DSatur's heap comparisons plus at most 20(n + 2m) search steps",
-    source: "[GH99]",
+    source: "[GH99, HEA]",
     claims: &[on("gnm-4n", Bound::MLogN, Operation::Comparisons)],
 };
 

@@ -304,7 +304,7 @@ fn search<C: Counter>(
             let mut state = TabuCol::new(core);
             state.load(&core.start_from(colour, c), meter, c);
             let fewest = state.run(u64::MAX, u64::MAX, None, meter, rng, c);
-            (fewest == 0).then(|| state.colour)
+            (fewest == 0).then_some(state.colour)
         },
     )
 }
