@@ -2,7 +2,7 @@
 //!
 //! Exact computational-geometry and geometric-modelling algorithms that count their
 //! operations and measure their own growth against their stated O-bounds: the report
-//! ([`complexity`], `compgeo report`) measures all 166 declared algorithms in 208 catalog
+//! ([`complexity`], `compgeo report`) measures all 167 declared algorithms in 209 catalog
 //! entries, one per input distribution and size parameter.
 //!
 //! ## Module map
@@ -70,6 +70,7 @@
 //! | `colour/smallest-last`: [`graph::smallest_last_order`] | O(n + m) | O(n) | edge visits: the greedy colouring's 2m edge visits | [RD, §2.1] | `src/graph/colouring/smallest_last.rs` |
 //! | `colour/dsatur`: [`graph::dsatur`] | O((n + m) log n) | O(n + m) | comparisons: heap comparisons; exactly 2m edge visits | [RD, §2.1] | `src/graph/colouring/dsatur.rs` |
 //! | `colour/dsatur-tabu`: [`graph::dsatur_tabu`] | O((n + m) log n) | O(n + m) | comparisons: DSatur's heap comparisons plus at most 20(n + 2m) search steps | [RD, §2.1] | `src/graph/colouring/tabu.rs` |
+//! | `colour/hea`: [`graph::hea`] | O((n + m) log n) | O(n + m) | comparisons: DSatur's heap comparisons plus at most 20(n + 2m) search steps | [GH99, HEA] | `src/graph/colouring/hea.rs` |
 //! | `mst/prim`: [`graph::prim`] | O(m log m) | O(n + m) | comparisons: heap comparisons; O(m log n) on simple graphs | [RD, §2.1] | `src/graph/mst/prim.rs` |
 //! | `mst/kruskal`: [`graph::kruskal`] | O(m log m) | O(n + m) | comparisons: those of the edge sort, then one edge visit per edge examined | [RD, §2.1] | `src/graph/mst/kruskal.rs` |
 //! | `mst/boruvka`: [`graph::boruvka`] | O(m log n) | O(n + m) | edge visits: at most ⌈log₂ n⌉ rounds over the remaining edges | [RD, §2.1] | `src/graph/mst/boruvka.rs` |

@@ -4,7 +4,8 @@
 //! Output: `bfs`/`dfs` print `{"order": [...], "parent": [p or null, ...], "components":
 //! c, "counts": {...}}` (`components` counts the whole graph's), or with `--trace` the
 //! seed's Add / Remove / Q table as text; `colour` prints `{"colours": [...], "count": k,
-//! "counts": {...}}`; `mst` prints `{"edges": [[u, v, w], ...], "edge_indices": [...],
+//! "counts": {...}}`, and for the search strategies (`dsatur-tabu`, `hea`) also `"steps"`,
+//! `"best_step"` and `"timed_out"` (their [`SearchReport`]); `mst` prints `{"edges": [[u, v, w], ...], "edge_indices": [...],
 //! "weight": w, "components": c, "counts": {...}}`. An empty graph is an error.
 
 use super::input::GraphInput;
@@ -13,13 +14,15 @@ use super::CliError;
 use crate::count::Counts;
 use crate::geometry::WideFloat;
 use crate::graph::{
-    colour_with, components, search_trace, search_with, spanning_forest_with, trace_table,
-    ColouringAlgorithm, EdgeList, Graph, MstAlgorithm, SearchAlgorithm, WeightedGraph,
+    colour_budget_with, components, search_trace, search_with, spanning_forest_with, trace_table,
+    Budget, ColouringAlgorithm, EdgeList, Graph, MstAlgorithm, SearchAlgorithm, SearchReport,
+    WeightedGraph, SEARCH_SEED,
 };
 use crate::Error;
 use clap::Args;
 use serde::Serialize;
 use std::io::{self, Write};
+use std::time::Duration;
 
 /// Arguments of `compgeo bfs` and `compgeo dfs`.
 #[derive(Debug, Args)]
@@ -40,6 +43,17 @@ pub(super) struct SearchArgs {
 pub(super) struct ColourArgs {
     #[arg(long, short, help = ColouringAlgorithm::names(), long_help = ColouringAlgorithm::help())]
     algorithm: ColouringAlgorithm,
+    /// The search's step budget (dsatur-tabu and hea; default 20(n + 2m), or none with
+    /// --time alone); the same seed and steps give the same colouring on every machine
+    #[arg(long, value_name = "STEPS", allow_negative_numbers = true)]
+    effort: Option<u64>,
+    /// The search's time limit in seconds (dsatur-tabu and hea); with --effort, whichever
+    /// ends first
+    #[arg(long, value_name = "SECONDS", allow_negative_numbers = true)]
+    time: Option<f64>,
+    /// The seed of the search's random choices (dsatur-tabu and hea)
+    #[arg(long, value_name = "S", allow_negative_numbers = true)]
+    seed: Option<u64>,
     #[command(flatten)]
     graph: GraphInput,
 }
@@ -66,6 +80,8 @@ struct ColourOutput {
     colours: Vec<usize>,
     count: usize,
     counts: Counts,
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    search: Option<SearchReport>,
 }
 
 #[derive(Debug, Serialize)]
@@ -99,13 +115,38 @@ pub(super) fn run_search(args: SearchArgs, algorithm: SearchAlgorithm) -> Result
 
 /// Runs `compgeo colour`.
 pub(super) fn run_colour(args: ColourArgs) -> Result<(), CliError> {
+    let search = args.algorithm.is_search();
+    if !search && (args.effort.is_some() || args.time.is_some() || args.seed.is_some()) {
+        return Err(CliError::Usage(format!(
+            "--effort, --time and --seed apply to the search strategies dsatur-tabu and hea, \
+             not to {}",
+            args.algorithm
+        )));
+    }
+    let time = args.time.map(seconds).transpose()?;
     let g = Graph::from_edge_list(&non_empty(args.graph.read()?)?)?;
+    let budget = match (args.effort, time) {
+        (None, None) => Budget::default_for(&g),
+        (steps, time) => Budget { steps, time },
+    };
     let mut counts = Counts::default();
-    let c = colour_with(&g, args.algorithm, &mut counts);
+    let seed = args.seed.unwrap_or(SEARCH_SEED);
+    let (c, report) = colour_budget_with(&g, args.algorithm, budget, seed, &mut counts)?;
     print_json(&ColourOutput {
         colours: c.colour,
         count: c.count,
         counts,
+        search: search.then_some(report),
+    })
+}
+
+/// The time limit of `--time SECONDS`: a finite, non-negative number of seconds that a
+/// [`Duration`] can hold.
+fn seconds(value: f64) -> Result<Duration, CliError> {
+    Duration::try_from_secs_f64(value).map_err(|_| {
+        CliError::Usage(format!(
+            "--time must be a finite, non-negative number of seconds below 1.8e19, got {value}"
+        ))
     })
 }
 

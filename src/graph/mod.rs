@@ -14,7 +14,8 @@
 //! | [`course_greedy_colouring`] (its steps: [`course_greedy_colouring_trace`]) | O(n²), exactly n(n−1)/2 adjacency tests | adjacency tests |
 //! | [`greedy_colouring`] (any order, [`largest_first_order`], [`smallest_last_order`]) | O(n + m) | edge visits |
 //! | [`dsatur`] | O((n + m) log n) | heap comparisons |
-//! | [`dsatur_tabu`] (DSatur, then [`tabu_recolour`] for fewer colours) | O((n + m) log n) | heap comparisons and moves evaluated |
+//! | [`dsatur_tabu`] (DSatur, then [`tabu_recolour`] for fewer colours; any [`Budget`]: [`dsatur_tabu_budget`]) | O((n + m) log n) with the default budget, plus the steps of a given one | heap comparisons and moves evaluated |
+//! | [`hea`] (DSatur, then the hybrid evolutionary search of Galinier and Hao; any [`Budget`]: [`hea_budget`]) | O((n + m) log n) with the default budget, plus the steps of a given one | heap comparisons and moves evaluated |
 //! | [`prim`] (the course's greedy tree; its steps: [`prim_trace`]) | O(m log n) | heap comparisons |
 //! | [`kruskal`] (its steps: [`kruskal_trace`]) | O(m log m) | sort comparisons |
 //! | [`boruvka`] | O(m log n) | edge visits |
@@ -29,10 +30,12 @@ mod traverse;
 mod union_find;
 
 pub use colouring::{
-    check_colouring, colour, colour_with, course_greedy_colouring, course_greedy_colouring_trace,
-    course_greedy_colouring_with, dsatur, dsatur_tabu, dsatur_tabu_with, dsatur_with,
-    greedy_colouring, greedy_colouring_with, largest_first_order, smallest_last_order,
-    tabu_recolour, tabu_recolour_with, Colouring, ColouringAlgorithm, CourseColouringStep,
+    check_colouring, colour, colour_budget, colour_budget_with, colour_with,
+    course_greedy_colouring, course_greedy_colouring_trace, course_greedy_colouring_with, dsatur,
+    dsatur_tabu, dsatur_tabu_budget, dsatur_tabu_budget_with, dsatur_tabu_with, dsatur_with,
+    greedy_colouring, greedy_colouring_with, hea, hea_budget, hea_budget_with, hea_with,
+    largest_first_order, smallest_last_order, tabu_recolour, tabu_recolour_with, Budget, Colouring,
+    ColouringAlgorithm, CourseColouringStep, SearchReport, CLOCK_STRIDE, POPULATION, SEARCH_SEED,
     TABU_EFFORT,
 };
 pub use graph::{EdgeList, Graph, WeightedGraph, MAX_EDGES, MAX_VERTICES};

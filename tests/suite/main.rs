@@ -28,6 +28,7 @@ mod bspline_knot_ops;
 mod calipers;
 mod catmull_clark;
 mod cli;
+mod colouring_search;
 mod complexity;
 mod constructions;
 mod counts;

@@ -5,8 +5,10 @@
 //! graph, n + m in the bound); the course's colouring counts adjacency tests (exactly
 //! n(n − 1)/2); DSatur and Prim count heap comparisons, Kruskal sort comparisons, Borůvka edge
 //! visits. DSatur's bound O((n + m) log n) is registered as O(m log n), the same growth at a
-//! fixed ratio m/n ≥ 1; DSatur with the tabu search adds its evaluated moves, at most
-//! 20(n + 2m), to DSatur's comparisons under the same bound.
+//! fixed ratio m/n ≥ 1; DSatur with the tabu search (`dsatur-tabu`) and DSatur with the
+//! hybrid evolutionary search (`hea`) add the steps of their default budget, at most
+//! 20(n + 2m) (evaluated moves, counted as comparisons, and table updates), to DSatur's
+//! comparisons under the same bound.
 
 use crate::complexity::{Bound, Entry, Workload};
 use crate::count::Counter;

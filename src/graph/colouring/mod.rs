@@ -1,5 +1,7 @@
 //! Greedy vertex colouring: the course's O(n²) algorithm as printed, the O(n + m) greedy, the
-//! vertex orders largest-first (Welsh–Powell) and smallest-last, and DSatur.
+//! vertex orders largest-first (Welsh–Powell) and smallest-last, DSatur, and two searches
+//! for fewer colours that start from DSatur: the tabu search (TabuCol) and the hybrid
+//! evolutionary algorithm (HEA), both paid from a [`Budget`] of steps and time.
 //!
 //! A colouring gives each vertex a colour so that adjacent vertices differ (seed
 //! [RD, §2.1] "Coloración de vértices", Definitions 2.4–2.6). The greedy
@@ -17,12 +19,17 @@ use crate::count::{Counter, NoCount};
 use crate::error::{Error, Result, Violation};
 use crate::graph::Graph;
 
+mod budget;
 mod course;
 mod dsatur;
 mod greedy;
+mod hea;
 mod largest_first;
+mod reduce;
 mod smallest_last;
 mod tabu;
+
+pub use budget::{Budget, SearchReport, CLOCK_STRIDE, SEARCH_SEED, TABU_EFFORT};
 
 pub use course::{
     course_greedy_colouring, course_greedy_colouring_trace, course_greedy_colouring_with,
@@ -30,9 +37,13 @@ pub use course::{
 };
 pub use dsatur::{dsatur, dsatur_with};
 pub use greedy::{greedy_colouring, greedy_colouring_with};
+pub use hea::{hea, hea_budget, hea_budget_with, hea_with, POPULATION};
 pub use largest_first::largest_first_order;
 pub use smallest_last::smallest_last_order;
-pub use tabu::{dsatur_tabu, dsatur_tabu_with, tabu_recolour, tabu_recolour_with, TABU_EFFORT};
+pub use tabu::{
+    dsatur_tabu, dsatur_tabu_budget, dsatur_tabu_budget_with, dsatur_tabu_with, tabu_recolour,
+    tabu_recolour_with,
+};
 
 /// A vertex colouring.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -66,6 +77,8 @@ algorithm_family! {
         Dsatur = dsatur::DECLARATION => dsatur_with,
         /// [`dsatur_tabu`]: DSatur, then a tabu search for fewer colours.
         DsaturTabu = tabu::DECLARATION => dsatur_tabu_with,
+        /// [`hea`]: DSatur, then the hybrid evolutionary search of Galinier and Hao.
+        Hea = hea::DECLARATION => hea_with,
     }
     fn run_with[C: Counter](g: &Graph, c: &mut C) -> Colouring;
 }
@@ -105,6 +118,94 @@ pub fn colour(g: &Graph, strategy: ColouringAlgorithm) -> Colouring {
 /// ```
 pub fn colour_with<C: Counter>(g: &Graph, strategy: ColouringAlgorithm, c: &mut C) -> Colouring {
     strategy.run_with(g, c)
+}
+
+/// Colours `g` with `strategy`, a search strategy spending `budget` with its random choices
+/// drawn from `seed`; see [`colour_budget_with`].
+///
+/// # Errors
+/// [`Error::InvalidParameter`] (name `"budget"`) if `budget` has neither a step cap nor a
+/// time limit.
+///
+/// # Complexity
+/// That of the strategy, with the search's steps bounded by the budget.
+///
+/// ```
+/// use compgeo::gen::{graph, GraphKind};
+/// use compgeo::graph::{colour_budget, hea_budget, Budget, ColouringAlgorithm, Graph};
+///
+/// let g = Graph::from_edge_list(&graph(GraphKind::Queen, 6, 0, 0)?)?;
+/// let budget = Budget::steps(1_000_000);
+/// let (c, report) = colour_budget(&g, ColouringAlgorithm::Hea, budget, 5)?;
+/// assert_eq!((c.clone(), report), hea_budget(&g, budget, 5)?);
+/// // A strategy that does not search ignores the budget and spends nothing.
+/// let (_, report) = colour_budget(&g, ColouringAlgorithm::Dsatur, budget, 5)?;
+/// assert_eq!(report.steps, 0);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn colour_budget(
+    g: &Graph,
+    strategy: ColouringAlgorithm,
+    budget: Budget,
+    seed: u64,
+) -> Result<(Colouring, SearchReport)> {
+    colour_budget_with(g, strategy, budget, seed, &mut NoCount)
+}
+
+/// Colours `g` with `strategy`, counting as the chosen algorithm counts: the search
+/// strategies ([`ColouringAlgorithm::is_search`]) run [`dsatur_tabu_budget_with`] or
+/// [`hea_budget_with`] with `budget` and `seed`; the others ignore both and report no steps.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] (name `"budget"`) if `budget` has neither a step cap nor a
+/// time limit.
+///
+/// # Complexity
+/// As [`colour_budget`].
+///
+/// ```
+/// use compgeo::count::Counts;
+/// use compgeo::graph::{colour_budget_with, Budget, ColouringAlgorithm, Graph};
+///
+/// let g = Graph::from_edges(4, &[[0, 1], [1, 2], [2, 3], [3, 0]])?;
+/// let mut c = Counts::default();
+/// let budget = Budget::steps(1000);
+/// let (colouring, _) = colour_budget_with(&g, ColouringAlgorithm::DsaturTabu, budget, 1, &mut c)?;
+/// assert_eq!(colouring.count, 2);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+pub fn colour_budget_with<C: Counter>(
+    g: &Graph,
+    strategy: ColouringAlgorithm,
+    budget: Budget,
+    seed: u64,
+    c: &mut C,
+) -> Result<(Colouring, SearchReport)> {
+    match strategy {
+        ColouringAlgorithm::DsaturTabu => dsatur_tabu_budget_with(g, budget, seed, c),
+        ColouringAlgorithm::Hea => hea_budget_with(g, budget, seed, c),
+        _ => {
+            budget.check()?;
+            Ok((colour_with(g, strategy, c), SearchReport::default()))
+        }
+    }
+}
+
+impl ColouringAlgorithm {
+    /// Whether the strategy searches for fewer colours within a [`Budget`] (`dsatur-tabu`
+    /// and `hea`), so that [`colour_budget`] passes it the budget and seed.
+    ///
+    /// ```
+    /// use compgeo::graph::ColouringAlgorithm;
+    ///
+    /// assert!(ColouringAlgorithm::Hea.is_search() && !ColouringAlgorithm::Dsatur.is_search());
+    /// ```
+    pub fn is_search(self) -> bool {
+        matches!(
+            self,
+            ColouringAlgorithm::DsaturTabu | ColouringAlgorithm::Hea
+        )
+    }
 }
 
 /// The course's greedy colouring in the vertex order `0..n`.
