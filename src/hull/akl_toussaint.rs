@@ -223,10 +223,10 @@ fn sides_outside<C: Counter>(p: Point2, b: &Box, counter: &mut C) -> u8 {
     for _ in 0..4 {
         counter.comparison();
     }
-    u8::from(p.x <= b[0]) * WEST
-        | u8::from(p.x >= b[1]) * EAST
-        | u8::from(p.y <= b[2]) * SOUTH
-        | u8::from(p.y >= b[3]) * NORTH
+    (u8::from(p.x <= b[0]) * WEST)
+        | (u8::from(p.x >= b[1]) * EAST)
+        | (u8::from(p.y <= b[2]) * SOUTH)
+        | (u8::from(p.y >= b[3]) * NORTH)
 }
 
 /// An axis-parallel box `[x_lo, x_hi, y_lo, y_hi]`.
