@@ -4,7 +4,6 @@
 //! graphs, the known χ of queen and Mycielski graphs), and the command line's `--effort`,
 //! `--time` and `--seed`.
 
-use crate::common::{assert_rejected, run_json};
 use compgeo::gen::{graph, GraphKind};
 use compgeo::graph::*;
 use compgeo::Error;
@@ -238,8 +237,10 @@ proptest! {
     }
 }
 
+#[cfg(feature = "cli")]
 mod cli {
     use super::*;
+    use crate::common::{assert_rejected, run_json};
 
     const QUEEN6: &str = "queen6_6";
 
