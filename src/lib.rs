@@ -78,7 +78,7 @@
 //! | `hull/jarvis`: [`hull::jarvis_march`] | Θ(nh) | O(h) | orientation tests: at most n − 1 per hull vertex | [RD, §2.2] | `src/hull/jarvis.rs` |
 //! | `hull/graham`: [`hull::graham_scan`] | O(n log n) | O(n) | orientation tests: at most 2n − 4 in the scan after the sort | [RD, §2.2] | `src/hull/graham.rs` |
 //! | `hull/monotone-chain`: [`hull::monotone_chain`] | O(n log n) | O(n) | comparisons: those of the sort, plus n − 1 to merge duplicates | [RD, §2.2] | `src/hull/monotone_chain.rs` |
-//! | `hull/akl-toussaint`: [`hull::akl_toussaint`] | O(n log n) worst case, O(n) expected on uniform input | O(n) | comparisons: up to four per point for the filter box | [RD, §2.2] | `src/hull/akl_toussaint.rs` |
+//! | `hull/akl-toussaint`: [`hull::akl_toussaint`] | O(n log n) worst case, O(n) expected on uniform input | O(n) | comparisons: four per point for the filter box | [RD, §2.2] | `src/hull/akl_toussaint.rs` |
 //! | `hull/quickhull`: [`hull::quickhull`] | O(nh) worst case, O(n log n) expected | O(n) | orientation tests | [RD, §2.2] | `src/hull/quickhull.rs` |
 //! | `hull/chan`: [`hull::chan`] | O(n log h) | O(n) | orientation tests | [RD, §2.2] | `src/hull/chan.rs` |
 //! | `diameter/calipers`: [`calipers::ConvexPolygon::diameter`] | Θ(h) after the hull | O(n) | distance evaluations: at most 3h/2 after the hull, one per antipodal pair | [RD, §2.3] | `src/calipers/diameter.rs` |
