@@ -42,6 +42,22 @@
 //! | uniform-disk, 10⁵ | 0.81–0.93 | 1.33–1.86 |
 //! | cocircular (h = n), 10⁵ | 2.36–2.73 | 0.98–1.06 |
 //!
+//! Then (same day) Chan's hull filters all points by Akl–Toussaint before its rounds (the
+//! filter stops testing when the first 1024 points nearly all survive), and a first guess
+//! whose first four groups are mostly hull vertices restarts with the next guess. Medians of
+//! 21 interleaved runs, two runs, load average 2.8 then 9.8:
+//!
+//! | input, n | chan / monotone-chain | chan / akl-toussaint |
+//! |---|---|---|
+//! | uniform-disk, 10⁶ | 0.32, 0.33 | 0.95, 1.03 |
+//! | uniform-disk, 10⁵ | 0.30, 0.35 | 1.04, 0.96 |
+//! | cocircular (h = n), 10⁵ | 1.30, 1.33 | 1.26, 1.32 |
+//!
+//! On a disk, what is left after the filter (a tenth of the points, in a thin ring) is
+//! sorted by both: Chan's first groups of it are mostly hull vertices, so it takes the one
+//! group of the larger guess, which is Akl–Toussaint's sort. Chan can only match
+//! Akl–Toussaint there, not beat it: the filter, common to both, is most of the time.
+//!
 //! The `hull/uniform-disk` group has the same inputs for criterion.
 
 use compgeo::count::{NoCount, Silent};

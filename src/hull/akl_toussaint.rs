@@ -150,7 +150,13 @@ pub fn akl_toussaint_filter<C: Counter>(points: &PointSet, counter: &mut C) -> V
     filter(points.points(), counter)
 }
 
-/// [`akl_toussaint_filter`] on finite points (Chan's hull filters each of its groups).
+/// How many points [`filter`] tests before it may give up.
+const FILTER_PROBE: usize = 1024;
+
+/// [`akl_toussaint_filter`] on finite points, for Chan's hull (all points, then each of its
+/// groups), which gives up early where filtering does not pay: if more than three quarters
+/// of the first [`FILTER_PROBE`] points survive, the points in convex position or nearly so,
+/// the rest is kept untested (a superset of the boundary points is all the caller needs).
 pub(super) fn filter<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
     if points.len() < 4 {
         return (0..points.len()).collect();
@@ -168,6 +174,10 @@ pub(super) fn filter<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usiz
     let inner = inner_box(points, &extremes, &polygon, &facing, counter);
     let mut survivors = Vec::new();
     for (i, &p) in points.iter().enumerate() {
+        if i == FILTER_PROBE && 4 * survivors.len() > 3 * FILTER_PROBE {
+            survivors.extend(i..points.len());
+            return survivors;
+        }
         let sides = match &inner {
             Some(b) => match sides_outside(p, b, counter) {
                 0 => continue,

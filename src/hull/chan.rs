@@ -47,8 +47,10 @@ pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
 
 /// The convex hull of `points` by Chan's algorithm, recording its operations in `counter`.
 ///
-/// Idea: guess m = 2^(2^t) for t = 3, 4, 5 (256, 65 536, 2^32). Split the input into
-/// groups of m consecutive points and hull each group: the Akl–Toussaint filter inside the
+/// Idea: first drop the points strictly inside the polygon of the extreme points (the
+/// Akl–Toussaint filter over all points, O(n); it stops testing when the first 1024 points
+/// nearly all survive, as in convex position). Then guess m = 2^(2^t) for t = 3, 4, 5
+/// (256, 65 536, 2^32). Split the survivors into groups of m consecutive points and hull each group: the Akl–Toussaint filter inside the
 /// group, then the monotone chain on its survivors (O(m log m) per group). Then run Jarvis's
 /// march from the lexicographically smallest point, but instead of scanning every point, ask
 /// each group for its tangent from the current vertex: the vertex of the group's hull that
@@ -63,7 +65,10 @@ pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
 /// outnumber the vertices the next round sorts, so a failed march never costs more than the
 /// next round; and when the next guess would make at most two groups, the candidates are
 /// sorted as one group (two groups of at least s/2 cost as much as one) and the monotone
-/// chain ends the run. Inputs of at most 256 points are a single group.
+/// chain ends the run. Inputs of at most 256 points are a single group. And the first guess
+/// is judged on its first four groups: if their hulls keep more than half of their points,
+/// the run starts over with the next guess (Chan's bound holds for any constant first
+/// guess, so for either; four groups are all this costs).
 ///
 /// The binary search is exact: seen from the current vertex p (a strict hull vertex, so
 /// outside every group's hull or equal to one of its vertices), the group's vertices ordered
@@ -93,8 +98,8 @@ pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
 ///
 /// # Counts
 ///
-/// Per round with group size m: the filter's comparisons and orientation tests (first round
-/// only), the monotone chain's comparisons (O(n log m), the merge of the runs in later
+/// The filter's comparisons and orientation tests (over all points, then in each group of
+/// the first round), then per round with group size m: the monotone chain's comparisons (O(n log m), the merge of the runs in later
 /// rounds) and orientation tests (at most 3n) on the groups, then per step of the march O(log m)
 /// comparisons and at most 2⌈log₂ m⌉ + 3 orientation tests per group, and up to n/m more to
 /// pick the best tangent. In all O(n log h) comparisons and orientation tests, plus a
@@ -125,32 +130,64 @@ pub fn chan_with<C: Counter>(
     if n == 0 {
         return Vec::new();
     }
+    let strict = strict_hull(points, counter);
+    finish(points, 0..n, strict, options, counter)
+}
+
+/// The strictly convex hull of the finite, non-empty `points` by Chan's rounds (see
+/// [`chan_with`]), counter-clockwise from the lexicographically smallest point.
+fn strict_hull<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
+    if points.len() <= 1 << FIRST_EXPONENT {
+        return chains(&lex_sorted_items(points, 0..points.len(), counter), counter);
+    }
+    // The Akl–Toussaint filter over all points first: O(n), and it leaves the rounds only
+    // the points outside the polygon of the extreme points. Survivors keep their order, so
+    // of equal points the smallest index still comes first.
+    let kept = filter(points, counter);
+    let survivors: Vec<Point2> = kept.iter().map(|&i| points[i]).collect();
+    let hull = rounds(&survivors, counter);
+    hull.into_iter().map(|i| kept[i]).collect()
+}
+
+/// Chan's rounds on the finite, non-empty `points`.
+fn rounds<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
+    let n = points.len();
     let start = lex_min(points, counter);
+    let one_group = |counter: &mut C| chains(&lex_sorted_items(points, 0..n, counter), counter);
     let mut exponent = FIRST_EXPONENT;
     let mut m = group_size(exponent, n);
-    let strict = if m >= n {
-        chains(&lex_sorted_items(points, 0..n, counter), counter)
-    } else {
-        let mut groups = Groups::of_input(points, m, counter);
-        loop {
-            let limit = groups.march_limit(m);
-            if let Some(hull) = wrap(points, &groups, start, limit, counter) {
-                break hull;
+    if m >= n {
+        return one_group(counter);
+    }
+    let mut groups = match Groups::of_input(points, m, Some(PROBED_GROUPS), counter) {
+        Some(groups) => groups,
+        None => {
+            // The first groups are mostly hull vertices: take the next guess from the start.
+            exponent *= 2;
+            m = group_size(exponent, n);
+            if 2 * m >= n {
+                return one_group(counter);
             }
-            // The hull of all points is the hull of the group hulls' vertices: the next
-            // round groups only them, already sorted in runs.
-            let candidates = groups.lex_runs();
-            exponent = exponent.saturating_mul(2);
-            m = group_size(exponent, candidates.len());
-            // At most two groups: one costs no more (sorting s candidates in two groups of
-            // at least s/2 costs as much as sorting them at once) and needs no march.
-            if 2 * m >= candidates.len() {
-                break chains(&sorted_candidates(points, candidates, counter), counter);
-            }
-            groups = Groups::of_runs(points, candidates, m, counter);
+            Groups::of_input(points, m, None, counter).expect("no probe, no early return")
         }
     };
-    finish(points, 0..n, strict, options, counter)
+    loop {
+        let limit = groups.march_limit(m);
+        if let Some(hull) = wrap(points, &groups, start, limit, counter) {
+            return hull;
+        }
+        // The hull of all points is the hull of the group hulls' vertices: the next round
+        // groups only them, already sorted in runs.
+        let candidates = groups.lex_runs();
+        exponent = exponent.saturating_mul(2);
+        m = group_size(exponent, candidates.len());
+        // At most two groups: one costs no more (sorting s candidates in two groups of at
+        // least s/2 costs as much as sorting them at once) and needs no march.
+        if 2 * m >= candidates.len() {
+            return chains(&sorted_candidates(points, candidates, counter), counter);
+        }
+        groups = Groups::of_runs(points, candidates, m, counter);
+    }
 }
 
 /// `items`, sorted lexicographically without duplicates: merged from their runs when the
@@ -176,6 +213,13 @@ fn sorted_candidates<C: Counter>(
 /// group, that is the monotone chain.
 const FIRST_EXPONENT: u32 = 8;
 
+/// How many groups of the first guess are hulled before the guess is judged: if their hulls
+/// keep more than half of their points, the march over groups of 256 could close only after
+/// a round of little filtering and many tangents, so the run restarts with the next guess,
+/// 65 536, at a cost of at most these four groups. Chan's bound holds for any constant first
+/// guess, so it holds for either; the choice only decides the constant.
+const PROBED_GROUPS: usize = 4;
+
 /// The hulls of groups of points, stored one after another.
 struct Groups {
     /// Every group's strictly convex hull, counter-clockwise from its lexicographically
@@ -199,10 +243,21 @@ impl Groups {
     /// its extreme points and are never sorted), sorted, then the monotone chain. The filter
     /// is skipped after a group where it kept more than three quarters of the points, until a
     /// group's hull has at most three quarters of its points.
-    fn of_input<C: Counter>(points: &[Point2], m: usize, counter: &mut C) -> Groups {
+    ///
+    /// With `probe = Some(k)`: `None` as soon as the first k groups (if there are more) have
+    /// hulls that keep more than half of their points.
+    fn of_input<C: Counter>(
+        points: &[Point2],
+        m: usize,
+        probe: Option<usize>,
+        counter: &mut C,
+    ) -> Option<Groups> {
         let mut groups = Groups::with_capacity(points.len(), m);
         let mut filtering = true;
-        for lo in (0..points.len()).step_by(m) {
+        for (k, lo) in (0..points.len()).step_by(m).enumerate() {
+            if probe == Some(k) && 2 * groups.vertices.len() > lo {
+                return None;
+            }
             let hi = (lo + m).min(points.len());
             let sorted = if filtering {
                 let kept = filter(&points[lo..hi], counter);
@@ -211,14 +266,15 @@ impl Groups {
                 filtering = 4 * kept.len() <= 3 * (hi - lo);
                 lex_sorted_items_by_comparisons(points, kept.into_iter().map(|i| i + lo), counter)
             } else {
-                lex_sorted_items_by_comparisons(points, lo..hi, counter)
+                // Unfiltered groups of the larger guesses are long enough for the radix sort.
+                lex_sorted_items(points, lo..hi, counter)
             };
             let before = groups.vertices.len();
             groups.push(points, &sorted, counter);
             // ... and take it up again once a group's hull keeps at most three quarters.
             filtering = filtering || 4 * (groups.vertices.len() - before) <= 3 * (hi - lo);
         }
-        groups
+        Some(groups)
     }
 
     /// The hulls of the groups `items[0..m]`, `items[m..2m]`, ... of points given in sorted
@@ -424,7 +480,7 @@ mod tests {
         ]
         .map(Point2::from)
         .to_vec();
-        let groups = Groups::of_input(&polygon, polygon.len(), &mut NoCount);
+        let groups = Groups::of_input(&polygon, polygon.len(), None, &mut NoCount).unwrap();
         let hull: Vec<Point2> = groups.vertices.iter().map(|v| v.0).collect();
         let outside = |q: Point2| {
             (0..hull.len()).any(|k| {
@@ -459,7 +515,7 @@ mod tests {
             .collect();
         assert_eq!([8, 16, 32].map(|e| group_size(e, 300)), [256, 300, 300]);
         assert_eq!(group_size(64, 300), 300);
-        let groups = Groups::of_input(&pts, 256, &mut NoCount);
+        let groups = Groups::of_input(&pts, 256, None, &mut NoCount).unwrap();
         assert_eq!(groups.spans.len(), 2);
         assert_eq!(groups.vertices.len(), 300, "every point is a group vertex");
         let limit = groups.march_limit(256);
@@ -469,12 +525,39 @@ mod tests {
         assert_eq!(oracle.len(), 300);
         assert_eq!(chan(&pts, HullOptions::default()).unwrap(), oracle);
         // With a limit of h the march closes: the first 16 points have 16 vertices.
-        let groups = Groups::of_input(&pts[..16], 4, &mut NoCount);
+        let groups = Groups::of_input(&pts[..16], 4, None, &mut NoCount).unwrap();
         let small = wrap(&pts[..16], &groups, 0, 16, &mut NoCount).unwrap();
         assert_eq!(
             small,
             brute_force_hull(&pts[..16], HullOptions::default()).unwrap()
         );
+    }
+
+    /// The probe: groups in convex position send the run to the next guess, groups of
+    /// uniform points in a disk do not; either way the hull is the brute force's, also when
+    /// only the probed groups are in convex position and the rest is inside them (the
+    /// monotone chain as the oracle: the brute force is cubic).
+    #[test]
+    fn convex_first_groups_restart_with_the_next_guess() {
+        let parabola: Vec<Point2> = (0..1100)
+            .map(|i| Point2::new(f64::from(i), f64::from(i) * f64::from(i)))
+            .collect();
+        assert!(Groups::of_input(&parabola, 256, Some(PROBED_GROUPS), &mut NoCount).is_none());
+        let disk = crate::gen::points(crate::gen::PointKind::UniformDisk, 3000, 5).unwrap();
+        assert!(Groups::of_input(&disk, 256, Some(PROBED_GROUPS), &mut NoCount).is_some());
+        // A parabola's first 1024 points, then points of a disk well inside it.
+        let mut mixed = parabola[..1024].to_vec();
+        mixed.extend(
+            disk.iter()
+                .map(|p| Point2::new(500.0 + 100.0 * p.x, 400_000.0 + 100.0 * p.y)),
+        );
+        for pts in [&parabola, &mixed] {
+            let oracle = crate::hull::monotone_chain(pts, HullOptions::default()).unwrap();
+            assert_eq!(chan(pts, HullOptions::default()).unwrap(), oracle);
+            let mut counts = crate::count::Counts::default();
+            let set = PointSet::new(pts).unwrap();
+            assert_eq!(chan_with(&set, HullOptions::default(), &mut counts), oracle);
+        }
     }
 
     /// The next round's groups, built from the last round's vertices in runs, are the hulls
@@ -483,7 +566,7 @@ mod tests {
     fn regrouped_runs_give_the_hulls_of_the_merged_groups() {
         let pts = crate::gen::points(crate::gen::PointKind::UniformDisk, 3000, 11).unwrap();
         for (m, m2) in [(4, 16), (16, 256), (256, 65536)] {
-            let groups = Groups::of_input(&pts, m, &mut NoCount);
+            let groups = Groups::of_input(&pts, m, None, &mut NoCount).unwrap();
             let runs = groups.lex_runs();
             assert_eq!(runs.len(), groups.vertices.len());
             // Runs rise; a fall starts a new run, at most two per group.
