@@ -70,6 +70,23 @@ impl CircleKey {
     }
 }
 
+impl CircleKey {
+    /// The order of two events' tops if the enclosures decide it strictly (no coordinates
+    /// needed):
+    /// the quick first step of [`cmp_circles`].
+    #[inline]
+    pub(crate) fn cmp_tops(&self, other: &CircleKey) -> Option<Ordering> {
+        self.top.cmp(other.top).filter(|o| o.is_ne())
+    }
+
+    /// The order of the event's top and the height `y` if the enclosure decides it strictly:
+    /// the quick first step of [`cmp_circle_site`].
+    #[inline]
+    pub(crate) fn cmp_top_with(&self, y: f64) -> Option<Ordering> {
+        self.top.cmp(Interval::point(y)).filter(|o| o.is_ne())
+    }
+}
+
 /// Where `s` is relative to the breakpoint between the beach-line arcs of `p` (left) and
 /// `q` (right) when the sweep line passes through `s`: `Less` if left of it, `Equal` if on
 /// it, `Greater` if right of it.
