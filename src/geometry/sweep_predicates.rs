@@ -377,6 +377,19 @@ impl Interval {
 
     /// The interval times `2^k` (rounded outwards where that is inexact: near underflow).
     fn scaled(self, mut k: i32) -> Interval {
+        if k == 0 {
+            return self;
+        }
+        if (-1000..=1000).contains(&k) {
+            // A product by a power of two is exact unless it overflows or leaves the normal
+            // range: then the bounds are kept as they are, with no widening.
+            let f = pow2(k);
+            let (lo, hi) = (self.lo * f, self.hi * f);
+            let exact = |v: f64| v == 0.0 || (v.is_finite() && v.abs() >= f64::MIN_POSITIVE);
+            if exact(lo) && exact(hi) {
+                return Interval { lo, hi };
+            }
+        }
         let mut v = self;
         while k != 0 {
             let step = k.clamp(-1000, 1000);
