@@ -216,7 +216,8 @@ fn one_ulp_perturbations_of_degenerate_sets_at_extreme_scales() {
     .iter()
     .map(|&(x, y)| (x as f64, y as f64))
     .collect();
-    let maps: [(&str, fn(f64) -> f64); 4] = [
+    type Scaling = (&'static str, fn(f64) -> f64);
+    let maps: [Scaling; 4] = [
         ("unit", |v| v),
         ("1e-300", |v| v * 1e-300),
         ("1e300", |v| v * 1e300),
