@@ -338,9 +338,10 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
                     self.counter.comparison();
                     let site = self.sites[next_site];
                     // The sites' coordinates only when the enclosure leaves it open.
-                    let order = e.key.cmp_top_with(site.y).unwrap_or_else(|| {
-                        cmp_circle_site(&e.key, self.points(e.sites), site)
-                    });
+                    let order = e
+                        .key
+                        .cmp_top_with(site.y)
+                        .unwrap_or_else(|| cmp_circle_site(&e.key, self.points(e.sites), site));
                     order != Ordering::Greater
                 }
             };
