@@ -58,6 +58,29 @@
 //! of it is the interval enclosure of each circle event and the breakpoint tests, a sixth
 //! linking the triangles (`Triangulation::from_triangles`).
 //!
+//! 2026-12-03, after the sweep links its triangles' half-edges itself (one tag per Voronoi
+//! edge, no `from_triangles` pass) and the heap compares circle tops without loading the
+//! sites unless the enclosures overlap. Timed interleaved in one process (fortune,
+//! incremental; 7 rounds, median CPU time of the thread), 2 shared cores, load average
+//! 9 to 10 (other builds running); the grid inputs were not re-timed:
+//!
+//! | input, n | fortune before | incremental | ratio before | fortune after | incremental | ratio after |
+//! |---|---|---|---|---|---|---|
+//! | uniform-square, 10³ | 1.74 ms | 0.246 ms | 7.1 | 1.69 ms | 0.313 ms | 5.4 |
+//! | uniform-square, 10⁴ | 21.4 ms | 4.38 ms | 4.9 | 17.8 ms | 4.74 ms | 3.8 |
+//! | uniform-square, 10⁵ | 277 ms | 50.2 ms | 5.5 | 190 ms | 49.0 ms | 3.9 |
+//! | uniform-square, 10⁶ | 4.10 s | 0.570 s | 7.2 | 2.04 s | 0.466 s | 4.4 |
+//! | clustered, 10³ | 1.80 ms | 0.258 ms | 7.0 | 1.36 ms | 0.214 ms | 6.4 |
+//! | clustered, 10⁴ | 19.1 ms | 3.56 ms | 5.4 | 14.9 ms | 3.54 ms | 4.2 |
+//! | clustered, 10⁵ | 260 ms | 42.1 ms | 6.2 | 168 ms | 38.3 ms | 4.4 |
+//! | clustered, 10⁶ | 3.86 s | 0.568 s | 6.8 | 2.01 s | 0.508 s | 4.0 |
+//!
+//! Before the change, a profile at 10⁶ uniform points gave `from_triangles` about 31 % of
+//! the sweep's time, the heap's comparison 25 % and the circle tops' interval enclosures
+//! (`CircleKey::new`) 14 %. The 3× target is not met yet; the next steps are a floating-point
+//! top with an a-priori error bound in place of the interval enclosure, and a smaller heap
+//! entry.
+//!
 //! Voronoi cells, 2026-11-23, same machine (`voronoi/*`; "clipped" clips every cell to the
 //! box voronoice is given; every diagram, voronoice's included, is dropped outside the
 //! timed region). Criterion medians, wall time, two runs a few minutes apart (load

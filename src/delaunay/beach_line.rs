@@ -17,6 +17,9 @@ struct Arc {
     site: u32,
     /// The id of the circle event that would remove this arc, or [`NIL`].
     event: u32,
+    /// A tag the sweep keeps for the breakpoint on this arc's left (the Voronoi edge it
+    /// traces), or [`NIL`].
+    edge: u32,
     prio: u32,
     left: u32,
     right: u32,
@@ -76,6 +79,18 @@ impl BeachLine {
         self.arcs[a as usize].event = event;
     }
 
+    /// The tag of the breakpoint on the left of `a` (see [`set_edge`](Self::set_edge)).
+    #[inline]
+    pub(super) fn edge(&self, a: u32) -> u32 {
+        self.arcs[a as usize].edge
+    }
+
+    /// Tags the breakpoint on the left of `a` (a new arc's tag is [`NIL`]).
+    #[inline]
+    pub(super) fn set_edge(&mut self, a: u32, edge: u32) {
+        self.arcs[a as usize].edge = edge;
+    }
+
     /// Whether `a` is a live arc (not removed, or removed and reused).
     #[inline]
     pub(super) fn is_live(&self, a: u32) -> bool {
@@ -123,6 +138,7 @@ impl BeachLine {
         let arc = Arc {
             site,
             event: NIL,
+            edge: NIL,
             prio,
             left: NIL,
             right: NIL,

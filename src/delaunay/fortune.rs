@@ -3,7 +3,7 @@
 //! vertex event).
 
 use super::beach_line::{BeachLine, NIL};
-use super::Triangulation;
+use super::{Triangulation, EMPTY};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
@@ -274,14 +274,21 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
         queue: Heap::with_capacity(sites.len()),
         next_id: 0,
         triangles: Vec::with_capacity(2 * sites.len()),
+        edges: Vec::with_capacity(3 * sites.len()),
+        halfedges: Vec::with_capacity(6 * sites.len()),
     };
     sweep.run();
-    let triangles: Vec<[usize; 3]> = sweep
+    let triangles: Vec<usize> = sweep
         .triangles
         .iter()
-        .map(|t| t.map(|v| index[v as usize]))
+        .flat_map(|t| t.map(|v| index[v as usize]))
         .collect();
-    Triangulation::from_triangles(points, &triangles, duplicates)
+    let halfedges: Vec<usize> = sweep
+        .halfedges
+        .iter()
+        .map(|&h| if h == NIL { EMPTY } else { h as usize })
+        .collect();
+    Triangulation::from_linked(points, triangles, halfedges, duplicates)
 }
 
 /// A circle event: arc `arc` (between the arcs of `sites[0]` and `sites[2]`) vanishes.
@@ -310,6 +317,13 @@ struct Sweep<'a, C, O> {
     next_id: u32,
     /// Counter-clockwise triangles as site positions.
     triangles: Vec<[u32; 3]>,
+    /// Per Voronoi edge (the tag of the breakpoints tracing it, see
+    /// [`BeachLine::edge`]): the half-edge of the first triangle found at one of its ends,
+    /// or [`NIL`] while there is none.
+    edges: Vec<u32>,
+    /// The opposite of each half-edge of `triangles` (half-edge `3t + k` runs from vertex
+    /// `k` to vertex `k + 1` of triangle `t`), [`NIL`] on the hull.
+    halfedges: Vec<u32>,
 }
 
 impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
@@ -322,9 +336,13 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
                 Some(_) if next_site == n => true,
                 Some(e) => {
                     self.counter.comparison();
-                    let e = *e;
-                    cmp_circle_site(&e.key, self.points(e.sites), self.sites[next_site])
-                        != Ordering::Greater
+                    let site = self.sites[next_site];
+                    // The sites' coordinates only when the enclosure leaves it open.
+                    let order = e
+                        .key
+                        .cmp_top_with(site.y)
+                        .unwrap_or_else(|| cmp_circle_site(&e.key, self.points(e.sites), site));
+                    order != Ordering::Greater
                 }
             };
             if circle_first {
@@ -351,12 +369,18 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
             let above = self.line.site(found);
             self.line.set_event(found, NIL);
             let new = self.line.insert_after(found, s);
+            // The new breakpoints trace one new Voronoi edge, between `above` and `s`
+            // (both of them, in opposite directions, when the arc is split).
+            let edge = self.new_edge(NIL);
+            self.line.set_edge(new, edge);
             if self.sites[above as usize].y == p.y {
                 // The first row: arcs are vertical strips, and the new one goes to the right.
+                debug_assert_eq!(self.line.next(new), NIL, "a first-row arc not at the end");
                 self.check_circle(found);
                 self.check_circle(new);
             } else {
                 let copy = self.line.insert_after(new, above);
+                self.line.set_edge(copy, edge);
                 self.check_circle(found);
                 self.check_circle(copy);
             }
@@ -377,8 +401,18 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         if !self.line.is_live(e.arc) || self.line.event(e.arc) != e.id {
             return; // a false alarm: the arc changed neighbours or is gone
         }
+        let t = self.triangles.len() as u32;
         self.triangles.push(e.sites);
+        self.halfedges.extend([NIL; 3]);
         let (left, right) = (self.line.prev(e.arc), self.line.next(e.arc));
+        // The breakpoints on both sides of the vanishing arc end here, at the Voronoi
+        // vertex: their edges are the triangle's sides left -> arc (half-edge 3t) and
+        // arc -> right (3t + 1). The new breakpoint between left and right starts here,
+        // with the side right -> left (3t + 2).
+        self.end_edge(self.line.edge(e.arc), 3 * t);
+        self.end_edge(self.line.edge(right), 3 * t + 1);
+        let edge = self.new_edge(3 * t + 2);
+        self.line.set_edge(right, edge);
         self.line.remove(e.arc);
         self.line.set_event(left, NIL);
         self.line.set_event(right, NIL);
@@ -423,6 +457,24 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         });
     }
 
+    /// A new Voronoi edge, with the half-edge found at its start (or [`NIL`]).
+    fn new_edge(&mut self, halfedge: u32) -> u32 {
+        self.edges.push(halfedge);
+        (self.edges.len() - 1) as u32
+    }
+
+    /// Voronoi edge `edge` ends in the triangle side `halfedge`: the two are twins if a
+    /// triangle was found at its other end.
+    fn end_edge(&mut self, edge: u32, halfedge: u32) {
+        let other = self.edges[edge as usize];
+        if other == NIL {
+            self.edges[edge as usize] = halfedge;
+        } else {
+            self.halfedges[other as usize] = halfedge;
+            self.halfedges[halfedge as usize] = other;
+        }
+    }
+
     #[inline]
     fn points(&self, t: [u32; 3]) -> [Point2; 3] {
         t.map(|v| self.sites[v as usize])
@@ -461,8 +513,12 @@ fn input_triangles(triangles: &[[u32; 3]], index: &[usize]) -> Vec<usize> {
 
 /// Whether event `x` comes strictly before event `y` (their circles' tops on the sweep line).
 fn before(sites: &[Point2], x: &Event, y: &Event) -> bool {
-    let points = |t: [u32; 3]| t.map(|v| sites[v as usize]);
-    cmp_circles(&x.key, points(x.sites), &y.key, points(y.sites)) == Ordering::Less
+    // The sites' coordinates only when the enclosures leave it open.
+    let order = x.key.cmp_tops(&y.key).unwrap_or_else(|| {
+        let points = |t: [u32; 3]| t.map(|v| sites[v as usize]);
+        cmp_circles(&x.key, points(x.sites), &y.key, points(y.sites))
+    });
+    order == Ordering::Less
 }
 
 /// The points sorted by (y, x) without repeats, the input index of each (the smallest among

@@ -105,6 +105,44 @@ impl Triangulation {
         })
     }
 
+    /// A triangulation from counter-clockwise triangles whose `halfedges` the builder has
+    /// already linked (a builder that knows its twins as it creates them skips
+    /// [`from_triangles`](Self::from_triangles)' pass over every vertex's edges); only the
+    /// hull is derived, as there. In debug builds the links are checked against that pass.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] (name `"triangles"`) if the boundary is not one cycle.
+    ///
+    /// # Complexity
+    /// O(n + t) time and space for n points and t triangles (O(n log n) without triangles).
+    pub(crate) fn from_linked(
+        points: &PointSet<'_>,
+        triangles: Vec<usize>,
+        halfedges: Vec<usize>,
+        duplicates: Vec<[usize; 2]>,
+    ) -> Result<Triangulation> {
+        if triangles.is_empty() {
+            return Ok(Triangulation::without_triangles(points, duplicates));
+        }
+        debug_assert_eq!(
+            Ok(&halfedges),
+            link_halfedges(points.len(), &triangles).as_ref(),
+            "the builder's half-edge links differ from the rebuilt ones"
+        );
+        let hull = boundary_cycle(points, &triangles, &halfedges).map_err(|reason| {
+            Error::InvalidParameter {
+                name: "triangles",
+                reason,
+            }
+        })?;
+        Ok(Triangulation {
+            triangles,
+            halfedges,
+            hull,
+            duplicates,
+        })
+    }
+
     /// The triangulation without triangles of points with no three non-collinear ones (or
     /// fewer than three distinct points): its hull is the keep-collinear hull, the distinct
     /// points along their line.

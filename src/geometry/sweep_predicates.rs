@@ -70,6 +70,23 @@ impl CircleKey {
     }
 }
 
+impl CircleKey {
+    /// The order of two events' tops if the enclosures decide it strictly (no coordinates
+    /// needed):
+    /// the quick first step of [`cmp_circles`].
+    #[inline]
+    pub(crate) fn cmp_tops(&self, other: &CircleKey) -> Option<Ordering> {
+        self.top.cmp(other.top).filter(|o| o.is_ne())
+    }
+
+    /// The order of the event's top and the height `y` if the enclosure decides it strictly:
+    /// the quick first step of [`cmp_circle_site`].
+    #[inline]
+    pub(crate) fn cmp_top_with(&self, y: f64) -> Option<Ordering> {
+        self.top.cmp(Interval::point(y)).filter(|o| o.is_ne())
+    }
+}
+
 /// Where `s` is relative to the breakpoint between the beach-line arcs of `p` (left) and
 /// `q` (right) when the sweep line passes through `s`: `Less` if left of it, `Equal` if on
 /// it, `Greater` if right of it.
@@ -360,6 +377,19 @@ impl Interval {
 
     /// The interval times `2^k` (rounded outwards where that is inexact: near underflow).
     fn scaled(self, mut k: i32) -> Interval {
+        if k == 0 {
+            return self;
+        }
+        if (-1000..=1000).contains(&k) {
+            // A product by a power of two is exact unless it overflows or leaves the normal
+            // range: then the bounds are kept as they are, with no widening.
+            let f = pow2(k);
+            let (lo, hi) = (self.lo * f, self.hi * f);
+            let exact = |v: f64| v == 0.0 || (v.is_finite() && v.abs() >= f64::MIN_POSITIVE);
+            if exact(lo) && exact(hi) {
+                return Interval { lo, hi };
+            }
+        }
         let mut v = self;
         while k != 0 {
             let step = k.clamp(-1000, 1000);

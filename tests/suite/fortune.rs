@@ -174,3 +174,78 @@ fn counts_grow_as_n_log_n_on_the_parabola_and_uniform_input() {
         );
     }
 }
+
+/// The next double above `v` (`up`) or below it, one ulp away.
+fn ulp_step(v: f64, up: bool) -> f64 {
+    if v == 0.0 {
+        return if up {
+            f64::from_bits(1)
+        } else {
+            -f64::from_bits(1)
+        };
+    }
+    let bits = v.to_bits();
+    f64::from_bits(if (v > 0.0) == up { bits + 1 } else { bits - 1 })
+}
+
+#[test]
+fn one_ulp_perturbations_of_degenerate_sets_at_extreme_scales() {
+    // Near-degenerate inputs, where the sweep's quick stages (the circle tops' enclosures,
+    // the breakpoint filter) cannot decide and the exact stages must: a grid and points
+    // on a lattice circle, each coordinate moved by one ulp or not (a fixed pattern), at
+    // unit scale, at 1e-300 and 1e300, and offset from 1 by tiny steps (differences
+    // near 2^-40 of the coordinates). Where the triangulation is unique it must equal the
+    // incremental builder's; everywhere the exact checker must pass.
+    let grid: Vec<(f64, f64)> = (0..25).map(|i| ((i % 5) as f64, (i / 5) as f64)).collect();
+    // Lattice points on the circle x² + y² = 25, and its centre.
+    let circle: Vec<(f64, f64)> = [
+        (5, 0),
+        (4, 3),
+        (3, 4),
+        (0, 5),
+        (-3, 4),
+        (-4, 3),
+        (-5, 0),
+        (-4, -3),
+        (-3, -4),
+        (0, -5),
+        (3, -4),
+        (4, -3),
+        (0, 0),
+    ]
+    .iter()
+    .map(|&(x, y)| (x as f64, y as f64))
+    .collect();
+    type Scaling = (&'static str, fn(f64) -> f64);
+    let maps: [Scaling; 4] = [
+        ("unit", |v| v),
+        ("1e-300", |v| v * 1e-300),
+        ("1e300", |v| v * 1e300),
+        ("1 + 2^-40 steps", |v| 1.0 + v * 2f64.powi(-40)),
+    ];
+    for (name, set) in [("grid", &grid), ("circle", &circle)] {
+        for (scale, map) in maps {
+            for pattern in 0u32..2 {
+                let pts: Vec<Point2> = set
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &(x, y))| {
+                        let (x, y) = (map(x), map(y));
+                        // Pattern 0 leaves the set exact; pattern 1 moves about half
+                        // of the coordinates by one ulp, up or down.
+                        let h = (i as u32)
+                            .wrapping_mul(2_654_435_761)
+                            .rotate_left(pattern * 7);
+                        let mv = |v: f64, bit: u32| match (pattern, (h >> bit) & 3) {
+                            (0, _) | (_, 0) => v,
+                            (_, 1) => ulp_step(v, true),
+                            _ => ulp_step(v, false),
+                        };
+                        Point2::new(mv(x, 3), mv(y, 11))
+                    })
+                    .collect();
+                checked_against_incremental(&pts, &format!("{name} at {scale}, pattern {pattern}"));
+            }
+        }
+    }
+}
