@@ -354,14 +354,13 @@ fn chunk_extremes(points: &[Point2], offset: usize) -> Extremes {
         hi_at: [offset; 4],
     };
     for (k, &p) in points.iter().enumerate() {
-        let key = key(p);
-        for d in 0..4 {
-            if key[d] < e.lo[d] {
-                e.lo[d] = key[d];
+        for (d, value) in key(p).into_iter().enumerate() {
+            if value < e.lo[d] {
+                e.lo[d] = value;
                 e.lo_at[d] = offset + k;
             }
-            if key[d] > e.hi[d] {
-                e.hi[d] = key[d];
+            if value > e.hi[d] {
+                e.hi[d] = value;
                 e.hi_at[d] = offset + k;
             }
         }
