@@ -324,6 +324,7 @@ struct Extremes {
 
 impl Extremes {
     /// Takes the keys of `other`, points met later, where they are strictly more extreme.
+    #[cfg(feature = "parallel")]
     fn absorb(&mut self, other: &Extremes) {
         for d in 0..4 {
             if other.lo[d] < self.lo[d] {
