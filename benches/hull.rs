@@ -51,8 +51,10 @@
 //! |---|---|---|
 //! | uniform-disk, 10⁶ | 0.32, 0.33 | 0.95, 1.03 |
 //! | uniform-disk, 10⁵ | 0.30, 0.35 | 1.04, 0.96 |
-//! | cocircular (h = n), 10⁵ | 1.30, 1.33 | 1.26, 1.32 |
+//! | cocircular (h = n), 10⁵ | 1.30, 1.33 | (1.26, 1.32) |
 //!
+//! (The bracketed ratios were taken while Akl–Toussaint's own filter also stopped early on
+//! convex input; only Chan's does now, so Akl–Toussaint is slower there than they say.)
 //! On a disk, what is left after the filter (a tenth of the points, in a thin ring) is
 //! sorted by both: Chan's first groups of it are mostly hull vertices, so it takes the one
 //! group of the larger guess, which is Akl–Toussaint's sort. Chan can only match

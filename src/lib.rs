@@ -30,6 +30,17 @@
 //!
 //! Every algorithm's own file is in the table below.
 //!
+//! ## Features
+//!
+//! `cli` (default): the command line and the report. `serde`: `Serialize`/`Deserialize` for
+//! result types. `exact`: the arbitrary-precision rational scalar. `parallel` (off by
+//! default): the large batch paths use every core through rayon, from 2¹⁶ items up and only
+//! when nothing is counted (runs with [`NoCount`](count::NoCount)), with results identical
+//! to the sequential ones: the `f64` radix sort and the lexicographic point sort (halves
+//! sorted at the same time, then a parallel merge), the validation of a
+//! [`PointSet`](geometry::PointSet), the Akl–Toussaint filter (and so the hulls that sort
+//! through it), and the insertion order of the incremental Delaunay builder.
+//!
 //! ## Algorithms and their bounds
 //!
 //! Every algorithm is declared once, in its own file, as a
@@ -268,6 +279,9 @@ pub mod spline;
 pub mod surface;
 pub mod trace;
 mod util;
+
+#[cfg(feature = "parallel")]
+mod parallel;
 
 #[cfg(feature = "cli")]
 pub mod cli;

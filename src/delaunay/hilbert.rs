@@ -24,6 +24,15 @@ const BITS: u32 = 16;
 /// O(n log n) time (sorts of 64-bit keys), O(n) auxiliary space. Deterministic: the
 /// rounds come from the crate's random source with a fixed seed.
 pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<u32> {
+    #[cfg(feature = "parallel")]
+    return brio_order_from(points, bounds, crate::parallel::THRESHOLD);
+    #[cfg(not(feature = "parallel"))]
+    brio_order_from(points, bounds, usize::MAX)
+}
+
+/// [`brio_order`], in parallel from `threshold` points up (feature `parallel`).
+#[cfg_attr(not(feature = "parallel"), allow(unused_variables))]
+fn brio_order_from(points: &[Point2], bounds: Option<BoundingBox>, threshold: usize) -> Vec<u32> {
     let n = points.len();
     let Some(bounds) = bounds else {
         return Vec::new();
@@ -34,6 +43,10 @@ pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<
     let mut rng = Rng::new(BRIO_SEED);
     // Per point: its round and (Hilbert index << 32 | id); then a counting sort by round
     // and a sort of plain u64 keys inside each round.
+    #[cfg(feature = "parallel")]
+    if n >= threshold {
+        return par_brio_order(points, &grid, rounds, &mut rng);
+    }
     let mut round_of = Vec::with_capacity(n);
     let mut sizes = vec![0usize; rounds + 1];
     let keys: Vec<u64> = points
@@ -62,6 +75,43 @@ pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<
         sorted[start[r]..start[r + 1]].sort_unstable();
     }
     sorted.into_iter().map(|key| key as u32).collect()
+}
+
+/// [`brio_order`] on all the threads (feature `parallel`): the rounds drawn in input order
+/// from the same random source, the curve indices computed and each round's keys sorted in
+/// parallel. The keys are distinct (they hold the ids), so the order is the sequential one.
+#[cfg(feature = "parallel")]
+fn par_brio_order(points: &[Point2], grid: &Grid, rounds: usize, rng: &mut Rng) -> Vec<u32> {
+    use rayon::prelude::*;
+    let n = points.len();
+    let round_of: Vec<u8> = (0..n)
+        .map(|_| {
+            let level = ((rng.next_u64() as u32).trailing_zeros() as usize).min(rounds);
+            (rounds - level) as u8
+        })
+        .collect();
+    let keys: Vec<u64> = points
+        .par_iter()
+        .enumerate()
+        .map(|(i, p)| (grid.curve_index(*p) << 32) | i as u64)
+        .collect();
+    let mut start = vec![0usize; rounds + 2];
+    for &round in &round_of {
+        start[round as usize + 1] += 1;
+    }
+    for r in 0..=rounds {
+        start[r + 1] += start[r];
+    }
+    let mut fill = start.clone();
+    let mut sorted = vec![0u64; n];
+    for (key, &round) in keys.iter().zip(&round_of) {
+        sorted[fill[round as usize]] = *key;
+        fill[round as usize] += 1;
+    }
+    for r in 0..=rounds {
+        sorted[start[r]..start[r + 1]].par_sort_unstable();
+    }
+    sorted.into_par_iter().map(|key| key as u32).collect()
 }
 
 /// The ids `0..points.len()` sorted along the Hilbert curve over the points' bounding box
@@ -230,6 +280,29 @@ mod tests {
             .windows(2)
             .any(|w| key(w[0]).0 == key(w[1]).0 && w[0] < w[1]));
         assert!(curve_order(&[]).is_empty());
+    }
+
+    /// The parallel order is the sequential one, on both sides of the threshold and on
+    /// inputs with repeated points.
+    #[cfg(feature = "parallel")]
+    #[test]
+    fn parallel_order_equals_the_sequential_one() {
+        use crate::gen::{points, PointKind};
+        for kind in [
+            PointKind::UniformSquare,
+            PointKind::Grid,
+            PointKind::Clustered,
+        ] {
+            for n in [0, 1, 100, 70_000] {
+                let pts = points(kind, n, 9).unwrap();
+                let bounds = BoundingBox::of(&pts);
+                assert_eq!(
+                    brio_order_from(&pts, bounds, 0),
+                    brio_order_from(&pts, bounds, usize::MAX),
+                    "{kind}, n = {n}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -96,9 +96,13 @@ pub(crate) fn sorted_items_with<C, K>(
 ) -> Vec<Item>
 where
     C: Counter,
-    K: Fn(Point2) -> u128 + Copy,
+    K: Fn(Point2) -> u128 + Copy + Sync,
 {
     if C::DISCARDS && indices.len() >= CUTOFF {
+        #[cfg(feature = "parallel")]
+        if indices.len() >= crate::parallel::THRESHOLD {
+            return par_radix_sorted(points, indices, key);
+        }
         return radix_sorted(points, indices, key);
     }
     compared_items_with(points, indices, key, counter)
@@ -132,12 +136,39 @@ pub fn radix_sorted_lex(points: &[Point2]) -> Vec<(Point2, usize)> {
     radix_sorted(points, 0..points.len(), lex_key)
 }
 
+/// The same order as [`radix_sorted_lex`] by the parallel radix sort (feature `parallel`;
+/// sequential below its threshold). For the benchmarks and tests only: not part of the API.
+#[cfg(feature = "parallel")]
+#[doc(hidden)]
+pub fn parallel_sorted_lex(points: &[Point2]) -> Vec<(Point2, usize)> {
+    par_radix_sorted(points, 0..points.len(), lex_key)
+}
+
 /// The same order as [`radix_sorted_lex`] by the comparison sort (`sort_unstable_by` on
 /// `(key, index)` pairs), as a counted run sorts but counting nothing. For the benchmarks
 /// only: not part of the API.
 #[doc(hidden)]
 pub fn comparison_sorted_lex(points: &[Point2]) -> Vec<(Point2, usize)> {
     sorted_items_with(points, 0..points.len(), lex_key, &mut Silent)
+}
+
+/// The radix path of [`sorted_items_with`] on all the threads (feature `parallel`): the
+/// halves of the indices radix-sorted at the same time, then merged in parallel by `(key,
+/// index)`, a strict total order, so the result is the sequential one
+/// ([`crate::parallel::sorted`]).
+#[cfg(feature = "parallel")]
+pub(crate) fn par_radix_sorted<K>(
+    points: &[Point2],
+    indices: impl Iterator<Item = usize>,
+    key: K,
+) -> Vec<Item>
+where
+    K: Fn(Point2) -> u128 + Copy + Sync,
+{
+    let indices: Vec<usize> = indices.collect();
+    let leaf = |part: &[usize]| radix_sorted(points, part.iter().copied(), key);
+    let less = |a: &Item, b: &Item| (key(a.0), a.1) < (key(b.0), b.1);
+    crate::parallel::sorted(&indices, crate::parallel::depth(), &leaf, &less)
 }
 
 /// The radix path of [`sorted_items_with`], for any number of items.

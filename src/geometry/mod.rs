@@ -51,6 +51,8 @@ mod wide;
 
 pub use construct::ConstructedPoint;
 pub use counted::CountedPredicates;
+#[cfg(feature = "parallel")]
+pub use lex_sort::parallel_sorted_lex;
 #[doc(hidden)]
 pub use lex_sort::{comparison_sorted_lex, radix_sorted_lex};
 pub use point::{Point2, PointPair};

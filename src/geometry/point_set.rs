@@ -63,18 +63,32 @@ impl<'a> PointSet<'a> {
     /// # Complexity
     /// O(n) time, O(1) auxiliary space.
     pub fn new(points: &'a [Point2]) -> Result<PointSet<'a>> {
-        let mut bounds: Option<BoundingBox> = None;
-        for (index, &p) in points.iter().enumerate() {
-            for value in [p.x, p.y] {
-                if !value.is_finite() {
-                    return Err(Error::NonFinite { index, value });
+        #[cfg(feature = "parallel")]
+        if points.len() >= crate::parallel::THRESHOLD {
+            use rayon::prelude::*;
+            // Chunks checked at the same time, then combined in input order: the first
+            // error is the first chunk's, and extending by a chunk's corners with strict
+            // comparisons keeps the first of equal extremes, as the sequential pass does.
+            const CHUNK: usize = 1 << 15;
+            let parts: Vec<Result<Option<BoundingBox>>> = points
+                .par_chunks(CHUNK)
+                .enumerate()
+                .map(|(c, chunk)| bounds_of(chunk, c * CHUNK))
+                .collect();
+            let mut bounds: Option<BoundingBox> = None;
+            for part in parts {
+                match (&mut bounds, part?) {
+                    (_, None) => {}
+                    (None, b) => bounds = b,
+                    (Some(b), Some(c)) => {
+                        b.extend(c.min);
+                        b.extend(c.max);
+                    }
                 }
             }
-            match &mut bounds {
-                None => bounds = Some(BoundingBox { min: p, max: p }),
-                Some(b) => b.extend(p),
-            }
+            return Ok(PointSet { points, bounds });
         }
+        let bounds = bounds_of(points, 0)?;
         Ok(PointSet { points, bounds })
     }
 
@@ -89,6 +103,27 @@ impl<'a> PointSet<'a> {
     pub fn bounding_box(&self) -> Option<BoundingBox> {
         self.bounds
     }
+}
+
+/// The bounding box of `points` (`None` if empty), or [`Error::NonFinite`] naming the first
+/// point with a NaN or infinite coordinate; `points[k]` has index `offset + k`.
+fn bounds_of(points: &[Point2], offset: usize) -> Result<Option<BoundingBox>> {
+    let mut bounds: Option<BoundingBox> = None;
+    for (k, &p) in points.iter().enumerate() {
+        for value in [p.x, p.y] {
+            if !value.is_finite() {
+                return Err(Error::NonFinite {
+                    index: offset + k,
+                    value,
+                });
+            }
+        }
+        match &mut bounds {
+            None => bounds = Some(BoundingBox { min: p, max: p }),
+            Some(b) => b.extend(p),
+        }
+    }
+    Ok(bounds)
 }
 
 impl Deref for PointSet<'_> {

@@ -97,6 +97,14 @@ pub fn akl_toussaint_with<C: Counter>(
     // made this function no faster (median ratios 0.94–1.06 at 10³–10⁶ points on uniform,
     // gaussian and grid input, the survivors being few or, on a disk, a tenth of the points
     // spread over the whole input; see "Lexicographic sorts of points" in docs/design.md).
+    #[cfg(feature = "parallel")]
+    if C::DISCARDS && survivors.len() >= crate::parallel::THRESHOLD {
+        // Many survivors (points near a circle): the parallel radix sort, which gives the
+        // same order.
+        let sorted = super::lex::lex_sorted_items(points, survivors.into_iter(), counter);
+        let strict = chains(&sorted, counter);
+        return finish(points, sorted.iter().map(|s| s.1), strict, options, counter);
+    }
     let sorted = lex_sorted_items_by_comparisons(points, survivors.into_iter(), counter);
     let strict = chains(&sorted, counter);
     finish(points, sorted.iter().map(|s| s.1), strict, options, counter)
@@ -147,17 +155,18 @@ pub fn akl_toussaint_with<C: Counter>(
 /// # Ok::<(), compgeo::Error>(())
 /// ```
 pub fn akl_toussaint_filter<C: Counter>(points: &PointSet, counter: &mut C) -> Vec<usize> {
-    filter(points.points(), counter)
+    filter(points.points(), false, counter)
 }
 
 /// How many points [`filter`] tests before it may give up.
 const FILTER_PROBE: usize = 1024;
 
-/// [`akl_toussaint_filter`] on finite points, for Chan's hull (all points, then each of its
-/// groups), which gives up early where filtering does not pay: if more than three quarters
-/// of the first [`FILTER_PROBE`] points survive, the points in convex position or nearly so,
-/// the rest is kept untested (a superset of the boundary points is all the caller needs).
-pub(super) fn filter<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
+/// [`akl_toussaint_filter`] on finite points. With `give_up` (Chan's hull, over all points
+/// and then in each of its groups) it stops testing where filtering does not pay: if more
+/// than three quarters of the first [`FILTER_PROBE`] points survive, the points in convex
+/// position or nearly so, the rest is kept untested (a superset of the boundary points is
+/// all Chan needs).
+pub(super) fn filter<C: Counter>(points: &[Point2], give_up: bool, counter: &mut C) -> Vec<usize> {
     if points.len() < 4 {
         return (0..points.len()).collect();
     }
@@ -173,23 +182,88 @@ pub(super) fn filter<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usiz
     let facing = facing_sides(&polygon);
     let inner = inner_box(points, &extremes, &polygon, &facing, counter);
     let mut survivors = Vec::new();
-    for (i, &p) in points.iter().enumerate() {
-        if i == FILTER_PROBE && 4 * survivors.len() > 3 * FILTER_PROBE {
-            survivors.extend(i..points.len());
+    let mut from = 0;
+    if give_up && points.len() > FILTER_PROBE {
+        keep(
+            &points[..FILTER_PROBE],
+            0,
+            &inner,
+            &polygon,
+            &facing,
+            &mut survivors,
+            counter,
+        );
+        if 4 * survivors.len() > 3 * FILTER_PROBE {
+            survivors.extend(FILTER_PROBE..points.len());
             return survivors;
         }
-        let sides = match &inner {
+        from = FILTER_PROBE;
+    }
+    let rest = &points[from..];
+    #[cfg(feature = "parallel")]
+    if C::DISCARDS && rest.len() >= crate::parallel::THRESHOLD {
+        use rayon::prelude::*;
+        // Chunks filtered at the same time, their survivors concatenated in order.
+        let parts: Vec<Vec<usize>> = rest
+            .par_chunks(CHUNK)
+            .enumerate()
+            .map(|(c, chunk)| {
+                let mut kept = Vec::new();
+                let (inner, polygon, facing) = (&inner, &polygon, &facing);
+                keep(
+                    chunk,
+                    from + c * CHUNK,
+                    inner,
+                    polygon,
+                    facing,
+                    &mut kept,
+                    &mut NoCount,
+                );
+                kept
+            })
+            .collect();
+        survivors.extend(parts.into_iter().flatten());
+        return survivors;
+    }
+    keep(
+        rest,
+        from,
+        &inner,
+        &polygon,
+        &facing,
+        &mut survivors,
+        counter,
+    );
+    survivors
+}
+
+/// Points per task of the parallel filter and extremes (feature `parallel`).
+#[cfg(feature = "parallel")]
+const CHUNK: usize = 1 << 15;
+
+/// Pushes onto `survivors` the indices (`points[k]` has index `offset + k`) of the points not
+/// strictly inside `polygon`, those strictly inside the `inner` box discarded first.
+fn keep<C: Counter>(
+    points: &[Point2],
+    offset: usize,
+    inner: &Option<Box>,
+    polygon: &[Point2],
+    facing: &[u8],
+    survivors: &mut Vec<usize>,
+    counter: &mut C,
+) {
+    for (k, &p) in points.iter().enumerate() {
+        let sides = match inner {
             Some(b) => match sides_outside(p, b, counter) {
                 0 => continue,
                 sides => sides,
             },
             None => ALL_SIDES,
         };
-        if !strictly_inside(&polygon, &facing, sides, p, counter) {
-            survivors.push(i);
+        if !strictly_inside(polygon, facing, sides, p, counter) {
+            survivors.push(offset + k);
         }
     }
-    survivors
 }
 
 /// Bits of [`sides_outside`] and [`facing_sides`]: west, east, south, north.
@@ -245,26 +319,80 @@ type Box = [f64; 4];
 /// The indices of the points with smallest and largest x, y, x + y and x − y (the first of
 /// equals; sums that overflow compare as infinities, which only makes the choice less good).
 fn extremes(points: &[Point2]) -> [usize; 8] {
-    let key = |p: Point2| [p.x, p.y, p.x + p.y, p.x - p.y];
-    let first = key(points[0]);
-    let (mut lo, mut hi) = (first, first);
-    let (mut lo_at, mut hi_at) = ([0usize; 4], [0usize; 4]);
-    for (i, &p) in points.iter().enumerate() {
-        let k = key(p);
+    #[cfg(feature = "parallel")]
+    if points.len() >= crate::parallel::THRESHOLD {
+        use rayon::prelude::*;
+        // Per chunk at the same time, then combined in input order with the same strict
+        // comparisons, so the first of equals is still chosen.
+        let parts: Vec<Extremes> = points
+            .par_chunks(CHUNK)
+            .enumerate()
+            .map(|(c, chunk)| chunk_extremes(chunk, c * CHUNK))
+            .collect();
+        let mut all = parts[0];
+        for part in &parts[1..] {
+            all.absorb(part);
+        }
+        return all.indices();
+    }
+    chunk_extremes(points, 0).indices()
+}
+
+/// The smallest and largest keys x, y, x + y, x − y of some points and the indices where
+/// they were first met.
+#[derive(Clone, Copy)]
+struct Extremes {
+    lo: [f64; 4],
+    hi: [f64; 4],
+    lo_at: [usize; 4],
+    hi_at: [usize; 4],
+}
+
+impl Extremes {
+    /// Takes the keys of `other`, points met later, where they are strictly more extreme.
+    #[cfg(feature = "parallel")]
+    fn absorb(&mut self, other: &Extremes) {
         for d in 0..4 {
-            if k[d] < lo[d] {
-                lo[d] = k[d];
-                lo_at[d] = i;
+            if other.lo[d] < self.lo[d] {
+                self.lo[d] = other.lo[d];
+                self.lo_at[d] = other.lo_at[d];
             }
-            if k[d] > hi[d] {
-                hi[d] = k[d];
-                hi_at[d] = i;
+            if other.hi[d] > self.hi[d] {
+                self.hi[d] = other.hi[d];
+                self.hi_at[d] = other.hi_at[d];
             }
         }
     }
-    [
-        lo_at[0], lo_at[1], lo_at[2], lo_at[3], hi_at[0], hi_at[1], hi_at[2], hi_at[3],
-    ]
+
+    fn indices(&self) -> [usize; 8] {
+        let (lo, hi) = (self.lo_at, self.hi_at);
+        [lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]]
+    }
+}
+
+/// The [`Extremes`] of the non-empty `points`, the first having index `offset`.
+fn chunk_extremes(points: &[Point2], offset: usize) -> Extremes {
+    let key = |p: Point2| [p.x, p.y, p.x + p.y, p.x - p.y];
+    let first = key(points[0]);
+    let mut e = Extremes {
+        lo: first,
+        hi: first,
+        lo_at: [offset; 4],
+        hi_at: [offset; 4],
+    };
+    for (k, &p) in points.iter().enumerate() {
+        for (d, value) in key(p).into_iter().enumerate() {
+            if value < e.lo[d] {
+                e.lo[d] = value;
+                e.lo_at[d] = offset + k;
+            }
+            if value > e.hi[d] {
+                e.hi[d] = value;
+                e.hi_at[d] = offset + k;
+            }
+        }
+    }
+    e
 }
 
 /// The largest box spanned by the diagonal extremes, if its corners are strictly inside

@@ -143,7 +143,7 @@ fn strict_hull<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
     // The Akl–Toussaint filter over all points first: O(n), and it leaves the rounds only
     // the points outside the polygon of the extreme points. Survivors keep their order, so
     // of equal points the smallest index still comes first.
-    let kept = filter(points, counter);
+    let kept = filter(points, true, counter);
     let survivors: Vec<Point2> = kept.iter().map(|&i| points[i]).collect();
     let hull = rounds(&survivors, counter);
     hull.into_iter().map(|i| kept[i]).collect()
@@ -260,7 +260,7 @@ impl Groups {
             }
             let hi = (lo + m).min(points.len());
             let sorted = if filtering {
-                let kept = filter(&points[lo..hi], counter);
+                let kept = filter(&points[lo..hi], true, counter);
                 // Points in convex position all survive: stop filtering while the filter
                 // keeps more than three quarters of a group.
                 filtering = 4 * kept.len() <= 3 * (hi - lo);

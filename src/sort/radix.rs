@@ -137,6 +137,39 @@ pub fn radix_sort_f64(v: &mut [f64]) {
 /// assert_eq!((counts.comparisons, counts.moves), (3, 2));
 /// ```
 pub fn radix_sort_f64_with<C: Counter>(v: &mut [f64], counter: &mut C) {
+    #[cfg(feature = "parallel")]
+    if C::DISCARDS && v.len() >= crate::parallel::THRESHOLD {
+        par_sort(v, crate::parallel::depth());
+        return;
+    }
+    sequential_sort(v, counter);
+}
+
+/// [`radix_sort_f64_with`] on all the threads (feature `parallel`, counting nothing): the
+/// halves of `v` sorted at the same time (recursively, `depth` times), then merged in
+/// parallel by [`f64::total_cmp`]. In that order only equal bit patterns compare equal, so
+/// the result is the sequential one bit for bit.
+#[cfg(feature = "parallel")]
+fn par_sort(v: &mut [f64], depth: u32) {
+    use rayon::prelude::*;
+    if depth == 0 || v.len() < crate::parallel::THRESHOLD {
+        sequential_sort(v, &mut NoCount);
+        return;
+    }
+    let mid = v.len() / 2;
+    let (left, right) = v.split_at_mut(mid);
+    rayon::join(|| par_sort(left, depth - 1), || par_sort(right, depth - 1));
+    let mut merged = vec![0.0f64; v.len()];
+    let less = |a: &f64, b: &f64| a.total_cmp(b).is_lt();
+    crate::parallel::merge(&v[..mid], &v[mid..], &mut merged, &less);
+    const CHUNK: usize = 1 << 16;
+    v.par_chunks_mut(CHUNK)
+        .zip(merged.par_chunks(CHUNK))
+        .for_each(|(to, from)| to.copy_from_slice(from));
+}
+
+/// The sequential body of [`radix_sort_f64_with`].
+fn sequential_sort<C: Counter>(v: &mut [f64], counter: &mut C) {
     if v.len() < 2 {
         return;
     }

@@ -63,6 +63,8 @@ mod nearest;
 mod nurbs;
 mod nurbs_cli;
 mod overflow;
+#[cfg(feature = "parallel")]
+mod parallel;
 mod predicates;
 mod proximity;
 mod registry;
