@@ -11,6 +11,13 @@
 //! (with their edges) and coloured greedily afterwards, in the reverse order. Every vertex
 //! of the core has at least t core neighbours, so a table of t entries per core vertex
 //! takes at most 2m entries: the searches' tables are O(m) whatever t is.
+//!
+//! The descent also stops at a lower bound: the largest clique it finds greedily
+//! ([`clique`](super::clique)), since no colouring has fewer colours than a clique has
+//! vertices. At the target equal to that bound, where every colour class must meet every
+//! clique of that size once, it alternates the caller's search with the exact search of
+//! [`exact`](super::exact) in doubling turns; the exact search may also show that the
+//! target cannot be met, which ends the descent.
 
 use super::budget::{pass, Meter};
 use super::clique::{clique_lower_bound, cliques_of_size};
@@ -203,9 +210,10 @@ where
     S: FnMut(&Core, &[u32], &mut Meter, &mut Rng, &mut C) -> Option<Vec<u32>>,
 {
     let mut best = start;
-    // No colouring has fewer colours than a clique has vertices.
-    let (fewest, steps) = clique_lower_bound(g, c);
-    meter.charge(steps);
+    // No colouring has fewer colours than a clique has vertices. Like DSatur's, this
+    // preparation is counted but not paid from the budget, so a target above the bound
+    // follows the same path for a seed and a step budget as without it.
+    let (fewest, _) = clique_lower_bound(g, c);
     while best.count > fewest.max(1) && meter.spend(pass(g)) {
         let target = best.count - 1;
         let found = if g.edge_count() == 0 {
