@@ -62,6 +62,10 @@ pub(super) fn exact_colouring<C: Counter>(
 /// A bit set of colours.
 type Colours = u64;
 
+/// A branch of the search: the trail length before it, its choices (a vertex and the one
+/// colour it takes), and the next choice to try.
+type Frame = (usize, Vec<(u32, Colours)>, usize);
+
 /// The state of the backtracking search.
 struct Search<'a> {
     core: &'a Core,
@@ -270,7 +274,7 @@ impl<'a> Search<'a> {
         }
         // Each frame: the trail length before the branch, the vertex, the colours left to try.
         // Each frame: the trail length before the branch, its choices, the next to try.
-        let mut stack: Vec<(usize, Vec<(u32, Colours)>, usize)> = Vec::new();
+        let mut stack: Vec<Frame> = Vec::new();
         let mut next = self.choose();
         loop {
             if self.unpaid > 0 {
