@@ -36,11 +36,18 @@ pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<
     // and a sort of plain u64 keys inside each round.
     let mut round_of = Vec::with_capacity(n);
     let mut sizes = vec![0usize; rounds + 1];
+    // One 64-bit draw serves two points, 32 bits each.
+    let mut bits = 0u64;
     let keys: Vec<u64> = points
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            let level = ((rng.next_u64() as u32).trailing_zeros() as usize).min(rounds);
+            bits = if i % 2 == 0 {
+                rng.next_u64()
+            } else {
+                bits >> 32
+            };
+            let level = ((bits as u32).trailing_zeros() as usize).min(rounds);
             let round = rounds - level;
             round_of.push(round as u8);
             sizes[round] += 1;
@@ -58,10 +65,12 @@ pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<
         sorted[fill[round as usize]] = *key;
         fill[round as usize] += 1;
     }
+    drop((keys, round_of));
     for r in 0..=rounds {
         sorted[start[r]..start[r + 1]].sort_unstable();
     }
-    sorted.into_iter().map(|key| key as u32).collect()
+    // A fresh exact-size array (collecting in place would keep the 64-bit capacity).
+    sorted.iter().map(|&key| key as u32).collect()
 }
 
 /// The ids `0..points.len()` sorted along the Hilbert curve over the points' bounding box
