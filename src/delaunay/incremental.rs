@@ -6,7 +6,7 @@ use super::triangulation::{find_duplicates, rotate_to_lex_min, Triangulation, EM
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::geometry::{CountedPredicates, InCircle, IncircleFilter, Orientation, Point2, PointSet};
+use crate::geometry::{BoxPredicates, CountedPredicates, InCircle, Orientation, Point2, PointSet};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -40,7 +40,10 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// "ghost" triangles with a vertex at infinity, whose circumcircle is the open half-plane
 /// beyond their hull edge (an orientation test). The insertion order is a biased
 /// randomized order (BRIO) sorted along a Hilbert curve in each round, so the walks are
-/// short and the expected number of flips is O(n) on every input.
+/// short and the expected number of flips is O(n) on every input. Every test is exact; what
+/// the whole set allows is worked out once (the in-circle filter's error bound for the
+/// bounding box, and plain floating point for small-integer sets, where it is exact), and
+/// the conversion to the 64-bit result frees the builder's 32-bit arrays as it goes.
 ///
 /// It computes the triangulation the course defines ([RD, §2.4]
 /// "Triangulación de Delaunay", Definition 2.34 and Theorem 2.35) without building the
@@ -151,9 +154,7 @@ pub(super) fn incremental_local<C: Counter>(
         return Ok(None);
     };
     let local: Vec<Point2> = order.iter().map(|&i| points[i as usize]).collect();
-    let filter = points
-        .bounding_box()
-        .map_or(IncircleFilter::unusable(), IncircleFilter::over);
+    let filter = BoxPredicates::for_points(points);
     let mut mesh = Mesh::new(local, first, filter, counter);
     for k in 3..order.len() as u32 {
         mesh.insert(k);
@@ -262,7 +263,7 @@ struct Mesh<'c, C> {
     /// follow a fixed rule, not good randomness).
     coin: u32,
     /// The in-circle filter's bound for the points' bounding box.
-    filter: IncircleFilter,
+    filter: BoxPredicates,
     /// `[dropped vertex id, kept vertex id]`.
     duplicates: Vec<[u32; 2]>,
     counter: &'c mut C,
@@ -274,7 +275,7 @@ impl<'c, C: Counter> Mesh<'c, C> {
     fn new(
         points: Vec<Point2>,
         [a, b, c]: [u32; 3],
-        filter: IncircleFilter,
+        filter: BoxPredicates,
         counter: &'c mut C,
     ) -> Self {
         let n = points.len();
@@ -342,7 +343,10 @@ impl<'c, C: Counter> Mesh<'c, C> {
                 }
                 let a = self.triangles[e as usize];
                 let b = self.triangles[next(e) as usize];
-                match self.counter.orient2d(self.point(a), self.point(b), p) {
+                match self
+                    .filter
+                    .orient2d_with(self.point(a), self.point(b), p, self.counter)
+                {
                     Orientation::Clockwise => {
                         let f = self.halfedges[e as usize];
                         t = f / 3;
@@ -488,11 +492,11 @@ impl<'c, C: Counter> Mesh<'c, C> {
         if u == GHOST {
             // Ghost (w, v, G): hull edge v -> w.
             let (pv, pw) = (self.point(v), self.point(w));
-            self.counter.orient2d(pv, pw, p) == Orientation::Clockwise
+            self.filter.orient2d_with(pv, pw, p, self.counter) == Orientation::Clockwise
         } else if v == GHOST {
             // Ghost (u, w, G): hull edge w -> u.
             let (pw, pu) = (self.point(w), self.point(u));
-            self.counter.orient2d(pw, pu, p) == Orientation::Clockwise
+            self.filter.orient2d_with(pw, pu, p, self.counter) == Orientation::Clockwise
         } else if w == GHOST {
             false
         } else {
