@@ -7,7 +7,8 @@
 //! against `voronoice` (delaunator, then the dual clipped to a box): compgeo's cells with
 //! rays, and compgeo's cells clipped to the same box as voronoice's.
 //!
-//! Run one group with e.g. `cargo bench --bench delaunay -- delaunay/uniform-square`.
+//! Run one group with e.g. `cargo bench --bench delaunay -- delaunay/uniform-square`. The
+//! 10⁷ groups (`delaunay-1e7/*`) run only with `COMPGEO_BENCH_1E7=1` in the environment.
 //!
 //! Measured on the 2-core machine shared with four other builds (load average 4 to 12),
 //! 2026-11-23. Criterion medians (wall time, so inflated and noisy under that load):
@@ -31,9 +32,33 @@
 //! | grid | 0.453 s | 0.783 s | 0.814 s | 0.58 |
 //!
 //! (uniform-square, 10⁶, interleaved wall time: 0.413 s, 0.862 s, 0.694 s, ratio 0.60.)
-//! Below about 10⁴ points delaunator is faster: its sweep has a smaller constant while
+//! Below about 10⁴ points delaunator was faster: its sweep has a smaller constant while
 //! everything fits in cache, and our fixed costs (the BRIO keys, the ghost triangles) weigh
-//! more.
+//! more (see the 2026-12-03 table below).
+//!
+//! 2026-12-03, after the box-wide predicates (the in-circle filter's bound precomputed for
+//! the points' bounding box, and plain floating point for small-integer sets such as the
+//! grid, where it is exact), the xorshift walk coin and the conversion that frees as it
+//! widens. Interleaved in one process (ours, delaunator, spade, repeated; 9 rounds at 10³
+//! and 10⁴, 7 at 10⁶; median CPU time of the thread), on the 2 shared cores with a load
+//! average of 10 to 11.5 (other helpers building):
+//!
+//! | input, n | incremental | delaunator | spade bulk load | ours / faster peer | before |
+//! |---|---|---|---|---|---|
+//! | uniform-square, 10³ | 0.179 ms | 0.151 ms | 0.352 ms | 1.18 | 1.27–1.29 |
+//! | clustered, 10³ | 0.218 ms | 0.188 ms | 0.426 ms | 1.16 | 1.22 |
+//! | grid, 10³ | 0.184 ms | 0.168 ms | 0.678 ms | 1.09 | 1.54 |
+//! | uniform-square, 10⁴ | 3.27 ms | 3.39 ms | 5.29 ms | 0.97 | 1.14 |
+//! | clustered, 10⁴ | 3.65 ms | 3.82 ms | 6.29 ms | 0.96 | 1.13 |
+//! | grid, 10⁴ | 3.00 ms | 3.02 ms | 8.68 ms | 0.99 | 1.38 |
+//! | uniform-square, 10⁶ | 482 ms | 1259 ms | 828 ms | 0.58 | 0.54–0.60 |
+//!
+//! ("before": the previous version timed the same way under the same load, 7 rounds; at
+//! 10⁶ the earlier measurements above.) At 10³
+//! delaunator is still 9–18 % faster. Peak memory at 10⁷ uniform points, whole process,
+//! `/usr/bin/time -v` on a small program per builder that generates the input inside (the
+//! input alone: 158 MB; each peer's copy of it is made from ours, which is then dropped):
+//! incremental 1.10 GB (1.76 GB before), spade bulk load 1.49 GB, delaunator 1.49 GB.
 //!
 //! Re-timed later the same day (voronoi built from the builder's own arrays; criterion,
 //! load average 4 to 6): uniform-square, 10⁶: incremental 658 ms, delaunator 1.374 s,
@@ -131,15 +156,9 @@ use std::time::Duration;
 const SEED: u64 = 0x5EED_0006;
 
 fn triangulations(c: &mut Criterion) {
-    let groups: [(PointKind, &[usize]); 3] = [
-        (
-            PointKind::UniformSquare,
-            &[1_000, 10_000, 100_000, 1_000_000],
-        ),
-        (PointKind::Clustered, &[10_000, 100_000, 1_000_000]),
-        (PointKind::Grid, &[10_000, 100_000, 1_000_000]),
-    ];
-    for (kind, sizes) in groups {
+    const SIZES: &[usize] = &[1_000, 10_000, 100_000, 1_000_000];
+    for kind in KINDS {
+        let sizes = SIZES;
         let mut group = c.benchmark_group(format!("delaunay/{kind}"));
         group
             .sample_size(10)
@@ -173,6 +192,46 @@ fn triangulations(c: &mut Criterion) {
                 b.iter(|| spade_bulk_load(black_box(pts)))
             });
         }
+        group.finish();
+    }
+}
+
+/// The inputs of the triangulation groups.
+const KINDS: [PointKind; 3] = [
+    PointKind::UniformSquare,
+    PointKind::Clustered,
+    PointKind::Grid,
+];
+
+/// The 10^7 groups (`delaunay-1e7/*`: the incremental builder and the two peers, 10 samples
+/// each), only when the environment variable `COMPGEO_BENCH_1E7` is set: each sample takes
+/// seconds, and `cargo bench --no-run` and ordinary runs stay short.
+fn triangulations_1e7(c: &mut Criterion) {
+    if std::env::var_os("COMPGEO_BENCH_1E7").is_none() {
+        return;
+    }
+    const N: usize = 10_000_000;
+    for kind in KINDS {
+        let mut group = c.benchmark_group(format!("delaunay-1e7/{kind}"));
+        group
+            .sample_size(10)
+            .warm_up_time(Duration::from_secs(1))
+            .measurement_time(Duration::from_secs(60));
+        let pts = points(kind, N, SEED).unwrap();
+        group.throughput(Throughput::Elements(N as u64));
+        group.bench_with_input(BenchmarkId::new("incremental", N), &pts, |b, pts| {
+            b.iter_with_large_drop(|| incremental(black_box(pts)).unwrap())
+        });
+        let dpts: Vec<delaunator::Point> = pts
+            .iter()
+            .map(|p| delaunator::Point { x: p.x, y: p.y })
+            .collect();
+        group.bench_with_input(BenchmarkId::new("delaunator", N), &dpts, |b, pts| {
+            b.iter_with_large_drop(|| delaunator::triangulate(black_box(pts)))
+        });
+        group.bench_with_input(BenchmarkId::new("spade-bulk-load", N), &pts, |b, pts| {
+            b.iter_with_large_drop(|| spade_bulk_load(black_box(pts)))
+        });
         group.finish();
     }
 }
@@ -247,5 +306,5 @@ fn voronoi_cells(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, triangulations, voronoi_cells);
+criterion_group!(benches, triangulations, triangulations_1e7, voronoi_cells);
 criterion_main!(benches);

@@ -49,11 +49,18 @@ fn brio_order_from(points: &[Point2], bounds: Option<BoundingBox>, threshold: us
     }
     let mut round_of = Vec::with_capacity(n);
     let mut sizes = vec![0usize; rounds + 1];
+    // One 64-bit draw serves two points, 32 bits each.
+    let mut bits = 0u64;
     let keys: Vec<u64> = points
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            let level = ((rng.next_u64() as u32).trailing_zeros() as usize).min(rounds);
+            bits = if i % 2 == 0 {
+                rng.next_u64()
+            } else {
+                bits >> 32
+            };
+            let level = ((bits as u32).trailing_zeros() as usize).min(rounds);
             let round = rounds - level;
             round_of.push(round as u8);
             sizes[round] += 1;
@@ -71,10 +78,12 @@ fn brio_order_from(points: &[Point2], bounds: Option<BoundingBox>, threshold: us
         sorted[fill[round as usize]] = *key;
         fill[round as usize] += 1;
     }
+    drop((keys, round_of));
     for r in 0..=rounds {
         sorted[start[r]..start[r + 1]].sort_unstable();
     }
-    sorted.into_iter().map(|key| key as u32).collect()
+    // A fresh exact-size array (collecting in place would keep the 64-bit capacity).
+    sorted.iter().map(|&key| key as u32).collect()
 }
 
 /// [`brio_order`] on all the threads (feature `parallel`): the rounds drawn in input order

@@ -6,8 +6,7 @@ use super::triangulation::{find_duplicates, rotate_to_lex_min, Triangulation, EM
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use crate::error::Result;
-use crate::gen::Rng;
-use crate::geometry::{CountedPredicates, InCircle, Orientation, Point2, PointSet};
+use crate::geometry::{BoxPredicates, CountedPredicates, InCircle, Orientation, Point2, PointSet};
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
 pub(super) const DECLARATION: Declaration = Declaration {
@@ -41,7 +40,10 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// "ghost" triangles with a vertex at infinity, whose circumcircle is the open half-plane
 /// beyond their hull edge (an orientation test). The insertion order is a biased
 /// randomized order (BRIO) sorted along a Hilbert curve in each round, so the walks are
-/// short and the expected number of flips is O(n) on every input.
+/// short and the expected number of flips is O(n) on every input. Every test is exact; what
+/// the whole set allows is worked out once (the in-circle filter's error bound for the
+/// bounding box, and plain floating point for small-integer sets, where it is exact), and
+/// the conversion to the 64-bit result frees the builder's 32-bit arrays as it goes.
 ///
 /// It computes the triangulation the course defines ([RD, §2.4]
 /// "Triangulación de Delaunay", Definition 2.34 and Theorem 2.35) without building the
@@ -152,7 +154,8 @@ pub(super) fn incremental_local<C: Counter>(
         return Ok(None);
     };
     let local: Vec<Point2> = order.iter().map(|&i| points[i as usize]).collect();
-    let mut mesh = Mesh::new(local, first, counter);
+    let filter = BoxPredicates::for_points(points);
+    let mut mesh = Mesh::new(local, first, filter, counter);
     for k in 3..order.len() as u32 {
         mesh.insert(k);
     }
@@ -173,33 +176,60 @@ pub(super) fn degenerate(points: &PointSet<'_>) -> Triangulation {
 
 impl LocalTriangulation {
     /// Renumbers the vertices with their input indices.
+    ///
+    /// At 10^7 points this step sets the builder's peak memory, so it frees as it goes: the
+    /// point copies first, then each 32-bit array while its 64-bit replacement fills (see
+    /// [`widen`]).
     fn into_triangulation(self, points: &[Point2]) -> Triangulation {
-        let order = &self.order;
-        let mut hull: Vec<usize> = self
-            .hull
-            .iter()
-            .map(|&v| order[v as usize] as usize)
-            .collect();
-        rotate_to_lex_min(points, &mut hull);
-        Triangulation {
-            triangles: self
-                .triangles
-                .iter()
-                .map(|&v| order[v as usize] as usize)
-                .collect(),
-            halfedges: self
-                .halfedges
-                .iter()
-                .map(|&f| if f == NO_TWIN { EMPTY } else { f as usize })
-                .collect(),
+        let LocalTriangulation {
+            points: local,
+            order,
+            triangles,
+            halfedges,
+            duplicates,
             hull,
-            duplicates: self.duplicates,
+        } = self;
+        drop(local);
+        let mut hull: Vec<usize> = hull.iter().map(|&v| order[v as usize] as usize).collect();
+        rotate_to_lex_min(points, &mut hull);
+        let triangles = widen(triangles, |v| order[v as usize] as usize);
+        drop(order);
+        let halfedges = widen(halfedges, |f| if f == NO_TWIN { EMPTY } else { f as usize });
+        Triangulation {
+            triangles,
+            halfedges,
+            hull,
+            duplicates,
         }
     }
 }
 
-/// The seed of the walk's coin flips (any fixed value).
-const WALK_SEED: u64 = 0x0DE1_A0A7;
+/// Slices of [`widen`]: 2^18 entries, one megabyte of the 32-bit source.
+const WIDEN_SLICE: usize = 1 << 18;
+
+/// `source` mapped entry by entry into a 64-bit array, releasing the source from its end one
+/// slice at a time. The result is allocated zeroed, and a large zeroed allocation takes no
+/// memory until written, so the two arrays are never both resident in full: the peak is
+/// about the larger of them (the 64-bit one), not their sum.
+fn widen(mut source: Vec<u32>, map: impl Fn(u32) -> usize) -> Vec<usize> {
+    if source.len() <= WIDEN_SLICE {
+        return source.iter().map(|&x| map(x)).collect();
+    }
+    let mut out = vec![0usize; source.len()];
+    while !source.is_empty() {
+        let end = source.len();
+        let start = end.saturating_sub(WIDEN_SLICE);
+        for (o, &x) in out[start..end].iter_mut().zip(&source[start..]) {
+            *o = map(x);
+        }
+        source.truncate(start);
+        source.shrink_to_fit();
+    }
+    out
+}
+
+/// The seed of the walk's coin flips (any fixed non-zero value).
+const WALK_SEED: u32 = 0x0DE1_A0A7;
 
 /// The vertex at infinity of the ghost triangles.
 const GHOST: u32 = u32::MAX;
@@ -229,8 +259,11 @@ struct Mesh<'c, C> {
     stack: Vec<u32>,
     /// A triangle that had the last inserted point as a vertex: the walk starts there.
     last: u32,
-    /// Coin flips of the walk.
-    rng: Rng,
+    /// The state of the walk's coin flips (a 32-bit xorshift: the walk needs only to not
+    /// follow a fixed rule, not good randomness).
+    coin: u32,
+    /// The in-circle filter's bound for the points' bounding box.
+    filter: BoxPredicates,
     /// `[dropped vertex id, kept vertex id]`.
     duplicates: Vec<[u32; 2]>,
     counter: &'c mut C,
@@ -239,7 +272,12 @@ struct Mesh<'c, C> {
 impl<'c, C: Counter> Mesh<'c, C> {
     /// The triangle of the first three vertices (ids 0, 1, 2, counter-clockwise) and its three
     /// ghosts.
-    fn new(points: Vec<Point2>, [a, b, c]: [u32; 3], counter: &'c mut C) -> Self {
+    fn new(
+        points: Vec<Point2>,
+        [a, b, c]: [u32; 3],
+        filter: BoxPredicates,
+        counter: &'c mut C,
+    ) -> Self {
         let n = points.len();
         let mut triangles = Vec::with_capacity(6 * n + 12);
         let mut halfedges = Vec::with_capacity(6 * n + 12);
@@ -252,7 +290,8 @@ impl<'c, C: Counter> Mesh<'c, C> {
             halfedges,
             stack: Vec::with_capacity(64),
             last: 0,
-            rng: Rng::new(WALK_SEED),
+            coin: WALK_SEED,
+            filter,
             duplicates: Vec::new(),
             counter,
         }
@@ -295,7 +334,7 @@ impl<'c, C: Counter> Mesh<'c, C> {
         let mut entered = u32::MAX;
         'walk: loop {
             let base = 3 * t;
-            let start = (((self.rng.next_u64() >> 32) * 3) >> 32) as u32;
+            let start = self.flip3();
             let mut collinear = 0u32;
             for k in 0..3 {
                 let e = base + (start + k) % 3;
@@ -304,7 +343,10 @@ impl<'c, C: Counter> Mesh<'c, C> {
                 }
                 let a = self.triangles[e as usize];
                 let b = self.triangles[next(e) as usize];
-                match self.counter.orient2d(self.point(a), self.point(b), p) {
+                match self
+                    .filter
+                    .orient2d_with(self.point(a), self.point(b), p, self.counter)
+                {
                     Orientation::Clockwise => {
                         let f = self.halfedges[e as usize];
                         t = f / 3;
@@ -331,6 +373,18 @@ impl<'c, C: Counter> Mesh<'c, C> {
             }
             return Location::OnEdge(base + collinear - 1);
         }
+    }
+
+    /// A pseudo-random edge position, 0, 1 or 2 (the high bits of the next xorshift state,
+    /// scaled to three).
+    #[inline(always)]
+    fn flip3(&mut self) -> u32 {
+        let mut x = self.coin;
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        self.coin = x;
+        ((u64::from(x) * 3) >> 32) as u32
     }
 
     /// The position (0, 1 or 2) of the half-edge of ghost `t` that joins two real vertices.
@@ -438,16 +492,16 @@ impl<'c, C: Counter> Mesh<'c, C> {
         if u == GHOST {
             // Ghost (w, v, G): hull edge v -> w.
             let (pv, pw) = (self.point(v), self.point(w));
-            self.counter.orient2d(pv, pw, p) == Orientation::Clockwise
+            self.filter.orient2d_with(pv, pw, p, self.counter) == Orientation::Clockwise
         } else if v == GHOST {
             // Ghost (u, w, G): hull edge w -> u.
             let (pw, pu) = (self.point(w), self.point(u));
-            self.counter.orient2d(pw, pu, p) == Orientation::Clockwise
+            self.filter.orient2d_with(pw, pu, p, self.counter) == Orientation::Clockwise
         } else if w == GHOST {
             false
         } else {
             let (pv, pu, pw) = (self.point(v), self.point(u), self.point(w));
-            self.counter.incircle(pv, pu, pw, p) == InCircle::Inside
+            self.filter.incircle_with(pv, pu, pw, p, self.counter) == InCircle::Inside
         }
     }
 
@@ -610,4 +664,27 @@ fn first_triangle<C: Counter>(
         order.swap(1, 2);
     }
     Some([0, 1, 2])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn widen_maps_every_entry_in_order_across_slices() {
+        for len in [0, 1, WIDEN_SLICE, WIDEN_SLICE + 1, 3 * WIDEN_SLICE + 7] {
+            let source: Vec<u32> = (0..len as u32)
+                .map(|i| {
+                    if i % 11 == 0 {
+                        NO_TWIN
+                    } else {
+                        i.wrapping_mul(2_654_435_761)
+                    }
+                })
+                .collect();
+            let map = |x: u32| if x == NO_TWIN { EMPTY } else { x as usize + 1 };
+            let expected: Vec<usize> = source.iter().map(|&x| map(x)).collect();
+            assert_eq!(widen(source, map), expected, "length {len}");
+        }
+    }
 }

@@ -70,6 +70,7 @@ pub(crate) const DECLARATIONS: [&crate::complexity::Declaration; 8] = [
     &products::DECLARATIONS[1],
     &products::DECLARATIONS[2],
 ];
+pub(crate) use predicates::BoxPredicates;
 pub use predicates::{
     cmp_dist, cmp_dist_with, cmp_lex, cmp_lex_with, cross_sign, cross_sign_with, incircle,
     incircle_with, orient2d, orient2d_with, InCircle, Orientation,

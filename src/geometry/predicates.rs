@@ -20,7 +20,7 @@
 
 use super::expansion::{two_diff, Expansion};
 use super::extended::{self, Predicate};
-use super::Point2;
+use super::{BoundingBox, Point2};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
@@ -337,6 +337,132 @@ pub fn incircle_with<C: Counter + ?Sized>(
     d: Point2,
     counter: &mut C,
 ) -> InCircle {
+    incircle_bounded(a, b, c, d, f64::INFINITY, counter)
+}
+
+/// [`orient2d`] and [`incircle`] for points of one set, with what is known of the whole set
+/// precomputed: a bound of [`incircle`]'s filter that holds for every four points in the
+/// set's bounding box, so the per-call bound can be skipped (a "static" filter, as in
+/// Shewchuk's and CGAL's predicates), and whether the set is small-integer, in which case
+/// both predicates are exact in plain floating point.
+///
+/// Why it is safe: the per-call bound is a sum of products of rounded absolute differences
+/// of coordinates, every one at most the rounded width `w` of the box (rounding is
+/// monotone). Evaluating the same expression with every difference replaced by `w`, in the
+/// same order, therefore gives a number no smaller than any per-call bound, and a
+/// determinant that clears it clears the per-call one, with the same sign. When it does
+/// not, [`BoxPredicates::incircle_with`] goes on with the per-call bound and the exact
+/// stages, so every answer is the one [`incircle`] gives.
+///
+/// Small-integer sets: if every coordinate is an integer and the box is at most
+/// [`EXACT_INTEGER_WIDTH`] = 2^12 wide on both axes, every difference of coordinates is an
+/// integer of at most 2^12, every product and lift at most 2^25 and the in-circle
+/// determinant at most 12 * 2^48 < 2^53 in absolute value, so every operation of both
+/// determinants is exact and their signs need no filter (integer grids, where cocircular
+/// quadruples and collinear triples are everywhere, would otherwise take the exact stages).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct BoxPredicates {
+    bound: f64,
+    exact: bool,
+}
+
+/// The widest box of integer points whose determinants [`BoxPredicates`] evaluates exactly.
+const EXACT_INTEGER_WIDTH: f64 = 4096.0;
+
+impl BoxPredicates {
+    /// The predicates for `points`: O(n) to look for non-integer coordinates (it stops at
+    /// the first).
+    pub(crate) fn for_points(points: &[Point2]) -> BoxPredicates {
+        let Some(bounds) = BoundingBox::of(points) else {
+            return BoxPredicates::unusable();
+        };
+        let mut predicates = BoxPredicates::over(bounds);
+        predicates.exact = bounds.max.x - bounds.min.x <= EXACT_INTEGER_WIDTH
+            && bounds.max.y - bounds.min.y <= EXACT_INTEGER_WIDTH
+            && points
+                .iter()
+                .all(|p| p.x == p.x.trunc() && p.y == p.y.trunc());
+        predicates
+    }
+
+    /// The bound for points in `bounds` (infinite, so never used, if the box's width
+    /// overflows).
+    pub(crate) fn over(bounds: BoundingBox) -> BoxPredicates {
+        let w = (bounds.max.x - bounds.min.x).max(bounds.max.y - bounds.min.y);
+        // The shape of `incircle_bounded`'s bound with every |difference| = w.
+        let product = w * w;
+        let minor = product + product;
+        let lift = product + product;
+        let term = (minor + MINOR_SLACK) * lift;
+        let permanent = term + term + term;
+        BoxPredicates {
+            bound: INCIRCLE_ERRBOUND * permanent + UNDERFLOW_SLACK,
+            exact: false,
+        }
+    }
+
+    /// A filter that never decides (for callers with no box).
+    pub(crate) fn unusable() -> BoxPredicates {
+        BoxPredicates {
+            bound: f64::INFINITY,
+            exact: false,
+        }
+    }
+
+    /// [`incircle_with`] for four points in the filter's box: the same answer and counts.
+    #[inline(always)]
+    pub(crate) fn incircle_with<C: Counter + ?Sized>(
+        &self,
+        a: Point2,
+        b: Point2,
+        c: Point2,
+        d: Point2,
+        counter: &mut C,
+    ) -> InCircle {
+        if self.exact {
+            counter.incircle_test();
+            let (adx, ady, bdx, bdy) = (a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y);
+            let (cdx, cdy) = (c.x - d.x, c.y - d.y);
+            let alift = adx * adx + ady * ady;
+            let blift = bdx * bdx + bdy * bdy;
+            let clift = cdx * cdx + cdy * cdy;
+            let det = alift * (bdx * cdy - cdx * bdy)
+                + blift * (cdx * ady - adx * cdy)
+                + clift * (adx * bdy - bdx * ady);
+            return InCircle::from_sign(sign_of(det));
+        }
+        incircle_bounded(a, b, c, d, self.bound, counter)
+    }
+
+    /// [`orient2d_with`] for three points of the set: the same answer and counts.
+    #[inline(always)]
+    pub(crate) fn orient2d_with<C: Counter + ?Sized>(
+        &self,
+        a: Point2,
+        b: Point2,
+        c: Point2,
+        counter: &mut C,
+    ) -> Orientation {
+        if self.exact {
+            counter.orientation_test();
+            let det = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
+            return Orientation::from_sign(sign_of(det));
+        }
+        orient2d_with(a, b, c, counter)
+    }
+}
+
+/// [`incircle_with`], first trying `static_bound` (a bound no smaller than the per-call one,
+/// see [`BoxPredicates`]; infinity to skip it).
+#[inline(always)]
+fn incircle_bounded<C: Counter + ?Sized>(
+    a: Point2,
+    b: Point2,
+    c: Point2,
+    d: Point2,
+    static_bound: f64,
+    counter: &mut C,
+) -> InCircle {
     counter.incircle_test();
     let (adx, ady, bdx, bdy) = (a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y);
     let (cdx, cdy) = (c.x - d.x, c.y - d.y);
@@ -347,6 +473,12 @@ pub fn incircle_with<C: Counter + ?Sized>(
     let blift = bdx * bdx + bdy * bdy;
     let clift = cdx * cdx + cdy * cdy;
     let det = alift * (bc - cb) + blift * (ca - ac) + clift * (ab - ba);
+    if det > static_bound {
+        return InCircle::Inside;
+    }
+    if -det > static_bound {
+        return InCircle::Outside;
+    }
     let (pa, pb, pc) = (
         bc.abs() + cb.abs(),
         ca.abs() + ac.abs(),
@@ -657,4 +789,107 @@ fn cross_sign_in_window(coords: &[f64]) -> i32 {
     sum.add_product2(abx, cdy);
     sum.add_product2((-aby.0, -aby.1), cdx);
     sum.signum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::count::Counts;
+    use crate::gen::Rng;
+
+    /// Every quadruple of `pts` (up to `limit` of them, drawn at random): the box filter
+    /// answers as `incircle` does and counts one in-circle test.
+    /// Also `orient2d` on the first three; returns whether the set took the small-integer
+    /// path.
+    fn filter_agrees(pts: &[Point2], limit: usize) -> bool {
+        let filter = BoxPredicates::for_points(pts);
+        let mut rng = Rng::new(11);
+        let mut counts = Counts::default();
+        for k in 0..limit {
+            let pick = |rng: &mut Rng| pts[rng.below(pts.len() as u64) as usize];
+            let [a, b, c, d] = [(); 4].map(|_| pick(&mut rng));
+            let got = filter.incircle_with(a, b, c, d, &mut counts);
+            assert_eq!(got, incircle(a, b, c, d), "{a:?} {b:?} {c:?} {d:?}");
+            assert_eq!(counts.incircle_tests, k as u64 + 1);
+            let got = filter.orient2d_with(a, b, c, &mut counts);
+            assert_eq!(got, orient2d(a, b, c), "{a:?} {b:?} {c:?}");
+            assert_eq!(counts.orientation_tests, k as u64 + 1);
+        }
+        filter.exact
+    }
+
+    #[test]
+    fn small_integer_sets_take_the_plain_path_and_agree() {
+        // The widest grid allowed, offset far from the origin: every determinant of the
+        // corners and the middle points is at its largest.
+        let side = EXACT_INTEGER_WIDTH;
+        let mut pts: Vec<Point2> = [0.0, 1.0, side / 2.0, side - 1.0, side]
+            .into_iter()
+            .flat_map(|x| [0.0, 1.0, side / 2.0, side - 1.0, side].map(|y| (x, y)))
+            .map(|(x, y)| Point2::new(x - 1e9, y + 3e12))
+            .collect();
+        assert!(filter_agrees(&pts, 20_000));
+        // One step wider, or one coordinate off the integers: the general path.
+        pts.push(Point2::new(side + 1.0 - 1e9, 3e12));
+        assert!(!filter_agrees(&pts, 2000));
+        pts.pop();
+        pts.push(Point2::new(0.5 - 1e9, 3e12));
+        assert!(!filter_agrees(&pts, 2000));
+    }
+
+    #[test]
+    fn box_filter_agrees_with_incircle_at_every_scale() {
+        let mut rng = Rng::new(5);
+        for scale in [1e-310, 1e-200, 1e-9, 1.0, 3e5, 1e150, 1e300] {
+            let pts: Vec<Point2> = (0..200)
+                .map(|_| Point2::new(rng.unit() * scale, (rng.unit() - 0.5) * scale))
+                .collect();
+            filter_agrees(&pts, 4000);
+        }
+        // A box as wide as the doubles go: the width overflows and the filter never decides.
+        let wide = [
+            (-f64::MAX, 0.0),
+            (f64::MAX, 1.0),
+            (0.0, f64::MAX),
+            (1.0, -1.0),
+        ]
+        .map(Point2::from);
+        filter_agrees(&wide, 500);
+        assert_eq!(
+            BoxPredicates::over(BoundingBox::of(&wide).unwrap()).bound,
+            f64::INFINITY
+        );
+    }
+
+    #[test]
+    fn box_filter_agrees_on_cocircular_and_nearly_cocircular_points() {
+        // An integer grid: many quadruples lie exactly on one circle.
+        let grid: Vec<Point2> = (0..12)
+            .flat_map(|x| (0..12).map(move |y| Point2::new(f64::from(x), f64::from(y))))
+            .collect();
+        filter_agrees(&grid, 20_000);
+        // The same grid nudged by one ulp here and there, and a small cluster far from the
+        // box's corner (small determinants against a large box).
+        let mut nudged = grid.clone();
+        for (i, p) in nudged.iter_mut().enumerate() {
+            if i % 3 == 0 {
+                p.x = p.x.next_up();
+            }
+            if i % 5 == 0 {
+                p.y = p.y.next_down();
+            }
+        }
+        nudged
+            .extend((0..30).map(|i| {
+                Point2::new(1e6 + f64::from(i % 6) * 1e-7, 1e6 + f64::from(i / 6) * 1e-7)
+            }));
+        filter_agrees(&nudged, 20_000);
+    }
+
+    #[test]
+    fn box_filter_bound_is_small_on_a_unit_box() {
+        let unit = [(0.0, 0.0), (1.0, 1.0)].map(Point2::from);
+        let bound = BoxPredicates::over(BoundingBox::of(&unit).unwrap()).bound;
+        assert!(bound > 0.0 && bound < 1e-13, "{bound}");
+    }
 }

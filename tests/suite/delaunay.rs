@@ -65,6 +65,22 @@ fn degenerate_kinds_at_a_larger_size() {
 }
 
 #[test]
+fn inputs_past_one_widening_slice_are_valid_and_agree_with_spade() {
+    // 50 000 points make about 300 000 triangle corners: more than one slice (2^18) of the
+    // builder's 32- to 64-bit conversion, so its slice boundaries are crossed.
+    let pts = points(PointKind::UniformSquare, 50_000, 3).unwrap();
+    let t = build_and_check(&pts);
+    assert!(t.triangles.len() > 1 << 18);
+    assert_eq!(triangle_set(&t), spade_triangle_set(&pts));
+    // A grid (cocircular quadruples everywhere) with copies of some points.
+    let mut grid = points(PointKind::Grid, 50_000, 3).unwrap();
+    grid.extend_from_within(..1000);
+    let t = build_and_check(&grid);
+    assert!(t.triangles.len() > 1 << 18);
+    assert_eq!(t.duplicates, find_duplicates(&grid));
+}
+
+#[test]
 fn agrees_with_spade_on_points_in_general_position() {
     for (kind, n) in [
         (PointKind::UniformSquare, 3000),
