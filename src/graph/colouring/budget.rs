@@ -185,16 +185,6 @@ impl Meter {
         self.timed_out || self.spent >= self.limit
     }
 
-    /// Runs `f` with at most `steps` more steps to spend (the step cap lowered for its
-    /// duration, the time limit unchanged).
-    pub(super) fn capped<R>(&mut self, steps: u64, f: impl FnOnce(&mut Meter) -> R) -> R {
-        let limit = self.limit;
-        self.limit = limit.min(self.spent.saturating_add(steps));
-        let result = f(self);
-        self.limit = limit;
-        result
-    }
-
     /// Records that the best colouring so far was found now.
     pub(super) fn found_best(&mut self) {
         self.best_step = self.spent;

@@ -20,10 +20,8 @@ use crate::error::{Error, Result, Violation};
 use crate::graph::Graph;
 
 mod budget;
-mod clique;
 mod course;
 mod dsatur;
-mod exact;
 mod greedy;
 mod hea;
 mod largest_first;

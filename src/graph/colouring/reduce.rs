@@ -11,49 +11,13 @@
 //! (with their edges) and coloured greedily afterwards, in the reverse order. Every vertex
 //! of the core has at least t core neighbours, so a table of t entries per core vertex
 //! takes at most 2m entries: the searches' tables are O(m) whatever t is.
-//!
-//! The descent also stops at a lower bound: the largest clique it finds greedily
-//! ([`clique`](super::clique)), since no colouring has fewer colours than a clique has
-//! vertices. At the target equal to that bound, where every colour class must meet every
-//! clique of that size once, it alternates the caller's search with the exact search of
-//! [`exact`](super::exact) in doubling turns; the exact search may also show that the
-//! target cannot be met, which ends the descent.
 
 use super::budget::{pass, Meter};
-use super::clique::{clique_lower_bound, cliques_of_size};
-use super::exact::{exact_colouring, Outcome, MAX_COLOURS};
 use super::Colouring;
 use crate::count::Counter;
 use crate::gen::Rng;
 use crate::graph::Graph;
 use std::collections::VecDeque;
-
-/// A graph's vertices `0..vertex_total()` and their neighbour lists: the whole graph or a
-/// [`Core`], for the helpers that work on either.
-pub(super) trait Adjacency {
-    /// The number of vertices.
-    fn vertex_total(&self) -> usize;
-    /// The neighbours of `v`.
-    fn neighbours(&self, v: usize) -> &[u32];
-}
-
-impl Adjacency for Graph {
-    fn vertex_total(&self) -> usize {
-        self.vertex_count()
-    }
-    fn neighbours(&self, v: usize) -> &[u32] {
-        self.adjacent(v)
-    }
-}
-
-impl Adjacency for Core {
-    fn vertex_total(&self) -> usize {
-        self.len()
-    }
-    fn neighbours(&self, v: usize) -> &[u32] {
-        Core::neighbours(self, v)
-    }
-}
 
 /// The subgraph a search for `colours` colours works on: the `colours`-core of a graph,
 /// renumbered `0..len`, and the vertices set aside to reach it.
@@ -210,11 +174,7 @@ where
     S: FnMut(&Core, &[u32], &mut Meter, &mut Rng, &mut C) -> Option<Vec<u32>>,
 {
     let mut best = start;
-    // No colouring has fewer colours than a clique has vertices. Like DSatur's, this
-    // preparation is counted but not paid from the budget, so a target above the bound
-    // follows the same path for a seed and a step budget as without it.
-    let (fewest, _) = clique_lower_bound(g, c);
-    while best.count > fewest.max(1) && meter.spend(pass(g)) {
+    while best.count > 1 && meter.spend(pass(g)) {
         let target = best.count - 1;
         let found = if g.edge_count() == 0 {
             Some(vec![0; g.vertex_count()])
@@ -225,17 +185,12 @@ where
         } else {
             let colour: Vec<u32> = best.colour.iter().map(|&k| k as u32).collect();
             let core = Core::new(g, target, c);
-            if core.len() == 0 {
+            let core_colour = if core.len() == 0 {
                 Some(Vec::new())
-            } else if target == fewest && target <= MAX_COLOURS {
-                match alternate(&core, &colour, meter, rng, c, &mut solve) {
-                    Some(Outcome::Found(k)) => Some(k),
-                    _ => None,
-                }
             } else {
                 solve(&core, &colour, meter, rng, c)
-            }
-            .map(|k| core.extend(g, &k, c))
+            };
+            core_colour.map(|k| core.extend(g, &k, c))
         };
         match found {
             // Compact colours, so that the next target drops exactly one class.
@@ -249,48 +204,6 @@ where
     debug_assert_eq!(super::check_colouring(g, &best.colour), Ok(()));
     best
 }
-
-/// The search for a colouring of `core` with as many colours as its largest cliques have
-/// vertices: the exact search ([`exact_colouring`]) over the core's cliques of that size,
-/// and `solve`, in turns of [`FIRST_TURN`] passes over the core, doubling after each pair,
-/// until one finds a colouring, the exact search shows there is none, or the budget ends
-/// (`None`). Each turn starts its search afresh, so the turns cost at most twice the last
-/// turn's pair.
-fn alternate<C, S>(
-    core: &Core,
-    colour: &[u32],
-    meter: &mut Meter,
-    rng: &mut Rng,
-    c: &mut C,
-    solve: &mut S,
-) -> Option<Outcome>
-where
-    C: Counter,
-    S: FnMut(&Core, &[u32], &mut Meter, &mut Rng, &mut C) -> Option<Vec<u32>>,
-{
-    let (cliques, steps) = cliques_of_size(core, core.colours, c);
-    meter.charge(steps);
-    let mut turn = FIRST_TURN.saturating_mul(core.len() as u64 + core.edge_ends());
-    loop {
-        match exact_colouring(core, &cliques, turn, meter, c) {
-            Outcome::Unfinished => {}
-            decided => return Some(decided),
-        }
-        if meter.exhausted() {
-            return None;
-        }
-        if let Some(k) = meter.capped(turn, |meter| solve(core, colour, meter, rng, c)) {
-            return Some(Outcome::Found(k));
-        }
-        if meter.exhausted() {
-            return None;
-        }
-        turn = turn.saturating_mul(2);
-    }
-}
-
-/// The first turn of [`alternate`], in passes over the core.
-const FIRST_TURN: u64 = 64;
 
 /// The colouring with the colours of `colour` renumbered to `0..count` in order of first use.
 pub(super) fn renumbered(colour: &[u32]) -> Colouring {
