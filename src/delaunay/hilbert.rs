@@ -49,19 +49,12 @@ fn brio_order_from(points: &[Point2], bounds: Option<BoundingBox>, threshold: us
     }
     let mut round_of = Vec::with_capacity(n);
     let mut sizes = vec![0usize; rounds + 1];
-    // One 64-bit draw serves two points, 32 bits each.
     let mut bits = 0u64;
     let keys: Vec<u64> = points
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            bits = if i % 2 == 0 {
-                rng.next_u64()
-            } else {
-                bits >> 32
-            };
-            let level = ((bits as u32).trailing_zeros() as usize).min(rounds);
-            let round = rounds - level;
+            let round = round_of_point(i, rounds, &mut bits, &mut rng);
             round_of.push(round as u8);
             sizes[round] += 1;
             (grid.curve_index(*p) << 32) | i as u64
@@ -86,6 +79,18 @@ fn brio_order_from(points: &[Point2], bounds: Option<BoundingBox>, threshold: us
     sorted.iter().map(|&key| key as u32).collect()
 }
 
+/// The BRIO round of point `i` (drawn in order of `i`): the last round with probability 1/2,
+/// the one before with 1/4, and so on. One 64-bit draw serves two points, 32 bits each;
+/// `bits` carries the draw from an even `i` to the next.
+fn round_of_point(i: usize, rounds: usize, bits: &mut u64, rng: &mut Rng) -> usize {
+    *bits = if i % 2 == 0 {
+        rng.next_u64()
+    } else {
+        *bits >> 32
+    };
+    rounds - ((*bits as u32).trailing_zeros() as usize).min(rounds)
+}
+
 /// [`brio_order`] on all the threads (feature `parallel`): the rounds drawn in input order
 /// from the same random source, the curve indices computed and each round's keys sorted in
 /// parallel. The keys are distinct (they hold the ids), so the order is the sequential one.
@@ -93,11 +98,9 @@ fn brio_order_from(points: &[Point2], bounds: Option<BoundingBox>, threshold: us
 fn par_brio_order(points: &[Point2], grid: &Grid, rounds: usize, rng: &mut Rng) -> Vec<u32> {
     use rayon::prelude::*;
     let n = points.len();
+    let mut bits = 0u64;
     let round_of: Vec<u8> = (0..n)
-        .map(|_| {
-            let level = ((rng.next_u64() as u32).trailing_zeros() as usize).min(rounds);
-            (rounds - level) as u8
-        })
+        .map(|i| round_of_point(i, rounds, &mut bits, rng) as u8)
         .collect();
     let keys: Vec<u64> = points
         .par_iter()
