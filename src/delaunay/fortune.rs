@@ -11,6 +11,7 @@ use crate::geometry::construct::circumcentre;
 use crate::geometry::lex_sort::{sorted_items_with, yx_key};
 use crate::geometry::sweep_predicates::{
     breakpoint_side, circle_top_floor, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
+    TopEstimate,
 };
 use crate::geometry::{ConstructedPoint, CountedPredicates, Orientation, Point2, PointSet};
 use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
@@ -272,7 +273,7 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
         obs,
         line: BeachLine::with_capacity(2 * sites.len()),
         queue: Heap::with_capacity(sites.len()),
-        next_id: 0,
+        events: Vec::with_capacity(2 * sites.len()),
         triangles: Vec::with_capacity(2 * sites.len()),
         edges: Vec::with_capacity(3 * sites.len()),
         halfedges: Vec::with_capacity(6 * sites.len()),
@@ -291,14 +292,35 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
     Triangulation::from_linked(points, triangles, halfedges, duplicates)
 }
 
-/// A circle event: arc `arc` (between the arcs of `sites[0]` and `sites[2]`) vanishes.
+/// A circle event as the queue holds it (16 bytes): the estimate of its circle's top (see
+/// [`TopEstimate`]) and its id, the index of its [`EventSites`] in `Sweep::events`.
 #[derive(Debug, Clone, Copy)]
 struct Event {
-    key: CircleKey,
-    sites: [u32; 3],
-    arc: u32,
+    top: f64,
+    err: f32,
     /// Matches the arc's pending event while the event is still valid.
     id: u32,
+}
+
+const _: () = assert!(std::mem::size_of::<Event>() == 16);
+
+impl Event {
+    #[inline]
+    fn estimate(&self) -> TopEstimate {
+        TopEstimate {
+            top: self.top,
+            err: self.err,
+        }
+    }
+}
+
+/// What the queue's comparisons need only when the estimates leave them open: arc `arc`
+/// (between the arcs of `sites[0]` and `sites[2]`) vanishes at the top of the circle
+/// through `sites`.
+#[derive(Debug, Clone, Copy)]
+struct EventSites {
+    sites: [u32; 3],
+    arc: u32,
 }
 
 /// The sweep's state over the sites (sorted by y, then x, distinct).
@@ -314,7 +336,8 @@ struct Sweep<'a, C, O> {
     line: BeachLine,
     /// A binary min-heap of circle events by event point.
     queue: Heap<Event>,
-    next_id: u32,
+    /// The sites and arc of every circle event queued so far, by id.
+    events: Vec<EventSites>,
     /// Counter-clockwise triangles as site positions.
     triangles: Vec<[u32; 3]>,
     /// Per Voronoi edge (the tag of the breakpoints tracing it, see
@@ -337,17 +360,17 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
                 Some(e) => {
                     self.counter.comparison();
                     let site = self.sites[next_site];
-                    // The sites' coordinates only when the enclosure leaves it open.
-                    let order = e
-                        .key
-                        .cmp_top_with(site.y)
-                        .unwrap_or_else(|| cmp_circle_site(&e.key, self.points(e.sites), site));
+                    // The sites' coordinates only when the estimate leaves it open.
+                    let order = e.estimate().cmp_height(site.y).unwrap_or_else(|| {
+                        let t = self.points(self.events[e.id as usize].sites);
+                        cmp_circle_site(&CircleKey::new(t[0], t[1], t[2]), t, site)
+                    });
                     order != Ordering::Greater
                 }
             };
             if circle_first {
                 let e = self.pop();
-                self.circle_event(e);
+                self.circle_event(e.id);
             } else {
                 self.site_event(next_site as u32);
                 next_site += 1;
@@ -397,8 +420,9 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         });
     }
 
-    fn circle_event(&mut self, e: Event) {
-        if !self.line.is_live(e.arc) || self.line.event(e.arc) != e.id {
+    fn circle_event(&mut self, id: u32) {
+        let e = self.events[id as usize];
+        if !self.line.is_live(e.arc) || self.line.event(e.arc) != id {
             return; // a false alarm: the arc changed neighbours or is gone
         }
         let t = self.triangles.len() as u32;
@@ -446,15 +470,11 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         if self.counter.orient2d(a, b, c) != Orientation::CounterClockwise {
             return;
         }
-        let id = self.next_id;
-        self.next_id += 1;
+        let id = self.events.len() as u32;
+        self.events.push(EventSites { sites, arc: m });
         self.line.set_event(m, id);
-        self.push(Event {
-            key: CircleKey::new(a, b, c),
-            sites,
-            arc: m,
-            id,
-        });
+        let TopEstimate { top, err } = TopEstimate::new(a, b, c);
+        self.push(Event { top, err, id });
     }
 
     /// A new Voronoi edge, with the half-edge found at its start (or [`NIL`]).
@@ -481,16 +501,16 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
     }
 
     fn push(&mut self, e: Event) {
-        let sites = self.sites;
+        let (sites, events) = (self.sites, &self.events);
         self.queue
-            .push(e, |x, y| before(sites, x, y), &mut *self.counter);
+            .push(e, |x, y| before(sites, events, x, y), &mut *self.counter);
     }
 
     /// Removes and returns the first event (the queue is not empty).
     fn pop(&mut self) -> Event {
-        let sites = self.sites;
+        let (sites, events) = (self.sites, &self.events);
         self.queue
-            .pop(|x, y| before(sites, x, y), &mut *self.counter)
+            .pop(|x, y| before(sites, events, x, y), &mut *self.counter)
             .expect("pop is only called on a non-empty queue")
     }
 }
@@ -512,13 +532,24 @@ fn input_triangles(triangles: &[[u32; 3]], index: &[usize]) -> Vec<usize> {
 }
 
 /// Whether event `x` comes strictly before event `y` (their circles' tops on the sweep line).
-fn before(sites: &[Point2], x: &Event, y: &Event) -> bool {
-    // The sites' coordinates only when the enclosures leave it open.
-    let order = x.key.cmp_tops(&y.key).unwrap_or_else(|| {
-        let points = |t: [u32; 3]| t.map(|v| sites[v as usize]);
-        cmp_circles(&x.key, points(x.sites), &y.key, points(y.sites))
-    });
-    order == Ordering::Less
+#[inline]
+fn before(sites: &[Point2], events: &[EventSites], x: &Event, y: &Event) -> bool {
+    // The sites' coordinates only when the estimates leave it open.
+    match x.estimate().cmp(&y.estimate()) {
+        Some(order) => order == Ordering::Less,
+        None => before_exact(sites, events, x, y),
+    }
+}
+
+/// [`before`] when the estimates overlap: the exact comparison of the event points.
+#[cold]
+#[inline(never)]
+fn before_exact(sites: &[Point2], events: &[EventSites], x: &Event, y: &Event) -> bool {
+    let points = |e: &Event| events[e.id as usize].sites.map(|v| sites[v as usize]);
+    let (t1, t2) = (points(x), points(y));
+    let k1 = CircleKey::new(t1[0], t1[1], t1[2]);
+    let k2 = CircleKey::new(t2[0], t2[1], t2[2]);
+    cmp_circles(&k1, t1, &k2, t2) == Ordering::Less
 }
 
 /// The points sorted by (y, x) without repeats, the input index of each (the smallest among

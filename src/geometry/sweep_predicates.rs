@@ -70,20 +70,187 @@ impl CircleKey {
     }
 }
 
-impl CircleKey {
-    /// The order of two events' tops if the enclosures decide it strictly (no coordinates
-    /// needed):
-    /// the quick first step of [`cmp_circles`].
-    #[inline]
-    pub(crate) fn cmp_tops(&self, other: &CircleKey) -> Option<Ordering> {
-        self.top.cmp(other.top).filter(|o| o.is_ne())
+/// A circle event's priority in plain floating point: the top of the circumcircle,
+/// `y = cy + r`, as a double `top` and a bound `err` with `|exact top − top| <= err`.
+///
+/// Heap comparisons decide in `f64` when two estimates' intervals `[top − err, top + err]`
+/// are disjoint (see [`TopEstimate::cmp`]), and only otherwise load the sites for the exact
+/// comparison ([`cmp_circles`], [`cmp_circle_site`]). The bound is derived a priori, once
+/// per event, from magnitudes the evaluation computes anyway (see [`TopEstimate::new`]);
+/// `err` is an `f32` rounded up (it only needs a few significant bits), so the estimate
+/// takes 12 bytes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct TopEstimate {
+    /// The top, rounded.
+    pub(crate) top: f64,
+    /// A bound on the error of `top` (the fields are open so that a caller can store them
+    /// beside its own 4-byte index in 16 bytes).
+    pub(crate) err: f32,
+}
+
+/// The relative margin a stored [`TopEstimate`] bound carries over the derived one.
+const ERR_MARGIN: f64 = pow2(-20);
+
+/// `u = 2^-53`, the unit roundoff of `f64` (round to nearest).
+const U: f64 = f64::EPSILON / 2.0;
+
+/// Scaled differences of magnitude below this (and not zero) leave the estimate to the
+/// exact stages: above it, no product of up to three differences leaves the normal range.
+const ESTIMATE_MIN_DIFF: f64 = pow2(-64);
+
+/// The least `|d|` the estimate divides by: the absolute slack of the underflow of a square
+/// (below) then stays below `2^-130`, far under the relative error bounds.
+const ESTIMATE_MIN_DET: f64 = pow2(-400);
+
+/// Absolute error a possibly underflowing `nx² + ny²` can bring into its square root:
+/// each square loses at most `2^-1075`, and `√(s + e) − √s <= √e <= 2^-537` for
+/// `e <= 2^-1074`.
+const ROOT_UNDERFLOW_SLACK: f64 = pow2(-536);
+
+impl TopEstimate {
+    /// The estimate that decides nothing (an infinite bound).
+    const UNDECIDED: TopEstimate = TopEstimate {
+        top: 0.0,
+        err: f32::INFINITY,
+    };
+
+    /// The estimate of the top of the circumcircle of `a, b, c` (counter-clockwise).
+    ///
+    /// **Evaluation.** With the differences `b − a = (bx, by)`, `c − a = (cx, cy)`
+    /// (rounded once, then scaled exactly by `2^k` so that the largest is in `[1, 2)`),
+    /// `bb = bx² + by²`, `cc = cx² + cy²`, `d = 2 (bx cy − by cx)`,
+    /// `nx = cy bb − by cc`, `ny = bx cc − cx bb`, the centre is `a + (nx, ny) / d` and the
+    /// radius `|n| / d`, so `top = a.y + 2^-k (ny + |n|) / d`.
+    ///
+    /// **Error bound** (`u = 2^-53`; each quantity below is the computed one, the exact one
+    /// starred). Round to nearest gives `|fl(z) − z| <= u |fl(z)|` for a normal result, and
+    /// additions and subtractions of doubles are exact when the result is subnormal. The
+    /// guard (every nonzero scaled difference in `[2^-64, 4)`) keeps every product of up to
+    /// three differences normal and every value far below overflow, so the relative model
+    /// holds for all of them; to first order:
+    ///
+    /// 1. a difference: `|X* − X| <= u |X|` (the scaling by `2^k` is exact);
+    /// 2. `bb`, `cc` (sums of squares, no cancellation): `<= 4u bb` (two relative errors
+    ///    of the difference in its square, the square's rounding, the sum's);
+    /// 3. `d`: each product carries `3u` of its own size, the subtraction `u |d|` with
+    ///    `|d| <= Dm = 2 (|bx cy| + |by cx|)`: `|d* − d| <= 2u Dm`;
+    /// 4. `nx`: each term `cy bb` carries `u + 4u + u`, the subtraction `u |nx|`:
+    ///    `|nx* − nx| <= 7u Nx` with `Nx = |cy| bb + |by| cc`; likewise `ny` with
+    ///    `Ny = |bx| cc + |cx| bb`;
+    /// 5. `r = |n|`: the norm is 1-Lipschitz, `| |n*| − |n| | <= |nx* − nx| + |ny* − ny|`,
+    ///    and the evaluation of `√(nx² + ny²)` adds `(2u + u)/2 + u = 2.5u r`, plus
+    ///    `2^-536` if a square underflows (`ROOT_UNDERFLOW_SLACK`);
+    /// 6. `N = ny + r`: the errors of `ny` and `r`, plus `u N`;
+    /// 7. `t = N / d`: with `|d| > E_d`, `|N*/d* − N/d| <= E_N / (|d| − E_d) +
+    ///    N E_d / (|d| (|d| − E_d))`, plus `u t` for the division (and `2^-1074` if the
+    ///    quotient is subnormal); `|d| >= 2^-400` keeps the slack of step 5 below
+    ///    `2^-130` after it;
+    /// 8. `s = 2^-k t`: exact, or off by at most `2^-1074` if it lands below the normal
+    ///    range;
+    /// 9. `top = a.y + s`: plus `u |top|`.
+    ///
+    /// Every coefficient used below carries one `u` more than this first-order count.
+    /// That margin covers the second-order terms (products of two or more relative
+    /// errors, each below `2^-50` of the first-order ones) and the rounding of the bound's
+    /// own evaluation (fewer than 40 roundings: a relative `40u < 2^-47` of the bound).
+    /// Anything outside the guard (tiny or huge differences, a nearly flat triple with
+    /// `|d| <= E_d`, a non-finite value) gives an estimate that decides nothing.
+    pub(crate) fn new(a: Point2, b: Point2, c: Point2) -> TopEstimate {
+        let (bx, by) = (b.x - a.x, b.y - a.y);
+        let (cx, cy) = (c.x - a.x, c.y - a.y);
+        let m = bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs());
+        if !(m > 0.0 && m.is_finite()) {
+            return TopEstimate::UNDECIDED;
+        }
+        let k = -exponent(m);
+        if !(-1000..=1000).contains(&k) {
+            return TopEstimate::UNDECIDED;
+        }
+        let f = pow2(k);
+        // A nonzero difference that scales below the guard (or underflows to zero) goes to
+        // the exact stages; above it the scaled value is normal, so the scaling was exact.
+        let tiny = |v: f64| v != 0.0 && (v * f).abs() < ESTIMATE_MIN_DIFF;
+        if tiny(bx) || tiny(by) || tiny(cx) || tiny(cy) {
+            return TopEstimate::UNDECIDED;
+        }
+        let (bx, by, cx, cy) = (bx * f, by * f, cx * f, cy * f);
+        let bb = bx * bx + by * by;
+        let cc = cx * cx + cy * cy;
+        let (p1, p2) = (bx * cy, by * cx);
+        let d = 2.0 * (p1 - p2);
+        let e_d = 3.0 * U * (2.0 * (p1.abs() + p2.abs()));
+        let dd = d - e_d;
+        if !(dd > 0.0 && d >= ESTIMATE_MIN_DET) {
+            return TopEstimate::UNDECIDED;
+        }
+        let nx = cy * bb - by * cc;
+        let ny = bx * cc - cx * bb;
+        let e_nx = 8.0 * U * (cy.abs() * bb + by.abs() * cc);
+        let e_ny = 8.0 * U * (bx.abs() * cc + cx.abs() * bb);
+        let r = (nx * nx + ny * ny).sqrt();
+        let e_r = e_nx + e_ny + 3.5 * U * r + ROOT_UNDERFLOW_SLACK;
+        let n = ny + r;
+        let e_n = e_ny + e_r + 2.0 * U * n.abs();
+        let t = n / d;
+        let e_t = (e_n + t.abs() * e_d) / dd + 2.0 * U * t.abs() + TINY;
+        let s = t / f;
+        let top = a.y + s;
+        let err = e_t / f + TINY + 2.0 * U * top.abs();
+        if !(top.is_finite() && err.is_finite()) {
+            return TopEstimate::UNDECIDED;
+        }
+        TopEstimate {
+            top,
+            // A relative 2^-20 more, for the rounding of the comparisons (see `cmp`).
+            err: round_up_f32(err * (1.0 + ERR_MARGIN)),
+        }
     }
 
-    /// The order of the event's top and the height `y` if the enclosure decides it strictly:
-    /// the quick first step of [`cmp_circle_site`].
+    /// The order of the two exact tops if the estimates decide it: their intervals are
+    /// disjoint. `None` when they overlap (equal tops always do).
+    ///
+    /// The test `y.top − x.top > x.err + y.err`, evaluated in doubles, errs by at most a
+    /// relative `u` on each side (subtractions of doubles are exact in the subnormal
+    /// range). Each stored bound is
+    /// the derived one times `1 + 2^-20`, rounded up, and never zero (it holds `2^-1074`
+    /// at least, rounded up to an `f32`): if the computed gap exceeds the computed sum,
+    /// the exact gap exceeds `(1 − 2u) (1 + 2^-20)` times the derived bounds' sum, which is
+    /// more than that sum, so the exact tops are in that order.
     #[inline]
-    pub(crate) fn cmp_top_with(&self, y: f64) -> Option<Ordering> {
-        self.top.cmp(Interval::point(y)).filter(|o| o.is_ne())
+    pub(crate) fn cmp(&self, other: &TopEstimate) -> Option<Ordering> {
+        let gap = other.top - self.top;
+        let slack = self.err as f64 + other.err as f64;
+        if gap > slack {
+            Some(Ordering::Less)
+        } else if -gap > slack {
+            Some(Ordering::Greater)
+        } else {
+            None
+        }
+    }
+
+    /// The order of the exact top and the height `y` if the estimate decides it.
+    #[inline]
+    pub(crate) fn cmp_height(&self, y: f64) -> Option<Ordering> {
+        let gap = y - self.top;
+        let slack = self.err as f64;
+        if gap > slack {
+            Some(Ordering::Less)
+        } else if -gap > slack {
+            Some(Ordering::Greater)
+        } else {
+            None
+        }
+    }
+}
+
+/// The least `f32` at least `v` (`v >= 0`; infinity above `f32::MAX`).
+fn round_up_f32(v: f64) -> f32 {
+    let r = v as f32;
+    if (r as f64) < v {
+        r.next_up()
+    } else {
+        r
     }
 }
 
@@ -836,6 +1003,56 @@ mod tests {
         }
 
         #[test]
+        fn top_estimate_holds_the_exact_top(t in ccw_triple()) {
+            let e = TopEstimate::new(t[0], t[1], t[2]);
+            if e.err.is_finite() {
+                let (_, cy, r2) = circle(t);
+                // cy + r vs v  <=>  (cy − v) + √r2 vs √0.
+                let top_vs = |v: &Q| cmp_root_sum(&(&cy - v), &r2, &Q::zero());
+                let (top, err) = (q(e.top), q(e.err as f64));
+                prop_assert_ne!(top_vs(&(&top - &err)), Ordering::Less, "below {:?}", e);
+                prop_assert_ne!(top_vs(&(&top + &err)), Ordering::Greater, "above {:?}", e);
+            }
+        }
+
+        #[test]
+        fn top_estimates_decide_as_the_exact_comparison(
+            t1 in ccw_triple(),
+            t2 in ccw_triple(),
+            shift in unit_coord(),
+            ulps in -3i64..=3,
+            same in 0usize..4,
+            y in coord(),
+        ) {
+            // Near-ties: the same circle's top a few ulps up or down (every point moved),
+            // a horizontal translate (an exact tie), or unrelated circles.
+            let nudge = |v: f64| if v == 0.0 { v } else { f64::from_bits((v.to_bits() as i64 + ulps) as u64) };
+            let t2 = match same {
+                0 => t1.map(|p| Point2::new(p.x, nudge(p.y))),
+                1 => t1.map(|p| Point2::new(p.x + shift, p.y)),
+                2 => [t1[1], t1[2], t1[0]],
+                _ => t2,
+            };
+            prop_assume!(
+                super::super::orient2d(t2[0], t2[1], t2[2])
+                    == super::super::Orientation::CounterClockwise
+            );
+            let (e1, e2) = (TopEstimate::new(t1[0], t1[1], t1[2]), TopEstimate::new(t2[0], t2[1], t2[2]));
+            let (k1, k2) = (CircleKey::new(t1[0], t1[1], t1[2]), CircleKey::new(t2[0], t2[1], t2[2]));
+            if let Some(order) = e1.cmp(&e2) {
+                prop_assert_eq!(order, cmp_circles(&k1, t1, &k2, t2));
+                prop_assert_eq!(order.reverse(), e2.cmp(&e1).unwrap());
+            }
+            // Against a height: the top itself rounded, a site's height, any height.
+            for h in [e1.top, nudge(e1.top), t1[0].y, y] {
+                if let Some(order) = e1.cmp_height(h) {
+                    let site = Point2::new(t1[0].x, h);
+                    prop_assert_eq!(order, cmp_circle_site(&k1, t1, site));
+                }
+            }
+        }
+
+        #[test]
         fn circles_match_the_oracle(t1 in ccw_triple(), t2 in ccw_triple(), shift in unit_coord(), same in 0usize..3) {
             // Half of the cases share the top exactly: a horizontal translate, or the same
             // circle through other points of it.
@@ -873,6 +1090,32 @@ mod tests {
         let t3 = t1.map(|v| p(v.x, v.y + 2f64.powi(-40)));
         let k3 = CircleKey::new(t3[0], t3[1], t3[2]);
         assert_eq!(cmp_circles(&k1, t1, &k3, t3), Ordering::Less);
+    }
+
+    #[test]
+    fn top_estimates_decide_ordinary_triples_and_leave_ties_open() {
+        let p = |x: f64, y: f64| Point2::new(x, y);
+        // Unit-sized triples: the estimate is within a few ulps and decides.
+        let t1 = [p(0.1, 0.2), p(0.7, 0.25), p(0.4, 0.9)];
+        let t2 = t1.map(|v| p(v.x, v.y + 1e-9));
+        let (e1, e2) = (
+            TopEstimate::new(t1[0], t1[1], t1[2]),
+            TopEstimate::new(t2[0], t2[1], t2[2]),
+        );
+        assert!((e1.err as f64) < 1e-14, "{e1:?}");
+        assert_eq!(e1.cmp(&e2), Some(Ordering::Less));
+        assert_eq!(e2.cmp(&e1), Some(Ordering::Greater));
+        // An exact tie (a horizontal translate) is never decided in floating point.
+        let t3 = t1.map(|v| p(v.x + 0.25, v.y));
+        let e3 = TopEstimate::new(t3[0], t3[1], t3[2]);
+        assert_eq!(e1.cmp(&e3), None);
+        assert_eq!(e1.cmp_height(e1.top), None);
+        // Differences too far apart in magnitude (below 2^-64 of the largest) or a flat
+        // triple: no decision at all.
+        let flat = TopEstimate::new(p(0.0, 0.0), p(1.0, 1e-30), p(2.0, 0.0));
+        assert!(flat.err.is_infinite());
+        let spread = TopEstimate::new(p(0.0, 0.0), p(1.0, 0.0), p(0.5, 1e-25));
+        assert!(spread.err.is_infinite());
     }
 
     #[test]
