@@ -60,6 +60,33 @@
 //! input alone: 158 MB; each peer's copy of it is made from ours, which is then dropped):
 //! incremental 1.10 GB (1.76 GB before), spade bulk load 1.49 GB, delaunator 1.49 GB.
 //!
+//! 2026-12-04, after the box-wide orientation bound (the orientation filter's bound, like
+//! the in-circle one, precomputed from the bounding box the point set recorded, with no
+//! extra pass over the points), the walk testing only the third vertex of the triangle it
+//! enters for the vertex at infinity, and the arrays reserved for exactly 2n - 2 triangles.
+//! Interleaved in one process (ours, delaunator, spade, repeated; 9 rounds at 10³, 7 at
+//! 10⁴, 5 at 10⁶; median CPU time of the thread from `/proc/thread-self/schedstat`), on the
+//! 2 cores shared with two other helpers' builds, load average 8 to 13. "Before" is the
+//! previous commit timed the same way minutes earlier (load average 8 to 11); at 10⁶ it is
+//! the 2026-12-03 figure.
+//!
+//! | input, n | incremental | delaunator | spade bulk load | ours / faster peer | before |
+//! |---|---|---|---|---|---|
+//! | uniform-square, 10³ | 0.159 ms | 0.145 ms | 0.310 ms | 1.10 | 1.09 |
+//! | clustered, 10³ | 0.165 ms | 0.159 ms | 0.351 ms | 1.03 | 1.04 |
+//! | grid, 10³ | 0.142 ms | 0.136 ms | 0.594 ms | 1.04 | 1.07 |
+//! | uniform-square, 10⁴ | 2.84 ms | 2.87 ms | 4.60 ms | 0.99 | 1.07 |
+//! | clustered, 10⁴ | 2.90 ms | 2.97 ms | 5.09 ms | 0.98 | 1.01 |
+//! | grid, 10⁴ | 2.52 ms | 2.24 ms | 6.98 ms | 1.13 | 1.09 |
+//! | uniform-square, 10⁶ | 429 ms | 1111 ms | 782 ms | 0.55 | 0.58 |
+//! | clustered, 10⁶ | 482 ms | 906 ms | 809 ms | 0.60 | 0.57 |
+//!
+//! Two runs of the unchanged code differ by up to 0.05 in these ratios under this load, so
+//! at 10³ the change is within the noise, and the goal (at most 1.0 at 10³ and 10⁴, 0.5 at
+//! 10⁶) is not met. A profile at 10³ (uniform) puts 78 % of the time in the insertions
+//! themselves, mostly the in-circle and orientation filters, and about 6 % in the BRIO
+//! keys and their sort; the grid at 10⁴ (plain floating point, no filter) was not changed.
+//!
 //! Re-timed later the same day (voronoi built from the builder's own arrays; criterion,
 //! load average 4 to 6): uniform-square, 10⁶: incremental 658 ms, delaunator 1.374 s,
 //! spade bulk load 1.137 s, ratio 0.58. Interleaved CPU time, 7 rounds: uniform-square

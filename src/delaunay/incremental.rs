@@ -41,8 +41,9 @@ pub(super) const DECLARATION: Declaration = Declaration {
 /// beyond their hull edge (an orientation test). The insertion order is a biased
 /// randomized order (BRIO) sorted along a Hilbert curve in each round, so the walks are
 /// short and the expected number of flips is O(n) on every input. Every test is exact; what
-/// the whole set allows is worked out once (the in-circle filter's error bound for the
-/// bounding box, and plain floating point for small-integer sets, where it is exact), and
+/// the whole set allows is worked out once (the orientation and in-circle filters' error
+/// bounds for the bounding box the point set recorded, and plain floating point for
+/// small-integer sets, where it is exact), and
 /// the conversion to the 64-bit result frees the builder's 32-bit arrays as it goes.
 ///
 /// It computes the triangulation the course defines ([RD, §2.4]
@@ -154,7 +155,7 @@ pub(super) fn incremental_local<C: Counter>(
         return Ok(None);
     };
     let local: Vec<Point2> = order.iter().map(|&i| points[i as usize]).collect();
-    let filter = BoxPredicates::for_points(points);
+    let filter = BoxPredicates::for_set(points);
     let mut mesh = Mesh::new(local, first, filter, counter);
     for k in 3..order.len() as u32 {
         mesh.insert(k);
@@ -262,7 +263,7 @@ struct Mesh<'c, C> {
     /// The state of the walk's coin flips (a 32-bit xorshift: the walk needs only to not
     /// follow a fixed rule, not good randomness).
     coin: u32,
-    /// The in-circle filter's bound for the points' bounding box.
+    /// The orientation and in-circle filters' bounds for the points' bounding box.
     filter: BoxPredicates,
     /// `[dropped vertex id, kept vertex id]`.
     duplicates: Vec<[u32; 2]>,
@@ -278,9 +279,13 @@ impl<'c, C: Counter> Mesh<'c, C> {
         filter: BoxPredicates,
         counter: &'c mut C,
     ) -> Self {
+        // With the ghosts, n vertices and the vertex at infinity triangulate a sphere:
+        // exactly 2 (n + 1) - 4 = 2n - 2 triangles once every point is in (fewer if some
+        // are merged duplicates), so the arrays never grow. `first_triangle` guarantees
+        // n >= 3.
         let n = points.len();
-        let mut triangles = Vec::with_capacity(6 * n + 12);
-        let mut halfedges = Vec::with_capacity(6 * n + 12);
+        let mut triangles = Vec::with_capacity(3 * (2 * n - 2));
+        let mut halfedges = Vec::with_capacity(3 * (2 * n - 2));
         // Real (a, b, c); ghosts (b, a, G), (c, b, G), (a, c, G) beyond a->b, b->c, c->a.
         triangles.extend_from_slice(&[a, b, c, b, a, GHOST, c, b, GHOST, a, c, GHOST]);
         halfedges.extend_from_slice(&[3, 6, 9, 0, 11, 7, 1, 5, 10, 2, 8, 4]);
@@ -350,7 +355,9 @@ impl<'c, C: Counter> Mesh<'c, C> {
                     Orientation::Clockwise => {
                         let f = self.halfedges[e as usize];
                         t = f / 3;
-                        if self.is_ghost(t) {
+                        // `t` has the real vertices `a` and `b` on `f`: it is a ghost
+                        // exactly when its third vertex is the ghost vertex.
+                        if self.triangles[prev(f) as usize] == GHOST {
                             return Location::Outside(t);
                         }
                         entered = f;

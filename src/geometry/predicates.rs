@@ -20,7 +20,7 @@
 
 use super::expansion::{two_diff, Expansion};
 use super::extended::{self, Predicate};
-use super::{BoundingBox, Point2};
+use super::{BoundingBox, Point2, PointSet};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
 use std::cmp::Ordering;
@@ -278,9 +278,29 @@ pub fn orient2d_with<C: Counter + ?Sized>(
     c: Point2,
     counter: &mut C,
 ) -> Orientation {
+    orient2d_bounded(a, b, c, f64::INFINITY, counter)
+}
+
+/// [`orient2d_with`], first trying `static_bound` (a bound no smaller than the per-call one,
+/// see [`BoxPredicates`]; infinity to skip it).
+#[inline(always)]
+fn orient2d_bounded<C: Counter + ?Sized>(
+    a: Point2,
+    b: Point2,
+    c: Point2,
+    static_bound: f64,
+    counter: &mut C,
+) -> Orientation {
     counter.orientation_test();
     let left = (a.x - c.x) * (b.y - c.y);
     let right = (a.y - c.y) * (b.x - c.x);
+    let det = left - right;
+    if det > static_bound {
+        return Orientation::CounterClockwise;
+    }
+    if -det > static_bound {
+        return Orientation::Clockwise;
+    }
     cross_filter(left, right).unwrap_or_else(|| {
         counter.exact_fallback();
         Orientation::from_sign(exact_sign(
@@ -341,18 +361,19 @@ pub fn incircle_with<C: Counter + ?Sized>(
 }
 
 /// [`orient2d`] and [`incircle`] for points of one set, with what is known of the whole set
-/// precomputed: a bound of [`incircle`]'s filter that holds for every four points in the
-/// set's bounding box, so the per-call bound can be skipped (a "static" filter, as in
-/// Shewchuk's and CGAL's predicates), and whether the set is small-integer, in which case
-/// both predicates are exact in plain floating point.
+/// precomputed: bounds of [`orient2d`]'s and [`incircle`]'s filters that hold for every
+/// three or four points in the set's bounding box, so the per-call bounds can be skipped (a
+/// "static" filter, as in Shewchuk's and CGAL's predicates), and whether the set is
+/// small-integer, in which case both predicates are exact in plain floating point.
 ///
-/// Why it is safe: the per-call bound is a sum of products of rounded absolute differences
+/// Why it is safe: each per-call bound is a sum of products of rounded absolute differences
 /// of coordinates, every one at most the rounded width `w` of the box (rounding is
 /// monotone). Evaluating the same expression with every difference replaced by `w`, in the
 /// same order, therefore gives a number no smaller than any per-call bound, and a
 /// determinant that clears it clears the per-call one, with the same sign. When it does
-/// not, [`BoxPredicates::incircle_with`] goes on with the per-call bound and the exact
-/// stages, so every answer is the one [`incircle`] gives.
+/// not, [`BoxPredicates::orient2d_with`] and [`BoxPredicates::incircle_with`] go on with
+/// the per-call bound and the exact stages, so every answer is the one [`orient2d`] or
+/// [`incircle`] gives.
 ///
 /// Small-integer sets: if every coordinate is an integer and the box is at most
 /// [`EXACT_INTEGER_WIDTH`] = 2^12 wide on both axes, every difference of coordinates is an
@@ -362,6 +383,9 @@ pub fn incircle_with<C: Counter + ?Sized>(
 /// quadruples and collinear triples are everywhere, would otherwise take the exact stages).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct BoxPredicates {
+    /// The static bound of [`orient2d`]'s filter.
+    orient_bound: f64,
+    /// The static bound of [`incircle`]'s filter.
     bound: f64,
     exact: bool,
 }
@@ -370,32 +394,34 @@ pub(crate) struct BoxPredicates {
 const EXACT_INTEGER_WIDTH: f64 = 4096.0;
 
 impl BoxPredicates {
-    /// The predicates for `points`: O(n) to look for non-integer coordinates (it stops at
-    /// the first).
-    pub(crate) fn for_points(points: &[Point2]) -> BoxPredicates {
-        let Some(bounds) = BoundingBox::of(points) else {
+    /// The predicates for the points of `set`, with the bounds taken from the box the set
+    /// recorded when it was built: O(1), plus, for a box at most [`EXACT_INTEGER_WIDTH`]
+    /// wide, a pass that looks for non-integer coordinates (it stops at the first).
+    pub(crate) fn for_set(set: &PointSet<'_>) -> BoxPredicates {
+        let Some(bounds) = set.bounding_box() else {
             return BoxPredicates::unusable();
         };
         let mut predicates = BoxPredicates::over(bounds);
         predicates.exact = bounds.max.x - bounds.min.x <= EXACT_INTEGER_WIDTH
             && bounds.max.y - bounds.min.y <= EXACT_INTEGER_WIDTH
-            && points
-                .iter()
-                .all(|p| p.x == p.x.trunc() && p.y == p.y.trunc());
+            && set.iter().all(|p| p.x == p.x.trunc() && p.y == p.y.trunc());
         predicates
     }
 
-    /// The bound for points in `bounds` (infinite, so never used, if the box's width
+    /// The bounds for points in `bounds` (infinite, so never used, if the box's width
     /// overflows).
     pub(crate) fn over(bounds: BoundingBox) -> BoxPredicates {
         let w = (bounds.max.x - bounds.min.x).max(bounds.max.y - bounds.min.y);
-        // The shape of `incircle_bounded`'s bound with every |difference| = w.
         let product = w * w;
+        // The shape of `cross_filter`'s bound with every |difference| = w.
+        let orient_bound = CROSS_ERRBOUND * (product + product) + UNDERFLOW_SLACK;
+        // The shape of `incircle_bounded`'s bound with every |difference| = w.
         let minor = product + product;
         let lift = product + product;
         let term = (minor + MINOR_SLACK) * lift;
         let permanent = term + term + term;
         BoxPredicates {
+            orient_bound,
             bound: INCIRCLE_ERRBOUND * permanent + UNDERFLOW_SLACK,
             exact: false,
         }
@@ -404,6 +430,7 @@ impl BoxPredicates {
     /// A filter that never decides (for callers with no box).
     pub(crate) fn unusable() -> BoxPredicates {
         BoxPredicates {
+            orient_bound: f64::INFINITY,
             bound: f64::INFINITY,
             exact: false,
         }
@@ -448,7 +475,7 @@ impl BoxPredicates {
             let det = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
             return Orientation::from_sign(sign_of(det));
         }
-        orient2d_with(a, b, c, counter)
+        orient2d_bounded(a, b, c, self.orient_bound, counter)
     }
 }
 
@@ -802,7 +829,7 @@ mod tests {
     /// Also `orient2d` on the first three; returns whether the set took the small-integer
     /// path.
     fn filter_agrees(pts: &[Point2], limit: usize) -> bool {
-        let filter = BoxPredicates::for_points(pts);
+        let filter = BoxPredicates::for_set(&PointSet::new(pts).unwrap());
         let mut rng = Rng::new(11);
         let mut counts = Counts::default();
         for k in 0..limit {
@@ -855,9 +882,10 @@ mod tests {
         ]
         .map(Point2::from);
         filter_agrees(&wide, 500);
+        let over = BoxPredicates::over(BoundingBox::of(&wide).unwrap());
         assert_eq!(
-            BoxPredicates::over(BoundingBox::of(&wide).unwrap()).bound,
-            f64::INFINITY
+            (over.orient_bound, over.bound),
+            (f64::INFINITY, f64::INFINITY)
         );
     }
 
@@ -889,7 +917,12 @@ mod tests {
     #[test]
     fn box_filter_bound_is_small_on_a_unit_box() {
         let unit = [(0.0, 0.0), (1.0, 1.0)].map(Point2::from);
-        let bound = BoxPredicates::over(BoundingBox::of(&unit).unwrap()).bound;
-        assert!(bound > 0.0 && bound < 1e-13, "{bound}");
+        let over = BoxPredicates::over(BoundingBox::of(&unit).unwrap());
+        assert!(over.bound > 0.0 && over.bound < 1e-13, "{}", over.bound);
+        assert!(
+            over.orient_bound > 0.0 && over.orient_bound < 1e-15,
+            "{}",
+            over.orient_bound
+        );
     }
 }
