@@ -113,8 +113,8 @@
 //! incremental, repeated; 9 rounds at 10³ and 10⁴, 5 at 10⁵, 3 at 10⁶; median CPU time of
 //! the thread from `/proc/thread-self/schedstat`), 2 shared cores, load average 6.8 to 7.0
 //! (other helpers building). The triangulations (triangles, half-edges, hull, duplicates)
-//! hash the same after each of the three steps at 10³ to 10⁵. "Before" is the 2026-12-03
-//! table above (load 9 to 10); for the grid, the figure:
+//! hash the same after the first step and after all three, at 10³ to 10⁵. "Before" is the
+//! 2026-12-03 table above (load 9 to 10); for the grid, the figure:
 //!
 //! | input, n | fortune | incremental | ratio | ratio before |
 //! |---|---|---|---|---|
