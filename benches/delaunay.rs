@@ -133,6 +133,36 @@
 //! top with an a-priori error bound in place of the interval enclosure, and a smaller heap
 //! entry.
 //!
+//! 2026-12-04, after those steps: circle events keyed by an `f64` top with an a-priori
+//! error bound (`TopEstimate`, 16-byte heap entries, the exact comparison only when the
+//! bounds overlap), the heap's bottom-up pop, and a plain floating-point stage for the ties
+//! of small-integer sets (the grid). Timed interleaved in one process (fortune,
+//! incremental, repeated; 9 rounds at 10³ and 10⁴, 5 at 10⁵, 3 at 10⁶; median CPU time of
+//! the thread from `/proc/thread-self/schedstat`), 2 shared cores, load average 6.8 to 7.0
+//! (other helpers building). The triangulations (triangles, half-edges, hull, duplicates)
+//! hash the same after the first step and after all three, at 10³ to 10⁵. "Before" is the
+//! 2026-12-03 table above (load 9 to 10); for the grid, the figure:
+//!
+//! | input, n | fortune | incremental | ratio | ratio before |
+//! |---|---|---|---|---|
+//! | uniform-square, 10³ | 0.826 ms | 0.154 ms | 5.4 | 5.4 |
+//! | uniform-square, 10⁴ | 11.1 ms | 3.39 ms | 3.3 | 3.8 |
+//! | uniform-square, 10⁵ | 124 ms | 36.9 ms | 3.4 | 3.9 |
+//! | uniform-square, 10⁶ | 1.44 s | 0.405 s | 3.6 | 4.4 |
+//! | clustered, 10³ | 0.825 ms | 0.160 ms | 5.2 | 6.4 |
+//! | clustered, 10⁴ | 9.40 ms | 2.96 ms | 3.2 | 4.2 |
+//! | clustered, 10⁵ | 105 ms | 33.9 ms | 3.1 | 4.4 |
+//! | clustered, 10⁶ | 1.44 s | 0.490 s | 2.9 | 4.0 |
+//! | grid, 10³ | 0.863 ms | 0.139 ms | 6.2 | — |
+//! | grid, 10⁴ | 11.1 ms | 2.30 ms | 4.9 | about 43 |
+//! | grid, 10⁵ | 132 ms | 25.6 ms | 5.2 | — |
+//! | grid, 10⁶ | 1.73 s | 0.405 s | 4.3 | — |
+//!
+//! With the `f64` estimate alone (the first step, same day, load 7.9): uniform-square
+//! 5.5, 3.2, 3.2 and clustered 5.5, 3.4, 3.3 at 10³, 10⁴, 10⁵. The 3× target is met on
+//! clustered input from 10⁵ on and nearly on uniform input, not at 10³ nor on the grid;
+//! where the remaining time goes there was not profiled.
+//!
 //! Voronoi cells, 2026-11-23, same machine (`voronoi/*`; "clipped" clips every cell to the
 //! box voronoice is given; every diagram, voronoice's included, is dropped outside the
 //! timed region). Criterion medians, wall time, two runs a few minutes apart (load

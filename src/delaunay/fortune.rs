@@ -10,10 +10,12 @@ use crate::error::Result;
 use crate::geometry::construct::circumcentre;
 use crate::geometry::lex_sort::{sorted_items_with, yx_key};
 use crate::geometry::sweep_predicates::{
-    breakpoint_side, circle_top_floor, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
-    TopEstimate,
+    breakpoint_side, circle_top_floor, cmp_circle_site, cmp_circles, cmp_integer_circles,
+    normalize_scale, CircleKey, TopEstimate,
 };
-use crate::geometry::{ConstructedPoint, CountedPredicates, Orientation, Point2, PointSet};
+use crate::geometry::{
+    BoxPredicates, ConstructedPoint, CountedPredicates, Orientation, Point2, PointSet,
+};
 use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 use crate::util::Heap;
 use std::cmp::Ordering;
@@ -147,7 +149,10 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// included: the convergence test is [`orient2d`](crate::geometry::orient2d); the breakpoint
 /// test and the event order, which involve square roots in coordinates, are reduced to signs
 /// of polynomials (see `src/geometry/sweep_predicates.rs`) with floating-point filters and
-/// exact integer fallbacks. Events are ordered by their point on the sweep line, y then
+/// exact integer fallbacks. The heap holds each circle event's top as a double with an
+/// a-priori error bound and compares two events exactly only when their bounds overlap;
+/// for small-integer sets (integer grids, whose events tie everywhere) those ties are
+/// decided in plain floating point when every operation is provably exact. Events are ordered by their point on the sweep line, y then
 /// x (a line turned by an infinitesimal angle), and a circle event before a site at the same
 /// point, so degenerate input needs no special case beyond two:
 /// - the first row of sites (all with the lowest y) has vertical strips as arcs, and each
@@ -262,9 +267,15 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
 ) -> Result<Triangulation> {
     crate::limits::FORTUNE_POINTS.check(points.len() as u128)?;
     let (mut sites, index, duplicates) = sorted_by_y(points, counter);
-    // An exact power-of-two scaling changes no decision and keeps the filters away from
-    // overflow and underflow (1e300 or 1e-300 everywhere).
-    normalize_scale(&mut sites);
+    // Small-integer sets (integer grids: circle events tie everywhere) have a plain
+    // floating-point stage for the ties; their coordinates are kept as they are.
+    let small_integer = BoxPredicates::for_points(&sites).is_small_integer();
+    if !small_integer {
+        // An exact power-of-two scaling changes no decision and keeps the filters away
+        // from overflow and underflow (1e300 or 1e-300 everywhere); integers below 2^53 in
+        // a box 2^12 wide are far from both.
+        normalize_scale(&mut sites);
+    }
     let mut sweep = Sweep {
         sites: &sites,
         input: points,
@@ -274,6 +285,7 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
         line: BeachLine::with_capacity(2 * sites.len()),
         queue: Heap::with_capacity(sites.len()),
         events: Vec::with_capacity(2 * sites.len()),
+        small_integer,
         triangles: Vec::with_capacity(2 * sites.len()),
         edges: Vec::with_capacity(3 * sites.len()),
         halfedges: Vec::with_capacity(6 * sites.len()),
@@ -338,6 +350,8 @@ struct Sweep<'a, C, O> {
     queue: Heap<Event>,
     /// The sites and arc of every circle event queued so far, by id.
     events: Vec<EventSites>,
+    /// Whether the sites are a small-integer set (see [`cmp_integer_circles`]).
+    small_integer: bool,
     /// Counter-clockwise triangles as site positions.
     triangles: Vec<[u32; 3]>,
     /// Per Voronoi edge (the tag of the breakpoints tracing it, see
@@ -501,16 +515,22 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
     }
 
     fn push(&mut self, e: Event) {
-        let (sites, events) = (self.sites, &self.events);
-        self.queue
-            .push(e, |x, y| before(sites, events, x, y), &mut *self.counter);
+        let (sites, events, small) = (self.sites, &self.events, self.small_integer);
+        self.queue.push(
+            e,
+            |x, y| before(sites, events, small, x, y),
+            &mut *self.counter,
+        );
     }
 
     /// Removes and returns the first event (the queue is not empty).
     fn pop(&mut self) -> Event {
-        let (sites, events) = (self.sites, &self.events);
+        let (sites, events, small) = (self.sites, &self.events, self.small_integer);
         self.queue
-            .pop(|x, y| before(sites, events, x, y), &mut *self.counter)
+            .pop(
+                |x, y| before(sites, events, small, x, y),
+                &mut *self.counter,
+            )
             .expect("pop is only called on a non-empty queue")
     }
 }
@@ -531,22 +551,41 @@ fn input_triangles(triangles: &[[u32; 3]], index: &[usize]) -> Vec<usize> {
         .collect()
 }
 
-/// Whether event `x` comes strictly before event `y` (their circles' tops on the sweep line).
+/// Whether event `x` comes strictly before event `y` (their circles' tops on the sweep
+/// line); `small_integer` if the sites are a small-integer set.
 #[inline]
-fn before(sites: &[Point2], events: &[EventSites], x: &Event, y: &Event) -> bool {
+fn before(
+    sites: &[Point2],
+    events: &[EventSites],
+    small_integer: bool,
+    x: &Event,
+    y: &Event,
+) -> bool {
     // The sites' coordinates only when the estimates leave it open.
     match x.estimate().cmp(&y.estimate()) {
         Some(order) => order == Ordering::Less,
-        None => before_exact(sites, events, x, y),
+        None => before_exact(sites, events, small_integer, x, y),
     }
 }
 
-/// [`before`] when the estimates overlap: the exact comparison of the event points.
+/// [`before`] when the estimates overlap: the exact comparison of the event points, in
+/// plain floating point first for small-integer sites.
 #[cold]
 #[inline(never)]
-fn before_exact(sites: &[Point2], events: &[EventSites], x: &Event, y: &Event) -> bool {
+fn before_exact(
+    sites: &[Point2],
+    events: &[EventSites],
+    small_integer: bool,
+    x: &Event,
+    y: &Event,
+) -> bool {
     let points = |e: &Event| events[e.id as usize].sites.map(|v| sites[v as usize]);
     let (t1, t2) = (points(x), points(y));
+    if small_integer {
+        if let Some(order) = cmp_integer_circles(t1, t2) {
+            return order == Ordering::Less;
+        }
+    }
     let k1 = CircleKey::new(t1[0], t1[1], t1[2]);
     let k2 = CircleKey::new(t2[0], t2[1], t2[2]);
     cmp_circles(&k1, t1, &k2, t2) == Ordering::Less

@@ -427,6 +427,13 @@ impl BoxPredicates {
         }
     }
 
+    /// Whether the set is small-integer (every coordinate an integer, the box at most
+    /// 2^12 wide on both axes), so that low-degree polynomials of its coordinates'
+    /// differences are exact in plain floating point.
+    pub(crate) fn is_small_integer(&self) -> bool {
+        self.exact
+    }
+
     /// A filter that never decides (for callers with no box).
     pub(crate) fn unusable() -> BoxPredicates {
         BoxPredicates {

@@ -762,16 +762,65 @@ fn cmp_small_circles(v: &[i128]) -> Option<Ordering> {
     let ([d1, p1, q1, x1], [d2, p2, q2, x2]) = (circle(&v[..6]), circle(&v[6..]));
     let x = (d2 * p1 - d1 * p2).signum() as i32;
     let roots = (d2 * d2 * q1 - d1 * d1 * q2).signum() as i32;
-    let top = if x == 0 || roots == 0 || x == roots {
-        if x == 0 {
-            roots
-        } else {
-            x
-        }
-    } else {
-        return None;
-    };
+    let top = sign_without_squaring(x, roots)?;
     Some(ordering(top).then_with(|| ordering((x1 * d2 - x2 * d1).signum() as i32)))
+}
+
+/// The sign of `x + √p − √q` from the signs of `x` and `p − q` when they do not disagree
+/// (one is zero, or both have the same sign); `None` when only squaring can tell.
+fn sign_without_squaring(x: i32, roots: i32) -> Option<i32> {
+    if x == 0 {
+        Some(roots)
+    } else if roots == 0 || x == roots {
+        Some(x)
+    } else {
+        None
+    }
+}
+
+/// Products below this are exact in `f64` when their factors are integers.
+const EXACT_PRODUCT: f64 = pow2(52);
+
+/// [`cmp_circles`] in plain floating point for sites of a small-integer set (every
+/// coordinate an integer, the set's box at most 2^12 wide on both axes: see
+/// `BoxPredicates::is_small_integer`), when every operation is provably exact; `None`
+/// otherwise (the caller then takes [`cmp_circles`]), and also when the tops' order needs
+/// squaring (as [`cmp_small_circles`]).
+///
+/// Why it is exact: relative to `t1[0]`, every coordinate is an integer of at most `2^12`
+/// in magnitude, and so is every difference of two sites. Then `bb, cc <= 2^25`,
+/// `|d| <= 2^26`, `|nx|, |ny| <= 2^38`, `|a.y d + ny|, |a.x d + nx| <= 2^39`: integers
+/// below `2^53`, so every step is exact. `q = nx² + ny²` is exact when `|nx|, |ny| < 2^26`
+/// (each square below `2^52`), which is checked. The comparisons multiply two such values:
+/// each product is checked, on its rounded value, to be below `2^52` (rounding is
+/// monotone and `2^52` is a double, so a rounded product below it comes from an exact one
+/// below it, which is then exact), and a difference of two is below `2^53`.
+pub(crate) fn cmp_integer_circles(t1: [Point2; 3], t2: [Point2; 3]) -> Option<Ordering> {
+    let o = t1[0];
+    let circle = |t: [Point2; 3]| {
+        let [a, b, c] = t.map(|p| Point2::new(p.x - o.x, p.y - o.y));
+        let (bx, by, cx, cy) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
+        let (bb, cc) = (bx * bx + by * by, cx * cx + cy * cy);
+        let d = 2.0 * (bx * cy - by * cx);
+        let (nx, ny) = (cy * bb - by * cc, bx * cc - cx * bb);
+        // [d, p, q, x] as in `ExactCircle`, with d > 0.
+        let s = if d < 0.0 { -1.0 } else { 1.0 };
+        let small = nx.abs() < pow2(26) && ny.abs() < pow2(26);
+        let q = nx * nx + ny * ny;
+        (small, [d * s, (a.y * d + ny) * s, q, (a.x * d + nx) * s])
+    };
+    let ((s1, [d1, p1, q1, x1]), (s2, [d2, p2, q2, x2])) = (circle(t1), circle(t2));
+    let dm = d1.max(d2);
+    let pm = p1.abs().max(p2.abs()).max(x1.abs()).max(x2.abs());
+    let exact = s1 && s2 && dm * pm < EXACT_PRODUCT && dm * dm * q1.max(q2) < EXACT_PRODUCT;
+    if !exact {
+        return None;
+    }
+    let sign = |v: f64| (v > 0.0) as i32 - (v < 0.0) as i32;
+    let x = sign(d2 * p1 - d1 * p2);
+    let roots = sign(d2 * d2 * q1 - d1 * d1 * q2);
+    let top = sign_without_squaring(x, roots)?;
+    Some(ordering(top).then_with(|| ordering(sign(x1 * d2 - x2 * d1))))
 }
 
 /// The sign of `x + √p − √q` for `p, q >= 0`.
@@ -1070,6 +1119,54 @@ mod tests {
             prop_assert_eq!(cmp_circles(&k1, t1, &k2, t2), oracle_circles(t1, t2));
             prop_assert_eq!(cmp_circles(&k2, t2, &k1, t1), oracle_circles(t2, t1));
         }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(400))]
+
+        #[test]
+        fn integer_circles_match_the_exact_comparison(
+            v in prop::collection::vec((0i32..=4096, 0i32..=4096), 6),
+            near in prop::collection::vec((-3i32..=3, -3i32..=3), 6),
+            local in 0usize..3,
+            base in prop::sample::select(vec![0.0, -2048.0, 1e9]),
+        ) {
+            // Anywhere in a box of width 2^12, or two small clusters (the grid's ties),
+            // possibly far from the origin.
+            let p = |k: usize| {
+                let (x, y) = if local > 0 { (near[k].0 + 2000 * (k as i32 / 3), near[k].1) } else { v[k] };
+                Point2::new(base + x as f64, base + y as f64)
+            };
+            let ccw = |t: [Point2; 3]| match super::super::orient2d(t[0], t[1], t[2]) {
+                super::super::Orientation::CounterClockwise => Some(t),
+                super::super::Orientation::Clockwise => Some([t[0], t[2], t[1]]),
+                super::super::Orientation::Collinear => None,
+            };
+            let t1 = ccw([p(0), p(1), p(2)]);
+            let t2 = if local == 2 { t1.map(|t| t.map(|q| Point2::new(q.x + 1.0, q.y))) } else { ccw([p(3), p(4), p(5)]) };
+            if let (Some(t1), Some(t2)) = (t1, t2) {
+                if let Some(order) = cmp_integer_circles(t1, t2) {
+                    let (k1, k2) = (CircleKey::new(t1[0], t1[1], t1[2]), CircleKey::new(t2[0], t2[1], t2[2]));
+                    prop_assert_eq!(order, cmp_circles(&k1, t1, &k2, t2));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn integer_circles_decide_the_grid_ties() {
+        let p = |x: f64, y: f64| Point2::new(x, y);
+        // Two unit squares side by side: translated circles, equal tops, x decides.
+        let t1 = [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0)];
+        let t2 = t1.map(|v| p(v.x + 1.0, v.y));
+        assert_eq!(cmp_integer_circles(t1, t2), Some(Ordering::Less));
+        assert_eq!(cmp_integer_circles(t2, t1), Some(Ordering::Greater));
+        // The same circle through another triple of the square: one event point.
+        let t3 = [p(0.0, 0.0), p(1.0, 1.0), p(0.0, 1.0)];
+        assert_eq!(cmp_integer_circles(t1, t3), Some(Ordering::Equal));
+        // Too large for the plain path: left to the exact stages.
+        let big = [p(0.0, 0.0), p(4096.0, 1.0), p(1.0, 4096.0)];
+        assert_eq!(cmp_integer_circles(big, t1), None);
     }
 
     #[test]
