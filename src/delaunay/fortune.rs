@@ -269,7 +269,7 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
     let (mut sites, index, duplicates) = sorted_by_y(points, counter);
     // Small-integer sets (integer grids: circle events tie everywhere) have a plain
     // floating-point stage for the ties; their coordinates are kept as they are.
-    let small_integer = BoxPredicates::for_points(&sites).is_small_integer();
+    let small_integer = BoxPredicates::for_set(points).is_small_integer();
     if !small_integer {
         // An exact power-of-two scaling changes no decision and keeps the filters away
         // from overflow and underflow (1e300 or 1e-300 everywhere); integers below 2^53 in
