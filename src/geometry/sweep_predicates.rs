@@ -125,15 +125,16 @@ impl TopEstimate {
     /// **Error bound** (`u = 2^-53`; each quantity below is the computed one, the exact one
     /// starred). Round to nearest gives `|fl(z) − z| <= u |fl(z)|` for a normal result, and
     /// additions and subtractions of doubles are exact when the result is subnormal. The
-    /// guard (every nonzero scaled difference in `[2^-64, 4)`) keeps every product of up to
+    /// guard (every nonzero scaled difference in `[2^-64, 2)`) keeps every product of up to
     /// three differences normal and every value far below overflow, so the relative model
     /// holds for all of them; to first order:
     ///
     /// 1. a difference: `|X* − X| <= u |X|` (the scaling by `2^k` is exact);
     /// 2. `bb`, `cc` (sums of squares, no cancellation): `<= 4u bb` (two relative errors
     ///    of the difference in its square, the square's rounding, the sum's);
-    /// 3. `d`: each product carries `3u` of its own size, the subtraction `u |d|` with
-    ///    `|d| <= Dm = 2 (|bx cy| + |by cx|)`: `|d* − d| <= 2u Dm`;
+    /// 3. `d = 2 (p1 − p2)`: each product carries `3u` of its own size (two differences and
+    ///    its rounding), the subtraction `u |d|`, and the doubling is exact: with
+    ///    `Dm = 2 (|bx cy| + |by cx|)`, `|d* − d| <= 3u Dm + u |d| <= 4u Dm`;
     /// 4. `nx`: each term `cy bb` carries `u + 4u + u`, the subtraction `u |nx|`:
     ///    `|nx* − nx| <= 7u Nx` with `Nx = |cy| bb + |by| cc`; likewise `ny` with
     ///    `Ny = |bx| cc + |cx| bb`;
@@ -178,7 +179,7 @@ impl TopEstimate {
         let cc = cx * cx + cy * cy;
         let (p1, p2) = (bx * cy, by * cx);
         let d = 2.0 * (p1 - p2);
-        let e_d = 3.0 * U * (2.0 * (p1.abs() + p2.abs()));
+        let e_d = 5.0 * U * (2.0 * (p1.abs() + p2.abs()));
         let dd = d - e_d;
         if !(dd > 0.0 && d >= ESTIMATE_MIN_DET) {
             return TopEstimate::UNDECIDED;
