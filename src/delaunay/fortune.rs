@@ -152,9 +152,10 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// exact integer fallbacks. The heap holds each circle event's top as a double with an
 /// a-priori error bound and compares two events exactly only when their bounds overlap;
 /// for small-integer sets (integer grids, whose events tie everywhere) those ties are
-/// decided in plain floating point when every operation is provably exact. Events are ordered by their point on the sweep line, y then
-/// x (a line turned by an infinitesimal angle), and a circle event before a site at the same
-/// point, so degenerate input needs no special case beyond two:
+/// decided in plain floating point when every operation is provably exact. Events are
+/// ordered by their point on the sweep line, y then x (a line turned by an infinitesimal
+/// angle), and a circle event before a site at the same point, so degenerate input needs no
+/// special case beyond two:
 /// - the first row of sites (all with the lowest y) has vertical strips as arcs, and each
 ///   new site of that row is put to the right of the last one;
 /// - a site exactly on a breakpoint splits the arc to the left, leaving an arc of zero width
