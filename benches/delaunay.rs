@@ -163,6 +163,32 @@
 //! clustered input from 10⁵ on and nearly on uniform input, not at 10³ nor on the grid;
 //! where the remaining time goes there was not profiled.
 //!
+//! The same day on the quiet machine (load average 1.0), after these steps and the box-wide
+//! orientation bound: interleaved in one process (incremental, delaunator, spade, fortune,
+//! repeated; 9 rounds at 10³ and 10⁴, 5 at 10⁵ and 10⁶; median CPU time of the thread,
+//! which this kernel updates in 4 ms ticks, so the 10³ figures, summed over 400 calls, are
+//! good to about 7 %). "Before" is the previous commit (`e80726b`) timed the same way, in
+//! alternate processes, 7 rounds:
+//!
+//! | input, n | incremental / faster peer | before | fortune / incremental | before |
+//! |---|---|---|---|---|
+//! | uniform-square, 10³ | 1.08 | 1.15 | 6.0 | 7.3 |
+//! | clustered, 10³ | 1.15 | 1.15 | 5.6 | 7.2 |
+//! | grid, 10³ | 1.08 | 0.93 | 7.0 | 76 |
+//! | uniform-square, 10⁴ | 1.08 | 1.01 | 3.5 | 4.5 |
+//! | clustered, 10⁴ | 1.01 | 0.99 | 3.6 | 4.4 |
+//! | grid, 10⁴ | 1.16 | 1.17 | 5.0 | 54 |
+//! | uniform-square, 10⁵ | 0.83 | 0.87 | 3.9 | 4.4 |
+//! | clustered, 10⁵ | 0.84 | 0.87 | 3.6 | 4.3 |
+//! | grid, 10⁵ | 0.76 | — | 5.5 | — |
+//! | uniform-square, 10⁶ | 0.57 | — | 3.8 | — |
+//! | clustered, 10⁶ | 0.61 | — | 3.2 | — |
+//! | grid, 10⁶ | 0.43 | — | 5.0 | — |
+//!
+//! So on the quiet machine Fortune's sweep gained 15–25 % on uniform and clustered input and
+//! tenfold on the grid, while the incremental builder's ratios at 10³ and 10⁴ moved within
+//! the noise (one run each): delaunator stays 0–16 % faster there.
+//!
 //! Voronoi cells, 2026-11-23, same machine (`voronoi/*`; "clipped" clips every cell to the
 //! box voronoice is given; every diagram, voronoice's included, is dropped outside the
 //! timed region). Criterion medians, wall time, two runs a few minutes apart (load
