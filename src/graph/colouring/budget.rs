@@ -175,6 +175,23 @@ impl Meter {
         true
     }
 
+    /// An account for a phase that may spend at most half of what is left of this one: half
+    /// the steps not yet spent and half the time left to the deadline. The phase's steps
+    /// are charged back to this account with [`Meter::charge`].
+    pub(super) fn half(&self) -> Meter {
+        let now = Instant::now();
+        Meter {
+            spent: 0,
+            limit: (self.limit - self.spent) / 2,
+            deadline: self
+                .deadline
+                .map(|d| now + d.saturating_duration_since(now) / 2),
+            next_reading: 0,
+            timed_out: self.timed_out,
+            best_step: 0,
+        }
+    }
+
     /// Spends `steps` already taken (the updates after a move), up to the step cap.
     pub(super) fn charge(&mut self, steps: u64) {
         self.spent = self.spent.saturating_add(steps).min(self.limit);

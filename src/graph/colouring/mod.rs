@@ -1,7 +1,9 @@
 //! Greedy vertex colouring: the course's O(n²) algorithm as printed, the O(n + m) greedy, the
 //! vertex orders largest-first (Welsh–Powell) and smallest-last, DSatur, and two searches
 //! for fewer colours that start from DSatur: the tabu search (TabuCol) and the hybrid
-//! evolutionary algorithm (HEA), both paid from a [`Budget`] of steps and time.
+//! evolutionary algorithm (HEA), both paid from a [`Budget`] of steps and time. Before each
+//! target both try an exact search (`transversal.rs`) when the graph's core splits into
+//! cliques of the target size, which can prove the colouring optimal and end the search.
 //!
 //! A colouring gives each vertex a colour so that adjacent vertices differ (seed
 //! [RD, §2.1] "Coloración de vértices", Definitions 2.4–2.6). The greedy
@@ -28,6 +30,7 @@ mod largest_first;
 mod reduce;
 mod smallest_last;
 mod tabu;
+mod transversal;
 
 pub use budget::{Budget, SearchReport, CLOCK_STRIDE, SEARCH_SEED, TABU_EFFORT};
 

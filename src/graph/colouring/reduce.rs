@@ -11,8 +11,16 @@
 //! (with their edges) and coloured greedily afterwards, in the reverse order. Every vertex
 //! of the core has at least t core neighbours, so a table of t entries per core vertex
 //! takes at most 2m entries: the searches' tables are O(m) whatever t is.
+//!
+//! Before a search for t colours, the exact search of [`transversal`](super::transversal)
+//! may spend at most half of what is left of the budget. When the core splits into cliques
+//! of t vertices it finds a t-colouring, or proves that none exists, or at least proves
+//! that t colours are needed. A t-colouring found after such a proof (by the exact search
+//! or by the search after it) is optimal, and so is the last colouring when no t-colouring
+//! exists: in those cases the descent stops there.
 
 use super::budget::{pass, Meter};
+use super::transversal::{colour_by_transversals, Outcome};
 use super::Colouring;
 use crate::count::Counter;
 use crate::gen::Rng;
@@ -174,7 +182,9 @@ where
     S: FnMut(&Core, &[u32], &mut Meter, &mut Rng, &mut C) -> Option<Vec<u32>>,
 {
     let mut best = start;
-    while best.count > 1 && meter.spend(pass(g)) {
+    // Whether `best` is known to be optimal, so that the descent stops.
+    let mut optimal = false;
+    while !optimal && best.count > 1 && meter.spend(pass(g)) {
         let target = best.count - 1;
         let found = if g.edge_count() == 0 {
             Some(vec![0; g.vertex_count()])
@@ -188,7 +198,26 @@ where
             let core_colour = if core.len() == 0 {
                 Some(Vec::new())
             } else {
-                solve(&core, &colour, meter, rng, c)
+                // The exact search first, with at most half of what is left.
+                let mut share = meter.half();
+                let outcome = colour_by_transversals(&core, &mut share, rng);
+                meter.charge(share.report().steps);
+                match outcome {
+                    Outcome::Found(colour) => {
+                        optimal = true;
+                        Some(colour)
+                    }
+                    Outcome::Impossible => {
+                        optimal = true;
+                        None
+                    }
+                    Outcome::AtLeast => {
+                        let found = solve(&core, &colour, meter, rng, c);
+                        optimal = found.is_some();
+                        found
+                    }
+                    Outcome::NotTried => solve(&core, &colour, meter, rng, c),
+                }
             };
             core_colour.map(|k| core.extend(g, &k, c))
         };
