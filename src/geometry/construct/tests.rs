@@ -348,3 +348,99 @@ fn the_certified_path_serves_ordinary_input() {
         assert!(exact * 100 <= all, "{kind}: {exact} of {all}");
     }
 }
+
+/// Whether `circumcentre_fast` answers for `t`, after checking that its answer is the
+/// per-call path's (`circumcentre_rounded`), bit for bit.
+fn fast_agrees(t: [Point2; 3]) -> bool {
+    let [a, b, c] = t;
+    let Some(p) = circumcentre_fast(a, b, c) else {
+        return false;
+    };
+    match circumcentre_rounded(a, b, c) {
+        Some(q) => assert!(
+            p.x.to_bits() == q.x.to_bits() && p.y.to_bits() == q.y.to_bits(),
+            "{t:?}: fast {p:?}, per call {q:?}"
+        ),
+        None => panic!("{t:?}: fast {p:?}, the per-call bounds refuse it"),
+    }
+    true
+}
+
+/// An ordinary triangle (coordinates a unit square's, offset by up to 2^8 of its size)
+/// scaled by `2^s`, or flattened: the third vertex a few ulps off the line of the others.
+fn scaled_triangle() -> impl Strategy<Value = [Point2; 3]> {
+    (
+        [
+            (-1.0..1.0f64, -1.0..1.0f64),
+            (-1.0..1.0f64, -1.0..1.0f64),
+            (-1.0..1.0f64, -1.0..1.0f64),
+        ],
+        (-256.0..256.0f64, -256.0..256.0f64),
+        -1074i32..1023,
+        prop::option::of((0.0..1.0f64, -3i32..=3, -3i32..=3)),
+    )
+        .prop_map(|(t, (ox, oy), s, flat)| {
+            let scale = |v: f64| crate::geometry::extended::scale_by_pow2(v, s);
+            let mut t = t.map(|(x, y)| p(scale(x + ox), scale(y + oy)));
+            if let Some((f, i, j)) = flat {
+                let [a, b, _] = t;
+                let on = p(a.x + f * (b.x - a.x), a.y + f * (b.y - a.y));
+                t[2] = p(nudge(on.x, i), nudge(on.y, j));
+            }
+            t.map(|q| if q.is_finite() { q } else { p(0.0, 0.0) })
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn the_fast_circumcentre_is_the_per_call_one_bit_for_bit(
+        t in prop_oneof![triangle(), scaled_triangle()]
+    ) {
+        prop_assume!(proper(&t));
+        for r in [t, [t[1], t[2], t[0]], [t[2], t[1], t[0]]] {
+            fast_agrees(r);
+        }
+    }
+}
+
+#[test]
+fn the_fast_circumcentre_serves_ordinary_input_at_every_scale() {
+    // The generators' Delaunay triangles, scaled from 2^-1000 to 2^1000 (exactly, by
+    // powers of two): the fast path answers, with the per-call bits, for exactly those
+    // that the per-call bounds certify, nearly all at ordinary scales (at 2^-1000 the
+    // underflow slack defeats both).
+    use crate::delaunay::incremental;
+    use crate::gen::{points, PointKind};
+    for kind in [
+        PointKind::UniformSquare,
+        PointKind::Clustered,
+        PointKind::Grid,
+        PointKind::NearDuplicates,
+    ] {
+        let pts = points(kind, 5_000, 11).unwrap();
+        let t = incremental(&pts).unwrap();
+        for s in [-1000, -300, -40, 0, 40, 300, 1000] {
+            let at = |i: usize| {
+                let q = pts[i];
+                p(
+                    crate::geometry::extended::scale_by_pow2(q.x, s),
+                    crate::geometry::extended::scale_by_pow2(q.y, s),
+                )
+            };
+            let (mut fast, mut certified) = (0, 0);
+            for c in t.triangles.chunks_exact(3) {
+                let [a, b, c] = [at(c[0]), at(c[1]), at(c[2])];
+                fast += usize::from(fast_agrees([a, b, c]));
+                certified += usize::from(circumcentre_rounded(a, b, c).is_some());
+            }
+            let all = t.triangles.len() / 3;
+            println!("{kind}, 2^{s}: fast path {fast}, certified {certified}, of {all}");
+            assert_eq!(fast, certified, "{kind}, 2^{s}");
+            if s.abs() <= 300 {
+                assert!(fast * 100 >= all * 98, "{kind}, 2^{s}: {fast} of {all}");
+            }
+        }
+    }
+}
