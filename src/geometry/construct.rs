@@ -16,7 +16,7 @@
 //! whose exact value is beyond the range of `f64` says so
 //! ([`ConstructedPoint::BeyondRange`]).
 
-use super::ball::{scaled_differences, Ball, GROW, SLACK, U};
+use super::ball::{scaled_differences, Ball};
 use super::bigint::BigInt;
 use super::circle_predicates::Circumcentre;
 use super::extended::exact_coords;
@@ -145,17 +145,10 @@ impl serde::Serialize for ConstructedPoint {
 /// its size however short one edge is, so a triangle with two nearly coincident vertices
 /// keeps the fast path.
 ///
-/// The certified evaluation is tried first as straight-line code ([`circumcentre_fast`]),
-/// then, for the few triangles it leaves (an extreme frame, or bounds that do not certify),
-/// through `Circumcentre::new`: the same value and the same decision either way.
-///
 /// Panics if the points are collinear (a broken invariant of the caller: every Delaunay
 /// triangle is proper).
 #[inline]
 pub(crate) fn circumcentre(a: Point2, b: Point2, c: Point2) -> ConstructedPoint {
-    if let Some(p) = circumcentre_fast(a, b, c) {
-        return ConstructedPoint::Finite(p);
-    }
     match circumcentre_rounded(a, b, c) {
         Some(p) => ConstructedPoint::Finite(p),
         None => circumcentre_exact(a, b, c),
@@ -178,78 +171,6 @@ pub(crate) fn circumcentre_rounded(a: Point2, b: Point2, c: Point2) -> Option<Po
             rad: err_y,
         },
     )
-}
-
-/// The certified `f64` circumcentre as straight-line code, [`circumcentre`]'s first try:
-/// `Some(p)` exactly when [`circumcentre_rounded`] (`Circumcentre::new`, then
-/// [`certified`]) accepts `p`, bit for bit, for a triangle whose frame is ordinary (below);
-/// `None` otherwise (then [`circumcentre_rounded`] decides, and the exact path follows if
-/// it must).
-///
-/// The per-call path builds a `Circumcentre` with the exact stage's data and branches on
-/// the frame, the conditioning and the range; here one branch at the end decides, which
-/// keeps a batch of circumcentres (the Voronoi vertices) free of mispredictions.
-///
-/// **Why the value and the decision are the same.** Every operation that forms the centre
-/// and its error bound is the one of `Circumcentre::new`, in the same order: the same
-/// rotation (from the same rounded squared lengths), the same frame (differences times
-/// `2^-e` for `e` the exponent of the largest one, `m`), the same products, quotients and
-/// error terms, then back times `2^e` and added to the same vertex, and [`certified`]'s
-/// test on the result. The frame is taken only when `m` is a normal double below
-/// `2^1023`, where both powers of two are normal and `times_pow2` is that one
-/// multiplication; there the per-call path's early returns (`m` not in `(0, ∞)`, the
-/// conditioning test, a non-finite result) are the conjunction tested at the end.
-#[inline(always)]
-pub(crate) fn circumcentre_fast(a: Point2, b: Point2, c: Point2) -> Option<Point2> {
-    // The rotation of `Circumcentre::new`: the origin opposite the longest edge.
-    let len2 = |p: Point2, q: Point2| (q.x - p.x).powi(2) + (q.y - p.y).powi(2);
-    let (ab, bc, ca) = (len2(a, b), len2(b, c), len2(c, a));
-    let (a, b, c) = if ab >= bc && ab >= ca {
-        (c, a, b)
-    } else if bc >= ca {
-        (a, b, c)
-    } else {
-        (b, c, a)
-    };
-    let (bx, by, cx, cy) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
-    let m = bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs());
-    // The biased exponent of `m` (non-negative, so no sign bit): `m` is normal and below
-    // 2^1023 exactly when it is in 1..=2045, i.e. e in -1022..=1022.
-    let biased = (m.to_bits() >> 52) as i32;
-    let in_frame = (1..=2045).contains(&biased);
-    let e = biased.clamp(1, 2045) - 1023;
-    let down = f64::from_bits(((1023 - e) as u64) << 52);
-    let up = f64::from_bits(((1023 + e) as u64) << 52);
-    let [bx, by, cx, cy] = [bx, by, cx, cy].map(|v| v * down);
-    let lb = bx * bx + by * by;
-    let lc = cx * cx + cy * cy;
-    let (t1, t2) = (bx * cy, by * cx);
-    let half_d = t1 - t2;
-    let err_d = 5.0 * U * (t1.abs() + t2.abs()) + SLACK;
-    let nx = cy * lb - by * lc;
-    let ny = bx * lc - cx * lb;
-    let err_nx = 8.0 * U * (cy.abs() * lb + by.abs() * lc) + SLACK;
-    let err_ny = 8.0 * U * (bx.abs() * lc + cx.abs() * lb) + SLACK;
-    let conditioned = half_d.abs() > 8.0 * err_d;
-    let rel_d = err_d / half_d.abs();
-    let d = 2.0 * half_d;
-    let (ox, oy) = (nx / d, ny / d);
-    let err_ox = 1.25 * (ox.abs() * (rel_d + U) + err_nx / d.abs()) + SLACK;
-    let err_oy = 1.25 * (oy.abs() * (rel_d + U) + err_ny / d.abs()) + SLACK;
-    let (x, y) = (a.x + ox * up, a.y + oy * up);
-    let err_x = (err_ox * up + U * x.abs()) * GROW + SLACK;
-    let err_y = (err_oy * up + U * y.abs()) * GROW + SLACK;
-    // `certified`'s test (which also implies the per-call finiteness test: a finite
-    // limit bounds the errors, and `RANGE` the coordinates). Every comparison is false
-    // for NaN; `&` keeps the code free of branches.
-    let limit = ACCEPT * x.abs().max(y.abs());
-    let accepted = in_frame
-        & conditioned
-        & (x.abs() < RANGE)
-        & (y.abs() < RANGE)
-        & (err_x <= limit)
-        & (err_y <= limit);
-    accepted.then_some(Point2::new(x, y))
 }
 
 /// The circumcentre in big integers: with `b' = b − a`, `c' = c − a`,

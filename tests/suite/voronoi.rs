@@ -557,11 +557,9 @@ fn digest(v: &Voronoi, n: usize) -> u64 {
 
 #[test]
 fn cells_vertices_and_rays_are_those_of_the_per_call_construction() {
-    // Digests of `voronoi` and of `dual` on every kind of input, recorded from the version
-    // that built each vertex through the per-call certified circumcentre and walked the
-    // cells with per-call bounds checks (commit d8fd415): the faster dual must give the
-    // same cells in the same order, the same vertex bits (and wide values beyond the
-    // range) and the same rays.
+    // Digests of `voronoi` and of `dual` on every kind of input, recorded from commit
+    // d8fd415: any faster dual must give the same cells in the same order, the same vertex
+    // bits (and wide values beyond the range) and the same rays.
     use PointKind::*;
     let cases = [
         (
