@@ -227,6 +227,29 @@
 //! Hilbert-curve order of their sites. About three quarters of compgeo's time is the
 //! triangulation; of the rest, the walks around the sites (cache misses, and page faults on
 //! the fresh 48 MB row array) and the circumcentres take about equal shares.
+//!
+//! 2026-12-04 (issue 21, item 1: cells at most 0.35× voronoice; not met). Phases at 10⁶
+//! uniform points, one run each, wall time, load average about 4: triangulation 345–375 ms,
+//! the Hilbert order of the walk starts and the cell numbering 37–41 ms, circumcentres
+//! 116–148 ms (of which 46–52 ms is reading the corners and writing the 32 MB array: a
+//! stand-in that only sums the corners takes that long), walks 114–117 ms. A branch-free
+//! copy of the certified circumcentre (the same operations and error bound as the
+//! per-call path, one branch at the end; commit 435059e, reverted after it) moved the
+//! circumcentres' share of the profile from 15.9 % to 15.5 %, within the noise; with
+//! frame-wide constant error terms instead of the per-call ones it saved about 2 % of the
+//! whole, but refused up to half of the near-duplicate triangles the per-call bound
+//! certifies. Interleaved in one process (cells of d8fd415, of 435059e, voronoice twice
+//! per round; 7 rounds, median CPU time of the thread from `/proc/thread-self/schedstat`),
+//! load average 4.4 to 4.9 (another helper building):
+//!
+//! | input, n = 10⁶ | cells, d8fd415 | cells, 435059e | voronoice | d8fd415 / voronoice | 435059e / voronoice |
+//! |---|---|---|---|---|---|
+//! | uniform-square | 573 ms | 601 ms | 1529 ms | 0.375 | 0.393 |
+//! | clustered | 626 ms | 640 ms | 1210 ms | 0.517 | 0.529 |
+//!
+//! (Two earlier 5-round runs, load 4 to 5.5: 0.459 and 0.445, then 0.435 and 0.441 on
+//! uniform-square; 0.534 and 0.526, then 0.545 and 0.508 on clustered, d8fd415 first.
+//! Voronoice slows more than compgeo under load, so the ratios fall as the load rises.)
 
 use compgeo::delaunay::{divide_and_conquer, fortune, incremental, voronoi, ClipBox};
 use compgeo::gen::{points, PointKind};

@@ -505,6 +505,100 @@ fn check_relabelling(pts: &[Point2]) {
     }
 }
 
+/// FNV-1a over 64-bit words: a digest of everything a diagram reports, bit for bit.
+struct Fnv(u64);
+
+impl Fnv {
+    fn word(&mut self, w: u64) {
+        for b in w.to_le_bytes() {
+            self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+    fn point(&mut self, p: Point2) {
+        self.word(p.x.to_bits());
+        self.word(p.y.to_bits());
+    }
+}
+
+/// The digest of a diagram: its vertices (bits, and the wide value of those beyond the
+/// range), every cell (site, vertex ids, boundedness, rays) in order, and every input
+/// point's cell.
+fn digest(v: &Voronoi, n: usize) -> u64 {
+    let mut h = Fnv(0xcbf2_9ce4_8422_2325);
+    h.word(v.vertices.len() as u64);
+    for (i, &p) in v.vertices.iter().enumerate() {
+        h.point(p);
+        if v.is_beyond_range(i) {
+            for b in format!("{:?}", v.vertex(i)).bytes() {
+                h.word(u64::from(b));
+            }
+        }
+    }
+    for c in v.cells() {
+        h.word(c.site as u64);
+        h.word(c.vertices.len() as u64);
+        for &k in c.vertices {
+            h.word(k as u64);
+        }
+        h.word(u64::from(c.bounded));
+        h.word(c.rays.len() as u64);
+        for r in c.rays {
+            h.point(r.origin);
+            h.point(r.direction);
+            h.word(r.sites[0] as u64);
+            h.word(r.sites[1] as u64);
+        }
+    }
+    for i in 0..n {
+        h.word(v.cell_of(i) as u64);
+    }
+    h.0
+}
+
+#[test]
+fn cells_vertices_and_rays_are_those_of_the_per_call_construction() {
+    // Digests of `voronoi` and of `dual` on every kind of input, recorded from commit
+    // d8fd415: any faster dual must give the same cells in the same order, the same vertex
+    // bits (and wide values beyond the range) and the same rays.
+    use PointKind::*;
+    let cases = [
+        (
+            UniformSquare,
+            3000,
+            1,
+            0xd690894ec943fc34,
+            0xddd05107e6a6f04c,
+        ),
+        (Clustered, 3000, 2, 0xadb9a2b9dc4a646d, 0xb0618a43f53fdb45),
+        (Grid, 2000, 3, 0xa854adc060043f57, 0x3b976f0fc989fdab),
+        (RotatedGrid, 1000, 4, 0xbccc5fba1f275a4f, 0xae1e387630a99d97),
+        (Cocircular, 300, 5, 0x83260af4ad72c87f, 0xd8c388c476cab917),
+        (
+            NearDuplicates,
+            2000,
+            6,
+            0xefc9d3a5abc9626a,
+            0x29859e5e9ad19cb6,
+        ),
+        (Huge, 1000, 7, 0x4a9eb33b405b88d1, 0xed7657e2abef73fd),
+        (Tiny, 1000, 8, 0x9717f0b16a235866, 0x531c6805521653ae),
+        (Collinear, 40, 9, 0x95c2348191264625, 0x95c2348191264625),
+        (Gaussian, 2000, 10, 0x49933c912a40e3fb, 0x6f572e1678a21513),
+    ];
+    for (kind, n, seed, by_voronoi, by_dual) in cases {
+        let pts = points(kind, n, seed).unwrap();
+        let v = voronoi(&pts).unwrap();
+        assert_eq!(digest(&v, n), by_voronoi, "voronoi, {kind}");
+        let d = dual(&pts, &incremental(&pts).unwrap()).unwrap();
+        assert_eq!(digest(&d, n), by_dual, "dual, {kind}");
+    }
+    // A vertex beyond the range of `f64`.
+    let pts = [(-1e300, 0.0), (1e300, 0.0), (0.0, 1e-300), (0.0, 1e300)].map(Point2::from);
+    let v = voronoi(&pts).unwrap();
+    assert!((0..v.vertices.len()).any(|i| v.is_beyond_range(i)));
+    assert_eq!(digest(&v, 4), 0x5fda0349d5f84a2b);
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
