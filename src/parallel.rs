@@ -1,117 +1,118 @@
-//! The shared pieces of the `parallel` feature: a sort that splits its input among the
-//! threads and merges the sorted parts in parallel, and the size below which the batch paths
-//! stay sequential.
+//! The shared pieces of the `parallel` feature: the test that sends a batch to the threads,
+//! and the parallel distribution of items into buckets that the parallel radix sorts start
+//! with.
 //!
-//! The problem: sort n items whose order is a strict total order (no two distinct items
-//! compare equal, or items that compare equal are identical), so that the sorted sequence is
-//! unique and the parallel result equals the sequential one bit for bit.
+//! The problem: distribute n items into b buckets by a digit of their key, as the stable
+//! counting pass of a radix sort does, with every thread doing an equal share and no `unsafe`.
 //!
-//! The idea: cut the input into two halves, sort them at the same time (each with the
-//! sequential sort, or recursively while threads remain), then merge them. The merge is split
-//! too: the middle item of the longer run is located in the other run by binary search, which
-//! cuts both runs and the output into a left and a right part that can be merged
-//! independently ([`merge`]), so every thread writes its own part of the output and no
-//! `unsafe` is needed. Not in the course; it is the classical parallel merge sort (the
-//! sequential sort of the leaves is the caller's: a radix sort here).
+//! The idea ([`scatter`]): cut the input into chunks, a few per thread; each chunk counts its
+//! items per bucket, in parallel. The output is then cut, by those counts, into one sub-slice
+//! per bucket and chunk, bucket-major and chunk-minor (bucket 0 of chunk 0, bucket 0 of chunk
+//! 1, ..., bucket 1 of chunk 0, ...), with `split_at_mut`; each chunk then writes its items
+//! into its own sub-slices, in parallel. The sub-slices are disjoint, so the borrow checker
+//! accepts the writes, and each bucket receives its items in input order: the distribution is
+//! stable. A sort that partitions by its top digit this way and then sorts the buckets
+//! independently (each on one thread) needs no merge pass. Not in the course; it is the
+//! classical parallel counting-sort pass (Zagha and Blelloch's parallel radix sort).
 //!
 //! # Complexity
 //!
-//! With n items, p threads and a leaf sort of time T(n): time T(n / p) + O(n / p + log² n)
-//! with p threads, work p · T(n / p) + O(n log p); auxiliary space O(n) for the output.
+//! With n items, b buckets, p threads and c = 4p chunks: time O(n / p + b·c) with p threads,
+//! work O(n + b·c); auxiliary space O(b·c) for the counts and the sub-slices.
 //!
-//! Invariants the tests check (`tests/suite/parallel.rs`): every parallel path returns what
-//! its sequential path returns, on inputs on both sides of [`THRESHOLD`].
+//! Invariants the tests check (`tests/suite/parallel.rs` and the tests below): every parallel
+//! path returns what its sequential path returns, on inputs on both sides of [`THRESHOLD`];
+//! [`scatter`] equals a stable sort by bucket.
 
-/// Inputs with fewer items than this stay sequential: below it the threads' start-up and the
-/// extra merge pass cost more than half the sort.
+use rayon::prelude::*;
+
+/// Inputs with fewer items than this stay sequential: below it the threads' start-up costs
+/// more than half the work.
 pub(crate) const THRESHOLD: usize = 1 << 16;
 
-/// Merges in parallel pieces of at least this many output items; shorter ones sequentially.
-const MERGE_GRAIN: usize = 1 << 14;
+/// Chunks of [`scatter`] per thread: more than one, so a thread that is slowed down (by
+/// another process, or by a chunk whose buckets miss the cache) leaves the rest of its share
+/// to be stolen.
+const CHUNKS_PER_THREAD: usize = 4;
 
-/// How many times the input may still be halved: ⌈log₂ p⌉ for p threads.
-pub(crate) fn depth() -> u32 {
-    rayon::current_num_threads()
-        .next_power_of_two()
-        .trailing_zeros()
+/// Whether a batch of `len` items takes a parallel path: from [`THRESHOLD`] items, and only
+/// with more than one thread in the pool (a 1-thread pool takes the sequential path itself).
+pub(crate) fn enabled(len: usize) -> bool {
+    len >= THRESHOLD && rayon::current_num_threads() > 1
 }
 
-/// The items of `input`, sorted: `leaf` maps a slice of the input to its items sorted, the
-/// halves of `input` go to `leaf` at the same time (recursively, `depth` times), and the
-/// sorted halves are merged by [`merge`] under `less`. `less` must be a strict total order on
-/// the items (or identify items that compare equal) and `leaf` must sort by it, so the result
-/// is the unique sorted sequence whatever the split.
-pub(crate) fn sorted<I, T, L, F>(input: &[I], depth: u32, leaf: &L, less: &F) -> Vec<T>
+/// Distributes the items of `src` into `dst` (as long as `src`) by bucket, stably: `place`
+/// maps an item to its bucket (below `buckets`) and the value to write. Returns each bucket's
+/// end in `dst`. `place` is called twice per item (once to count, once to write), so it must
+/// be a function of the item.
+pub(crate) fn scatter<S, T, P>(src: &[S], dst: &mut [T], buckets: usize, place: P) -> Vec<usize>
 where
-    I: Sync,
-    T: Copy + Send + Sync + Default,
-    L: Fn(&[I]) -> Vec<T> + Sync,
-    F: Fn(&T, &T) -> bool + Sync,
+    S: Sync,
+    T: Send,
+    P: Fn(&S) -> (usize, T) + Sync,
 {
-    if depth == 0 || input.len() < THRESHOLD {
-        return leaf(input);
-    }
-    let (left, right) = input.split_at(input.len() / 2);
-    let (left, right) = rayon::join(
-        || sorted(left, depth - 1, leaf, less),
-        || sorted(right, depth - 1, leaf, less),
+    assert_eq!(
+        src.len(),
+        dst.len(),
+        "scatter needs an output as long as its input"
     );
-    let mut out = vec![T::default(); left.len() + right.len()];
-    merge(&left, &right, &mut out, less);
-    out
-}
-
-/// Merges the sorted runs `a` and `b` into `out` (of length `a.len() + b.len()`), items of
-/// `a` before equal items of `b`, splitting the work among the threads.
-///
-/// The split: with `a` the longer run, its middle item `a[m]` goes to `out[m + k]`, where
-/// k is the number of items of `b` less than `a[m]`; everything before it in the output
-/// comes from `a[..m]` and `b[..k]`, everything after from `a[m + 1..]` and `b[k..]`. When
-/// `b` is the longer run, its middle item `b[m]` follows the k items of `a` not greater than
-/// it.
-pub(crate) fn merge<T, F>(a: &[T], b: &[T], out: &mut [T], less: &F)
-where
-    T: Copy + Send + Sync,
-    F: Fn(&T, &T) -> bool + Sync,
-{
-    debug_assert_eq!(a.len() + b.len(), out.len());
-    if out.len() < MERGE_GRAIN || a.is_empty() || b.is_empty() {
-        merge_sequential(a, b, out, less);
-        return;
-    }
-    let (a_left, pivot, a_right, b_left, b_right) = if a.len() >= b.len() {
-        let m = a.len() / 2;
-        let k = b.partition_point(|x| less(x, &a[m]));
-        (&a[..m], a[m], &a[m + 1..], &b[..k], &b[k..])
-    } else {
-        let m = b.len() / 2;
-        let k = a.partition_point(|x| !less(&b[m], x));
-        (&a[..k], b[m], &a[k..], &b[..m], &b[m + 1..])
-    };
-    let (out_left, rest) = out.split_at_mut(a_left.len() + b_left.len());
-    let (slot, out_right) = rest.split_at_mut(1);
-    slot[0] = pivot;
-    // The pivot from `b` sits after the equal items of `a` on its left and before those on
-    // its right; the pivot from `a`, before the equal items of `b` on its right.
-    rayon::join(
-        || merge(a_left, b_left, out_left, less),
-        || merge(a_right, b_right, out_right, less),
-    );
-}
-
-/// The sequential merge of [`merge`].
-fn merge_sequential<T: Copy, F: Fn(&T, &T) -> bool>(a: &[T], b: &[T], out: &mut [T], less: &F) {
-    let (mut i, mut j) = (0, 0);
-    for slot in out.iter_mut() {
-        let take_b = j < b.len() && (i == a.len() || less(&b[j], &a[i]));
-        if take_b {
-            *slot = b[j];
-            j += 1;
-        } else {
-            *slot = a[i];
-            i += 1;
+    let chunks = rayon::current_num_threads() * CHUNKS_PER_THREAD;
+    let chunk_len = src.len().div_ceil(chunks).max(1);
+    let counts: Vec<Vec<usize>> = src
+        .par_chunks(chunk_len)
+        .map(|chunk| {
+            let mut count = vec![0usize; buckets];
+            for x in chunk {
+                count[place(x).0] += 1;
+            }
+            count
+        })
+        .collect();
+    // The sub-slices, bucket-major and chunk-minor, handed to their chunks.
+    let mut slots: Vec<Vec<&mut [T]>> =
+        counts.iter().map(|_| Vec::with_capacity(buckets)).collect();
+    let mut ends = Vec::with_capacity(buckets);
+    let mut rest = dst;
+    let mut end = 0;
+    for d in 0..buckets {
+        for (count, slot) in counts.iter().zip(slots.iter_mut()) {
+            let (head, tail) = std::mem::take(&mut rest).split_at_mut(count[d]);
+            slot.push(head);
+            rest = tail;
+            end += count[d];
         }
+        ends.push(end);
     }
+    src.par_chunks(chunk_len)
+        .zip(slots.into_par_iter())
+        .for_each(|(chunk, mut slot)| {
+            let mut next = vec![0usize; buckets];
+            for x in chunk {
+                let (d, value) = place(x);
+                slot[d][next[d]] = value;
+                next[d] += 1;
+            }
+        });
+    ends
+}
+
+/// The bucket ranges of `ends` (as [`scatter`] returns them), cut out of `a` and `b` side by
+/// side: one pair of equal sub-slices per bucket, for sorting the buckets in parallel.
+pub(crate) fn split_buckets<'a, S, T>(
+    mut a: &'a mut [S],
+    mut b: &'a mut [T],
+    ends: &[usize],
+) -> Vec<(&'a mut [S], &'a mut [T])> {
+    let mut start = 0;
+    let mut parts = Vec::with_capacity(ends.len());
+    for &end in ends {
+        let (a_head, a_tail) = std::mem::take(&mut a).split_at_mut(end - start);
+        let (b_head, b_tail) = std::mem::take(&mut b).split_at_mut(end - start);
+        parts.push((a_head, b_head));
+        (a, b) = (a_tail, b_tail);
+        start = end;
+    }
+    parts
 }
 
 #[cfg(test)]
@@ -120,42 +121,34 @@ mod tests {
     use crate::gen::Rng;
 
     #[test]
-    fn merge_equals_the_sorted_concatenation_with_ties() {
+    fn scatter_equals_a_stable_sort_by_bucket() {
         let mut rng = Rng::new(3);
-        for (na, nb) in [(0, 5), (7, 0), (40_000, 3), (3, 40_000), (50_000, 60_000)] {
-            // Items (value, source): values repeat, so ties between the runs are common.
-            let mut a: Vec<(u32, u32)> = (0..na)
-                .map(|_| ((rng.next_u64() % 997) as u32, 0))
-                .collect();
-            let mut b: Vec<(u32, u32)> = (0..nb)
-                .map(|_| ((rng.next_u64() % 997) as u32, 1))
-                .collect();
-            a.sort();
-            b.sort();
-            let mut out = vec![(0, 0); na + nb];
-            merge(&a, &b, &mut out, &|x: &(u32, u32), y: &(u32, u32)| {
-                x.0 < y.0
-            });
-            let mut expected = [a, b].concat();
-            // A stable sort by value keeps a's items before b's equal ones.
-            expected.sort_by_key(|x| x.0);
-            assert_eq!(out, expected, "{na} + {nb}");
+        for (n, buckets) in [(0, 4), (1, 1), (7, 256), (100_000, 256), (70_000, 3)] {
+            // Items (value, position): the positions show the order within a bucket.
+            let v: Vec<(u64, usize)> = (0..n).map(|i| (rng.next_u64(), i)).collect();
+            let bucket = |x: &(u64, usize)| (x.0 % buckets as u64) as usize;
+            let mut out = vec![(0, 0); n];
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(3)
+                .build()
+                .unwrap();
+            let ends = pool.install(|| scatter(&v, &mut out, buckets, |x| (bucket(x), *x)));
+            let mut expected = v.clone();
+            expected.sort_by_key(bucket);
+            assert_eq!(out, expected, "{n} items, {buckets} buckets");
+            assert_eq!(ends.len(), buckets);
+            for (d, &end) in ends.iter().enumerate() {
+                assert_eq!(end, expected.partition_point(|x| bucket(x) <= d));
+            }
         }
     }
 
     #[test]
-    fn sorted_equals_the_sequential_sort() {
-        let mut rng = Rng::new(4);
-        for n in [0, 1, THRESHOLD - 1, THRESHOLD, 3 * THRESHOLD + 7] {
-            let v: Vec<u64> = (0..n).map(|_| rng.next_u64() % 100_000).collect();
-            let mut expected = v.clone();
-            expected.sort_unstable();
-            let leaf = |part: &[u64]| {
-                let mut part = part.to_vec();
-                part.sort_unstable();
-                part
-            };
-            assert_eq!(sorted(&v, 3, &leaf, &|a, b| a < b), expected, "n = {n}");
-        }
+    fn split_buckets_cuts_both_slices_at_the_ends() {
+        let mut a = [0u8; 10];
+        let mut b = [0u16; 10];
+        let parts = split_buckets(&mut a, &mut b, &[3, 3, 9, 10]);
+        let lens: Vec<(usize, usize)> = parts.iter().map(|(x, y)| (x.len(), y.len())).collect();
+        assert_eq!(lens, [(3, 3), (0, 0), (6, 6), (1, 1)]);
     }
 }

@@ -68,6 +68,9 @@ const EXTRA_BITS: u32 = 8;
 /// An item: a point and its index in the caller's input.
 pub(crate) type Item = (Point2, usize);
 
+/// A pair of the radix sort: an item's key prefix and its index.
+type Pair = (u64, usize);
+
 /// The 128-bit key of a finite point whose integer order is [`cmp_lex`](super::cmp_lex): the
 /// order keys of x, then y, after mapping `-0.0` to `0.0` (which `cmp_lex` treats as equal).
 #[inline(always)]
@@ -100,7 +103,7 @@ where
 {
     if C::DISCARDS && indices.len() >= CUTOFF {
         #[cfg(feature = "parallel")]
-        if indices.len() >= crate::parallel::THRESHOLD {
+        if crate::parallel::enabled(indices.len()) {
             return par_radix_sorted(points, indices, key);
         }
         return radix_sorted(points, indices, key);
@@ -137,11 +140,16 @@ pub fn radix_sorted_lex(points: &[Point2]) -> Vec<(Point2, usize)> {
 }
 
 /// The same order as [`radix_sorted_lex`] by the parallel radix sort (feature `parallel`;
-/// sequential below its threshold). For the benchmarks and tests only: not part of the API.
+/// the sequential one below its threshold or in a 1-thread pool). For the benchmarks and
+/// tests only: not part of the API.
 #[cfg(feature = "parallel")]
 #[doc(hidden)]
 pub fn parallel_sorted_lex(points: &[Point2]) -> Vec<(Point2, usize)> {
-    par_radix_sorted(points, 0..points.len(), lex_key)
+    if crate::parallel::enabled(points.len()) {
+        par_radix_sorted(points, 0..points.len(), lex_key)
+    } else {
+        radix_sorted(points, 0..points.len(), lex_key)
+    }
 }
 
 /// The same order as [`radix_sorted_lex`] by the comparison sort (`sort_unstable_by` on
@@ -152,10 +160,12 @@ pub fn comparison_sorted_lex(points: &[Point2]) -> Vec<(Point2, usize)> {
     sorted_items_with(points, 0..points.len(), lex_key, &mut Silent)
 }
 
-/// The radix path of [`sorted_items_with`] on all the threads (feature `parallel`): the
-/// halves of the indices radix-sorted at the same time, then merged in parallel by `(key,
-/// index)`, a strict total order, so the result is the sequential one
-/// ([`crate::parallel::sorted`]).
+/// The radix path of [`sorted_items_with`] on all the threads (feature `parallel`): one
+/// parallel pass finds the bits in which the keys differ, the `(prefix, index)` pairs are
+/// distributed by the top bits of their prefixes into buckets ([`crate::parallel::scatter`]),
+/// and the buckets are sorted independently, in parallel, by the sequential passes
+/// ([`sort_pairs`]), each into its own stretch of the items. No merge pass: the buckets are in
+/// order. `(key, index)` is a strict total order, so the result is the sequential one.
 #[cfg(feature = "parallel")]
 pub(crate) fn par_radix_sorted<K>(
     points: &[Point2],
@@ -165,10 +175,42 @@ pub(crate) fn par_radix_sorted<K>(
 where
     K: Fn(Point2) -> u128 + Copy + Sync,
 {
+    use rayon::prelude::*;
     let indices: Vec<usize> = indices.collect();
-    let leaf = |part: &[usize]| radix_sorted(points, part.iter().copied(), key);
-    let less = |a: &Item, b: &Item| (key(a.0), a.1) < (key(b.0), b.1);
-    crate::parallel::sorted(&indices, crate::parallel::depth(), &leaf, &less)
+    let Some(&i0) = indices.first() else {
+        return Vec::new();
+    };
+    let n = indices.len();
+    let first = key(points[i0]);
+    let diff = indices
+        .par_iter()
+        .map(|&i| key(points[i]) ^ first)
+        .reduce(|| 0, |a, b| a | b);
+    let prefix = Prefix::new(diff);
+    // Buckets of about 2^12 items: each one's pairs and their buffer stay in the L2 cache.
+    let top_bits = (usize::BITS - n.leading_zeros())
+        .saturating_sub(12)
+        .clamp(8, MAX_DIGIT_BITS)
+        .min(prefix.width);
+    let shift = prefix.width - top_bits;
+    let mut pairs = vec![(0u64, 0usize); n];
+    let ends = crate::parallel::scatter(&indices, &mut pairs, 1 << top_bits, |&i| {
+        let p = prefix.of(key(points[i]));
+        ((p >> shift) as usize, (p, i))
+    });
+    let mut items = vec![(Point2::default(), 0); n];
+    crate::parallel::split_buckets(&mut pairs, &mut items, &ends)
+        .into_par_iter()
+        .for_each(|(pairs, out)| {
+            let Some(&(p0, _)) = pairs.first() else {
+                return;
+            };
+            // The bucket's prefixes agree from their highest differing bit up.
+            let diff = pairs.iter().fold(0, |d, &(p, _)| d | (p ^ p0));
+            let width = u64::BITS - diff.leading_zeros();
+            sort_pairs::<false, K>(points, pairs, out, &prefix, width, key);
+        });
+    items
 }
 
 /// The radix path of [`sorted_items_with`], for any number of items.
@@ -189,20 +231,37 @@ fn radix_sorted<K: Fn(Point2) -> u128 + Copy>(
         diff |= key(points[i]) ^ first;
         pairs.push((0, i));
     }
-    let n = pairs.len();
     let prefix = Prefix::new(diff);
+    let mut items = vec![(Point2::default(), 0); pairs.len()];
+    sort_pairs::<true, K>(points, &mut pairs, &mut items, &prefix, prefix.width, key);
+    items
+}
+
+/// Writes the items of `pairs` (not empty) into `out` (as long), sorted by `(key, index)`:
+/// the pairs' prefixes (filled in first from the keys if `FILL`) agree on every bit from
+/// `width` up. Counting passes on the top bits below `width`, the last writing the items,
+/// then the runs of items tied on those bits sorted by comparisons.
+fn sort_pairs<const FILL: bool, K: Fn(Point2) -> u128 + Copy>(
+    points: &[Point2],
+    pairs: &mut [Pair],
+    out: &mut [Item],
+    prefix: &Prefix,
+    width: u32,
+    key: K,
+) {
+    let n = pairs.len();
     // The sorted bits: all of an exact prefix if that takes at most two more digits than
     // the wanted bits, else the wanted bits rounded up to whole digits.
     let bit_length = usize::BITS - n.leading_zeros();
     let digit_bits = bit_length.saturating_sub(2).clamp(8, MAX_DIGIT_BITS);
     let wanted = bit_length + EXTRA_BITS;
-    let (digits, bits) = if prefix.exact && prefix.width <= wanted + 2 * digit_bits {
-        (prefix.width.div_ceil(digit_bits), prefix.width)
+    let (digits, bits) = if prefix.exact && width <= wanted + 2 * digit_bits {
+        (width.div_ceil(digit_bits), width)
     } else {
         let digits = wanted.div_ceil(digit_bits);
-        (digits, (digits * digit_bits).min(prefix.width))
+        (digits, (digits * digit_bits).min(width))
     };
-    let lo = prefix.width - bits;
+    let lo = width - bits;
     let dw = bits.div_ceil(digits.max(1));
     let radix = 1usize << dw;
     let mask = radix as u64 - 1;
@@ -210,7 +269,9 @@ fn radix_sorted<K: Fn(Point2) -> u128 + Copy>(
     // One pass fills the prefixes and every digit's histogram.
     let mut histograms = vec![0usize; digits as usize * radix];
     for pair in pairs.iter_mut() {
-        pair.0 = prefix.of(key(points[pair.1]));
+        if FILL {
+            pair.0 = prefix.of(key(points[pair.1]));
+        }
         for d in 0..digits as usize {
             histograms[d * radix + digit(pair.0, d)] += 1;
         }
@@ -227,9 +288,12 @@ fn radix_sorted<K: Fn(Point2) -> u128 + Copy>(
             sum += count;
         }
     }
-    let mut items: Vec<Item> = Vec::with_capacity(n);
     match passes.split_last() {
-        None => items.extend(pairs.iter().map(|&(_, i)| (points[i], i))),
+        None => {
+            for (item, &(_, i)) in out.iter_mut().zip(pairs.iter()) {
+                *item = (points[i], i);
+            }
+        }
         Some((&last, inner)) => {
             let mut buffer = if inner.is_empty() {
                 Vec::new()
@@ -239,10 +303,10 @@ fn radix_sorted<K: Fn(Point2) -> u128 + Copy>(
             let mut in_buffer = false;
             for &d in inner {
                 let next = &mut histograms[d * radix..(d + 1) * radix];
-                let (from, to) = if in_buffer {
-                    (&buffer, &mut pairs)
+                let (from, to): (&[Pair], &mut [Pair]) = if in_buffer {
+                    (&buffer, pairs)
                 } else {
-                    (&pairs, &mut buffer)
+                    (pairs, &mut buffer)
                 };
                 for &pair in from.iter() {
                     let slot = &mut next[digit(pair.0, d)];
@@ -252,12 +316,11 @@ fn radix_sorted<K: Fn(Point2) -> u128 + Copy>(
                 in_buffer = !in_buffer;
             }
             // The last pass writes the items themselves.
-            let from = if in_buffer { &buffer } else { &pairs };
+            let from: &[Pair] = if in_buffer { &buffer } else { pairs };
             let next = &mut histograms[last * radix..(last + 1) * radix];
-            items.resize(n, (Point2::default(), 0));
             for &(p, i) in from.iter() {
                 let slot = &mut next[digit(p, last)];
-                items[*slot] = (points[i], i);
+                out[*slot] = (points[i], i);
                 *slot += 1;
             }
         }
@@ -265,19 +328,17 @@ fn radix_sorted<K: Fn(Point2) -> u128 + Copy>(
     // Runs of items tied on the sorted bits: by full key, then index.
     let sorted_bits = |p: Point2| prefix.of(key(p)) >> lo;
     let mut start = 0;
-    let mut run = sorted_bits(items[0].0);
+    let mut run = sorted_bits(out[0].0);
     for k in 1..=n {
-        let next = if k < n { sorted_bits(items[k].0) } else { !run };
+        let next = if k < n { sorted_bits(out[k].0) } else { !run };
         if next != run {
             if k - start > 1 {
-                items[start..k]
-                    .sort_unstable_by(|a, b| key(a.0).cmp(&key(b.0)).then(a.1.cmp(&b.1)));
+                out[start..k].sort_unstable_by(|a, b| key(a.0).cmp(&key(b.0)).then(a.1.cmp(&b.1)));
             }
             start = k;
             run = next;
         }
     }
-    items
 }
 
 /// The 64-bit prefix of keys that differ in the bits of `diff`: the bits of the key's x half

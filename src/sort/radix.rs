@@ -138,34 +138,64 @@ pub fn radix_sort_f64(v: &mut [f64]) {
 /// ```
 pub fn radix_sort_f64_with<C: Counter>(v: &mut [f64], counter: &mut C) {
     #[cfg(feature = "parallel")]
-    if C::DISCARDS && v.len() >= crate::parallel::THRESHOLD {
-        par_sort(v, crate::parallel::depth());
+    if C::DISCARDS && crate::parallel::enabled(v.len()) {
+        par_sort(v);
         return;
     }
     sequential_sort(v, counter);
 }
 
 /// [`radix_sort_f64_with`] on all the threads (feature `parallel`, counting nothing): the
-/// halves of `v` sorted at the same time (recursively, `depth` times), then merged in
-/// parallel by [`f64::total_cmp`]. In that order only equal bit patterns compare equal, so
-/// the result is the sequential one bit for bit.
+/// floats distributed as keys into a buffer by the eight bits below the highest bit in which
+/// the keys differ ([`crate::parallel::scatter`]), then the 256 buckets sorted independently,
+/// in parallel, each by the sequential sort with its stretch of `v` as scratch (or by this
+/// parallel step again if it holds more than an eighth of the keys) and copied back while it
+/// is in the cache. No merge pass: the buckets are in order. In the total order only equal bit
+/// patterns compare equal, so the result is the sequential one bit for bit.
 #[cfg(feature = "parallel")]
-fn par_sort(v: &mut [f64], depth: u32) {
+fn par_sort(v: &mut [f64]) {
     use rayon::prelude::*;
-    if depth == 0 || v.len() < crate::parallel::THRESHOLD {
-        sequential_sort(v, &mut NoCount);
+    let first = order_key(v[0]);
+    let diff = v
+        .par_iter()
+        .map(|&x| order_key(x) ^ first)
+        .reduce(|| 0, |a, b| a | b);
+    if diff == 0 {
         return;
     }
-    let mid = v.len() / 2;
-    let (left, right) = v.split_at_mut(mid);
-    rayon::join(|| par_sort(left, depth - 1), || par_sort(right, depth - 1));
-    let mut merged = vec![0.0f64; v.len()];
-    let less = |a: &f64, b: &f64| a.total_cmp(b).is_lt();
-    crate::parallel::merge(&v[..mid], &v[mid..], &mut merged, &less);
-    const CHUNK: usize = 1 << 16;
-    v.par_chunks_mut(CHUNK)
-        .zip(merged.par_chunks(CHUNK))
-        .for_each(|(to, from)| to.copy_from_slice(from));
+    let mut scratch = vec![0.0f64; v.len()];
+    let grain = (v.len() / 8).max(crate::parallel::THRESHOLD);
+    par_sort_keys(v, &mut scratch, diff, true, grain);
+}
+
+/// Sorts `v` in place into floats with `scratch` (as long as `v`): `v` holds floats if
+/// `floats`, else keys, whose keys differ exactly in the bits of `diff` (not 0). Buckets of
+/// more than `grain` keys are sorted by this function again, the others sequentially.
+#[cfg(feature = "parallel")]
+fn par_sort_keys(v: &mut [f64], scratch: &mut [f64], diff: u64, floats: bool, grain: usize) {
+    use rayon::prelude::*;
+    let shift = bit_length(diff).saturating_sub(DIGIT_BITS);
+    let ends = crate::parallel::scatter(v, scratch, RADIX, |&x| {
+        let k = if floats { order_key(x) } else { x.to_bits() };
+        (digit(k, shift), f64::from_bits(k))
+    });
+    let buckets = crate::parallel::split_buckets(scratch, v, &ends);
+    buckets.into_par_iter().for_each(|(keys, out)| {
+        // The bucket's keys agree on every bit from `shift` up, so it is sorted on fewer bits.
+        match varying_bits(keys) {
+            0 => to_floats(keys),
+            d if keys.len() > grain => {
+                par_sort_keys(keys, out, d, false, grain);
+                const CHUNK: usize = 1 << 16;
+                out.par_chunks_mut(CHUNK)
+                    .zip(keys.par_chunks(CHUNK))
+                    .for_each(|(to, from)| to.copy_from_slice(from));
+                return;
+            }
+            d => sort_keys(keys, d, out, &mut NoCount),
+        }
+        out.copy_from_slice(keys);
+    });
 }
 
 /// The sequential body of [`radix_sort_f64_with`].

@@ -1,5 +1,7 @@
 //! The `parallel` feature (compiled only with it): every parallel path gives what the
-//! sequential path gives, bit for bit, on inputs on both sides of the threshold (2¹⁶ items).
+//! sequential path gives, bit for bit, on inputs on both sides of the threshold (2¹⁶ items),
+//! in the default pool and, for the radix sorts, in pools of 1, 2 and 3 threads on skewed
+//! input.
 //! The sequential results come from the same functions run with a recording counter
 //! ([`Silent`]), which the parallel paths leave alone, or from an independent sort.
 
@@ -105,6 +107,172 @@ fn the_parallel_f64_radix_sort_is_the_sequential_one() {
         let b = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         assert_eq!(b(&parallel), b(&oracle), "n = {n}");
         assert_eq!(b(&sequential), b(&oracle), "n = {n}");
+    }
+}
+
+/// Runs `f` in rayon pools of 1, 2 and 3 threads (1: the sequential path; 3: more chunks
+/// and buckets in flight than cores) and returns the three results.
+fn in_pools<T: Send>(f: impl Fn() -> T + Sync) -> Vec<T> {
+    [1, 2, 3]
+        .into_iter()
+        .map(|k| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(k)
+                .build()
+                .unwrap();
+            pool.install(&f)
+        })
+        .collect()
+}
+
+/// Skewed `f64` inputs of `n` keys: all equal, two values, one value with a few others (one
+/// huge bucket), the specials (NaNs of both signs and payloads, ±0, ±∞, subnormals), uniform
+/// in [0, 1) (half the keys in the top binade), and keys equal in their top 40 bits.
+fn skewed_floats(n: usize, rng: &mut Rng) -> Vec<(&'static str, Vec<f64>)> {
+    let specials = [
+        0.0,
+        -0.0,
+        f64::NAN,
+        -f64::NAN,
+        f64::from_bits(0x7FF0_0000_0000_0001),
+        f64::from_bits(0xFFF8_0000_0000_0123),
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        5e-324,
+        -5e-324,
+        f64::MIN_POSITIVE / 3.0,
+        -f64::MIN_POSITIVE,
+    ];
+    let one = 1.0f64.to_bits();
+    vec![
+        ("all equal", vec![-2.5; n]),
+        (
+            "two values",
+            (0..n)
+                .map(|_| if rng.next_u64() % 2 == 0 { 0.0 } else { -0.0 })
+                .collect(),
+        ),
+        (
+            "one huge bucket",
+            (0..n)
+                .map(|k| if k % 97 == 0 { k as f64 } else { 1.0 })
+                .collect(),
+        ),
+        (
+            "specials",
+            (0..n)
+                .map(|_| specials[(rng.next_u64() % 12) as usize])
+                .collect(),
+        ),
+        (
+            "unit",
+            (0..n)
+                .map(|_| (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64)
+                .collect(),
+        ),
+        (
+            "equal top bits",
+            (0..n)
+                .map(|_| f64::from_bits(one + (rng.next_u64() & 0xFF_FFFF)))
+                .collect(),
+        ),
+    ]
+}
+
+#[test]
+fn the_parallel_f64_radix_sort_is_the_sequential_one_on_skewed_input_in_every_pool() {
+    let mut rng = Rng(6);
+    let b = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    for n in [65_535, 65_536, 300_000] {
+        for (what, v) in skewed_floats(n, &mut rng) {
+            let mut oracle = v.clone();
+            oracle.sort_unstable_by(f64::total_cmp);
+            let mut sequential = v.clone();
+            radix_sort_f64_with(&mut sequential, &mut Silent);
+            assert_eq!(b(&sequential), b(&oracle), "sequential, {what}, n = {n}");
+            for (k, sorted) in in_pools(|| {
+                let mut w = v.clone();
+                radix_sort_f64(&mut w);
+                w
+            })
+            .into_iter()
+            .enumerate()
+            {
+                assert_eq!(b(&sorted), b(&oracle), "{} threads, {what}, n = {n}", k + 1);
+            }
+        }
+    }
+}
+
+#[test]
+fn the_parallel_lexicographic_sort_is_the_comparison_sort_on_skewed_input_in_every_pool() {
+    let mut rng = Rng(7);
+    for n in [65_535, 65_536, 200_000] {
+        let mut coordinate = |m: u64| (rng.next_u64() % m) as f64;
+        let skewed: Vec<(&str, Vec<Point2>)> = vec![
+            ("all equal", vec![Point2::new(-1.5, 3.0); n]),
+            (
+                "equal x",
+                (0..n).map(|_| Point2::new(7.0, coordinate(1000))).collect(),
+            ),
+            (
+                "two points, signed zeros",
+                (0..n)
+                    .map(|k| match k % 3 {
+                        0 => Point2::new(0.0, -0.0),
+                        1 => Point2::new(-0.0, 0.0),
+                        _ => Point2::new(1.0, 1.0),
+                    })
+                    .collect(),
+            ),
+            (
+                "one huge bucket",
+                (0..n)
+                    .map(|k| {
+                        let x = if k % 50 == 0 {
+                            coordinate(1 << 40)
+                        } else {
+                            1.0
+                        };
+                        Point2::new(x, coordinate(1 << 20) * 1e-9)
+                    })
+                    .collect(),
+            ),
+            (
+                "duplicates",
+                (0..n)
+                    .map(|_| Point2::new(coordinate(300), coordinate(300)))
+                    .collect(),
+            ),
+            (
+                "subnormals and huge",
+                (0..n)
+                    .map(|_| {
+                        let x = f64::from_bits(coordinate(1 << 30) as u64);
+                        let y = if coordinate(2) == 0.0 {
+                            f64::MAX
+                        } else {
+                            -1e300
+                        };
+                        Point2::new(x, y)
+                    })
+                    .collect(),
+            ),
+        ];
+        for (what, pts) in skewed {
+            let expected = bits(&comparison_sorted_lex(&pts));
+            for (k, sorted) in in_pools(|| parallel_sorted_lex(&pts))
+                .into_iter()
+                .enumerate()
+            {
+                assert_eq!(
+                    bits(&sorted),
+                    expected,
+                    "{} threads, {what}, n = {n}",
+                    k + 1
+                );
+            }
+        }
     }
 }
 
