@@ -26,6 +26,22 @@
 //! (The 2026-12-03 figures on the quiet machine, before: `f64` 1.10× at 10⁶ and 0.97× at
 //! 10⁷, points 1.43× and 1.29×.) Under this load the new shape beats the old one everywhere
 //! but reaches the 1.6× goal only for points at 10⁶; the goal at 10⁷ is not shown.
+//!
+//! Re-measured the same evening on the quiet machine (load average 1.3 to 1.4, nothing else
+//! running; same harness, 7 and 9 rounds):
+//!
+//! | input, n | 2 threads / 1 thread, run 1 | run 2 |
+//! |---|---|---|
+//! | unit f64, 10⁶ | 0.74 | 0.73 |
+//! | mixed f64, 10⁶ | 1.02 | 0.78 |
+//! | uniform points, 10⁶ | 2.03 | 1.81 |
+//! | unit f64, 10⁷ | 1.22 | 1.29 |
+//! | mixed f64, 10⁷ | 1.09 | 1.18 |
+//! | uniform points, 10⁷ | 1.66 | 1.62 |
+//!
+//! So the lexicographic point sort reaches 1.6× at 10⁷ (1.29× before) and the `f64` sort
+//! gains at 10⁷ (0.97× before) but stays below it: its keys are 8 bytes against the points'
+//! 16-byte pairs, so the sort is bound by memory bandwidth, which the two cores share.
 
 use compgeo::count::NoCount;
 use compgeo::gen::{points, sequence, sequence_f64, PointKind, SequenceKind};
