@@ -175,13 +175,22 @@ fn the_searches_reach_the_chromatic_number_of_queen_and_mycielski_graphs() {
 }
 
 /// The exact phase: queen graphs split into their rows, so at the target n the searches
-/// either colour queen n×n with n colours (n = 7, 11, where χ = n) or prove that n colours
+/// either colour queen n×n with n colours (n = 7, 11, 12, 13, where χ = n) or prove that n colours
 /// do not suffice (n = 6, 8, 9, 10, where χ = n + 1); either way the colouring is optimal and
 /// the descent stops there, with most of a large budget unspent.
 #[test]
-fn the_exact_phase_settles_the_queens_up_to_queen11_11() {
+fn the_exact_phase_settles_the_queens_up_to_queen13_13() {
     let budget = 4_000_000_000;
-    for (side, chi) in [(6, 7), (7, 7), (8, 9), (9, 10), (10, 11), (11, 11)] {
+    for (side, chi) in [
+        (6, 7),
+        (7, 7),
+        (8, 9),
+        (9, 10),
+        (10, 11),
+        (11, 11),
+        (12, 12),
+        (13, 13),
+    ] {
         let g = generated(GraphKind::Queen, side, 0, 0);
         for (strategy, search) in SEARCHES {
             let (c, report) = search(&g, Budget::steps(budget), 3).unwrap();

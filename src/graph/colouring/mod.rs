@@ -3,7 +3,9 @@
 //! for fewer colours that start from DSatur: the tabu search (TabuCol) and the hybrid
 //! evolutionary algorithm (HEA), both paid from a [`Budget`] of steps and time. Before each
 //! target both try an exact search (`transversal.rs`) when the graph's core splits into
-//! cliques of the target size, which can prove the colouring optimal and end the search.
+//! cliques of the target size, which can prove the colouring optimal and end the search; it
+//! looks first among the colourings that an automorphism of the core maps to themselves
+//! (`symmetry.rs`).
 //!
 //! A colouring gives each vertex a colour so that adjacent vertices differ (seed
 //! [RD, §2.1] "Coloración de vértices", Definitions 2.4–2.6). The greedy
@@ -29,6 +31,7 @@ mod hea;
 mod largest_first;
 mod reduce;
 mod smallest_last;
+mod symmetry;
 mod tabu;
 mod transversal;
 

@@ -13,9 +13,10 @@
 //! takes at most 2m entries: the searches' tables are O(m) whatever t is.
 //!
 //! Before a search for t colours, the exact search of [`transversal`](super::transversal)
-//! may spend at most half of what is left of the budget. When the core splits into cliques
-//! of t vertices it finds a t-colouring, or proves that none exists, or at least proves
-//! that t colours are needed. A t-colouring found after such a proof (by the exact search
+//! may spend at most half of what is left of the budget (it looks first among the colourings
+//! a symmetry of the core preserves, [`symmetry`](super::symmetry)). When the core splits
+//! into cliques of t vertices it finds a t-colouring, or proves that none exists, or at
+//! least proves that t colours are needed. A t-colouring found after such a proof (by the exact search
 //! or by the search after it) is optimal, and so is the last colouring when no t-colouring
 //! exists: in those cases the descent stops there.
 

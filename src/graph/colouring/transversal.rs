@@ -20,12 +20,20 @@
 //!    uncovered edge is grown into a maximal clique of uncovered edges, and the largest
 //!    grown cliques are kept first);
 //! 3. lists every independent transversal, if there are not too many;
-//! 4. chooses the classes one at a time: the uncovered vertex in the fewest remaining
+//! 4. looks first for a colouring that an automorphism π of the core maps to itself, for
+//!    each of the automorphisms of [`symmetry`](super::symmetry) in turn (largest order
+//!    first), with at most half of what is left of its budget each: π permutes the
+//!    transversals, and the classes of such a colouring come in whole orbits, so the
+//!    search of step 5 runs over the orbits whose members are pairwise disjoint (each
+//!    counting as as many classes as it has members) instead of single transversals. A
+//!    failure here proves nothing about colourings without that symmetry;
+//! 5. chooses the classes one at a time: the uncovered vertex in the fewest remaining
 //!    transversals decides the branch, one branch per transversal through it. Two filters
 //!    prune (the clique filter of Vasquez): with `left` classes still to choose, a clique
 //!    of the cover with more than `left` uncovered vertices cannot be finished, so the node
 //!    fails; one with exactly `left` must be hit by every class still to choose, so
-//!    transversals missing it are dropped.
+//!    transversals missing it are dropped (a union of k classes must hold exactly k of
+//!    its uncovered vertices).
 //!
 //! The branches are tried in a random order or, on every other restart, hitting the cliques
 //! with the most uncovered vertices first. The search restarts with node limits that follow
@@ -45,13 +53,17 @@
 //! node of the split and of the enumeration, and O((T + c)·w) per node of the search
 //! (filtering, counting and ordering its transversals). The number of nodes is exponential
 //! in the worst case; every step is paid from the [`Meter`], so the search stops when its
-//! share of the budget does. Space O(n²/64 + T·w) words; cores of more than
+//! share of the budget does. Each automorphism of step 4 costs O(T·(r + w)) for its orbits
+//! (r vertices per transversal, one hash look-up of w words per image), besides the cost of
+//! finding the automorphisms ([`symmetry`](super::symmetry)). Space O(n²/64 + T·w) words; cores of more than
 //! [`MAX_VERTICES`] vertices or with more than [`MAX_CANDIDATE_WORDS`] words of
 //! transversals are not searched.
 
 use super::budget::Meter;
 use super::reduce::Core;
+use super::symmetry::automorphisms;
 use crate::gen::Rng;
+use std::collections::HashMap;
 
 /// What the exact search concluded about a t-colouring of a core.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -103,43 +115,164 @@ pub(super) fn colour_by_transversals(core: &Core, meter: &mut Meter, rng: &mut R
     let Some(transversals) = independent_transversals(&adjacency, &blocks, meter) else {
         return Outcome::AtLeast;
     };
-    let mut search = Search {
-        words,
-        transversals,
-        cover,
-        meter,
-        rng,
-        nodes: 0,
-        limit: 0,
-        weighted: false,
-        counts: vec![0; n],
-    };
-    let all: Vec<u32> = (0..(search.transversals.len() / words) as u32).collect();
-    let mut uncovered = vec![0u64; words];
-    for v in 0..n {
-        insert(&mut uncovered, v);
+    // Colourings that an automorphism maps to themselves first: far fewer candidates. All
+    // of it takes at most half of the phase's share, so the plain search keeps the rest.
+    let mut symmetric = meter.half();
+    if let Some(colour) =
+        colour_symmetrically(core, &adjacency, &transversals, &cover, &mut symmetric, rng)
+    {
+        meter.charge(symmetric.report().steps);
+        return Outcome::Found(colour);
     }
-    for restart in 1u64.. {
-        search.nodes = 0;
-        search.limit = RESTART_UNIT.saturating_mul(luby(restart));
-        search.weighted = restart % 2 == 1;
-        let mut chosen = Vec::with_capacity(t);
-        match search.node(&all, &uncovered, t, &mut chosen) {
-            Ok(true) => {
-                let mut colour = vec![0u32; n];
-                for (k, &i) in chosen.iter().enumerate() {
-                    for v in members(search.transversal(i as usize)) {
-                        colour[v] = k as u32;
-                    }
-                }
-                return Outcome::Found(colour);
-            }
-            Ok(false) => return Outcome::Impossible,
-            Err(Halt::NodeLimit) => continue,
-            Err(Halt::Budget) => return Outcome::AtLeast,
+    meter.charge(symmetric.report().steps);
+    let rows = Rows::plain(&transversals, words);
+    match Search::new(&rows, &cover, meter, rng).run(n, t) {
+        Ok(Some(colour)) => Outcome::Found(colour),
+        Ok(None) => Outcome::Impossible,
+        Err(_) => Outcome::AtLeast,
+    }
+}
+
+/// Step 4 of the [module docs](self): a t-colouring that one of the core's automorphisms
+/// maps to itself, trying each automorphism of [`automorphisms`] with at most half of what
+/// is left of `meter`; `None` if none turns up.
+fn colour_symmetrically(
+    core: &Core,
+    adjacency: &Sets,
+    transversals: &[u64],
+    cover: &[Vec<u64>],
+    meter: &mut Meter,
+    rng: &mut Rng,
+) -> Option<Vec<u32>> {
+    let (n, t, words) = (core.len(), core.colours, adjacency.words);
+    let adjacent = |u: usize, v: usize| contains(adjacency.row(u), v);
+    for image in automorphisms(core, &adjacent, meter) {
+        let rows = orbit_rows(transversals, words, &image, t, meter)?;
+        let mut share = meter.half();
+        let found = Search::new(&rows, cover, &mut share, rng).run(n, t);
+        meter.charge(share.report().steps);
+        if let Ok(Some(colour)) = found {
+            return Some(colour);
         }
     }
-    unreachable!("the restarts end by a result or by the budget")
+    None
+}
+
+/// The candidates of the search: unions of colour classes chosen together, one
+/// transversal each or a whole orbit of transversals under an automorphism.
+struct Rows<'t> {
+    /// Words per vertex set.
+    words: usize,
+    /// The independent transversals, `words` words each.
+    transversals: &'t [u64],
+    /// The rows' vertex sets, `words` words each, or `None` when the rows are the
+    /// transversals themselves.
+    unions: Option<Vec<u64>>,
+    /// Per row, the transversals it unites (its classes), as indices into `transversals`.
+    parts: Vec<Vec<u32>>,
+}
+
+impl<'t> Rows<'t> {
+    /// One row per transversal.
+    fn plain(transversals: &'t [u64], words: usize) -> Self {
+        Rows {
+            words,
+            transversals,
+            unions: None,
+            parts: (0..(transversals.len() / words) as u32)
+                .map(|i| vec![i])
+                .collect(),
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.parts.len()
+    }
+
+    /// The vertex set of row i.
+    fn set(&self, i: usize) -> &[u64] {
+        let sets = self.unions.as_deref().unwrap_or(self.transversals);
+        &sets[i * self.words..(i + 1) * self.words]
+    }
+
+    /// The vertex set of transversal i.
+    fn transversal(&self, i: usize) -> &[u64] {
+        &self.transversals[i * self.words..(i + 1) * self.words]
+    }
+
+    /// The number of colour classes row i holds.
+    fn classes(&self, i: usize) -> usize {
+        self.parts[i].len()
+    }
+}
+
+/// The orbits of the transversals (laid end to end, `words` words each) under the
+/// automorphism `image`, as rows: the union of each orbit whose members are pairwise
+/// disjoint and at most `t`, in the order of their first members. `None` if the meter
+/// stops the listing.
+///
+/// An automorphism maps an independent set of r vertices to another, and with r blocks
+/// that is again a transversal, so every image is in the list.
+fn orbit_rows<'t>(
+    transversals: &'t [u64],
+    words: usize,
+    image: &[u32],
+    t: usize,
+    meter: &mut Meter,
+) -> Option<Rows<'t>> {
+    let count = transversals.len() / words;
+    let set = |i: usize| &transversals[i * words..(i + 1) * words];
+    let index: HashMap<&[u64], u32> = (0..count).map(|i| (set(i), i as u32)).collect();
+    let mut unions = Vec::new();
+    let mut parts = Vec::new();
+    let mut seen = vec![false; count];
+    let mut mapped = vec![0u64; words];
+    for first in 0..count {
+        if seen[first] {
+            continue;
+        }
+        let mut orbit = vec![first as u32];
+        let mut union = set(first).to_vec();
+        let mut disjoint = true;
+        let mut at = first;
+        loop {
+            if !meter.spend(3 * words as u64) {
+                return None;
+            }
+            mapped.iter_mut().for_each(|w| *w = 0);
+            for v in members(set(at)) {
+                insert(&mut mapped, image[v] as usize);
+            }
+            let Some(&next) = index.get(mapped.as_slice()) else {
+                disjoint = false;
+                break;
+            };
+            at = next as usize;
+            if at == first {
+                break;
+            }
+            if orbit.len() == t {
+                // Longer than the classes there are: the walk stops here and the rest of
+                // the orbit is left unmarked (each of its members walks it again, as far).
+                disjoint = false;
+                break;
+            }
+            seen[at] = true;
+            disjoint &= !intersects(&union, set(at));
+            union.iter_mut().zip(set(at)).for_each(|(u, x)| *u |= x);
+            orbit.push(at as u32);
+        }
+        if disjoint {
+            unions.extend_from_slice(&union);
+            parts.push(orbit);
+        }
+    }
+    Some(Rows {
+        words,
+        transversals,
+        unions: Some(unions),
+        parts,
+    })
 }
 
 /// The i-th term of the Luby sequence (1, 1, 2, 1, 1, 2, 4, 1, …), `i ≥ 1`.
@@ -165,12 +298,9 @@ enum Halt {
 
 /// The branch-and-bound over classes of step 4 in the [module docs](self).
 struct Search<'a> {
-    /// Words per vertex set.
-    words: usize,
-    /// The independent transversals, `words` words each.
-    transversals: Vec<u64>,
+    rows: &'a Rows<'a>,
     /// The cliques of the edge cover, as vertex sets.
-    cover: Vec<Vec<u64>>,
+    cover: &'a [Vec<u64>],
     meter: &'a mut Meter,
     rng: &'a mut Rng,
     /// Nodes of this restart so far, and its limit.
@@ -178,13 +308,61 @@ struct Search<'a> {
     limit: u64,
     /// Whether this restart orders the branches by the cliques they hit (else at random).
     weighted: bool,
-    /// Scratch: per vertex, the transversals through it at the current node.
+    /// Scratch: per vertex, the rows through it at the current node.
     counts: Vec<u32>,
 }
 
-impl Search<'_> {
-    fn transversal(&self, i: usize) -> &[u64] {
-        &self.transversals[i * self.words..(i + 1) * self.words]
+impl<'a> Search<'a> {
+    fn new(
+        rows: &'a Rows<'a>,
+        cover: &'a [Vec<u64>],
+        meter: &'a mut Meter,
+        rng: &'a mut Rng,
+    ) -> Self {
+        Search {
+            rows,
+            cover,
+            meter,
+            rng,
+            nodes: 0,
+            limit: 0,
+            weighted: false,
+            counts: Vec::new(),
+        }
+    }
+
+    /// Chooses rows covering the `n` vertices with `t` classes in all, under restarts: the
+    /// colours by local vertex id, `None` if a restart searched the whole tree without
+    /// finding them, or `Err` when the meter stops the search.
+    fn run(&mut self, n: usize, t: usize) -> Result<Option<Vec<u32>>, Halt> {
+        let all: Vec<u32> = (0..self.rows.len() as u32).collect();
+        let mut whole = vec![0u64; self.rows.words];
+        (0..n).for_each(|v| insert(&mut whole, v));
+        self.counts = vec![0; n];
+        for restart in 1u64.. {
+            self.nodes = 0;
+            self.limit = RESTART_UNIT.saturating_mul(luby(restart));
+            self.weighted = restart % 2 == 1;
+            let mut chosen = Vec::with_capacity(t);
+            match self.node(&all, &whole, t, &mut chosen) {
+                Ok(true) => {
+                    let mut colour = vec![0u32; n];
+                    let classes = chosen
+                        .iter()
+                        .flat_map(|&row| &self.rows.parts[row as usize]);
+                    for (k, &part) in classes.enumerate() {
+                        for v in members(self.rows.transversal(part as usize)) {
+                            colour[v] = k as u32;
+                        }
+                    }
+                    return Ok(Some(colour));
+                }
+                Ok(false) => return Ok(None),
+                Err(Halt::NodeLimit) => continue,
+                Err(Halt::Budget) => return Err(Halt::Budget),
+            }
+        }
+        unreachable!("the restarts end by a result or by the budget")
     }
 
     fn pay(&mut self, steps: usize) -> Result<(), Halt> {
@@ -196,7 +374,7 @@ impl Search<'_> {
     }
 
     /// Whether `chosen` (pushed in order) can be completed to `left` more classes covering
-    /// `uncovered` from the transversals `viable` (all disjoint from the chosen ones).
+    /// `uncovered` from the rows `viable` (all disjoint from the chosen ones).
     fn node(
         &mut self,
         viable: &[u32],
@@ -211,11 +389,13 @@ impl Search<'_> {
         if uncovered.iter().all(|&w| w == 0) {
             return Ok(true);
         }
+        let words = self.rows.words;
         // The clique filter: a clique with more uncovered vertices than classes left fails
-        // the node; one with exactly as many must be hit by every class still to choose.
-        self.pay(self.cover.len() * self.words + self.counts.len())?;
+        // the node; one with exactly as many is hit once by every class still to choose,
+        // so a row of k classes must hold exactly k of its uncovered vertices.
+        self.pay(self.cover.len() * words + self.counts.len())?;
         let mut tight: Vec<Vec<u64>> = Vec::new();
-        for q in &self.cover {
+        for q in self.cover {
             let open = count_common(q, uncovered);
             if open > left {
                 return Ok(false);
@@ -224,20 +404,20 @@ impl Search<'_> {
                 tight.push(q.iter().zip(uncovered).map(|(a, b)| a & b).collect());
             }
         }
-        self.pay(viable.len() * self.words * (tight.len() + 1))?;
+        self.pay(viable.len() * words * (tight.len() + 1))?;
+        let rows = self.rows;
         let viable: Vec<u32> = viable
             .iter()
             .copied()
             .filter(|&i| {
-                let x = self.transversal(i as usize);
-                tight.iter().all(|q| intersects(q, x))
+                let (x, k) = (rows.set(i as usize), rows.classes(i as usize));
+                k <= left && tight.iter().all(|q| count_common(q, x) == k)
             })
             .collect();
-        // The uncovered vertex in the fewest transversals decides the branch.
+        // The uncovered vertex in the fewest rows decides the branch.
         self.counts.iter_mut().for_each(|c| *c = 0);
         for &i in &viable {
-            let x = &self.transversals[i as usize * self.words..(i as usize + 1) * self.words];
-            for v in members(x) {
+            for v in members(rows.set(i as usize)) {
                 self.counts[v] += 1;
             }
         }
@@ -250,20 +430,20 @@ impl Search<'_> {
         let mut branch: Vec<u32> = viable
             .iter()
             .copied()
-            .filter(|&i| contains(self.transversal(i as usize), pivot))
+            .filter(|&i| contains(rows.set(i as usize), pivot))
             .collect();
         self.order(&mut branch, uncovered)?;
         for b in branch {
-            self.pay(viable.len() * self.words)?;
-            let x = self.transversal(b as usize).to_vec();
+            self.pay(viable.len() * words)?;
+            let x = rows.set(b as usize);
             let rest: Vec<u32> = viable
                 .iter()
                 .copied()
-                .filter(|&i| !intersects(self.transversal(i as usize), &x))
+                .filter(|&i| !intersects(rows.set(i as usize), x))
                 .collect();
-            let still: Vec<u64> = uncovered.iter().zip(&x).map(|(u, b)| u & !b).collect();
+            let still: Vec<u64> = uncovered.iter().zip(x).map(|(u, b)| u & !b).collect();
             chosen.push(b);
-            if self.node(&rest, &still, left - 1, chosen)? {
+            if self.node(&rest, &still, left - rows.classes(b as usize), chosen)? {
                 return Ok(true);
             }
             chosen.pop();
@@ -279,7 +459,7 @@ impl Search<'_> {
         if !self.weighted {
             return Ok(());
         }
-        self.pay(branch.len() * self.cover.len() * self.words)?;
+        self.pay(branch.len() * self.cover.len() * self.rows.words)?;
         let open: Vec<u64> = self
             .cover
             .iter()
@@ -288,7 +468,7 @@ impl Search<'_> {
         let mut keyed: Vec<(u64, u32)> = branch
             .iter()
             .map(|&i| {
-                let x = self.transversal(i as usize);
+                let x = self.rows.set(i as usize);
                 let weight = self
                     .cover
                     .iter()
@@ -705,6 +885,62 @@ mod tests {
                 Outcome::Impossible => assert!(![5, 7, 11].contains(&side), "queen{side}"),
                 other => panic!("queen{side}: {other:?}"),
             }
+        }
+    }
+
+    #[test]
+    fn queen12_12_and_queen13_13_are_coloured_with_their_side() {
+        // χ = n for both; queen13_13 is found among the colourings the quarter turn of the
+        // board maps to themselves.
+        for side in [12, 13] {
+            let g = queen(side);
+            match exact(&g, side, u64::MAX, 5) {
+                Outcome::Found(colour) => assert_proper(&g, side, &colour),
+                other => panic!("queen{side}: {other:?}"),
+            }
+        }
+    }
+
+    /// Every row of `orbit_rows` is an orbit of transversals under the automorphism: each
+    /// part maps onto the next, and the parts are disjoint and make up the row.
+    #[test]
+    fn orbit_rows_are_disjoint_orbits() {
+        for side in [5, 7] {
+            let g = queen(side);
+            let core = Core::new(&g, side, &mut NoCount);
+            let n = core.len();
+            let words = n.div_ceil(64);
+            let adjacency = Sets::adjacency(&core, words);
+            let mut meter = Meter::new(&Budget::steps(u64::MAX));
+            let blocks = split_into_cliques(&adjacency, side, u64::MAX, &mut meter).unwrap();
+            let transversals = independent_transversals(&adjacency, &blocks, &mut meter).unwrap();
+            let adjacent = |u: usize, v: usize| contains(adjacency.row(u), v);
+            let choices = automorphisms(&core, &adjacent, &mut meter);
+            assert_eq!(choices.len(), 6, "queen{side}: the board's symmetries");
+            let mut sizes = Vec::new();
+            for image in &choices {
+                let rows = orbit_rows(&transversals, words, image, side, &mut meter).unwrap();
+                for i in 0..rows.len() {
+                    let parts = &rows.parts[i];
+                    let mut union = vec![0u64; words];
+                    for (k, &part) in parts.iter().enumerate() {
+                        let x = rows.transversal(part as usize);
+                        assert!(!intersects(&union, x), "queen{side}: parts overlap");
+                        union.iter_mut().zip(x).for_each(|(u, b)| *u |= b);
+                        let next = rows.transversal(parts[(k + 1) % parts.len()] as usize);
+                        let mut mapped = vec![0u64; words];
+                        members(x).for_each(|v| insert(&mut mapped, image[v] as usize));
+                        assert_eq!(mapped, next, "queen{side}: not an orbit");
+                    }
+                    assert_eq!(union, rows.set(i));
+                    sizes.push(parts.len());
+                }
+            }
+            // Rows of one and of several classes both occur.
+            assert!(
+                sizes.contains(&1) && sizes.iter().any(|&k| k > 1),
+                "{sizes:?}"
+            );
         }
     }
 
