@@ -40,8 +40,27 @@
 //! | uniform points, 10⁷ | 1.66 | 1.62 |
 //!
 //! So the lexicographic point sort reaches 1.6× at 10⁷ (1.29× before) and the `f64` sort
-//! gains at 10⁷ (0.97× before) but stays below it: its keys are 8 bytes against the points'
-//! 16-byte pairs, so the sort is bound by memory bandwidth, which the two cores share.
+//! gains at 10⁷ (0.97× before) but stays below it.
+//!
+//! 2026-12-04, later: the `f64` sort's parallel path made in place (no n-float buffer, whose
+//! page faults, zeroing and copy back the sequential sort never pays): the top partition
+//! shared by the threads, each permuting its own stripe of every bucket, then the buckets
+//! sorted in parallel; inputs below 2²¹ keys stay sequential. Same harness, 2 threads / 1
+//! thread, "1 thread" the sequential sort's median time:
+//!
+//! | input, n | 1 thread | run 1 (9 rounds, load 1.7–1.9) | run 2 (11 rounds, load 1.0–1.2) |
+//! |---|---|---|---|
+//! | unit f64, 10⁶ (sequential now) | 8.4 ms | 1.00–1.01 | — |
+//! | mixed f64, 10⁶ (sequential now) | 8.6 ms | 1.01–1.02 | — |
+//! | unit f64, 2.1·10⁶ | 22.4 ms | 0.95–1.04 | 1.43–1.70 |
+//! | mixed f64, 2.1·10⁶ | 23.0 ms | 1.11 | 1.38–1.85 |
+//! | unit f64, 4·10⁶ | 44.4 ms | — | 1.51–1.70 |
+//! | mixed f64, 4·10⁶ | 42.8 ms | — | 1.47–1.80 |
+//! | unit f64, 10⁷ | 118.7 ms | 1.62–1.76 | 1.73–1.76 |
+//! | mixed f64, 10⁷ | 107.0 ms | 1.79–1.82 | 1.75–1.76 |
+//!
+//! (Each run timed the 2-thread sort twice per round; the two figures are their medians.
+//! Before the threshold, the in-place path gained nothing at 5·10⁵ and 10⁶ keys: 0.85–1.03.)
 
 use compgeo::count::NoCount;
 use compgeo::gen::{points, sequence, sequence_f64, PointKind, SequenceKind};

@@ -36,8 +36,10 @@
 //! result types. `exact`: the arbitrary-precision rational scalar. `parallel` (off by
 //! default): the large batch paths use every core through rayon, from 2¹⁶ items up and only
 //! when nothing is counted (runs with [`NoCount`](count::NoCount)), with results identical
-//! to the sequential ones: the `f64` radix sort and the lexicographic point sort (the items
-//! distributed by their top digit, then the buckets sorted in parallel), the validation of a
+//! to the sequential ones: the lexicographic point sort (the items distributed by their top
+//! digit, then the buckets sorted in parallel), the `f64` radix sort from 2²¹ keys (the keys
+//! partitioned in place by their top digit, each thread permuting its own share, then the
+//! buckets sorted in parallel), the validation of a
 //! [`PointSet`](geometry::PointSet), the Akl–Toussaint filter (and so the hulls that sort
 //! through it), and the insertion order of the incremental Delaunay builder.
 //!

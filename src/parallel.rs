@@ -1,6 +1,6 @@
 //! The shared pieces of the `parallel` feature: the test that sends a batch to the threads,
-//! and the parallel distribution of items into buckets that the parallel radix sorts start
-//! with.
+//! and the parallel distribution of items into buckets that the parallel lexicographic sort
+//! starts with (the `f64` radix sort partitions in place instead, `src/sort/radix.rs`).
 //!
 //! The problem: distribute n items into b buckets by a digit of their key, as the stable
 //! counting pass of a radix sort does, with every thread doing an equal share and no `unsafe`.

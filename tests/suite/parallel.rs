@@ -204,6 +204,32 @@ fn the_parallel_f64_radix_sort_is_the_sequential_one_on_skewed_input_in_every_po
     }
 }
 
+/// From 2^21 keys the `f64` sort takes its parallel path (below, the two threads gained
+/// nothing on the benchmark machine): at that size, the uniform and the special keys.
+#[test]
+fn the_parallel_f64_radix_sort_is_the_sequential_one_from_two_million_keys() {
+    let mut rng = Rng(7);
+    let b = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    let n = 1 << 21;
+    for (what, v) in skewed_floats(n, &mut rng)
+        .into_iter()
+        .filter(|(what, _)| ["unit", "specials"].contains(what))
+    {
+        let mut oracle = v.clone();
+        oracle.sort_unstable_by(f64::total_cmp);
+        for (k, sorted) in in_pools(|| {
+            let mut w = v.clone();
+            radix_sort_f64(&mut w);
+            w
+        })
+        .into_iter()
+        .enumerate()
+        {
+            assert_eq!(b(&sorted), b(&oracle), "{} threads, {what}", k + 1);
+        }
+    }
+}
+
 #[test]
 fn the_parallel_lexicographic_sort_is_the_comparison_sort_on_skewed_input_in_every_pool() {
     let mut rng = Rng(7);
