@@ -43,7 +43,8 @@
 //! A refinement costs O((n + m)·r + n log n·r) for r rounds (r ≤ n); the base takes at most
 //! n refinements. The backtracking of step 3 is exponential in the worst case (on regular
 //! graphs that refinement cannot split), so it stops after [`NODE_LIMIT`] refinements; the
-//! closure costs O(|G|·g·n) for g generators. Every step is paid from the [`Meter`].
+//! closure costs O(|G|·g·n) for g generators, and the choices O(|G|·n) for the orders plus
+//! O(|G|·n) per choice for its powers. Every step is paid from the [`Meter`].
 
 use super::budget::Meter;
 use super::reduce::Core;
@@ -220,7 +221,8 @@ impl Finder<'_> {
         let n = self.core.len();
         let mut trace = Vec::new();
         loop {
-            let cost = self.core.edge_ends() + 2 * n as u64 * (1 + u64::from(n.ilog2()));
+            let cost = self.core.edge_ends()
+                + 2 * n as u64 * (1 + u64::from(usize::BITS - n.leading_zeros()));
             if !self.meter.spend(cost) {
                 return Err(Stop);
             }
@@ -328,51 +330,62 @@ fn closure(generators: &[Permutation], n: usize, meter: &mut Meter) -> Option<Ve
 }
 
 /// One element of each cyclic subgroup of `group` (step 4), largest order first, at most
-/// [`MAX_CHOICES`]; the identity is left out.
+/// [`MAX_CHOICES`]; the identity is left out. The orders come from the cycle lengths, and
+/// only the chosen elements' powers are listed, so the cost is O(|G|·n) steps.
 fn cyclic_choices(group: Vec<Permutation>, meter: &mut Meter) -> Vec<Permutation> {
+    let n = group.first().map_or(0, Vec::len) as u64;
+    if !meter.spend(group.len() as u64 * 2 * n) {
+        return Vec::new();
+    }
     let index: HashMap<&Permutation, usize> =
         group.iter().enumerate().map(|(i, g)| (g, i)).collect();
-    let mut powers: Vec<Vec<usize>> = Vec::with_capacity(group.len());
-    for g in &group {
-        // The powers g, g², … up to the identity.
-        let mut list = Vec::new();
-        let mut p = g.clone();
-        loop {
-            if !meter.spend(2 * g.len() as u64) {
-                return Vec::new();
-            }
-            let i = index[&p];
-            list.push(i);
-            if i == 0 {
-                break;
-            }
-            p = p.iter().map(|&v| g[v as usize]).collect();
-        }
-        powers.push(list);
-    }
+    let order: Vec<usize> = group.iter().map(|g| order_of(g)).collect();
     let mut by_order: Vec<usize> = (1..group.len()).collect();
     // Stable: equal orders keep the closure's order.
-    by_order.sort_by_key(|&i| std::cmp::Reverse(powers[i].len()));
+    by_order.sort_by_key(|&i| std::cmp::Reverse(order[i]));
     let mut covered = vec![false; group.len()];
-    let mut choices = Vec::new();
+    let mut choices: Vec<usize> = Vec::new();
     for i in by_order {
-        if covered[i] || choices.len() == MAX_CHOICES {
+        if choices.len() == MAX_CHOICES {
+            break;
+        }
+        if covered[i] {
             continue;
         }
-        // gᵏ generates ⟨g⟩ exactly when k is prime to the order.
-        let order = powers[i].len();
-        for (k, &j) in powers[i].iter().enumerate() {
-            if gcd(k + 1, order) == 1 {
-                covered[j] = true;
+        // gᵏ generates ⟨g⟩ exactly when k is prime to the order: those are covered by g.
+        let g = &group[i];
+        let mut power = g.clone();
+        for k in 1..order[i] {
+            if !meter.spend(3 * n) {
+                return choices.into_iter().map(|j| group[j].clone()).collect();
             }
+            if gcd(k, order[i]) == 1 {
+                covered[index[&power]] = true;
+            }
+            power = power.iter().map(|&v| g[v as usize]).collect();
         }
         choices.push(i);
     }
-    let mut group: Vec<Option<Permutation>> = group.into_iter().map(Some).collect();
-    choices
-        .into_iter()
-        .map(|i| group[i].take().expect("each choice once"))
-        .collect()
+    choices.into_iter().map(|j| group[j].clone()).collect()
+}
+
+/// The order of a permutation: the least common multiple of its cycle lengths.
+fn order_of(image: &[u32]) -> usize {
+    let mut seen = vec![false; image.len()];
+    let mut order = 1;
+    for start in 0..image.len() {
+        let mut length = 0;
+        let mut v = start;
+        while !seen[v] {
+            seen[v] = true;
+            v = image[v] as usize;
+            length += 1;
+        }
+        if length > 0 {
+            order = order / gcd(order, length) * length;
+        }
+    }
+    order
 }
 
 fn gcd(a: usize, b: usize) -> usize {
