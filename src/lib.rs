@@ -41,7 +41,8 @@
 //! partitioned in place by their top digit, each thread permuting its own share, then the
 //! buckets sorted in parallel), the validation of a
 //! [`PointSet`](geometry::PointSet), the Akl–Toussaint filter (and so the hulls that sort
-//! through it), and the insertion order of the incremental Delaunay builder.
+//! through it), the insertion order of the incremental Delaunay builder, and the cells of
+//! the Voronoi diagram (circumcentres and walks).
 //!
 //! ## Algorithms and their bounds
 //!

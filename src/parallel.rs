@@ -115,6 +115,25 @@ pub(crate) fn split_buckets<'a, S, T>(
     parts
 }
 
+/// The vectors of `parts` one after another, copied into place in parallel (each part into
+/// its own sub-slice of the output, cut with `split_at_mut`).
+pub(crate) fn concatenate<T: Copy + Default + Send + Sync>(parts: Vec<Vec<T>>) -> Vec<T> {
+    let total = parts.iter().map(Vec::len).sum();
+    let mut out = vec![T::default(); total];
+    let mut slots = Vec::with_capacity(parts.len());
+    let mut rest = out.as_mut_slice();
+    for part in &parts {
+        let (slot, tail) = std::mem::take(&mut rest).split_at_mut(part.len());
+        slots.push(slot);
+        rest = tail;
+    }
+    slots
+        .into_par_iter()
+        .zip(parts.par_iter())
+        .for_each(|(slot, part)| slot.copy_from_slice(part));
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

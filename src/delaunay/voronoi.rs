@@ -412,46 +412,166 @@ fn dual_local(t: &LocalTriangulation) -> Voronoi {
 /// from the vertex's outgoing hull edge (found by turning clockwise), so an unbounded cell
 /// lists its vertices from its clockwise-most triangle. `site(j)` is the input index of
 /// vertex `j`, which the rays name.
+///
+/// With the `parallel` feature and enough triangles, the circumcentres are computed and the
+/// cells walked on every thread: the walks in stretches of cells, concatenated in order, so
+/// the diagram is the sequential one.
 fn triangulated_cells<I: HalfEdgeId>(
     points: &[Point2],
     tri: &[I],
     halfedges: &[I],
     starts: &[I],
-    site: impl Fn(usize) -> usize,
+    site: impl Fn(usize) -> usize + Sync,
     v: &mut Voronoi,
 ) {
-    let at = |e: usize| tri[e].index();
+    (v.vertices, v.beyond) = circumcentres(points, tri);
+    #[cfg(feature = "parallel")]
+    if crate::parallel::enabled(tri.len() / 3) {
+        use rayon::prelude::*;
+        let stretch = (starts.len() / (4 * rayon::current_num_threads())).max(1 << 12);
+        let vertices = &v.vertices;
+        let parts: Vec<CellRows> = starts
+            .par_chunks(stretch)
+            .map(|starts| walk_cells(points, tri, halfedges, starts, &site, vertices))
+            .collect();
+        CellRows::concatenate(parts).into_diagram(v);
+        return;
+    }
+    walk_cells(points, tri, halfedges, starts, &site, &v.vertices).into_diagram(v);
+}
+
+/// The circumcentre of every triangle of `tri` (as [`ConstructedPoint::saturating`]), and
+/// those beyond the range of `f64` with their wide coordinates.
+fn circumcentres<I: HalfEdgeId>(
+    points: &[Point2],
+    tri: &[I],
+) -> (Vec<Point2>, Vec<(usize, [WideFloat; 2])>) {
+    let centre = |c: &[I]| {
+        let [a, b, c] = [c[0], c[1], c[2]].map(|i| points[i.index()]);
+        circumcentre(a, b, c)
+    };
+    #[cfg(feature = "parallel")]
+    if crate::parallel::enabled(tri.len() / 3) {
+        use rayon::prelude::*;
+        let vertices: Vec<Point2> = tri
+            .par_chunks_exact(3)
+            .map(|c| centre(c).saturating())
+            .collect();
+        // A vertex beyond the range saturates to ±f64::MAX; the rare finite vertex there
+        // is told apart by constructing it again.
+        let beyond = vertices
+            .par_iter()
+            .enumerate()
+            .filter(|(_, p)| [p.x, p.y].iter().any(|z| z.abs() == f64::MAX))
+            .filter_map(|(t, _)| match centre(&tri[3 * t..3 * t + 3]) {
+                ConstructedPoint::Finite(_) => None,
+                far => Some((t, far.wide())),
+            })
+            .collect();
+        return (vertices, beyond);
+    }
     let mut beyond = Vec::new();
-    v.vertices = tri
+    let vertices = tri
         .chunks_exact(3)
         .enumerate()
-        .map(|(t, c)| {
-            let [a, b, c] = [c[0], c[1], c[2]].map(|i| points[i.index()]);
-            match circumcentre(a, b, c) {
-                ConstructedPoint::Finite(p) => p,
-                far => {
-                    beyond.push((t, far.wide()));
-                    far.saturating()
-                }
+        .map(|(t, c)| match centre(c) {
+            ConstructedPoint::Finite(p) => p,
+            far => {
+                beyond.push((t, far.wide()));
+                far.saturating()
             }
         })
         .collect();
-    v.beyond = beyond;
-    let mut ids = Vec::with_capacity(tri.len());
-    let mut across = Vec::with_capacity(tri.len());
-    v.site_points = Vec::with_capacity(starts.len());
-    let mut start = Vec::with_capacity(starts.len() + 1);
-    let mut ray_start = Vec::with_capacity(starts.len() + 1);
-    start.push(0);
-    ray_start.push(0);
+    (vertices, beyond)
+}
+
+/// The rows of a stretch of cells, as [`walk_cells`] appends them.
+#[derive(Default)]
+struct CellRows {
+    ids: Vec<usize>,
+    across: Vec<u32>,
+    site_points: Vec<Point2>,
+    rays: Vec<Ray>,
+    /// Each cell's end in `ids` and in `rays`.
+    ends: Vec<usize>,
+    ray_ends: Vec<usize>,
+}
+
+impl CellRows {
+    /// Moves the rows into the diagram's arrays.
+    fn into_diagram(self, v: &mut Voronoi) {
+        v.vertex_ids = self.ids;
+        v.across = self.across;
+        v.site_points = self.site_points;
+        v.rays = self.rays;
+        v.vertex_start = std::iter::once(0).chain(self.ends).collect();
+        v.ray_start = std::iter::once(0).chain(self.ray_ends).collect();
+    }
+
+    /// The stretches one after another, the ends shifted by what comes before.
+    #[cfg(feature = "parallel")]
+    fn concatenate(parts: Vec<CellRows>) -> CellRows {
+        use crate::parallel::concatenate;
+        let (mut id_offset, mut ray_offset) = (0, 0);
+        let mut ends = Vec::with_capacity(parts.len());
+        let mut ray_ends = Vec::with_capacity(parts.len());
+        for part in &parts {
+            ends.push(part.ends.iter().map(|e| e + id_offset).collect::<Vec<_>>());
+            ray_ends.push(
+                part.ray_ends
+                    .iter()
+                    .map(|e| e + ray_offset)
+                    .collect::<Vec<_>>(),
+            );
+            id_offset += part.ids.len();
+            ray_offset += part.rays.len();
+        }
+        let (mut ids, mut across, mut site_points, mut rays) = (vec![], vec![], vec![], vec![]);
+        for part in parts {
+            ids.push(part.ids);
+            across.push(part.across);
+            site_points.push(part.site_points);
+            rays.push(part.rays);
+        }
+        CellRows {
+            ids: concatenate(ids),
+            across: concatenate(across),
+            site_points: concatenate(site_points),
+            rays: rays.concat(),
+            ends: concatenate(ends),
+            ray_ends: concatenate(ray_ends),
+        }
+    }
+}
+
+/// The rows of the cells of `starts` (see [`triangulated_cells`]), with the circumcentres
+/// `vertices` for the rays' origins.
+fn walk_cells<I: HalfEdgeId>(
+    points: &[Point2],
+    tri: &[I],
+    halfedges: &[I],
+    starts: &[I],
+    site: &impl Fn(usize) -> usize,
+    vertices: &[Point2],
+) -> CellRows {
+    let at = |e: usize| tri[e].index();
+    let mut rows = CellRows {
+        ids: Vec::with_capacity(6 * starts.len()),
+        across: Vec::with_capacity(6 * starts.len()),
+        site_points: Vec::with_capacity(starts.len()),
+        rays: Vec::new(),
+        ends: Vec::with_capacity(starts.len()),
+        ray_ends: Vec::with_capacity(starts.len()),
+    };
     for &any in starts {
+        let cell_start = rows.ids.len();
         let mut first = any.index();
-        v.site_points.push(points[at(first)]);
+        rows.site_points.push(points[at(first)]);
         let mut e = first;
         loop {
-            ids.push(e / 3);
+            rows.ids.push(e / 3);
             // The next triangle counter-clockwise shares the edge to `at(prev(e))`.
-            across.push(site(at(prev(e))) as u32);
+            rows.across.push(site(at(prev(e))) as u32);
             // The previous half-edge ends at the vertex; its twin leaves it in the next
             // triangle counter-clockwise.
             let twin = halfedges[prev(e)];
@@ -459,8 +579,8 @@ fn triangulated_cells<I: HalfEdgeId>(
                 if halfedges[first] != I::NONE {
                     // A hull vertex reached from the middle of its fan: start again from
                     // its outgoing hull edge, the last one turning clockwise.
-                    ids.truncate(*start.last().unwrap_or(&0));
-                    across.truncate(ids.len());
+                    rows.ids.truncate(cell_start);
+                    rows.across.truncate(cell_start);
                     while halfedges[first] != I::NONE {
                         first = next(halfedges[first].index());
                     }
@@ -470,13 +590,13 @@ fn triangulated_cells<I: HalfEdgeId>(
                 // Arrive along the bisector of the outgoing hull edge `s -> q`, leave
                 // along that of the incoming one `r -> s`; both point outwards.
                 let (s, q, r) = (at(first), at(next(first)), at(prev(e)));
-                v.rays.push(Ray {
-                    origin: v.vertices[first / 3],
+                rows.rays.push(Ray {
+                    origin: vertices[first / 3],
                     direction: outward_normal(points[s], points[q]),
                     sites: [site(s), site(q)],
                 });
-                v.rays.push(Ray {
-                    origin: v.vertices[e / 3],
+                rows.rays.push(Ray {
+                    origin: vertices[e / 3],
                     direction: outward_normal(points[r], points[s]),
                     sites: [site(s), site(r)],
                 });
@@ -487,13 +607,10 @@ fn triangulated_cells<I: HalfEdgeId>(
                 break;
             }
         }
-        start.push(ids.len());
-        ray_start.push(v.rays.len());
+        rows.ends.push(rows.ids.len());
+        rows.ray_ends.push(rows.rays.len());
     }
-    v.vertex_ids = ids;
-    v.across = across;
-    v.vertex_start = start;
-    v.ray_start = ray_start;
+    rows
 }
 
 /// The cells of collinear sites (or of one site): the hull lists them along their line.
@@ -545,7 +662,7 @@ fn collinear_cells(points: &[Point2], t: &Triangulation, v: &mut Voronoi) {
 
 /// The index type of a triangulation's arrays: `usize` in a [`Triangulation`], `u32` in the
 /// builder's own.
-trait HalfEdgeId: Copy + PartialEq {
+trait HalfEdgeId: Copy + PartialEq + Send + Sync {
     /// The value of a hull half-edge's missing opposite.
     const NONE: Self;
     fn index(self) -> usize;
@@ -571,4 +688,42 @@ impl HalfEdgeId for u32 {
 fn outward_normal(a: Point2, b: Point2) -> Point2 {
     let d = unit_direction(a, b);
     Point2::new(d.y, -d.x)
+}
+
+#[cfg(all(test, feature = "parallel"))]
+mod tests {
+    use super::*;
+
+    /// The parallel circumcentres keep the vertices beyond the range of `f64` (saturated,
+    /// and listed with their wide coordinates) exactly as the sequential ones do.
+    #[test]
+    fn parallel_circumcentres_list_the_same_vertices_beyond_the_range() {
+        let points = [
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 0.0),
+            Point2::new(0.0, 1.0),
+            // Nearly collinear at the top of the range: the centre is far beyond it.
+            Point2::new(-1e308, 0.0),
+            Point2::new(1e308, 0.0),
+            Point2::new(0.0, 1e-300),
+        ];
+        let tri: Vec<u32> = (0..70_000u32)
+            .flat_map(|t| if t % 3 == 0 { [3, 4, 5] } else { [0, 1, 2] })
+            .collect();
+        let pool = |threads| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .expect("a small pool")
+        };
+        let sequential = pool(1).install(|| circumcentres(&points, &tri));
+        assert_eq!(sequential.1.len(), 70_000usize.div_ceil(3));
+        assert!(sequential.0[0].y.abs() == f64::MAX);
+        for threads in [2, 3] {
+            assert_eq!(
+                pool(threads).install(|| circumcentres(&points, &tri)),
+                sequential
+            );
+        }
+    }
 }

@@ -6,7 +6,9 @@
 //! ([`Silent`]), which the parallel paths leave alone, or from an independent sort.
 
 use compgeo::count::{NoCount, Silent};
-use compgeo::delaunay::{check_delaunay, divide_and_conquer_with, incremental, Triangulation};
+use compgeo::delaunay::{
+    check_delaunay, divide_and_conquer_with, dual, incremental, voronoi, Triangulation,
+};
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::{comparison_sorted_lex, parallel_sorted_lex, Point2, PointSet};
 use compgeo::hull::{
@@ -409,6 +411,37 @@ fn parallel_delaunay_paths_equal_the_sequential_ones() {
         divide_and_conquer_with(&set, &mut NoCount).unwrap(),
         divide_and_conquer_with(&set, &mut Silent).unwrap()
     );
+}
+
+/// The Voronoi cells (the builder's own dual, and the dual of a given triangulation) are
+/// the same in pools of 1, 2 and 3 threads: circumcentres and walks in parallel change
+/// nothing, on inputs large enough to take the parallel path (2¹⁶ triangles), with
+/// duplicates and cocircular points among them.
+#[test]
+fn parallel_voronoi_cells_equal_the_sequential_ones() {
+    let grid = points(PointKind::Grid, 40_000, 41).unwrap();
+    let disk = points(PointKind::UniformDisk, 40_000, 42).unwrap();
+    for (what, pts) in [
+        (
+            "uniform",
+            points(PointKind::UniformSquare, 40_000, 43).unwrap(),
+        ),
+        (
+            "clustered",
+            points(PointKind::Clustered, 60_000, 44).unwrap(),
+        ),
+        ("grid with duplicates", with_duplicates(&grid, 5)),
+        ("disk with duplicates", with_duplicates(&disk, 6)),
+    ] {
+        let diagrams = in_pools(|| voronoi(&pts).unwrap());
+        assert!(diagrams[0].vertices.len() >= 1 << 16, "{what}: too small");
+        assert_eq!(diagrams[1], diagrams[0], "{what}, 2 threads");
+        assert_eq!(diagrams[2], diagrams[0], "{what}, 3 threads");
+        let t = incremental(&pts).unwrap();
+        let duals = in_pools(|| dual(&pts, &t).unwrap());
+        assert_eq!(duals[1], duals[0], "{what}, dual, 2 threads");
+        assert_eq!(duals[2], duals[0], "{what}, dual, 3 threads");
+    }
 }
 
 /// SplitMix64: a small deterministic source for the test data.
