@@ -26,12 +26,14 @@
 //!    bᵢ was taken from, not already reached from bᵢ by the generators found so far (they
 //!    all fix b₁ … bᵢ₋₁), a backtracking search looks for an automorphism that fixes
 //!    b₁ … bᵢ₋₁ and sends bᵢ to w: it individualises bᵢ on one side and w on the other,
-//!    refines both, compares the two refinements round by round, and recurses on the
+//!    refines both, compares the two refinements' traces (every round's cells, their
+//!    signatures and sizes), and recurses on the
 //!    first non-singleton cell until every cell is a vertex; the bijection is then checked
 //!    against every edge. The generators found generate the whole group (the search for
 //!    each w is exhaustive, and the orbit test only skips vertices an automorphism already
 //!    reaches), unless a limit stops it, in which case they generate a subgroup.
-//! 4. **Choices.** The group is closed from its generators up to [`MAX_GROUP`] elements,
+//! 4. **Choices.** The group is closed from its generators up to [`MAX_GROUP`] elements
+//!    (a larger group is not listed: its first generators are used as they are),
 //!    and one element of each cyclic subgroup is kept, the largest orders first: invariance
 //!    under π is invariance under every power of π, so π and its generators of ⟨π⟩ give the
 //!    same search, and a larger order gives a smaller one.
@@ -42,9 +44,12 @@
 //!
 //! A refinement costs O((n + m)·r + n log n·r) for r rounds (r ≤ n); the base takes at most
 //! n refinements. The backtracking of step 3 is exponential in the worst case (on regular
-//! graphs that refinement cannot split), so it stops after [`NODE_LIMIT`] refinements; the
-//! closure costs O(|G|·g·n) for g generators, and the choices O(|G|·n) for the orders plus
-//! O(|G|·n) per choice for its powers. Every step is paid from the [`Meter`].
+//! graphs that refinement cannot split), so the whole search stops after [`NODE_LIMIT`]
+//! refinements; each level's orbit test costs O(n + n·g) for g generators, once per level
+//! and once per generator found. The closure costs O(|G|·g·n), and the choices O(|G|·n)
+//! for the orders plus O(|G|·n) per choice for its powers. Every step is paid from the
+//! [`Meter`]. Space: O(L·n) for the colourings of a base of L ≤ n levels, O(|G|·n) for the
+//! group, |G| ≤ [`MAX_GROUP`].
 
 use super::budget::Meter;
 use super::reduce::Core;
@@ -56,7 +61,8 @@ pub(super) const MAX_GROUP: usize = 512;
 /// The most automorphisms handed to the search, one per cyclic subgroup.
 pub(super) const MAX_CHOICES: usize = 8;
 
-/// The most refinements the whole generator search of step 3 may make.
+/// The most refinements the whole search may make: those of the base (steps 1 and 2) and
+/// those of the generator search (step 3).
 pub(super) const NODE_LIMIT: u64 = 4096;
 
 /// A permutation of the core's vertices: `image[v]` is where v goes.
@@ -64,7 +70,10 @@ pub(super) type Permutation = Vec<u32>;
 
 /// Up to [`MAX_CHOICES`] automorphisms of `core`, each generating a different cyclic
 /// subgroup, those of largest order first; none if the core has no symmetry the search
-/// found or the meter stops it. `adjacent(u, v)` tells whether u and v are adjacent.
+/// found, or if the meter stops it before it found any. When the group is too large to
+/// list ([`MAX_GROUP`]) or the meter stops the closure, the first generators found (at the
+/// deepest levels of the base, often involutions moving few vertices) stand in for the
+/// choices. `adjacent(u, v)` tells whether u and v are adjacent.
 pub(super) fn automorphisms(
     core: &Core,
     adjacent: &dyn Fn(usize, usize) -> bool,
@@ -111,8 +120,9 @@ struct Finder<'a> {
 }
 
 impl Finder<'_> {
-    /// The generators of step 3, or `Err` if a limit stopped the search before it found
-    /// any.
+    /// The generators of step 3: all that the search found before a limit stopped it
+    /// (possibly none), or `Err` if a limit stopped it while it built the base (steps 1
+    /// and 2).
     fn generators(&mut self) -> Result<Vec<Permutation>, Stop> {
         let n = self.core.len();
         let mut unit = Colouring {
@@ -142,14 +152,23 @@ impl Finder<'_> {
             let Ok(fixed_trace) = self.refine(&mut fixed) else {
                 break;
             };
+            // The orbit of the base point under the generators so far, again only when a
+            // generator is added.
+            let mut reached = self.orbit_of(*base, &generators)?;
             for w in members_of(colouring, cell).collect::<Vec<_>>() {
-                if orbit_of(*base, &generators, n).contains(&w) {
+                if reached[w] {
                     continue;
                 }
                 let mut image = colouring.clone();
                 individualise(&mut image, w);
                 match self.extend(&fixed, &fixed_trace, image) {
-                    Ok(Some(found)) => generators.push(found),
+                    Ok(Some(found)) => {
+                        generators.push(found);
+                        match self.orbit_of(*base, &generators) {
+                            Ok(orbit) => reached = orbit,
+                            Err(Stop) => return Ok(generators),
+                        }
+                    }
                     Ok(None) => {}
                     Err(Stop) => return Ok(generators),
                 }
@@ -187,6 +206,34 @@ impl Finder<'_> {
             }
         }
         Ok(None)
+    }
+
+    /// Which vertices the permutations in `generators` reach from `v`, paying n + g per
+    /// vertex reached for g generators.
+    fn orbit_of(&mut self, v: usize, generators: &[Permutation]) -> Result<Vec<bool>, Stop> {
+        let n = self.core.len();
+        let mut reached = vec![false; n];
+        reached[v] = true;
+        let mut orbit = vec![v];
+        let mut next = 0;
+        if !self.meter.spend(n as u64) {
+            return Err(Stop);
+        }
+        while next < orbit.len() {
+            if !self.meter.spend(generators.len() as u64 + 1) {
+                return Err(Stop);
+            }
+            let u = orbit[next];
+            next += 1;
+            for g in generators {
+                let w = g[u] as usize;
+                if !reached[w] {
+                    reached[w] = true;
+                    orbit.push(w);
+                }
+            }
+        }
+        Ok(reached)
     }
 
     /// The bijection between two discrete colourings (the vertex of each colour on the left
@@ -282,26 +329,6 @@ fn first_open_cell(colouring: &Colouring) -> Option<u32> {
 /// The vertices of colour `cell`, in increasing order.
 fn members_of(colouring: &Colouring, cell: u32) -> impl Iterator<Item = usize> + '_ {
     (0..colouring.cell.len()).filter(move |&v| colouring.cell[v] == cell)
-}
-
-/// The vertices the permutations in `generators` reach from `v`.
-fn orbit_of(v: usize, generators: &[Permutation], n: usize) -> Vec<usize> {
-    let mut seen = vec![false; n];
-    seen[v] = true;
-    let mut orbit = vec![v];
-    let mut next = 0;
-    while next < orbit.len() {
-        let u = orbit[next];
-        next += 1;
-        for g in generators {
-            let w = g[u] as usize;
-            if !seen[w] {
-                seen[w] = true;
-                orbit.push(w);
-            }
-        }
-    }
-    orbit
 }
 
 /// The group the generators generate, identity first, in the order found; `None` if it has
@@ -571,7 +598,8 @@ mod tests {
 
     #[test]
     fn graphs_without_symmetry_and_an_empty_budget_give_no_choices() {
-        // A path with a pendant vertex off its second vertex: only the identity.
+        // A triangle 0–1–4 with the path 1–2–3 hanging off vertex 1: swapping 0 and 4 is the
+        // only symmetry.
         let g = Graph::from_edges(5, &[[0, 1], [1, 2], [2, 3], [1, 4], [4, 0]]).unwrap();
         let core = core_of(&g);
         let mut meter = Meter::new(&Budget::steps(u64::MAX));

@@ -145,9 +145,23 @@ fn colour_symmetrically(
     rng: &mut Rng,
 ) -> Option<Vec<u32>> {
     let (n, t, words) = (core.len(), core.colours, adjacency.words);
+    let count = transversals.len() / words;
+    if count < t {
+        // Not even t transversals: the plain search proves at once that none exists.
+        return None;
+    }
     let adjacent = |u: usize, v: usize| contains(adjacency.row(u), v);
-    for image in automorphisms(core, &adjacent, meter) {
-        let rows = orbit_rows(transversals, words, &image, t, meter)?;
+    let choices = automorphisms(core, &adjacent, meter);
+    if choices.is_empty() || !meter.spend(2 * transversals.len() as u64) {
+        return None;
+    }
+    let index: HashMap<&[u64], u32> = transversals
+        .chunks_exact(words)
+        .enumerate()
+        .map(|(i, set)| (set, i as u32))
+        .collect();
+    for image in choices {
+        let rows = orbit_rows(transversals, &index, words, &image, t, meter)?;
         let mut share = meter.half();
         let found = Search::new(&rows, cover, &mut share, rng).run(n, t);
         meter.charge(share.report().steps);
@@ -215,6 +229,7 @@ impl<'t> Rows<'t> {
 /// that is again a transversal, so every image is in the list.
 fn orbit_rows<'t>(
     transversals: &'t [u64],
+    index: &HashMap<&[u64], u32>,
     words: usize,
     image: &[u32],
     t: usize,
@@ -222,7 +237,8 @@ fn orbit_rows<'t>(
 ) -> Option<Rows<'t>> {
     let count = transversals.len() / words;
     let set = |i: usize| &transversals[i * words..(i + 1) * words];
-    let index: HashMap<&[u64], u32> = (0..count).map(|i| (set(i), i as u32)).collect();
+    // Every transversal has as many vertices as there are blocks.
+    let size = set(0).iter().map(|w| w.count_ones() as u64).sum::<u64>();
     let mut unions = Vec::new();
     let mut parts = Vec::new();
     let mut seen = vec![false; count];
@@ -236,7 +252,7 @@ fn orbit_rows<'t>(
         let mut disjoint = true;
         let mut at = first;
         loop {
-            if !meter.spend(3 * words as u64) {
+            if !meter.spend(3 * words as u64 + size) {
                 return None;
             }
             mapped.iter_mut().for_each(|w| *w = 0);
@@ -296,7 +312,7 @@ enum Halt {
     Budget,
 }
 
-/// The branch-and-bound over classes of step 4 in the [module docs](self).
+/// The branch-and-bound over classes of step 5 in the [module docs](self).
 struct Search<'a> {
     rows: &'a Rows<'a>,
     /// The cliques of the edge cover, as vertex sets.
@@ -310,6 +326,8 @@ struct Search<'a> {
     weighted: bool,
     /// Scratch: per vertex, the rows through it at the current node.
     counts: Vec<u32>,
+    /// The vertices of one class (one transversal): n / t.
+    class_size: usize,
 }
 
 impl<'a> Search<'a> {
@@ -328,6 +346,7 @@ impl<'a> Search<'a> {
             limit: 0,
             weighted: false,
             counts: Vec::new(),
+            class_size: 0,
         }
     }
 
@@ -339,6 +358,7 @@ impl<'a> Search<'a> {
         let mut whole = vec![0u64; self.rows.words];
         (0..n).for_each(|v| insert(&mut whole, v));
         self.counts = vec![0; n];
+        self.class_size = n / t;
         for restart in 1u64.. {
             self.nodes = 0;
             self.limit = RESTART_UNIT.saturating_mul(luby(restart));
@@ -415,6 +435,8 @@ impl<'a> Search<'a> {
             })
             .collect();
         // The uncovered vertex in the fewest rows decides the branch.
+        let visits: usize = viable.iter().map(|&i| rows.classes(i as usize)).sum();
+        self.pay(visits * self.class_size)?;
         self.counts.iter_mut().for_each(|c| *c = 0);
         for &i in &viable {
             for v in members(rows.set(i as usize)) {
@@ -917,9 +939,15 @@ mod tests {
             let adjacent = |u: usize, v: usize| contains(adjacency.row(u), v);
             let choices = automorphisms(&core, &adjacent, &mut meter);
             assert_eq!(choices.len(), 6, "queen{side}: the board's symmetries");
+            let index: HashMap<&[u64], u32> = transversals
+                .chunks_exact(words)
+                .enumerate()
+                .map(|(i, set)| (set, i as u32))
+                .collect();
             let mut sizes = Vec::new();
             for image in &choices {
-                let rows = orbit_rows(&transversals, words, image, side, &mut meter).unwrap();
+                let rows = orbit_rows(&transversals, &index, words, image, side, &mut meter);
+                let rows = rows.unwrap();
                 for i in 0..rows.len() {
                     let parts = &rows.parts[i];
                     let mut union = vec![0u64; words];
