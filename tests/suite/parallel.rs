@@ -181,6 +181,15 @@ fn skewed_floats(n: usize, rng: &mut Rng) -> Vec<(&'static str, Vec<f64>)> {
     ]
 }
 
+/// The bits of `v` sorted by `radix_sort_f64` in pools of 1, 2 and 3 threads.
+fn sorted_in_every_pool(v: &[f64]) -> Vec<Vec<u64>> {
+    in_pools(|| {
+        let mut w = v.to_vec();
+        radix_sort_f64(&mut w);
+        w.iter().map(|x| x.to_bits()).collect()
+    })
+}
+
 #[test]
 fn the_parallel_f64_radix_sort_is_the_sequential_one_on_skewed_input_in_every_pool() {
     let mut rng = Rng(6);
@@ -192,15 +201,8 @@ fn the_parallel_f64_radix_sort_is_the_sequential_one_on_skewed_input_in_every_po
             let mut sequential = v.clone();
             radix_sort_f64_with(&mut sequential, &mut Silent);
             assert_eq!(b(&sequential), b(&oracle), "sequential, {what}, n = {n}");
-            for (k, sorted) in in_pools(|| {
-                let mut w = v.clone();
-                radix_sort_f64(&mut w);
-                w
-            })
-            .into_iter()
-            .enumerate()
-            {
-                assert_eq!(b(&sorted), b(&oracle), "{} threads, {what}, n = {n}", k + 1);
+            for (k, sorted) in sorted_in_every_pool(&v).into_iter().enumerate() {
+                assert_eq!(sorted, b(&oracle), "{} threads, {what}, n = {n}", k + 1);
             }
         }
     }
@@ -219,15 +221,8 @@ fn the_parallel_f64_radix_sort_is_the_sequential_one_from_two_million_keys() {
     {
         let mut oracle = v.clone();
         oracle.sort_unstable_by(f64::total_cmp);
-        for (k, sorted) in in_pools(|| {
-            let mut w = v.clone();
-            radix_sort_f64(&mut w);
-            w
-        })
-        .into_iter()
-        .enumerate()
-        {
-            assert_eq!(b(&sorted), b(&oracle), "{} threads, {what}", k + 1);
+        for (k, sorted) in sorted_in_every_pool(&v).into_iter().enumerate() {
+            assert_eq!(sorted, b(&oracle), "{} threads, {what}", k + 1);
         }
     }
 }
