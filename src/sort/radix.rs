@@ -159,15 +159,7 @@ fn par_sort(v: &mut [f64]) {
     let first = order_key(v[0]);
     let diff = v
         .par_chunks_mut(PAR_CHUNK)
-        .map(|chunk| {
-            let mut diff = 0;
-            for x in chunk.iter_mut() {
-                let k = order_key(*x);
-                diff |= k ^ first;
-                *x = f64::from_bits(k);
-            }
-            diff
-        })
+        .map(|chunk| to_keys_against(chunk, first))
         .reduce(|| 0, |a, b| a | b);
     if diff == 0 {
         v.par_chunks_mut(PAR_CHUNK).for_each(to_floats);
@@ -578,7 +570,12 @@ fn insertion<C: Counter>(v: &mut [f64], budget: usize, counter: &mut C) -> bool 
 
 /// Turns the floats of `v` into keys in place; returns the bits in which the keys differ.
 fn to_keys(v: &mut [f64]) -> u64 {
-    let first = order_key(v[0]);
+    to_keys_against(v, order_key(v[0]))
+}
+
+/// Turns the floats of `v` into keys in place; returns the bits in which they differ from
+/// the key `first`.
+fn to_keys_against(v: &mut [f64], first: u64) -> u64 {
     let mut diff = 0;
     for x in v.iter_mut() {
         let k = order_key(*x);
