@@ -129,42 +129,42 @@ impl Finder<'_> {
             cell: vec![0; n],
             cells: usize::from(n > 0),
         };
-        self.refine(&mut unit)?;
-        // Step 2: the base and the colouring at each level before its point is taken.
-        let mut levels: Vec<(Colouring, usize)> = Vec::new();
-        let mut current = unit;
-        while let Some(cell) = first_open_cell(&current) {
-            let base = members_of(&current, cell)
+        let unit_trace = self.refine(&mut unit)?;
+        // Step 2: the base, and the chain of its refined colourings with their traces:
+        // chain[k + 1] is chain[k] with bases[k] individualised, refined.
+        let mut chain: Vec<(Colouring, Vec<Signature>)> = vec![(unit, unit_trace)];
+        let mut bases = Vec::new();
+        while let Some(cell) = first_open_cell(&chain[chain.len() - 1].0) {
+            let current = &chain[chain.len() - 1].0;
+            let base = members_of(current, cell)
                 .next()
                 .expect("an open cell has members");
             let mut next = current.clone();
             individualise(&mut next, base);
-            self.refine(&mut next)?;
-            levels.push((current, base));
-            current = next;
+            let trace = self.refine(&mut next)?;
+            bases.push(base);
+            chain.push((next, trace));
         }
         // Step 3, from the deepest level up.
         let mut generators: Vec<Permutation> = Vec::new();
-        for (colouring, base) in levels.iter().rev() {
-            let cell = colouring.cell[*base];
-            let mut fixed = colouring.clone();
-            individualise(&mut fixed, *base);
-            let Ok(fixed_trace) = self.refine(&mut fixed) else {
-                break;
-            };
+        for (level, &base) in bases.iter().enumerate().rev() {
+            let colouring = &chain[level].0;
+            let cell = colouring.cell[base];
             // The orbit of the base point under the generators so far, again only when a
             // generator is added.
-            let mut reached = self.orbit_of(*base, &generators)?;
+            let Ok(mut reached) = self.orbit_of(base, &generators) else {
+                return Ok(generators);
+            };
             for w in members_of(colouring, cell).collect::<Vec<_>>() {
                 if reached[w] {
                     continue;
                 }
                 let mut image = colouring.clone();
                 individualise(&mut image, w);
-                match self.extend(&fixed, &fixed_trace, image) {
+                match self.extend(&chain[level + 1..], image) {
                     Ok(Some(found)) => {
                         generators.push(found);
-                        match self.orbit_of(*base, &generators) {
+                        match self.orbit_of(base, &generators) {
                             Ok(orbit) => reached = orbit,
                             Err(Stop) => return Ok(generators),
                         }
@@ -177,31 +177,27 @@ impl Finder<'_> {
         Ok(generators)
     }
 
-    /// An automorphism that maps every cell of `left` (refined, with refinement trace
-    /// `left_trace`) onto the same cell of `right` (not yet refined), or `None` if there
-    /// is none.
+    /// An automorphism that maps every cell of `left[0]` onto the same cell of `right`
+    /// (not yet refined), or `None` if there is none. `left` is the rest of the base's
+    /// chain: each colouring with its trace, the next one its successor with the first
+    /// vertex of its first open cell individualised, which is the vertex this search
+    /// individualises on the left, so the left side is never refined again.
     fn extend(
         &mut self,
-        left: &Colouring,
-        left_trace: &[Signature],
+        left: &[(Colouring, Vec<Signature>)],
         mut right: Colouring,
     ) -> Result<Option<Permutation>, Stop> {
-        if self.refine(&mut right)? != left_trace {
+        let (colouring, trace) = &left[0];
+        if self.refine(&mut right)? != *trace {
             return Ok(None);
         }
-        let Some(cell) = first_open_cell(left) else {
-            return Ok(self.bijection(left, &right));
+        let Some(cell) = first_open_cell(colouring) else {
+            return Ok(self.bijection(colouring, &right));
         };
-        let v = members_of(left, cell)
-            .next()
-            .expect("an open cell has members");
-        let mut left = left.clone();
-        individualise(&mut left, v);
-        let left_trace = self.refine(&mut left)?;
         for w in members_of(&right, cell).collect::<Vec<_>>() {
             let mut image = right.clone();
             individualise(&mut image, w);
-            if let Some(found) = self.extend(&left, &left_trace, image)? {
+            if let Some(found) = self.extend(&left[1..], image)? {
                 return Ok(Some(found));
             }
         }
