@@ -10,8 +10,8 @@ use crate::error::Result;
 use crate::geometry::construct::circumcentre;
 use crate::geometry::lex_sort::{sorted_items_with, yx_key};
 use crate::geometry::sweep_predicates::{
-    breakpoint_side, circle_top_floor, cmp_circle_site, cmp_circles, cmp_integer_circles,
-    normalize_scale, CircleKey, TopEstimate,
+    breakpoint_side, circle_top_floor, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
+    IntegerCircle, TopEstimate,
 };
 use crate::geometry::{
     BoxPredicates, ConstructedPoint, CountedPredicates, Orientation, Point2, PointSet,
@@ -287,6 +287,7 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
         queue: Heap::with_capacity(sites.len()),
         events: Vec::with_capacity(2 * sites.len()),
         small_integer,
+        circles: Vec::with_capacity(if small_integer { 2 * sites.len() } else { 0 }),
         triangles: Vec::with_capacity(2 * sites.len()),
         edges: Vec::with_capacity(3 * sites.len()),
         halfedges: Vec::with_capacity(6 * sites.len()),
@@ -351,8 +352,11 @@ struct Sweep<'a, C, O> {
     queue: Heap<Event>,
     /// The sites and arc of every circle event queued so far, by id.
     events: Vec<EventSites>,
-    /// Whether the sites are a small-integer set (see [`cmp_integer_circles`]).
+    /// Whether the sites are a small-integer set (see [`IntegerCircle`]).
     small_integer: bool,
+    /// For a small-integer set, the circle of every event queued so far, by id, relative
+    /// to the first site; empty otherwise.
+    circles: Vec<IntegerCircle>,
     /// Counter-clockwise triangles as site positions.
     triangles: Vec<[u32; 3]>,
     /// Per Voronoi edge (the tag of the breakpoints tracing it, see
@@ -487,6 +491,10 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         }
         let id = self.events.len() as u32;
         self.events.push(EventSites { sites, arc: m });
+        if self.small_integer {
+            self.circles
+                .push(IntegerCircle::new([a, b, c], self.sites[0]));
+        }
         self.line.set_event(m, id);
         let TopEstimate { top, err } = TopEstimate::new(a, b, c);
         self.push(Event { top, err, id });
@@ -516,20 +524,20 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
     }
 
     fn push(&mut self, e: Event) {
-        let (sites, events, small) = (self.sites, &self.events, self.small_integer);
+        let (sites, events, circles) = (self.sites, &self.events, &self.circles);
         self.queue.push(
             e,
-            |x, y| before(sites, events, small, x, y),
+            |x, y| before(sites, events, circles, x, y),
             &mut *self.counter,
         );
     }
 
     /// Removes and returns the first event (the queue is not empty).
     fn pop(&mut self) -> Event {
-        let (sites, events, small) = (self.sites, &self.events, self.small_integer);
+        let (sites, events, circles) = (self.sites, &self.events, &self.circles);
         self.queue
             .pop(
-                |x, y| before(sites, events, small, x, y),
+                |x, y| before(sites, events, circles, x, y),
                 &mut *self.counter,
             )
             .expect("pop is only called on a non-empty queue")
@@ -553,40 +561,40 @@ fn input_triangles(triangles: &[[u32; 3]], index: &[usize]) -> Vec<usize> {
 }
 
 /// Whether event `x` comes strictly before event `y` (their circles' tops on the sweep
-/// line); `small_integer` if the sites are a small-integer set.
+/// line); `circles` as `Sweep::circles` (empty unless the sites are a small-integer set).
 #[inline]
 fn before(
     sites: &[Point2],
     events: &[EventSites],
-    small_integer: bool,
+    circles: &[IntegerCircle],
     x: &Event,
     y: &Event,
 ) -> bool {
     // The sites' coordinates only when the estimates leave it open.
-    match x.estimate().cmp(&y.estimate()) {
-        Some(order) => order == Ordering::Less,
-        None => before_exact(sites, events, small_integer, x, y),
+    match x.estimate().is_below(&y.estimate()) {
+        Some(below) => below,
+        None => before_exact(sites, events, circles, x, y),
     }
 }
 
 /// [`before`] when the estimates overlap: the exact comparison of the event points, in
-/// plain floating point first for small-integer sites.
+/// plain floating point first for small-integer sites (their circles precomputed).
 #[cold]
 #[inline(never)]
 fn before_exact(
     sites: &[Point2],
     events: &[EventSites],
-    small_integer: bool,
+    circles: &[IntegerCircle],
     x: &Event,
     y: &Event,
 ) -> bool {
-    let points = |e: &Event| events[e.id as usize].sites.map(|v| sites[v as usize]);
-    let (t1, t2) = (points(x), points(y));
-    if small_integer {
-        if let Some(order) = cmp_integer_circles(t1, t2) {
+    if !circles.is_empty() {
+        if let Some(order) = circles[x.id as usize].cmp(&circles[y.id as usize]) {
             return order == Ordering::Less;
         }
     }
+    let points = |e: &Event| events[e.id as usize].sites.map(|v| sites[v as usize]);
+    let (t1, t2) = (points(x), points(y));
     let k1 = CircleKey::new(t1[0], t1[1], t1[2]);
     let k2 = CircleKey::new(t2[0], t2[1], t2[2]);
     cmp_circles(&k1, t1, &k2, t2) == Ordering::Less

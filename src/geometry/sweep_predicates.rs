@@ -217,7 +217,9 @@ impl TopEstimate {
     /// at least, rounded up to an `f32`): if the computed gap exceeds the computed sum,
     /// the exact gap exceeds `(1 − 2u) (1 + 2^-20)` times the derived bounds' sum, which is
     /// more than that sum, so the exact tops are in that order.
-    #[inline]
+    /// (The sweep uses [`is_below`](Self::is_below), the same decision; this form is the
+    /// tests' reference.)
+    #[cfg(test)]
     pub(crate) fn cmp(&self, other: &TopEstimate) -> Option<Ordering> {
         let gap = other.top - self.top;
         let slack = self.err as f64 + other.err as f64;
@@ -225,6 +227,22 @@ impl TopEstimate {
             Some(Ordering::Less)
         } else if -gap > slack {
             Some(Ordering::Greater)
+        } else {
+            None
+        }
+    }
+
+    /// Whether the exact top is below `other`'s, if the estimates decide it: the answer of
+    /// `cmp` (`Some(true)` for `Less`, `Some(false)` for `Greater`; its doc has the proof), written
+    /// so that a caller's "which is less" compiles without a data-dependent branch (a
+    /// binary heap's child choice): `|gap| > slack` is the condition of `cmp` deciding,
+    /// and then the sign of the gap is its order (`slack >= 0`; a NaN gap decides nothing).
+    #[inline]
+    pub(crate) fn is_below(&self, other: &TopEstimate) -> Option<bool> {
+        let gap = other.top - self.top;
+        let slack = self.err as f64 + other.err as f64;
+        if gap.abs() > slack {
+            Some(gap > 0.0)
         } else {
             None
         }
@@ -788,40 +806,93 @@ const EXACT_PRODUCT: f64 = pow2(52);
 /// otherwise (the caller then takes [`cmp_circles`]), and also when the tops' order needs
 /// squaring (as [`cmp_small_circles`]).
 ///
-/// Why it is exact: relative to `t1[0]`, every coordinate is an integer of at most `2^12`
-/// in magnitude, and so is every difference of two sites. Then `bb, cc <= 2^25`,
-/// `|d| <= 2^26`, `|nx|, |ny| <= 2^38`, `|a.y d + ny|, |a.x d + nx| <= 2^39`: integers
-/// below `2^53`, so every step is exact. `q = nx² + ny²` is exact when `|nx|, |ny| < 2^26`
-/// (each square below `2^52`), which is checked. The comparisons multiply two such values:
-/// each product is checked, on its rounded value, to be below `2^52` (rounding is
-/// monotone and `2^52` is a double, so a rounded product below it comes from an exact one
-/// below it, which is then exact), and a difference of two is below `2^53`.
+/// Why it is exact: see [`IntegerCircle`], with the origin `t1[0]`. (The sweep compares
+/// precomputed [`IntegerCircle`]s; this form is the tests'.)
+#[cfg(test)]
 pub(crate) fn cmp_integer_circles(t1: [Point2; 3], t2: [Point2; 3]) -> Option<Ordering> {
     let o = t1[0];
-    let circle = |t: [Point2; 3]| {
+    IntegerCircle::new(t1, o).cmp(&IntegerCircle::new(t2, o))
+}
+
+/// The circumcircle of three sites of a small-integer set (every coordinate an integer,
+/// the set's box at most 2^12 wide on both axes: see `BoxPredicates::is_small_integer`), relative to an origin `o` (`[d, p, q, x]` as in `ExactCircle`, with `d > 0`):
+/// computed once per circle, so that a caller comparing one circle many times (the sweep's
+/// heap on a grid, where events tie everywhere) pays only [`cmp`](Self::cmp).
+///
+/// Why it is exact: `o` is a site of the same small-integer set (or any point whose
+/// differences with its sites are integers of at most `2^12` in magnitude), so relative to
+/// `o` every coordinate is an integer of at most `2^12` in magnitude, and so is every
+/// difference of two sites. Then `bb, cc <= 2^25`, `|d| <= 2^26`, `|nx|, |ny| <= 2^38`,
+/// `|a.y d + ny|, |a.x d + nx| <= 2^39`: integers below `2^53`, so every step is exact.
+/// `q = nx² + ny²` is exact when `|nx|, |ny| < 2^26` (each square below `2^52`), which is
+/// checked (`small`). The comparisons multiply two such values: each product is checked,
+/// on its rounded value, to be below `2^52` (rounding is monotone and `2^52` is a double,
+/// so a rounded product below it comes from an exact one below it, which is then exact),
+/// and a difference of two is below `2^53`. Two circles are comparable only when taken
+/// relative to the same origin.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct IntegerCircle {
+    d: f64,
+    p: f64,
+    q: f64,
+    x: f64,
+    /// Whether `q` is exact.
+    small: bool,
+}
+
+impl IntegerCircle {
+    /// The circle through `t` (counter-clockwise or clockwise, not collinear), relative
+    /// to `o`.
+    #[inline]
+    pub(crate) fn new(t: [Point2; 3], o: Point2) -> IntegerCircle {
         let [a, b, c] = t.map(|p| Point2::new(p.x - o.x, p.y - o.y));
         let (bx, by, cx, cy) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
         let (bb, cc) = (bx * bx + by * by, cx * cx + cy * cy);
         let d = 2.0 * (bx * cy - by * cx);
         let (nx, ny) = (cy * bb - by * cc, bx * cc - cx * bb);
-        // [d, p, q, x] as in `ExactCircle`, with d > 0.
         let s = if d < 0.0 { -1.0 } else { 1.0 };
         let small = nx.abs() < pow2(26) && ny.abs() < pow2(26);
         let q = nx * nx + ny * ny;
-        (small, [d * s, (a.y * d + ny) * s, q, (a.x * d + nx) * s])
-    };
-    let ((s1, [d1, p1, q1, x1]), (s2, [d2, p2, q2, x2])) = (circle(t1), circle(t2));
-    let dm = d1.max(d2);
-    let pm = p1.abs().max(p2.abs()).max(x1.abs()).max(x2.abs());
-    let exact = s1 && s2 && dm * pm < EXACT_PRODUCT && dm * dm * q1.max(q2) < EXACT_PRODUCT;
-    if !exact {
-        return None;
+        IntegerCircle {
+            d: d * s,
+            p: (a.y * d + ny) * s,
+            q,
+            x: (a.x * d + nx) * s,
+            small,
+        }
     }
-    let sign = |v: f64| (v > 0.0) as i32 - (v < 0.0) as i32;
-    let x = sign(d2 * p1 - d1 * p2);
-    let roots = sign(d2 * d2 * q1 - d1 * d1 * q2);
-    let top = sign_without_squaring(x, roots)?;
-    Some(ordering(top).then_with(|| ordering(sign(x1 * d2 - x2 * d1))))
+
+    /// [`cmp_circles`] for the two circles (relative to the same origin) when every
+    /// operation is provably exact, `None` otherwise or when the tops' order needs
+    /// squaring (as [`cmp_small_circles`]).
+    #[inline]
+    pub(crate) fn cmp(&self, other: &IntegerCircle) -> Option<Ordering> {
+        let IntegerCircle {
+            d: d1,
+            p: p1,
+            q: q1,
+            x: x1,
+            small: s1,
+        } = *self;
+        let IntegerCircle {
+            d: d2,
+            p: p2,
+            q: q2,
+            x: x2,
+            small: s2,
+        } = *other;
+        let dm = d1.max(d2);
+        let pm = p1.abs().max(p2.abs()).max(x1.abs()).max(x2.abs());
+        let exact = s1 && s2 && dm * pm < EXACT_PRODUCT && dm * dm * q1.max(q2) < EXACT_PRODUCT;
+        if !exact {
+            return None;
+        }
+        let sign = |v: f64| (v > 0.0) as i32 - (v < 0.0) as i32;
+        let x = sign(d2 * p1 - d1 * p2);
+        let roots = sign(d2 * d2 * q1 - d1 * d1 * q2);
+        let top = sign_without_squaring(x, roots)?;
+        Some(ordering(top).then_with(|| ordering(sign(x1 * d2 - x2 * d1))))
+    }
 }
 
 /// The sign of `x + √p − √q` for `p, q >= 0`.
@@ -1093,6 +1164,9 @@ mod tests {
                 prop_assert_eq!(order, cmp_circles(&k1, t1, &k2, t2));
                 prop_assert_eq!(order.reverse(), e2.cmp(&e1).unwrap());
             }
+            // The heap's form decides exactly when `cmp` does, the same way.
+            prop_assert_eq!(e1.is_below(&e2), e1.cmp(&e2).map(|o| o == Ordering::Less));
+            prop_assert_eq!(e2.is_below(&e1), e2.cmp(&e1).map(|o| o == Ordering::Less));
             // Against a height: the top itself rounded, a site's height, any height.
             for h in [e1.top, nudge(e1.top), t1[0].y, y] {
                 if let Some(order) = e1.cmp_height(h) {
@@ -1146,9 +1220,17 @@ mod tests {
             let t1 = ccw([p(0), p(1), p(2)]);
             let t2 = if local == 2 { t1.map(|t| t.map(|q| Point2::new(q.x + 1.0, q.y))) } else { ccw([p(3), p(4), p(5)]) };
             if let (Some(t1), Some(t2)) = (t1, t2) {
+                let (k1, k2) = (CircleKey::new(t1[0], t1[1], t1[2]), CircleKey::new(t2[0], t2[1], t2[2]));
+                let want = cmp_circles(&k1, t1, &k2, t2);
                 if let Some(order) = cmp_integer_circles(t1, t2) {
-                    let (k1, k2) = (CircleKey::new(t1[0], t1[1], t1[2]), CircleKey::new(t2[0], t2[1], t2[2]));
-                    prop_assert_eq!(order, cmp_circles(&k1, t1, &k2, t2));
+                    prop_assert_eq!(order, want);
+                }
+                // Precomputed relative to another site of the set (the sweep's first site).
+                for o in [t2[1], t1[2]] {
+                    let (c1, c2) = (IntegerCircle::new(t1, o), IntegerCircle::new(t2, o));
+                    if let Some(order) = c1.cmp(&c2) {
+                        prop_assert_eq!(order, want);
+                    }
                 }
             }
         }
@@ -1168,6 +1250,12 @@ mod tests {
         // Too large for the plain path: left to the exact stages.
         let big = [p(0.0, 0.0), p(4096.0, 1.0), p(1.0, 4096.0)];
         assert_eq!(cmp_integer_circles(big, t1), None);
+        // Precomputed relative to a fixed site, as the sweep does: the same answers.
+        let c = |t: [Point2; 3]| IntegerCircle::new(t, p(3.0, 2.0));
+        assert_eq!(c(t1).cmp(&c(t2)), Some(Ordering::Less));
+        assert_eq!(c(t2).cmp(&c(t1)), Some(Ordering::Greater));
+        assert_eq!(c(t1).cmp(&c(t3)), Some(Ordering::Equal));
+        assert_eq!(c(big).cmp(&c(t1)), None);
     }
 
     #[test]

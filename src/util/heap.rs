@@ -71,9 +71,9 @@ impl<T: Copy> Heap<T> {
             let mut child = left;
             if left + 1 < n {
                 c.comparison();
-                if less(&self.items[left + 1], &self.items[left]) {
-                    child = left + 1;
-                }
+                // Without a branch on the answer when `less` has none (the choice between
+                // two children is a coin toss for the branch predictor).
+                child += usize::from(less(&self.items[left + 1], &self.items[left]));
             }
             self.items[i] = self.items[child];
             i = child;
