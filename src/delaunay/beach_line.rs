@@ -7,6 +7,7 @@
 //! descent with a caller-supplied monotone test ([`BeachLine::first_arc_where`]).
 
 use crate::gen::Rng;
+use crate::geometry::Point2;
 
 /// No arc (a null link).
 pub(super) const NIL: u32 = u32::MAX;
@@ -14,6 +15,10 @@ pub(super) const NIL: u32 = u32::MAX;
 /// One arc: the site whose parabola it belongs to, its pending circle event, and links.
 #[derive(Debug, Clone, Copy)]
 struct Arc {
+    /// The site's coordinates, kept beside its index: the descent and the circle checks
+    /// read them from the arcs, which stay in cache, instead of from the sites (a miss per
+    /// access once the sites outgrow the cache).
+    point: Point2,
     site: u32,
     /// The id of the circle event that would remove this arc, or [`NIL`].
     event: u32,
@@ -53,6 +58,12 @@ impl BeachLine {
     #[inline]
     pub(super) fn site(&self, a: u32) -> u32 {
         self.arcs[a as usize].site
+    }
+
+    /// The coordinates of the site of arc `a` (as given to [`insert_after`](Self::insert_after)).
+    #[inline]
+    pub(super) fn point(&self, a: u32) -> Point2 {
+        self.arcs[a as usize].point
     }
 
     /// The left neighbour of `a`, or [`NIL`].
@@ -131,11 +142,12 @@ impl BeachLine {
         found
     }
 
-    /// Inserts a new arc of `site` right after `after` ([`NIL`]: into the empty beach line)
-    /// and returns it.
-    pub(super) fn insert_after(&mut self, after: u32, site: u32) -> u32 {
+    /// Inserts a new arc of `site`, at `point`, right after `after` ([`NIL`]: into the empty
+    /// beach line) and returns it.
+    pub(super) fn insert_after(&mut self, after: u32, site: u32, point: Point2) -> u32 {
         let prio = self.next_priority();
         let arc = Arc {
+            point,
             site,
             event: NIL,
             edge: NIL,
@@ -318,8 +330,10 @@ mod tests {
                     let k = rand(model.len());
                     (k + 1, model[k].0)
                 };
-                let a = line.insert_after(after, step);
+                let at_step = Point2::new(step as f64, 0.5);
+                let a = line.insert_after(after, step, at_step);
                 assert!(line.is_live(a));
+                assert_eq!(line.point(a), at_step);
                 model.insert(at, (a, step));
             } else {
                 let k = rand(model.len());
@@ -342,7 +356,7 @@ mod tests {
         let mut last = NIL;
         let mut arcs = Vec::new();
         for site in 0..200 {
-            last = line.insert_after(last, site);
+            last = line.insert_after(last, site, Point2::new(0.0, site as f64));
             arcs.push(last);
         }
         for threshold in 0..205 {

@@ -399,29 +399,28 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
 
     fn site_event(&mut self, s: u32) {
         let p = self.sites[s as usize];
-        let (line, sites, counter) = (&self.line, self.sites, &mut *self.counter);
+        let (line, counter) = (&self.line, &mut *self.counter);
         let found = line.first_arc_where(|a| {
             counter.comparison();
-            let (left, right) = (line.site(a), line.site(line.next(a)));
-            breakpoint_side(sites[left as usize], sites[right as usize], p) == Ordering::Greater
+            breakpoint_side(line.point(a), line.point(line.next(a)), p) == Ordering::Greater
         });
         if found == NIL {
-            self.line.insert_after(NIL, s);
+            self.line.insert_after(NIL, s, p);
         } else {
-            let above = self.line.site(found);
+            let (above, above_point) = (self.line.site(found), self.line.point(found));
             self.line.set_event(found, NIL);
-            let new = self.line.insert_after(found, s);
+            let new = self.line.insert_after(found, s, p);
             // The new breakpoints trace one new Voronoi edge, between `above` and `s`
             // (both of them, in opposite directions, when the arc is split).
             let edge = self.new_edge(NIL);
             self.line.set_edge(new, edge);
-            if self.sites[above as usize].y == p.y {
+            if above_point.y == p.y {
                 // The first row: arcs are vertical strips, and the new one goes to the right.
                 debug_assert_eq!(self.line.next(new), NIL, "a first-row arc not at the end");
                 self.check_circle(found);
                 self.check_circle(new);
             } else {
-                let copy = self.line.insert_after(new, above);
+                let copy = self.line.insert_after(new, above, above_point);
                 self.line.set_edge(copy, edge);
                 self.check_circle(found);
                 self.check_circle(copy);
@@ -485,7 +484,7 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         if sites[0] == sites[2] {
             return; // both sides of one parabola: the breakpoints diverge
         }
-        let [a, b, c] = self.points(sites);
+        let [a, b, c] = [l, m, r].map(|x| self.line.point(x));
         if self.counter.orient2d(a, b, c) != Orientation::CounterClockwise {
             return;
         }
