@@ -10,12 +10,10 @@ use crate::error::Result;
 use crate::geometry::construct::circumcentre;
 use crate::geometry::lex_sort::{sorted_items_with, yx_key};
 use crate::geometry::sweep_predicates::{
-    breakpoint_side, circle_top_floor, cmp_circle_site, cmp_circles, normalize_scale, CircleKey,
-    IntegerCircle, TopEstimate,
+    breakpoint_side, circle_top_floor, cmp_circle_site, cmp_circles, normalize_scale, scaled_box,
+    CircleKey, IntegerCircle, TopEstimate,
 };
-use crate::geometry::{
-    BoxPredicates, ConstructedPoint, CountedPredicates, Orientation, Point2, PointSet,
-};
+use crate::geometry::{BoxPredicates, ConstructedPoint, Orientation, Point2, PointSet};
 use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
 use crate::util::Heap;
 use std::cmp::Ordering;
@@ -270,12 +268,18 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
     let (mut sites, index, duplicates) = sorted_by_y(points, counter);
     // Small-integer sets (integer grids: circle events tie everywhere) have a plain
     // floating-point stage for the ties; their coordinates are kept as they are.
-    let small_integer = BoxPredicates::for_set(points).is_small_integer();
+    let mut predicates = BoxPredicates::for_set(points);
+    let small_integer = predicates.is_small_integer();
     if !small_integer {
         // An exact power-of-two scaling changes no decision and keeps the filters away
         // from overflow and underflow (1e300 or 1e-300 everywhere); integers below 2^53 in
         // a box 2^12 wide are far from both.
-        normalize_scale(&mut sites);
+        let shift = normalize_scale(&mut sites);
+        // The box's corners are coordinates of sites, scaled alike (exactly): the box of
+        // the scaled sites, for the orientation filter's bound.
+        if let Some(bounds) = points.bounding_box() {
+            predicates = BoxPredicates::over(scaled_box(bounds, shift));
+        }
     }
     let mut sweep = Sweep {
         sites: &sites,
@@ -286,6 +290,7 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
         line: BeachLine::with_capacity(2 * sites.len()),
         queue: Heap::with_capacity(sites.len()),
         events: Vec::with_capacity(2 * sites.len()),
+        predicates,
         small_integer,
         circles: Vec::with_capacity(if small_integer { 2 * sites.len() } else { 0 }),
         triangles: Vec::with_capacity(2 * sites.len()),
@@ -352,6 +357,9 @@ struct Sweep<'a, C, O> {
     queue: Heap<Event>,
     /// The sites and arc of every circle event queued so far, by id.
     events: Vec<EventSites>,
+    /// The orientation filter's bound for the (scaled) sites' box, or plain floating point
+    /// for a small-integer set.
+    predicates: BoxPredicates,
     /// Whether the sites are a small-integer set (see [`IntegerCircle`]).
     small_integer: bool,
     /// For a small-integer set, the circle of every event queued so far, by id, relative
@@ -485,7 +493,9 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
             return; // both sides of one parabola: the breakpoints diverge
         }
         let [a, b, c] = [l, m, r].map(|x| self.line.point(x));
-        if self.counter.orient2d(a, b, c) != Orientation::CounterClockwise {
+        if self.predicates.orient2d_with(a, b, c, &mut *self.counter)
+            != Orientation::CounterClockwise
+        {
             return;
         }
         let id = self.events.len() as u32;

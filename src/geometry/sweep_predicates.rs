@@ -28,7 +28,7 @@
 use super::bigint::BigInt;
 use super::extended::{exact_integers, exponent, odd_parts_and_base, scale_by_pow2};
 use super::predicates::pow2;
-use super::{cmp_dist, incircle, InCircle, Point2};
+use super::{cmp_dist, incircle, BoundingBox, InCircle, Point2};
 use std::cmp::Ordering;
 
 /// A closed interval `[lo, hi]` of reals holding an exact value; `lo > hi` never happens,
@@ -428,7 +428,10 @@ pub(crate) fn cmp_circles(
 /// 1, if that is exact (no coordinate leaves the normal range); otherwise by the exact
 /// power of two nearest to that. Every predicate of this module is invariant under such a
 /// scaling, and the filter then works on values far from overflow and underflow.
-pub(crate) fn normalize_scale(points: &mut [Point2]) {
+///
+/// Returns the shift `k` (the points were multiplied by `2^k`, exactly; 0 if they were left
+/// as they were), so that a caller can scale what it knows of them (a bounding box) alike.
+pub(crate) fn normalize_scale(points: &mut [Point2]) -> i32 {
     let exponents = points
         .iter()
         .flat_map(|p| [p.x, p.y])
@@ -436,19 +439,31 @@ pub(crate) fn normalize_scale(points: &mut [Point2]) {
         .map(exponent);
     let (lo, hi) = exponents.fold((i32::MAX, i32::MIN), |(lo, hi), e| (lo.min(e), hi.max(e)));
     if lo > hi {
-        return; // all zero
+        return 0; // all zero
     }
     // Every result must stay a normal double: exponents in [-1022, 1022] (one binade of
     // headroom below overflow).
     let (min_shift, max_shift) = (-1022 - lo, 1022 - hi);
     if min_shift > max_shift {
-        return; // the magnitudes span too much for any one exact shift
+        return 0; // the magnitudes span too much for any one exact shift
     }
     let shift = (-hi).clamp(min_shift, max_shift);
     if shift != 0 {
         for p in points {
             *p = Point2::new(scale_by_pow2(p.x, shift), scale_by_pow2(p.y, shift));
         }
+    }
+    shift
+}
+
+/// `bounds` scaled as [`normalize_scale`] scaled its points (by `2^shift`, the shift it
+/// returned): the corners are coordinates of those points, so they scale exactly and the
+/// result is the box of the scaled points.
+pub(crate) fn scaled_box(bounds: BoundingBox, shift: i32) -> BoundingBox {
+    let scale = |p: Point2| Point2::new(scale_by_pow2(p.x, shift), scale_by_pow2(p.y, shift));
+    BoundingBox {
+        min: scale(bounds.min),
+        max: scale(bounds.max),
     }
 }
 
@@ -1310,21 +1325,22 @@ mod tests {
     fn scaling_keeps_magnitudes_normal_and_exact() {
         let mut pts = vec![Point2::new(1e300, -3e299), Point2::new(0.0, 2e250)];
         let before = pts.clone();
-        normalize_scale(&mut pts);
+        let k = normalize_scale(&mut pts);
         assert!(pts.iter().all(|p| p.x.abs() < 2.0 && p.y.abs() < 2.0));
         let ratio = before[0].x / pts[0].x;
         assert_eq!(ratio.log2().fract(), 0.0);
+        assert_eq!(ratio, 2f64.powi(-k));
         for (a, b) in before.iter().zip(&pts) {
             assert_eq!(a.x / ratio, b.x);
             assert_eq!(a.y / ratio, b.y);
         }
         // Subnormals next to 1e300: no exact common shift exists, nothing changes.
         let mut wide = vec![Point2::new(5e-324, 1e300)];
-        normalize_scale(&mut wide);
+        assert_eq!(normalize_scale(&mut wide), 0);
         assert_eq!(wide, [Point2::new(5e-324, 1e300)]);
         // Subnormals alone are scaled up exactly, the largest magnitude into [1, 2).
         let mut tiny = vec![Point2::new(5e-324, -1.5e-323)];
-        normalize_scale(&mut tiny);
+        assert_eq!(normalize_scale(&mut tiny), 1073);
         assert_eq!(tiny, [Point2::new(0.5, -1.5)]);
     }
 }
