@@ -189,6 +189,50 @@
 //! tenfold on the grid, while the incremental builder's ratios at 10³ and 10⁴ moved within
 //! the noise (one run each): delaunator stays 0–16 % faster there.
 //!
+//! 2026-12-05, a third pass, profiled with `perf` first. At 10³ and 10⁶ (uniform) the time
+//! went to the heap's pop (20–25 %: its child choice was a data-dependent branch on the
+//! estimates' order), the circle tops' estimates (`TopEstimate::new`, 12–18 %), the circle
+//! checks (10–14 %) and the descent's breakpoint tests (9–11 %); the fixed costs (sort,
+//! scaling, hull, conversion) stayed under 3 % together. On the grid at 10⁴, 41 % went to
+//! the ties' plain floating-point stage, which rebuilt both circles at every comparison.
+//! Changes: the heap's child choice without a branch (`TopEstimate::is_below`); on
+//! small-integer sets each event's circle computed once (`IntegerCircle`); the arcs
+//! carrying their sites' coordinates (the descent and the checks no longer read the sorted
+//! sites); the estimate's scaling by a multiplication (bit-identical); the circle checks
+//! through the box-wide orientation filter (plain floating point on the grid). The
+//! triangulations hash the same at 10³ to 10⁵ on the three inputs. Timed interleaved in
+//! one process (fortune, incremental, repeated; 9 rounds at 10³ and 10⁴, 5 at 10⁵ and
+//! 10⁶, each round 2·10⁶ points' worth of calls; median CPU time of the thread), the
+//! previous commit (`482e32b`, "before") and this one in alternate processes (one input
+//! at a time), on the 2 cores shared with the lead's builds and this helper's doc build,
+//! load average 2.7 to 5.2 (5 during the uniform runs, 3 after):
+//!
+//! | input, n | fortune before | fortune after | after / before | incremental (before's run, after's) | ratio before | ratio after |
+//! |---|---|---|---|---|---|---|
+//! | uniform-square, 10³ | 0.874 ms | 0.793 ms | 0.91 | 0.150 ms, 0.149 ms | 5.8 | 5.3 |
+//! | uniform-square, 10⁴ | 11.4 ms | 10.6 ms | 0.93 | 3.32 ms, 2.67 ms | 3.4 | 4.0 |
+//! | uniform-square, 10⁵ | 128 ms | 128 ms | 1.00 | 36.7 ms, 31.1 ms | 3.5 | 4.1 |
+//! | uniform-square, 10⁶ | 1.47 s | 1.29 s | 0.88 | 394 ms, 387 ms | 3.7 | 3.3 |
+//! | clustered, 10³ | 0.824 ms | 0.747 ms | 0.91 | 0.140 ms, 0.142 ms | 5.9 | 5.3 |
+//! | clustered, 10⁴ | 10.8 ms | 10.1 ms | 0.93 | 3.20 ms, 2.64 ms | 3.4 | 3.8 |
+//! | clustered, 10⁵ | 119 ms | 112 ms | 0.94 | 35.8 ms, 30.0 ms | 3.3 | 3.8 |
+//! | clustered, 10⁶ | 1.34 s | 1.27 s | 0.95 | 423 ms, 427 ms | 3.2 | 3.0 |
+//! | grid, 10³ | 0.839 ms | 0.629 ms | 0.75 | 0.124 ms, 0.125 ms | 6.8 | 5.0 |
+//! | grid, 10⁴ | 12.8 ms | 9.59 ms | 0.75 | 2.91 ms, 2.30 ms | 4.4 | 4.2 |
+//! | grid, 10⁵ | 151 ms | 109 ms | 0.72 | 31.3 ms, 24.5 ms | 4.8 | 4.5 |
+//! | grid, 10⁶ | 1.70 s | 1.12 s | 0.66 | 314 ms, 314 ms | 5.4 | 3.6 |
+//!
+//! The sweep itself is 5–12 % faster on uniform and clustered input and 25–34 % on the
+//! grid (the 10⁵ uniform pair, run at load 5, shows no gain; in quieter runs earlier the
+//! same day the three commits took it from 124 to 115 ms). The incremental builder's time
+//! is bimodal between processes at 10⁴ and 10⁵ (2.6–2.7 or 3.2–3.3 ms at 10⁴, in both
+//! versions' runs), which moves these ratios by up to 20 %: the "after / before" column is
+//! the firmer figure. The 3× target is met only on clustered input at 10⁶; at 10³ the
+//! sweep is still about 5× the incremental builder, the time being per event (heap,
+//! estimates, checks, descent), not fixed costs. Not tried for lack of time: a 4-ary or
+//! eager-deletion queue (either changes the order of tied events, so the grid's
+//! triangulation, unless ties get an explicit rule), and fewer false-alarm events.
+//!
 //! Voronoi cells, 2026-11-23, same machine (`voronoi/*`; "clipped" clips every cell to the
 //! box voronoice is given; every diagram, voronoice's included, is dropped outside the
 //! timed region). Criterion medians, wall time, two runs a few minutes apart (load
