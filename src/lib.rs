@@ -41,8 +41,9 @@
 //! partitioned in place by their top digit, each thread permuting its own share, then the
 //! buckets sorted in parallel), the validation of a
 //! [`PointSet`](geometry::PointSet), the Akl–Toussaint filter (and so the hulls that sort
-//! through it), the insertion order of the incremental Delaunay builder, and the cells of
-//! the Voronoi diagram (circumcentres and walks).
+//! through it), the incremental Delaunay builder (its insertion order, and from 2¹⁹ points
+//! the two halves it splits the set into, built on two threads and merged), and the cells
+//! of the Voronoi diagram (circumcentres and walks).
 //!
 //! ## Algorithms and their bounds
 //!

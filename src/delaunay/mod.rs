@@ -62,6 +62,7 @@ mod fortune;
 mod hilbert;
 mod incremental;
 mod lawson;
+mod partition;
 mod quad_edge;
 mod triangulation;
 mod voronoi;

@@ -7,7 +7,8 @@
 
 use compgeo::count::{NoCount, Silent};
 use compgeo::delaunay::{
-    check_delaunay, divide_and_conquer_with, dual, incremental, voronoi, Triangulation,
+    check_delaunay, divide_and_conquer_with, dual, incremental, incremental_with, voronoi,
+    Triangulation,
 };
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::{comparison_sorted_lex, parallel_sorted_lex, Point2, PointSet};
@@ -406,6 +407,31 @@ fn parallel_delaunay_paths_equal_the_sequential_ones() {
         divide_and_conquer_with(&set, &mut NoCount).unwrap(),
         divide_and_conquer_with(&set, &mut Silent).unwrap()
     );
+}
+
+/// From 2¹⁹ points the incremental builder triangulates two halves (on two threads here)
+/// and merges them: the triangulation is the same in pools of 1, 2 and 3 threads and with a
+/// recording counter (the halves one after the other), on clustered input and on a grid
+/// with duplicates (cocircular points everywhere), and the exact checker accepts it.
+#[test]
+fn split_delaunay_builds_equal_the_sequential_ones() {
+    let grid = points(PointKind::Grid, 265_000, 51).unwrap();
+    for (what, pts) in [
+        (
+            "clustered",
+            points(PointKind::Clustered, 530_000, 52).unwrap(),
+        ),
+        ("grid with duplicates", with_duplicates(&grid, 7)),
+    ] {
+        assert!(pts.len() >= 1 << 19, "{what}: too small to split");
+        let builds = in_pools(|| incremental(&pts).unwrap());
+        assert_eq!(builds[1], builds[0], "{what}, 2 threads");
+        assert_eq!(builds[2], builds[0], "{what}, 3 threads");
+        let set = PointSet::new(&pts).unwrap();
+        let counted = incremental_with(&set, &mut Silent).unwrap();
+        assert_eq!(counted, builds[0], "{what}, counted");
+        check_delaunay(&pts, &builds[0]).unwrap();
+    }
 }
 
 /// The Voronoi cells (the builder's own dual, and the dual of a given triangulation) are
