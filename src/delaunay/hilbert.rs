@@ -24,15 +24,31 @@ const BITS: u32 = 16;
 /// O(n log n) time (sorts of 64-bit keys), O(n) auxiliary space. Deterministic: the
 /// rounds come from the crate's random source with a fixed seed.
 pub(super) fn brio_order(points: &[Point2], bounds: Option<BoundingBox>) -> Vec<u32> {
-    #[cfg(feature = "parallel")]
-    return brio_order_from(points, bounds, crate::parallel::THRESHOLD);
-    #[cfg(not(feature = "parallel"))]
-    brio_order_from(points, bounds, usize::MAX)
+    brio_order_labelled(points, bounds, &|i| i as u32)
 }
 
-/// [`brio_order`], in parallel from `threshold` points up (feature `parallel`).
+/// [`brio_order`] with `label(i)` in place of the local id `i`; `label` must increase with
+/// `i`, so that the order is the same (the keys break ties by it). A subset's points can
+/// so be ordered under their ids in the whole set without a second pass.
+pub(super) fn brio_order_labelled(
+    points: &[Point2],
+    bounds: Option<BoundingBox>,
+    label: &(impl Fn(usize) -> u32 + Sync),
+) -> Vec<u32> {
+    #[cfg(feature = "parallel")]
+    return brio_order_from(points, bounds, crate::parallel::THRESHOLD, label);
+    #[cfg(not(feature = "parallel"))]
+    brio_order_from(points, bounds, usize::MAX, label)
+}
+
+/// [`brio_order_labelled`], in parallel from `threshold` points up (feature `parallel`).
 #[cfg_attr(not(feature = "parallel"), allow(unused_variables))]
-fn brio_order_from(points: &[Point2], bounds: Option<BoundingBox>, threshold: usize) -> Vec<u32> {
+fn brio_order_from(
+    points: &[Point2],
+    bounds: Option<BoundingBox>,
+    threshold: usize,
+    label: &(impl Fn(usize) -> u32 + Sync),
+) -> Vec<u32> {
     let n = points.len();
     let Some(bounds) = bounds else {
         return Vec::new();
@@ -45,7 +61,7 @@ fn brio_order_from(points: &[Point2], bounds: Option<BoundingBox>, threshold: us
     // and a sort of plain u64 keys inside each round.
     #[cfg(feature = "parallel")]
     if n >= threshold {
-        return par_brio_order(points, &grid, rounds, &mut rng);
+        return par_brio_order(points, &grid, rounds, &mut rng, label);
     }
     let mut round_of = Vec::with_capacity(n);
     let mut sizes = vec![0usize; rounds + 1];
@@ -57,7 +73,7 @@ fn brio_order_from(points: &[Point2], bounds: Option<BoundingBox>, threshold: us
             let round = round_of_point(i, rounds, &mut bits, &mut rng);
             round_of.push(round as u8);
             sizes[round] += 1;
-            (grid.curve_index(*p) << 32) | i as u64
+            (grid.curve_index(*p) << 32) | u64::from(label(i))
         })
         .collect();
     let mut start = Vec::with_capacity(rounds + 2);
@@ -95,7 +111,13 @@ fn round_of_point(i: usize, rounds: usize, bits: &mut u64, rng: &mut Rng) -> usi
 /// from the same random source, the curve indices computed and each round's keys sorted in
 /// parallel. The keys are distinct (they hold the ids), so the order is the sequential one.
 #[cfg(feature = "parallel")]
-fn par_brio_order(points: &[Point2], grid: &Grid, rounds: usize, rng: &mut Rng) -> Vec<u32> {
+fn par_brio_order(
+    points: &[Point2],
+    grid: &Grid,
+    rounds: usize,
+    rng: &mut Rng,
+    label: &(impl Fn(usize) -> u32 + Sync),
+) -> Vec<u32> {
     use rayon::prelude::*;
     let n = points.len();
     let mut bits = 0u64;
@@ -105,7 +127,7 @@ fn par_brio_order(points: &[Point2], grid: &Grid, rounds: usize, rng: &mut Rng) 
     let keys: Vec<u64> = points
         .par_iter()
         .enumerate()
-        .map(|(i, p)| (grid.curve_index(*p) << 32) | i as u64)
+        .map(|(i, p)| (grid.curve_index(*p) << 32) | u64::from(label(i)))
         .collect();
     let mut start = vec![0usize; rounds + 2];
     for &round in &round_of {
@@ -309,8 +331,8 @@ mod tests {
                 let pts = points(kind, n, 9).unwrap();
                 let bounds = BoundingBox::of(&pts);
                 assert_eq!(
-                    brio_order_from(&pts, bounds, 0),
-                    brio_order_from(&pts, bounds, usize::MAX),
+                    brio_order_from(&pts, bounds, 0, &|i| i as u32),
+                    brio_order_from(&pts, bounds, usize::MAX, &|i| i as u32),
                     "{kind}, n = {n}"
                 );
             }

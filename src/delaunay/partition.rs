@@ -30,7 +30,7 @@
 //! creates; s is O(n) in the worst case and about √n on uniform input. Both halves' arrays
 //! are one allocation, so the merge copies nothing: O(s) auxiliary space beyond the mesh.
 
-use super::hilbert::brio_order;
+use super::hilbert::{brio_order, brio_order_labelled};
 use super::incremental::{
     build, first_triangle, ghost_real_edge, insert_all, mesh_size, next, prev, Ghosted, Part, GHOST,
 };
@@ -197,7 +197,10 @@ fn split_input(points: &[Point2]) -> (Vec<u32>, Vec<u32>) {
     sample.sort_unstable_by(|a, b| cmp_lex(*a, *b));
     let pivot = sample[SAMPLE / 2];
     let split = |from: usize, part: &[Point2]| {
-        let (mut left, mut right) = (Vec::new(), Vec::new());
+        let (mut left, mut right) = (
+            Vec::with_capacity(part.len()),
+            Vec::with_capacity(part.len()),
+        );
         for (i, p) in (from as u32..).zip(part) {
             if cmp_lex(*p, pivot) == Ordering::Less {
                 left.push(i);
@@ -226,9 +229,8 @@ fn split_input(points: &[Point2]) -> (Vec<u32>, Vec<u32>) {
 /// each round, over `bounds`).
 fn half_order(points: &[Point2], ids: Vec<u32>, bounds: Option<BoundingBox>) -> Vec<u32> {
     let half: Vec<Point2> = ids.iter().map(|&i| points[i as usize]).collect();
-    let local = brio_order(&half, bounds);
-    drop(half);
-    local.iter().map(|&k| ids[k as usize]).collect()
+    // The ids increase (the split keeps the input order), so they can label the keys.
+    brio_order_labelled(&half, bounds, &|k| ids[k])
 }
 
 /// `a` and `b`, on two threads with the `parallel` feature (and more than one thread in
