@@ -422,56 +422,110 @@ impl<'a, 'c, C: Counter> Mesh<'a, 'c, C> {
     }
 
     /// A visibility walk from `self.last`: cross an edge that has `p` strictly on its far side
-    /// (trying the edges from a random one, so the walk cannot cycle) until none has.
+    /// (trying the edges in a random order, so the walk cannot cycle) until none has.
+    ///
+    /// After the first triangle the walk enters each triangle through an edge that has `p`
+    /// strictly inside, so only the other two edges are tested, and they share the one new
+    /// vertex: each step loads one vertex and one point and makes at most two orientation
+    /// tests.
     fn locate(&mut self, p: Point2) -> Location {
         let mut t = self.last;
         if self.is_ghost(t) {
             t = self.halfedges[3 * t as usize + self.ghost_real_edge(t)] / 3;
         }
-        let mut entered = u32::MAX;
-        'walk: loop {
-            let base = 3 * t;
-            let start = self.flip3();
-            let mut collinear = 0u32;
-            for k in 0..3 {
-                let e = base + (start + k) % 3;
-                if e == entered {
+        let mut e = match self.first_crossing(t, p) {
+            Ok(e) => e,
+            Err(found) => return found,
+        };
+        // `e` = a -> b has `p` strictly on its right, and `pa`, `pb` are its ends.
+        let mut pa = self.point(self.triangles[e as usize]);
+        let mut pb = self.point(self.triangles[next(e) as usize]);
+        loop {
+            // The triangle across is (b, a, c): edges f = b -> a (`p` strictly inside),
+            // next(f) = a -> c and prev(f) = c -> b.
+            let f = self.halfedges[e as usize];
+            let c = self.triangles[prev(f) as usize];
+            if c == GHOST {
+                return Location::Outside(f / 3);
+            }
+            let pc = self.point(c);
+            let (to_c, from_c);
+            if self.coin_bit() {
+                to_c = self.filter.orient2d_with(pa, pc, p, self.counter);
+                if to_c == Orientation::Clockwise {
+                    (e, pb) = (next(f), pc);
                     continue;
                 }
-                let a = self.triangles[e as usize];
-                let b = self.triangles[next(e) as usize];
-                match self
-                    .filter
-                    .orient2d_with(self.point(a), self.point(b), p, self.counter)
-                {
-                    Orientation::Clockwise => {
-                        let f = self.halfedges[e as usize];
-                        t = f / 3;
-                        // `t` has the real vertices `a` and `b` on `f`: it is a ghost
-                        // exactly when its third vertex is the ghost vertex.
-                        if self.triangles[prev(f) as usize] == GHOST {
-                            return Location::Outside(t);
-                        }
-                        entered = f;
-                        continue 'walk;
-                    }
-                    Orientation::Collinear => collinear = collinear * 4 + 1 + e - base,
-                    Orientation::CounterClockwise => {}
+                from_c = self.filter.orient2d_with(pc, pb, p, self.counter);
+                if from_c == Orientation::Clockwise {
+                    (e, pa) = (prev(f), pc);
+                    continue;
+                }
+            } else {
+                from_c = self.filter.orient2d_with(pc, pb, p, self.counter);
+                if from_c == Orientation::Clockwise {
+                    (e, pa) = (prev(f), pc);
+                    continue;
+                }
+                to_c = self.filter.orient2d_with(pa, pc, p, self.counter);
+                if to_c == Orientation::Clockwise {
+                    (e, pb) = (next(f), pc);
+                    continue;
                 }
             }
-            // At most one collinear edge unless `p` is a vertex; `collinear` encodes it as
-            // 1 + its position.
-            if collinear == 0 {
-                return Location::Inside(t);
-            }
-            for e in base..base + 3 {
-                let v = self.triangles[e as usize];
-                if self.point(v) == p {
-                    return Location::Vertex(v);
-                }
-            }
-            return Location::OnEdge(base + collinear - 1);
+            // `p` is strictly inside b -> a, so it is neither a nor b: on one of the other
+            // edges it is in that edge's interior, on both it is c.
+            return match (to_c, from_c) {
+                (Orientation::Collinear, Orientation::Collinear) => Location::Vertex(c),
+                (Orientation::Collinear, _) => Location::OnEdge(next(f)),
+                (_, Orientation::Collinear) => Location::OnEdge(prev(f)),
+                _ => Location::Inside(f / 3),
+            };
         }
+    }
+
+    /// The first edge of real triangle `t` (from a random one) that has `p` strictly on its
+    /// far side, or where `p` is in `t` if no edge has.
+    fn first_crossing(&mut self, t: u32, p: Point2) -> std::result::Result<u32, Location> {
+        let base = 3 * t;
+        let start = self.flip3();
+        let mut collinear = 0u32;
+        for k in 0..3 {
+            let e = base + (start + k) % 3;
+            let a = self.triangles[e as usize];
+            let b = self.triangles[next(e) as usize];
+            match self
+                .filter
+                .orient2d_with(self.point(a), self.point(b), p, self.counter)
+            {
+                Orientation::Clockwise => return Ok(e),
+                Orientation::Collinear => collinear = collinear * 4 + 1 + e - base,
+                Orientation::CounterClockwise => {}
+            }
+        }
+        // At most one collinear edge unless `p` is a vertex; `collinear` encodes it as
+        // 1 + its position.
+        if collinear == 0 {
+            return Err(Location::Inside(t));
+        }
+        for e in base..base + 3 {
+            let v = self.triangles[e as usize];
+            if self.point(v) == p {
+                return Err(Location::Vertex(v));
+            }
+        }
+        Err(Location::OnEdge(base + collinear - 1))
+    }
+
+    /// A pseudo-random choice between two (the top bit of the next xorshift state).
+    #[inline(always)]
+    fn coin_bit(&mut self) -> bool {
+        let mut x = self.coin;
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        self.coin = x;
+        x >> 31 == 1
     }
 
     /// A pseudo-random edge position, 0, 1 or 2 (the high bits of the next xorshift state,
