@@ -249,3 +249,26 @@ fn one_ulp_perturbations_of_degenerate_sets_at_extreme_scales() {
         }
     }
 }
+
+#[test]
+fn long_runs_that_reuse_event_slots() {
+    // The sweep reuses the slot of every event that left the queue (real or false alarm),
+    // so a slot holds many events over a run: on the grid (small-integer circles kept per
+    // slot, ties everywhere) and on uniform and clustered sites, thousands of reuses each.
+    // A stale slot would give a wrong triangle or miss one: the exact checker, the
+    // incremental builder's triangle count and hull.
+    for (kind, n) in [
+        (PointKind::Grid, 4900),
+        (PointKind::RotatedGrid, 3000),
+        (PointKind::UniformSquare, 20_000),
+        (PointKind::Clustered, 20_000),
+    ] {
+        let pts = points(kind, n, 11).unwrap();
+        let what = format!("{kind} n={n}");
+        let t = checked(&pts, &what);
+        let reference = incremental(&pts).unwrap();
+        assert_eq!(t.triangle_count(), reference.triangle_count(), "{what}");
+        assert_eq!(t.hull, reference.hull, "{what}");
+        assert!(t.triangle_count() > n, "{what}");
+    }
+}
