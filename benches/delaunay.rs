@@ -362,6 +362,59 @@
 //! (Two earlier 5-round runs, load 4 to 5.5: 0.459 and 0.445, then 0.435 and 0.441 on
 //! uniform-square; 0.534 and 0.526, then 0.545 and 0.508 on clustered, d8fd415 first.
 //! Voronoice slows more than compgeo under load, so the ratios fall as the load rises.)
+//!
+//! 2026-12-05, after the walk that enters each triangle through a known edge (two
+//! orientation tests and one new vertex per step: 20 % fewer instructions per build at 10³,
+//! counted by callgrind), on the quiet machine (load average about 1, nothing else
+//! running). Criterion medians (wall time) of this file's groups, compgeo and the peers in
+//! the same group; once without and once with `--features parallel` (the peers are
+//! single-threaded; with the feature, ours splits from 2¹⁹ points and builds the halves on
+//! the 2 cores). The two runs were some minutes apart and the machine was about 5–10 %
+//! slower in the second (the peers' times moved by that much), so compare ratios within a
+//! run, not times across them.
+//!
+//! | group, n | incremental | delaunator | spade bulk load | ours / faster peer | with `parallel`: incremental | delaunator | spade | ours / faster peer |
+//! |---|---|---|---|---|---|---|---|---|
+//! | uniform-square, 10³ | 201.1 µs | 222.5 µs | 412.8 µs | 0.90 | 236.5 µs | 230.8 µs | 450.0 µs | 1.02 |
+//! | uniform-square, 10⁴ | 2.61 ms | 3.19 ms | 5.32 ms | 0.82 | 2.94 ms | 3.52 ms | 5.56 ms | 0.84 |
+//! | uniform-square, 10⁵ | 39.51 ms | 56.80 ms | 62.71 ms | 0.70 | 47.34 ms | 64.26 ms | 64.63 ms | 0.74 |
+//! | uniform-square, 10⁶ | 422.13 ms | 1.037 s | 921.93 ms | 0.46 | 248.16 ms | 1.074 s | 916.88 ms | 0.27 |
+//! | uniform-square, 10⁷ | – | – | – | – | 3.016 s | 18.270 s | 12.352 s | 0.24 |
+//! | clustered, 10³ | 215.2 µs | 249.1 µs | 456.7 µs | 0.86 | 214.7 µs | 255.1 µs | 463.2 µs | 0.84 |
+//! | clustered, 10⁴ | 2.69 ms | 3.52 ms | 5.95 ms | 0.76 | 2.70 ms | 3.44 ms | 5.91 ms | 0.78 |
+//! | clustered, 10⁵ | 29.96 ms | 44.55 ms | 68.38 ms | 0.67 | 37.35 ms | 48.48 ms | 72.25 ms | 0.77 |
+//! | clustered, 10⁶ | 471.59 ms | 818.78 ms | 920.23 ms | 0.58 | 297.70 ms | 850.88 ms | 945.73 ms | 0.35 |
+//! | clustered, 10⁷ | – | – | – | – | 2.854 s | 16.185 s | 12.131 s | 0.24 |
+//! | grid, 10³ | 131.5 µs | 185.6 µs | 726.2 µs | 0.71 | 133.9 µs | 187.5 µs | 778.5 µs | 0.71 |
+//! | grid, 10⁴ | 2.18 ms | 2.68 ms | 8.51 ms | 0.81 | 2.29 ms | 2.68 ms | 8.82 ms | 0.86 |
+//! | grid, 10⁵ | 23.64 ms | 36.61 ms | 88.44 ms | 0.65 | 27.70 ms | 44.94 ms | 93.72 ms | 0.62 |
+//! | grid, 10⁶ | 366.63 ms | 1.005 s | 1.178 s | 0.36 | 312.39 ms | 1.177 s | 1.256 s | 0.27 |
+//! | grid, 10⁷ | – | – | – | – | 2.515 s | 19.268 s | – | 0.13 |
+//!
+//! | voronoi, n | compgeo cells, with `parallel` | voronoice | ratio |
+//! |---|---|---|---|
+//! | uniform-square, 10⁴ | 4.45 ms | 5.49 ms | 0.81 |
+//! | uniform-square, 10⁵ | 49.98 ms | 74.12 ms | 0.67 |
+//! | uniform-square, 10⁶ | 438.68 ms | 1.494 s | 0.29 |
+//! | clustered, 10⁴ | 4.50 ms | 6.30 ms | 0.71 |
+//! | clustered, 10⁵ | 48.69 ms | 79.92 ms | 0.61 |
+//! | clustered, 10⁶ | 453.70 ms | 1.311 s | 0.35 |
+//!
+//! (The 10⁷ groups ran only with the feature; spade's grid group at 10⁷ was stopped for
+//! time, and delaunator was the faster peer on the grid at 10⁶.) Both builds execute the
+//! same instructions at 10³ (callgrind: 12.84 · 10⁹ for 6000 builds of 10³ uniform points
+//! in either, against 16.10 · 10⁹ before the walk change and 12.00 · 10⁹ for
+//! delaunator); interleaved right after (CPU time of the thread, 9 rounds, one core busy
+//! with a build) the uniform 10³ ratio was 0.92–0.98 in both. So at 10³ on uniform points
+//! the margin is small (2–10 %), and the second run's 1.02 is within the spread between
+//! runs; the other inputs and sizes keep 14–30 %. Sequentially the build
+//! is at most 0.5× the faster peer at 10⁶ on uniform points and the grid, not on clustered
+//! points (0.58).
+//!
+//! Fortune / incremental after the walk change (interleaved in one process, 5 rounds,
+//! median CPU time of the thread, no feature, load average about 1): uniform 4.9, 4.4,
+//! 4.3, 3.1; clustered 4.0, 3.6, 3.8, 2.8; grid 6.5, 4.6, 4.5, 3.5 at 10³, 10⁴, 10⁵, 10⁶.
+//! The incremental builder got faster, so the ratios grew at the small sizes.
 
 use compgeo::delaunay::{divide_and_conquer, fortune, incremental, voronoi, ClipBox};
 use compgeo::gen::{points, PointKind};
