@@ -3,6 +3,7 @@
 //! vertex event).
 
 use super::beach_line::{BeachLine, NIL};
+use super::event_queue::{Event, EventQueue, Front};
 use super::{Triangulation, EMPTY};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
@@ -15,7 +16,6 @@ use crate::geometry::sweep_predicates::{
 };
 use crate::geometry::{BoxPredicates, ConstructedPoint, Orientation, Point2, PointSet};
 use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
-use crate::util::Heap;
 use std::cmp::Ordering;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -133,9 +133,12 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// one Delaunay triangle, the dual of that vertex; at a vertex shared by k ≥ 4 cocircular
 /// sites, k − 2 events happen at the same point and their triangles tile the sites' polygon.
 ///
-/// Sites are sorted by (y, x); circle events wait in a binary heap (an event whose arc has
-/// changed neighbours since is skipped when it comes out: lazy deletion); the arcs live in a
-/// treap threaded by a linked list. A new site's arc is found by a descent that asks, at each
+/// Sites are sorted by (y, x); circle events wait in a queue with lazy deletion (an event
+/// whose arc has changed neighbours since is skipped when it comes out); the arcs live in a
+/// treap threaded by a linked list. The queue parks events far above the sweep line in
+/// buckets of equal height, in O(1) each (false alarms among them are dropped when their
+/// bucket is reached), and orders only the events near the line exactly: a sorted run
+/// (events tied in height, as on integer grids, arrive in order) beside a binary heap. A new site's arc is found by a descent that asks, at each
 /// arc, whether the site is right of the arc's right breakpoint. Three consecutive arcs of
 /// sites a, b, c get a circle event exactly when a, b, c turn counter-clockwise (their
 /// breakpoints converge).
@@ -147,8 +150,9 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// included: the convergence test is [`orient2d`](crate::geometry::orient2d); the breakpoint
 /// test and the event order, which involve square roots in coordinates, are reduced to signs
 /// of polynomials (see `src/geometry/sweep_predicates.rs`) with floating-point filters and
-/// exact integer fallbacks. The heap holds each circle event's top as a double with an
-/// a-priori error bound and compares two events exactly only when their bounds overlap;
+/// exact integer fallbacks. The queue holds each circle event's top as a double with an
+/// a-priori error bound, parks it by the bound's lower end, and compares two events exactly
+/// only when their bounds overlap;
 /// for small-integer sets (integer grids, whose events tie everywhere) those ties are
 /// decided in plain floating point when every operation is provably exact. Events are
 /// ordered by their point on the sweep line, y then x (a line turned by an infinitesimal
@@ -174,16 +178,18 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// # Complexity
 ///
 /// With n = `points.len()`: time O(n log n) expected (the sort; at most 2n − 5 circle
-/// events and 6n heap insertions, O(log n) each; one O(log n) expected treap descent and
+/// events and fewer than 6n events queued, each parked in O(1) and ordered in O(log n) at
+/// most once; O(n) empty buckets passed; one O(log n) expected treap descent and
 /// insertion per site, the expectation over the treap's priorities, which a fixed seed
 /// draws independently of the input); auxiliary space O(n). The exact fallbacks cost more
 /// than the filter but are O(1) each for a given input precision.
 ///
 /// # Counts
 ///
-/// Comparisons: the (y, x) sort and duplicate merge, every comparison of two events (heap
-/// order, and the next site against the first circle event), and every breakpoint test of
-/// the beach-line descent. Orientation tests: one per triple of arcs checked for a circle
+/// Comparisons: the (y, x) sort and duplicate merge, every comparison of two events (the
+/// near events' order, and the next site against the first circle event), and every
+/// breakpoint test of the beach-line descent; not the queue's bucket arithmetic, which
+/// decides no order. Orientation tests: one per triple of arcs checked for a circle
 /// event. No in-circle tests: the Delaunay property comes from the sweep itself.
 ///
 /// ```
@@ -288,7 +294,7 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
         counter,
         obs,
         line: BeachLine::with_capacity(2 * sites.len()),
-        queue: Heap::with_capacity(sites.len()),
+        queue: event_queue(&sites),
         events: Vec::new(),
         free_events: Vec::new(),
         predicates,
@@ -312,29 +318,6 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
     Triangulation::from_linked(points, triangles, halfedges, duplicates)
 }
 
-/// A circle event as the queue holds it (16 bytes): the estimate of its circle's top (see
-/// [`TopEstimate`]) and its id, the index of its [`EventSites`] in `Sweep::events` (a slot
-/// that is reused once the event has left the queue).
-#[derive(Debug, Clone, Copy)]
-struct Event {
-    top: f64,
-    err: f32,
-    /// Matches the arc's pending event while the event is still valid.
-    id: u32,
-}
-
-const _: () = assert!(std::mem::size_of::<Event>() == 16);
-
-impl Event {
-    #[inline]
-    fn estimate(&self) -> TopEstimate {
-        TopEstimate {
-            top: self.top,
-            err: self.err,
-        }
-    }
-}
-
 /// What the queue's comparisons need only when the estimates leave them open: arc `arc`
 /// (between the arcs of `sites[0]` and `sites[2]`) vanishes at the top of the circle
 /// through `sites`.
@@ -355,8 +338,8 @@ struct Sweep<'a, C, O> {
     counter: &'a mut C,
     obs: &'a mut O,
     line: BeachLine,
-    /// A binary min-heap of circle events by event point.
-    queue: Heap<Event>,
+    /// The circle events by event point.
+    queue: EventQueue,
     /// The sites and arc of every circle event in the queue, by id, and slots free for
     /// reuse: an event's slot is freed when it leaves the queue, so the array stays as
     /// large as the queue has ever been, not one slot per event ever queued (about 3.5n
@@ -385,33 +368,38 @@ struct Sweep<'a, C, O> {
 
 impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
     fn run(&mut self) {
-        let n = self.sites.len();
         let mut next_site = 0;
-        while next_site < n || self.queue.peek().is_some() {
-            let circle_first = match self.queue.peek() {
-                None => false,
-                Some(_) if next_site == n => true,
-                Some(e) => {
+        loop {
+            let site = self.sites.get(next_site).copied();
+            let front = self.settle(site.map_or(f64::INFINITY, |s| s.y));
+            // The first circle event if it comes before the next site.
+            let circle = match (front, site) {
+                (None, None) => break,
+                (None, Some(_)) => None,
+                (Some(f), None) => Some(f),
+                (Some(f), Some(site)) => {
                     self.counter.comparison();
-                    let site = self.sites[next_site];
                     // The sites' coordinates only when the estimate leaves it open.
-                    let order = e.estimate().cmp_height(site.y).unwrap_or_else(|| {
-                        let t = self.points(self.events[e.id as usize].sites);
+                    let order = f.event.estimate().cmp_height(site.y).unwrap_or_else(|| {
+                        let t = self.points(self.events[f.event.id as usize].sites);
                         cmp_circle_site(&CircleKey::new(t[0], t[1], t[2]), t, site)
                     });
-                    order != Ordering::Greater
+                    (order != Ordering::Greater).then_some(f)
                 }
             };
-            if circle_first {
-                let e = self.pop();
-                self.circle_event(e.id);
-                // No queued event has this id any more, and no arc refers to it: a valid
-                // event's arc is gone, and a false alarm's arc was given another event or
-                // none when it changed neighbours.
-                self.free_events.push(e.id);
-            } else {
-                self.site_event(next_site as u32);
-                next_site += 1;
+            match circle {
+                Some(f) => {
+                    self.take(f);
+                    self.circle_event(f.event.id);
+                    // No queued event has this id any more, and no arc refers to it: a
+                    // valid event's arc is gone, and a false alarm's arc was given another
+                    // event or none when it changed neighbours.
+                    self.free_events.push(f.event.id);
+                }
+                None => {
+                    self.site_event(next_site as u32);
+                    next_site += 1;
+                }
             }
         }
     }
@@ -458,10 +446,10 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
     }
 
     fn circle_event(&mut self, id: u32) {
-        let e = self.events[id as usize];
-        if !self.line.is_live(e.arc) || self.line.event(e.arc) != id {
+        if !is_pending(&self.line, &self.events, id) {
             return; // a false alarm: the arc changed neighbours or is gone
         }
+        let e = self.events[id as usize];
         let t = self.triangles.len() as u32;
         self.triangles.push(e.sites);
         self.halfedges.extend([NIL; 3]);
@@ -564,15 +552,45 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         );
     }
 
-    /// Removes and returns the first event (the queue is not empty).
-    fn pop(&mut self) -> Event {
+    /// The queue's first event, made the first of all or, if not, one after the site at
+    /// height `horizon` with every other event after it too (see [`EventQueue::settle`]);
+    /// the false alarms met on the way are dropped and their slots freed.
+    fn settle(&mut self, horizon: f64) -> Option<Front> {
+        let (sites, events, circles, line) = (self.sites, &self.events, &self.circles, &self.line);
+        self.queue.settle(
+            horizon,
+            |id| is_pending(line, events, id),
+            &mut self.free_events,
+            |x, y| before(sites, events, circles, x, y),
+            &mut *self.counter,
+        )
+    }
+
+    /// Removes the first event, as [`settle`](Self::settle) returned it.
+    fn take(&mut self, front: Front) {
         let (sites, events, circles) = (self.sites, &self.events, &self.circles);
-        self.queue
-            .pop(
-                |x, y| before(sites, events, circles, x, y),
-                &mut *self.counter,
-            )
-            .expect("pop is only called on a non-empty queue")
+        self.queue.take(
+            front,
+            |x, y| before(sites, events, circles, x, y),
+            &mut *self.counter,
+        );
+    }
+}
+
+/// Whether event `id` is still the pending event of its arc (not a false alarm).
+#[inline]
+fn is_pending(line: &BeachLine, events: &[EventSites], id: u32) -> bool {
+    let arc = events[id as usize].arc;
+    line.is_live(arc) && line.event(arc) == id
+}
+
+/// An empty event queue for the sorted sites: one bucket per two sites between the lowest
+/// and the highest (about 1.75 events each on uniform input, most of them near the sweep
+/// line when their bucket is reached).
+fn event_queue(sites: &[Point2]) -> EventQueue {
+    match (sites.first(), sites.last()) {
+        (Some(lo), Some(hi)) => EventQueue::new(lo.y, hi.y, sites.len() / 2),
+        _ => EventQueue::new(0.0, 0.0, 1),
     }
 }
 

@@ -31,7 +31,7 @@
 //! | [`incremental`] | O(n log n) expected on every input | `incremental.rs` (+ `hilbert.rs`, its insertion order) |
 //! | [`divide_and_conquer`] | O(n log n) worst case (the course's algorithm) | `divide_conquer.rs` (+ `quad_edge.rs`, its working structure) |
 //! | [`lawson`] | O(n²) worst case (flips from a sweep triangulation; for teaching; [`lawson_trace`] records each flip) | `lawson.rs` |
-//! | [`fortune`] | O(n log n) expected on every input (Fortune's sweep, the Voronoi diagram first; [`fortune_trace`] records each event) | `fortune.rs` (+ `beach_line.rs`, its treap; exact predicates in `geometry/sweep_predicates.rs`) |
+//! | [`fortune`] | O(n log n) expected on every input (Fortune's sweep, the Voronoi diagram first; [`fortune_trace`] records each event) | `fortune.rs` (+ `beach_line.rs`, its treap; `event_queue.rs`, its buckets and heap; exact predicates in `geometry/sweep_predicates.rs`) |
 //!
 //! # On top of the triangulation
 //!
@@ -58,6 +58,7 @@ mod beach_line;
 mod check;
 mod clip;
 mod divide_conquer;
+mod event_queue;
 mod fortune;
 mod hilbert;
 mod incremental;
