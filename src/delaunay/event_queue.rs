@@ -58,6 +58,60 @@ impl Event {
     }
 }
 
+/// A monotone map of a coordinate onto `count` buckets of equal width between two values
+/// (the queue's heights; the sweep's hints for locating sites by x).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Buckets {
+    origin: f64,
+    /// Buckets per unit.
+    scale: f64,
+    last: usize,
+}
+
+impl Buckets {
+    /// About `count` buckets (at least one) from `low` to `high` (finite, `low <= high`);
+    /// one bucket if the range is empty or too narrow to divide.
+    pub(super) fn new(low: f64, high: f64, count: usize) -> Buckets {
+        let count = count.max(1);
+        let scale = count as f64 / (high - low);
+        if scale.is_finite() && scale > 0.0 {
+            Buckets {
+                origin: low,
+                scale,
+                last: count - 1,
+            }
+        } else {
+            Buckets {
+                origin: low,
+                scale: 0.0,
+                last: 0,
+            }
+        }
+    }
+
+    /// The number of buckets.
+    #[inline]
+    pub(super) fn count(&self) -> usize {
+        self.last + 1
+    }
+
+    /// The bucket of `v`: a non-decreasing function of `v` (a subtraction and a product by
+    /// a non-negative constant, both monotone under rounding, then the floor, clamped to
+    /// the buckets; -inf gives the first, +inf and NaN the last).
+    #[inline]
+    pub(super) fn of(&self, v: f64) -> usize {
+        let t = (v - self.origin) * self.scale;
+        if t >= 0.0 {
+            // `as` saturates: huge values land in the last bucket.
+            (t as usize).min(self.last)
+        } else if t.is_nan() {
+            self.last
+        } else {
+            0
+        }
+    }
+}
+
 /// A parked event: its estimate and the next event of its bucket ([`NIL`] at the end).
 #[derive(Debug, Clone, Copy)]
 struct Parked {
@@ -170,10 +224,8 @@ pub(super) struct EventQueue {
     /// The first bucket not yet moved into the heap: every parked event's lower end maps to
     /// this bucket or a later one.
     current: usize,
-    /// The height of bucket 0's lower end.
-    origin: f64,
-    /// Buckets per unit of height.
-    scale: f64,
+    /// The buckets' heights.
+    buckets: Buckets,
 }
 
 impl EventQueue {
@@ -181,26 +233,19 @@ impl EventQueue {
     /// (finite, `lowest <= highest`), with about `buckets` buckets in between (at least
     /// one; a single bucket makes the queue a plain heap after the first event).
     pub(super) fn new(lowest: f64, highest: f64, buckets: usize) -> EventQueue {
-        let mut count = buckets.max(1);
-        let mut scale = count as f64 / (highest - lowest);
-        if !(scale.is_finite() && scale > 0.0) {
-            // No height range (one row of sites, which has no circle events) or one too
-            // narrow to divide: a single bucket.
-            (count, scale) = (1, 0.0);
-        }
+        let buckets = Buckets::new(lowest, highest, buckets);
         EventQueue {
             near: Near {
                 run: Vec::with_capacity(64),
                 head: 0,
                 heap: Heap::with_capacity(64),
             },
-            heads: vec![NIL; count],
+            heads: vec![NIL; buckets.count()],
             parked: Vec::new(),
             parked_count: 0,
             moving: Vec::new(),
             current: 0,
-            origin: lowest,
-            scale,
+            buckets,
         }
     }
 
@@ -210,21 +255,10 @@ impl EventQueue {
         self.near.is_empty() && self.parked_count == 0
     }
 
-    /// The bucket of height `y`: a non-decreasing function of `y` (a subtraction and a
-    /// product by a positive constant, both monotone under rounding, then the floor, clamped
-    /// to the buckets; -inf gives the first, +inf and NaN the last).
+    /// The bucket of height `y` (see [`Buckets::of`]).
     #[inline]
     fn bucket(&self, y: f64) -> usize {
-        let last = self.heads.len() - 1;
-        let t = (y - self.origin) * self.scale;
-        if t >= 0.0 {
-            // `as` saturates: huge values land in the last bucket.
-            (t as usize).min(last)
-        } else if t.is_nan() {
-            last
-        } else {
-            0
-        }
+        self.buckets.of(y)
     }
 
     /// Queues `e`: in the heap (O(log q) comparisons by `less`, counted) if its bucket has
@@ -494,6 +528,7 @@ mod tests {
             assert_eq!(queue.heads.len(), 1);
             assert_eq!(queue.bucket(f64::MAX), 0);
         }
+        assert_eq!(Buckets::new(0.0, 1.0, 0).count(), 1);
         let queue = EventQueue::new(0.0, 1.0, 4);
         let buckets: Vec<usize> = [f64::NEG_INFINITY, -1.0, 0.0, 0.3, 0.5, 0.99, 1.0, 1e300]
             .map(|y| queue.bucket(y))

@@ -3,7 +3,7 @@
 //! vertex event).
 
 use super::beach_line::{BeachLine, NIL};
-use super::event_queue::{Event, EventQueue, Front};
+use super::event_queue::{Buckets, Event, EventQueue, Front};
 use super::{Triangulation, EMPTY};
 use crate::complexity::{on, Bound, Declaration};
 use crate::count::{Counter, NoCount, Operation};
@@ -135,13 +135,15 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 ///
 /// Sites are sorted by (y, x); circle events wait in a queue with lazy deletion (an event
 /// whose arc has changed neighbours since is skipped when it comes out); the arcs live in a
-/// treap threaded by a linked list. The queue parks events far above the sweep line in
-/// buckets of equal height, in O(1) each (false alarms among them are dropped when their
-/// bucket is reached), and orders only the events near the line exactly: a sorted run
-/// (events tied in height, as on integer grids, arrive in order) beside a binary heap. A new site's arc is found by a descent that asks, at each
-/// arc, whether the site is right of the arc's right breakpoint. Three consecutive arcs of
-/// sites a, b, c get a circle event exactly when a, b, c turn counter-clockwise (their
-/// breakpoints converge).
+/// treap threaded by a linked list. A new site's arc is found by a descent that asks, at
+/// each arc, whether the site is right of the arc's right breakpoint; first, though, a walk
+/// of at most a few steps along the list asks the same from a hint (the arc last inserted
+/// in the site's bucket of x), and usually arrives. Three consecutive arcs of sites a, b, c
+/// get a circle event exactly when a, b, c turn counter-clockwise (their breakpoints
+/// converge). The queue parks events far above the sweep line in buckets of equal height,
+/// in O(1) each (false alarms among them are dropped when their bucket is reached), and
+/// orders only the events near the line exactly: a sorted run (events tied in height, as
+/// on integer grids, arrive in order) beside a binary heap.
 ///
 /// Follows [RD, §2.4] "Algoritmos", 2. "Fortune" (the course refers to
 /// de Berg et al., *Computational Geometry*, ch. 7), sweeping upwards instead of downwards.
@@ -179,8 +181,8 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 ///
 /// With n = `points.len()`: time O(n log n) expected (the sort; at most 2n − 5 circle
 /// events and fewer than 6n events queued, each parked in O(1) and ordered in O(log n) at
-/// most once; O(n) empty buckets passed; one O(log n) expected treap descent and
-/// insertion per site, the expectation over the treap's priorities, which a fixed seed
+/// most once; O(n) empty buckets passed; per site a walk of O(1) steps from its hint,
+/// then at most one O(log n) expected treap descent, and O(log n) expected insertion, the expectation over the treap's priorities, which a fixed seed
 /// draws independently of the input); auxiliary space O(n). The exact fallbacks cost more
 /// than the filter but are O(1) each for a given input precision.
 ///
@@ -295,6 +297,8 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
         obs,
         line: BeachLine::with_capacity(2 * sites.len()),
         queue: event_queue(&sites),
+        hint_buckets: hint_buckets(&sites),
+        hints: vec![[NIL; 2]; hint_buckets(&sites).count()],
         events: Vec::new(),
         free_events: Vec::new(),
         predicates,
@@ -338,6 +342,10 @@ struct Sweep<'a, C, O> {
     counter: &'a mut C,
     obs: &'a mut O,
     line: BeachLine,
+    /// Where to start looking for a new site's arc: per bucket of x, the latest arc
+    /// inserted there and its site (the arc's slot may have been removed or reused since).
+    hints: Vec<[u32; 2]>,
+    hint_buckets: Buckets,
     /// The circle events by event point.
     queue: EventQueue,
     /// The sites and arc of every circle event in the queue, by id, and slots free for
@@ -406,11 +414,8 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
 
     fn site_event(&mut self, s: u32) {
         let p = self.sites[s as usize];
-        let (line, counter) = (&self.line, &mut *self.counter);
-        let found = line.first_arc_where(|a| {
-            counter.comparison();
-            breakpoint_side(line.point(a), line.point(line.next(a)), p) == Ordering::Greater
-        });
+        let hint = self.hint_buckets.of(p.x);
+        let found = self.arc_above(p, self.hints[hint]);
         if found == NIL {
             self.line.insert_after(NIL, s, p);
         } else {
@@ -419,6 +424,7 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
             let new = self.line.insert_after(found, s, p);
             // The new breakpoints trace one new Voronoi edge, between `above` and `s`
             // (both of them, in opposite directions, when the arc is split).
+            self.hints[hint] = [new, s];
             let edge = self.new_edge(NIL);
             self.line.set_edge(new, edge);
             if above_point.y == p.y {
@@ -443,6 +449,30 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
                 triangles: input_triangles(triangles, index),
             }
         });
+    }
+
+    /// The arc above site `p` (`p` is right of the breakpoints left of it and not right of
+    /// the one on its right), [`NIL`] on an empty beach line: the arc the treap's descent
+    /// finds ([`BeachLine::first_arc_where`]), found first by a short walk along the line
+    /// from `hint` (an arc and its site) when that arc is still live and still its site's.
+    /// The breakpoint tests are monotone along the line, so the walk ends at the same arc;
+    /// it gives up after [`HINT_STEPS`] steps and leaves it to the descent.
+    fn arc_above(&mut self, p: Point2, hint: [u32; 2]) -> u32 {
+        let (line, counter) = (&self.line, &mut *self.counter);
+        let side = |a: u32| {
+            breakpoint_side(line.point(a), line.point(line.next(a)), p) == Ordering::Greater
+        };
+        let mut right_of = |a: u32| {
+            counter.comparison();
+            side(a)
+        };
+        let walked = walk_from_hint(line, hint, &mut right_of);
+        // (Uncounted: debug builds count what release builds count.)
+        debug_assert!(
+            walked.is_none() || walked == Some(line.first_arc_where(side)),
+            "the walk from a hint and the descent disagree"
+        );
+        walked.unwrap_or_else(|| line.first_arc_where(right_of))
     }
 
     fn circle_event(&mut self, id: u32) {
@@ -582,6 +612,56 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
 fn is_pending(line: &BeachLine, events: &[EventSites], id: u32) -> bool {
     let arc = events[id as usize].arc;
     line.is_live(arc) && line.event(arc) == id
+}
+
+/// The walk of [`Sweep::arc_above`]: from the hint's arc (if still live and its site's)
+/// along the line towards the arc whose breakpoints enclose the site, `None` if that takes
+/// more than [`HINT_STEPS`] steps. `right_of(a)`: whether the site is right of the
+/// breakpoint between `a` and the arc after it (true for a prefix of the arcs).
+fn walk_from_hint(
+    line: &BeachLine,
+    hint: [u32; 2],
+    right_of: &mut impl FnMut(u32) -> bool,
+) -> Option<u32> {
+    let [mut a, site] = hint;
+    if a == NIL || !line.is_live(a) || line.site(a) != site {
+        return None;
+    }
+    if line.next(a) != NIL && right_of(a) {
+        for _ in 0..HINT_STEPS {
+            a = line.next(a);
+            if line.next(a) == NIL || !right_of(a) {
+                return Some(a);
+            }
+        }
+    } else {
+        for _ in 0..HINT_STEPS {
+            let left = line.prev(a);
+            if left == NIL || right_of(left) {
+                return Some(a);
+            }
+            a = left;
+        }
+    }
+    None
+}
+
+/// The most steps the walk from a hint takes before the descent takes over: the walk stays
+/// O(1), so a site costs O(log n) expected whatever the hints are.
+const HINT_STEPS: usize = 8;
+
+/// The buckets of x for the hints: about 2 √n for n sites, about one per arc of a beach
+/// line over uniform sites.
+fn hint_buckets(sites: &[Point2]) -> Buckets {
+    let (low, high) = sites
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p.x), hi.max(p.x))
+        });
+    if sites.is_empty() {
+        return Buckets::new(0.0, 0.0, 1);
+    }
+    Buckets::new(low, high, 2 * (sites.len() as f64).sqrt() as usize)
 }
 
 /// An empty event queue for the sorted sites: one bucket per two sites between the lowest

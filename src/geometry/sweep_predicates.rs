@@ -142,10 +142,11 @@ impl TopEstimate {
     ///    and the evaluation of `√(nx² + ny²)` adds `(2u + u)/2 + u = 2.5u r`, plus
     ///    `2^-536` if a square underflows (`ROOT_UNDERFLOW_SLACK`);
     /// 6. `N = ny + r`: the errors of `ny` and `r`, plus `u N`;
-    /// 7. `t = N / d`: with `|d| > E_d`, `|N*/d* − N/d| <= E_N / (|d| − E_d) +
-    ///    N E_d / (|d| (|d| − E_d))`, plus `u t` for the division (and `2^-1074` if the
-    ///    quotient is subnormal); `|d| >= 2^-400` keeps the slack of step 5 below
-    ///    `2^-130` after it;
+    /// 7. `t = N / d`, evaluated as `N` times the rounded `1 / d` (`d` is in
+    ///    `[2^-400, 2^6)`, so the reciprocal is normal): with `|d| > E_d`,
+    ///    `|N*/d* − N/d| <= E_N / (|d| − E_d) + N E_d / (|d| (|d| − E_d))`, plus `2u t` for
+    ///    the reciprocal and the product (and `2^-1074` if the product is subnormal);
+    ///    `|d| >= 2^-400` keeps the slack of step 5 below `2^-130` after it;
     /// 8. `s = 2^-k t`: exact, or off by at most `2^-1074` if it lands below the normal
     ///    range;
     /// 9. `top = a.y + s`: plus `u |top|`.
@@ -184,6 +185,9 @@ impl TopEstimate {
         if !(dd > 0.0 && d >= ESTIMATE_MIN_DET) {
             return TopEstimate::UNDECIDED;
         }
+        // The reciprocals are independent of the square root below, so they are computed
+        // beside it instead of as two divisions after it.
+        let (inv_d, inv_dd) = (1.0 / d, 1.0 / dd);
         let nx = cy * bb - by * cc;
         let ny = bx * cc - cx * bb;
         let e_nx = 8.0 * U * (cy.abs() * bb + by.abs() * cc);
@@ -192,8 +196,8 @@ impl TopEstimate {
         let e_r = e_nx + e_ny + 3.5 * U * r + ROOT_UNDERFLOW_SLACK;
         let n = ny + r;
         let e_n = e_ny + e_r + 2.0 * U * n.abs();
-        let t = n / d;
-        let e_t = (e_n + t.abs() * e_d) / dd + 2.0 * U * t.abs() + TINY;
+        let t = n * inv_d;
+        let e_t = (e_n + t.abs() * e_d) * inv_dd + 3.0 * U * t.abs() + TINY;
         // Division by `f` and multiplication by its exact inverse (|k| <= 1000) round the
         // same exact value once: the same result, without a division's latency.
         let s = t * inv_f;
