@@ -444,14 +444,9 @@ fn triangulations(c: &mut Criterion) {
             group.bench_with_input(BenchmarkId::new("divide-and-conquer", n), &pts, |b, pts| {
                 b.iter(|| divide_and_conquer(black_box(pts)).unwrap())
             });
-            // On the grid most circle events tie exactly in y with others (same circles
-            // shifted sideways), and each tie takes the big-integer stage: only the
-            // smaller sizes there.
-            if kind != PointKind::Grid || n <= 100_000 {
-                group.bench_with_input(BenchmarkId::new("fortune", n), &pts, |b, pts| {
-                    b.iter(|| fortune(black_box(pts)).unwrap())
-                });
-            }
+            group.bench_with_input(BenchmarkId::new("fortune", n), &pts, |b, pts| {
+                b.iter(|| fortune(black_box(pts)).unwrap())
+            });
             let dpts: Vec<delaunator::Point> = pts
                 .iter()
                 .map(|p| delaunator::Point { x: p.x, y: p.y })

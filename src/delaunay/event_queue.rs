@@ -112,6 +112,31 @@ impl Buckets {
     }
 }
 
+impl Buckets {
+    /// A value every value at or below which maps to a bucket before `b`: -inf for the
+    /// first bucket, +inf past the last, otherwise the largest double below the boundary
+    /// computed (found by stepping down from it, since the map rounds) or, failing that
+    /// within a few steps, a value below the first bucket's lower end.
+    pub(super) fn all_before(&self, b: usize) -> f64 {
+        if b == 0 {
+            return f64::NEG_INFINITY;
+        }
+        if b > self.last {
+            return f64::INFINITY;
+        }
+        // Here scale > 0 (a single bucket has last == 0).
+        let mut v = self.origin + b as f64 / self.scale;
+        for _ in 0..64 {
+            if self.of(v) < b {
+                return v;
+            }
+            v = v.next_down();
+        }
+        // Below the origin every value maps to bucket 0 < b.
+        self.origin.next_down()
+    }
+}
+
 /// A parked event: its estimate and the next event of its bucket ([`NIL`] at the end).
 #[derive(Debug, Clone, Copy)]
 struct Parked {
@@ -224,6 +249,9 @@ pub(super) struct EventQueue {
     /// The first bucket not yet moved into the heap: every parked event's lower end maps to
     /// this bucket or a later one.
     current: usize,
+    /// Every height at or below this maps to a bucket before `current` (see
+    /// [`Buckets::all_before`]): a test without the bucket arithmetic.
+    moved_below: f64,
     /// The buckets' heights.
     buckets: Buckets,
 }
@@ -245,6 +273,7 @@ impl EventQueue {
             parked_count: 0,
             moving: Vec::new(),
             current: 0,
+            moved_below: f64::NEG_INFINITY,
             buckets,
         }
     }
@@ -270,7 +299,12 @@ impl EventQueue {
         less: impl Fn(&Event, &Event) -> bool,
         counter: &mut C,
     ) {
-        let b = self.bucket(e.lower());
+        let lower = e.lower();
+        let b = if lower <= self.moved_below {
+            0
+        } else {
+            self.bucket(lower)
+        };
         if b < self.current {
             self.near.push(e, less, counter);
             return;
@@ -314,11 +348,11 @@ impl EventQueue {
             if let Some(f) = front {
                 // Every parked event's lower end maps to `current` or later, so it is above
                 // this upper end (the bucket map does not decrease).
-                if self.bucket(f.event.upper()) < self.current {
+                if f.event.upper() <= self.moved_below {
                     return front;
                 }
             }
-            if self.bucket(horizon) < self.current {
+            if horizon <= self.moved_below {
                 return front; // every parked event is above the next site
             }
             // The bucket's list runs from its latest event to its first: it is taken in
@@ -345,6 +379,7 @@ impl EventQueue {
             }
             self.moving.clear();
             self.current += 1;
+            self.moved_below = self.buckets.all_before(self.current);
         }
     }
 
@@ -529,6 +564,17 @@ mod tests {
             assert_eq!(queue.bucket(f64::MAX), 0);
         }
         assert_eq!(Buckets::new(0.0, 1.0, 0).count(), 1);
+        // all_before(b) maps below b, and the next double up does not (here the boundaries
+        // are exact).
+        let tenths = Buckets::new(0.25, 1e6 + 0.25, 10_000_000);
+        for b in [1, 2, 3, 7, 1000, 9_999_999] {
+            let v = tenths.all_before(b);
+            assert!(tenths.of(v) < b, "{b}");
+            assert!(tenths.of(v.next_up()) >= b, "{b}");
+        }
+        assert_eq!(tenths.all_before(0), f64::NEG_INFINITY);
+        assert_eq!(tenths.all_before(10_000_000), f64::INFINITY);
+        assert_eq!(Buckets::new(5.0, 5.0, 9).all_before(1), f64::INFINITY);
         let queue = EventQueue::new(0.0, 1.0, 4);
         let buckets: Vec<usize> = [f64::NEG_INFINITY, -1.0, 0.0, 0.3, 0.5, 0.99, 1.0, 1e300]
             .map(|y| queue.bucket(y))
