@@ -5,6 +5,11 @@
 //! The tree holds no keys: an arc's place is only defined by its neighbours (the
 //! breakpoints move with the sweep), so insertion is "right after this arc" and search is a
 //! descent with a caller-supplied monotone test ([`BeachLine::first_arc_where`]).
+//!
+//! A line made with `keep_tree` false is the list alone: insertion and removal are O(1)
+//! and the search is a scan from the left. The sweep finds most arcs by short walks from
+//! hints, and then the tree's rotations cost more than they save; it builds the treap
+//! ([`BeachLine::build_tree`]) only when the walks overrun their budget.
 
 use crate::gen::Rng;
 use crate::geometry::Point2;
@@ -39,16 +44,23 @@ pub(super) struct BeachLine {
     arcs: Vec<Arc>,
     free: Vec<u32>,
     root: u32,
+    /// The leftmost arc, or [`NIL`].
+    first: u32,
+    /// Whether the treap is kept (otherwise only the list, and `root` stays [`NIL`]).
+    tree: bool,
     rng: Rng,
 }
 
 impl BeachLine {
-    /// An empty beach line with room for `capacity` arcs.
-    pub(super) fn with_capacity(capacity: usize) -> BeachLine {
+    /// An empty beach line with room for `capacity` arcs, with the treap or (`keep_tree`
+    /// false) the list alone.
+    pub(super) fn new(capacity: usize, keep_tree: bool) -> BeachLine {
         BeachLine {
             arcs: Vec::with_capacity(capacity),
             free: Vec::new(),
             root: NIL,
+            first: NIL,
+            tree: keep_tree,
             // Any fixed seed: the priorities only need to be independent of the input.
             rng: Rng::new(0x9E37_79B9_7F4A_7C15),
         }
@@ -108,14 +120,22 @@ impl BeachLine {
         self.arcs[a as usize].parent != a
     }
 
+    /// The leftmost arc, or [`NIL`] if the line is empty.
+    #[inline]
+    pub(super) fn first(&self) -> u32 {
+        self.first
+    }
+
+    /// Whether the treap is kept (see [`new`](Self::new)).
+    #[inline]
+    pub(super) fn has_tree(&self) -> bool {
+        self.tree
+    }
+
     /// The sites of the arcs from left to right (for traces: O(number of arcs)).
     pub(super) fn sites_in_order(&self) -> Vec<u32> {
-        let mut first = self.root;
-        while first != NIL && self.arcs[first as usize].left != NIL {
-            first = self.arcs[first as usize].left;
-        }
         let mut sites = Vec::new();
-        let mut a = first;
+        let mut a = self.first;
         while a != NIL {
             sites.push(self.site(a));
             a = self.next(a);
@@ -127,7 +147,16 @@ impl BeachLine {
     /// true for a prefix of the arcs and false for the rest; the last arc if it is true for
     /// all. `right_of_site(a)` is called only on arcs with a right neighbour. [`NIL`] if
     /// the beach line is empty.
+    ///
+    /// O(log n) expected with the treap, O(n) without.
     pub(super) fn first_arc_where(&self, mut right_of_site: impl FnMut(u32) -> bool) -> u32 {
+        if !self.tree {
+            let mut a = self.first;
+            while a != NIL && self.arcs[a as usize].next != NIL && right_of_site(a) {
+                a = self.arcs[a as usize].next;
+            }
+            return a;
+        }
         let mut node = self.root;
         let mut found = NIL;
         while node != NIL {
@@ -145,7 +174,7 @@ impl BeachLine {
     /// Inserts a new arc of `site`, at `point`, right after `after` ([`NIL`]: into the empty
     /// beach line) and returns it.
     pub(super) fn insert_after(&mut self, after: u32, site: u32, point: Point2) -> u32 {
-        let prio = self.next_priority();
+        let prio = if self.tree { self.next_priority() } else { 0 };
         let arc = Arc {
             point,
             site,
@@ -169,8 +198,23 @@ impl BeachLine {
             }
         };
         if after == NIL {
-            debug_assert_eq!(self.root, NIL, "insertion at the front of a non-empty line");
-            self.root = new;
+            debug_assert_eq!(
+                self.first, NIL,
+                "insertion at the front of a non-empty line"
+            );
+            self.first = new;
+            if self.tree {
+                self.root = new;
+            }
+            return new;
+        }
+        let next = self.arcs[after as usize].next;
+        self.arcs[new as usize].next = next;
+        if next != NIL {
+            self.arcs[next as usize].prev = new;
+        }
+        self.arcs[after as usize].next = new;
+        if !self.tree {
             return new;
         }
         // In order, `new` comes right after `after`: as its right child, or as the left
@@ -187,12 +231,6 @@ impl BeachLine {
             self.arcs[leftmost as usize].left = new;
             self.arcs[new as usize].parent = leftmost;
         }
-        let next = self.arcs[after as usize].next;
-        self.arcs[new as usize].next = next;
-        if next != NIL {
-            self.arcs[next as usize].prev = new;
-        }
-        self.arcs[after as usize].next = new;
         while self.arcs[new as usize].parent != NIL
             && self.arcs[self.arcs[new as usize].parent as usize].prio < prio
         {
@@ -201,8 +239,66 @@ impl BeachLine {
         new
     }
 
+    /// Builds the treap over the list (a line made without it; a no-op otherwise): random
+    /// priorities in list order, and the Cartesian tree of the sequence with a stack, in
+    /// O(number of arcs). The line keeps the treap from then on.
+    pub(super) fn build_tree(&mut self) {
+        if self.tree {
+            return;
+        }
+        self.tree = true;
+        let mut stack: Vec<u32> = Vec::new();
+        let mut a = self.first;
+        while a != NIL {
+            let prio = self.next_priority();
+            let node = &mut self.arcs[a as usize];
+            (node.prio, node.left, node.right, node.parent) = (prio, NIL, NIL, NIL);
+            // The arcs popped have lower priorities: they become `a`'s left subtree.
+            let mut last = NIL;
+            while let Some(&top) = stack.last() {
+                if self.arcs[top as usize].prio >= prio {
+                    break;
+                }
+                last = stack.pop().expect("the stack has a top");
+            }
+            if last != NIL {
+                self.arcs[a as usize].left = last;
+                self.arcs[last as usize].parent = a;
+            }
+            if let Some(&top) = stack.last() {
+                self.arcs[top as usize].right = a;
+                self.arcs[a as usize].parent = top;
+            }
+            stack.push(a);
+            a = self.arcs[a as usize].next;
+        }
+        self.root = stack.first().copied().unwrap_or(NIL);
+    }
+
     /// Removes arc `a`; its slot may be reused by a later insertion.
     pub(super) fn remove(&mut self, a: u32) {
+        if self.tree {
+            self.remove_from_tree(a);
+        }
+        let Arc { prev, next, .. } = self.arcs[a as usize];
+        if prev != NIL {
+            self.arcs[prev as usize].next = next;
+        }
+        if next != NIL {
+            self.arcs[next as usize].prev = prev;
+        }
+        if self.first == a {
+            self.first = next;
+        }
+        // A removed arc is its own parent: `is_live` tells it from a live one.
+        let dead = &mut self.arcs[a as usize];
+        dead.parent = a;
+        dead.event = NIL;
+        self.free.push(a);
+    }
+
+    /// Unlinks `a` from the treap.
+    fn remove_from_tree(&mut self, a: u32) {
         // Rotate `a` down to a leaf, always lifting the child of higher priority.
         loop {
             let Arc { left, right, .. } = self.arcs[a as usize];
@@ -219,9 +315,7 @@ impl BeachLine {
             };
             self.rotate_up(child);
         }
-        let Arc {
-            parent, prev, next, ..
-        } = self.arcs[a as usize];
+        let parent = self.arcs[a as usize].parent;
         if parent == NIL {
             self.root = NIL;
         } else if self.arcs[parent as usize].left == a {
@@ -229,17 +323,6 @@ impl BeachLine {
         } else {
             self.arcs[parent as usize].right = NIL;
         }
-        if prev != NIL {
-            self.arcs[prev as usize].next = next;
-        }
-        if next != NIL {
-            self.arcs[next as usize].prev = prev;
-        }
-        // A removed arc is its own parent: `is_live` tells it from a live one.
-        let dead = &mut self.arcs[a as usize];
-        dead.parent = a;
-        dead.event = NIL;
-        self.free.push(a);
     }
 
     /// Rotates `x` above its parent, keeping the in-order sequence.
@@ -298,18 +381,22 @@ mod tests {
             out.push(node);
             walk(line, arc.right, node, out);
         }
-        let mut in_order = Vec::new();
-        walk(line, line.root, NIL, &mut in_order);
         let mut listed = Vec::new();
-        if let Some(&first) = in_order.first() {
-            assert_eq!(line.prev(first), NIL);
-            let mut a = first;
-            while a != NIL {
-                listed.push(a);
-                a = line.next(a);
-            }
+        let mut a = line.first;
+        if a != NIL {
+            assert_eq!(line.prev(a), NIL);
         }
-        assert_eq!(in_order, listed);
+        while a != NIL {
+            listed.push(a);
+            a = line.next(a);
+        }
+        if line.has_tree() {
+            let mut in_order = Vec::new();
+            walk(line, line.root, NIL, &mut in_order);
+            assert_eq!(in_order, listed);
+        } else {
+            assert_eq!(line.root, NIL);
+        }
         let sites: Vec<u32> = listed.iter().map(|&a| line.site(a)).collect();
         assert_eq!(line.sites_in_order(), sites);
         sites
@@ -317,8 +404,14 @@ mod tests {
 
     #[test]
     fn insertions_and_removals_match_a_vec() {
-        // A deterministic mix of operations, mirrored on a plain Vec of (arc, site).
-        let mut line = BeachLine::with_capacity(0);
+        for keep_tree in [true, false] {
+            mirror_on_a_vec(keep_tree);
+        }
+    }
+
+    /// A deterministic mix of operations, mirrored on a plain Vec of (arc, site).
+    fn mirror_on_a_vec(keep_tree: bool) {
+        let mut line = BeachLine::new(0, keep_tree);
         let mut model: Vec<(u32, u32)> = Vec::new();
         let mut rng = Rng::new(12345);
         let mut rand = |m: usize| rng.index(m);
@@ -341,6 +434,10 @@ mod tests {
                 line.remove(a);
                 assert!(!line.is_live(a));
             }
+            if step == 1500 {
+                line.build_tree();
+                assert!(line.has_tree());
+            }
             if step % 97 == 0 {
                 let want: Vec<u32> = model.iter().map(|&(_, s)| s).collect();
                 assert_eq!(sequence(&line), want);
@@ -352,7 +449,13 @@ mod tests {
 
     #[test]
     fn search_finds_the_first_arc_failing_a_monotone_test() {
-        let mut line = BeachLine::with_capacity(0);
+        for keep_tree in [true, false] {
+            search_in(keep_tree);
+        }
+    }
+
+    fn search_in(keep_tree: bool) {
+        let mut line = BeachLine::new(0, keep_tree);
         let mut last = NIL;
         let mut arcs = Vec::new();
         for site in 0..200 {
@@ -364,6 +467,6 @@ mod tests {
             let want = arcs[threshold.min(199) as usize];
             assert_eq!(found, want, "threshold {threshold}");
         }
-        assert_eq!(BeachLine::with_capacity(0).first_arc_where(|_| true), NIL);
+        assert_eq!(BeachLine::new(0, keep_tree).first_arc_where(|_| true), NIL);
     }
 }

@@ -137,8 +137,9 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// whose arc has changed neighbours since is skipped when it comes out); the arcs live in a
 /// treap threaded by a linked list. A new site's arc is found by a descent that asks, at
 /// each arc, whether the site is right of the arc's right breakpoint; first, though, a walk
-/// of at most a few steps along the list asks the same from a hint (the arc last inserted
-/// in the site's bucket of x), and usually arrives. Three consecutive arcs of sites a, b, c
+/// along the list asks the same from a hint (the arc last inserted in the site's bucket of
+/// x), and usually arrives in a few steps. The treap is only built (once) if the walks
+/// overrun a budget of O(n) steps; until then the line is a bare list. Three consecutive arcs of sites a, b, c
 /// get a circle event exactly when a, b, c turn counter-clockwise (their breakpoints
 /// converge). The queue parks events far above the sweep line in buckets of equal height,
 /// in O(1) each (false alarms among them are dropped when their bucket is reached), and
@@ -181,8 +182,10 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 ///
 /// With n = `points.len()`: time O(n log n) expected (the sort; at most 2n − 5 circle
 /// events and fewer than 6n events queued, each parked in O(1) and ordered in O(log n) at
-/// most once; O(n) empty buckets passed; per site a walk of O(1) steps from its hint,
-/// then at most one O(log n) expected treap descent, and O(log n) expected insertion, the expectation over the treap's priorities, which a fixed seed
+/// most once; O(n) empty buckets passed; the beach line starts as a bare list and its walks
+/// from hints share a budget of O(n) steps; if they overrun it, the treap is built once in
+/// O(n), and from then on a site costs a walk of O(1) steps, at most one O(log n) expected
+/// descent, and O(log n) expected insertion, the expectation over the treap's priorities, which a fixed seed
 /// draws independently of the input); auxiliary space O(n). The exact fallbacks cost more
 /// than the filter but are O(1) each for a given input precision.
 ///
@@ -295,8 +298,13 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
         index: &index,
         counter,
         obs,
-        line: BeachLine::with_capacity(2 * sites.len()),
-        queue: event_queue(&sites),
+        line: BeachLine::new(2 * sites.len(), false),
+        walk_budget: WALK_BUDGET_START,
+        queue: if small_integer {
+            event_queue(&sites).with_exact_ties()
+        } else {
+            event_queue(&sites)
+        },
         hint_buckets: hint_buckets(&sites),
         hints: vec![[NIL; 2]; hint_buckets(&sites).count()],
         events: Vec::new(),
@@ -325,10 +333,16 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
 /// What the queue's comparisons need only when the estimates leave them open: arc `arc`
 /// (between the arcs of `sites[0]` and `sites[2]`) vanishes at the top of the circle
 /// through `sites`.
+///
+/// `after_last_site` caches, for an event whose estimate leaves its order with the sites
+/// open, whether it comes after the last site (`None` until first asked): a nearly flat
+/// triple of distant sites has a circle far above every site, and without the cache it
+/// would be compared exactly with every site while it waits first in line.
 #[derive(Debug, Clone, Copy)]
 struct EventSites {
     sites: [u32; 3],
     arc: u32,
+    after_last_site: Option<bool>,
 }
 
 /// The sweep's state over the sites (sorted by y, then x, distinct).
@@ -346,6 +360,9 @@ struct Sweep<'a, C, O> {
     /// inserted there and its site (the arc's slot may have been removed or reused since).
     hints: Vec<[u32; 2]>,
     hint_buckets: Buckets,
+    /// Steps the walks may still take before the line gets its treap (see
+    /// [`Sweep::arc_above`]).
+    walk_budget: usize,
     /// The circle events by event point.
     queue: EventQueue,
     /// The sites and arc of every circle event in the queue, by id, and slots free for
@@ -388,10 +405,11 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
                 (Some(f), Some(site)) => {
                     self.counter.comparison();
                     // The sites' coordinates only when the estimate leaves it open.
-                    let order = f.event.estimate().cmp_height(site.y).unwrap_or_else(|| {
-                        let t = self.points(self.events[f.event.id as usize].sites);
-                        cmp_circle_site(&CircleKey::new(t[0], t[1], t[2]), t, site)
-                    });
+                    let order = f
+                        .event
+                        .estimate()
+                        .cmp_height(site.y)
+                        .unwrap_or_else(|| self.cmp_event_site(f.event.id, site));
                     (order != Ordering::Greater).then_some(f)
                 }
             };
@@ -415,7 +433,8 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
     fn site_event(&mut self, s: u32) {
         let p = self.sites[s as usize];
         let hint = self.hint_buckets.of(p.x);
-        let found = self.arc_above(p, self.hints[hint]);
+        let start = self.hint_near(hint);
+        let found = self.arc_above(p, start);
         if found == NIL {
             self.line.insert_after(NIL, s, p);
         } else {
@@ -451,13 +470,61 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         });
     }
 
+    /// A live arc hinted at by hint bucket `b` or the nearest bucket to it with one (the
+    /// hint's arc still live and still its site's); [`NIL`] if none is. With the treap the
+    /// search reaches [`HINT_REACH`] buckets on either side; before it, it goes as far as it
+    /// takes, one step of the walks' budget per pair of buckets (see
+    /// [`arc_above`](Self::arc_above)).
+    fn hint_near(&mut self, b: usize) -> u32 {
+        let (line, hints) = (&self.line, &self.hints);
+        let valid = |c: usize| {
+            let [arc, site] = hints[c];
+            arc != NIL && line.is_live(arc) && line.site(arc) == site
+        };
+        if valid(b) {
+            return hints[b][0];
+        }
+        let tree = line.has_tree();
+        let reach = if tree { HINT_REACH } else { hints.len() };
+        for d in 1..=reach {
+            if !tree {
+                if self.walk_budget == 0 {
+                    break;
+                }
+                self.walk_budget -= 1;
+            }
+            let (left, right) = (b.checked_sub(d), b + d);
+            if left.is_none() && right >= hints.len() {
+                break;
+            }
+            for c in [left, Some(right)].into_iter().flatten() {
+                if c < hints.len() && valid(c) {
+                    return hints[c][0];
+                }
+            }
+        }
+        NIL
+    }
+
     /// The arc above site `p` (`p` is right of the breakpoints left of it and not right of
     /// the one on its right), [`NIL`] on an empty beach line: the arc the treap's descent
-    /// finds ([`BeachLine::first_arc_where`]), found first by a short walk along the line
-    /// from `hint` (an arc and its site) when that arc is still live and still its site's.
-    /// The breakpoint tests are monotone along the line, so the walk ends at the same arc;
-    /// it gives up after [`HINT_STEPS`] steps and leaves it to the descent.
-    fn arc_above(&mut self, p: Point2, hint: [u32; 2]) -> u32 {
+    /// finds ([`BeachLine::first_arc_where`]), found first by a walk along the line from
+    /// `start` (a live arc, or [`NIL`] for none). The breakpoint tests are monotone along
+    /// the line, so the walk ends at the same arc.
+    ///
+    /// The line starts without its treap: the walks (from the left end when there is no
+    /// hint) share a budget of [`WALK_BUDGET_START`] steps plus [`WALK_BUDGET_PER_SITE`] per
+    /// site, and when a walk would overrun it the treap is built, in O(arcs), for good.
+    /// From then on a walk gives up after [`HINT_STEPS`] steps and leaves the site to the
+    /// descent. So the walks cost O(n) steps in all before the treap and O(1) each after
+    /// it, and a site costs O(log n) expected whatever the input.
+    fn arc_above(&mut self, p: Point2, start: u32) -> u32 {
+        if self.line.first() == NIL {
+            return NIL;
+        }
+        if !self.line.has_tree() {
+            self.walk_budget = self.walk_budget.saturating_add(WALK_BUDGET_PER_SITE);
+        }
         let (line, counter) = (&self.line, &mut *self.counter);
         let side = |a: u32| {
             breakpoint_side(line.point(a), line.point(line.next(a)), p) == Ordering::Greater
@@ -466,13 +533,30 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
             counter.comparison();
             side(a)
         };
-        let walked = walk_from_hint(line, hint, &mut right_of);
+        let walked = if line.has_tree() {
+            let mut steps = HINT_STEPS;
+            walk_from(line, start, &mut steps, &mut right_of)
+        } else {
+            // Without the treap, from the left end if there is no hint.
+            let start = if start == NIL { line.first() } else { start };
+            walk_from(line, start, &mut self.walk_budget, &mut right_of)
+        };
         // (Uncounted: debug builds count what release builds count.)
         debug_assert!(
             walked.is_none() || walked == Some(line.first_arc_where(side)),
             "the walk from a hint and the descent disagree"
         );
-        walked.unwrap_or_else(|| line.first_arc_where(right_of))
+        if let Some(a) = walked {
+            return a;
+        }
+        // The walks overran their budget (or the hint's short walk did not arrive): the
+        // treap's descent, from now on.
+        self.line.build_tree();
+        let (line, counter) = (&self.line, &mut *self.counter);
+        line.first_arc_where(|a| {
+            counter.comparison();
+            breakpoint_side(line.point(a), line.point(line.next(a)), p) == Ordering::Greater
+        })
     }
 
     fn circle_event(&mut self, id: u32) {
@@ -527,7 +611,11 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         {
             return;
         }
-        let event = EventSites { sites, arc: m };
+        let event = EventSites {
+            sites,
+            arc: m,
+            after_last_site: None,
+        };
         let id = match self.free_events.pop() {
             Some(id) => {
                 self.events[id as usize] = event;
@@ -548,6 +636,26 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         self.line.set_event(m, id);
         let TopEstimate { top, err } = TopEstimate::new(a, b, c);
         self.push(Event { top, err, id });
+    }
+
+    /// The exact order of event `id` and `site` (the estimate left it open). Once the
+    /// event is found after a site, one more comparison (counted) asks whether it is after
+    /// the last site too, and the answer is kept: then later sites need no comparison.
+    fn cmp_event_site(&mut self, id: u32, site: Point2) -> Ordering {
+        let slot = self.events[id as usize];
+        if slot.after_last_site == Some(true) {
+            return Ordering::Greater;
+        }
+        let t = self.points(slot.sites);
+        let key = CircleKey::new(t[0], t[1], t[2]);
+        let order = cmp_circle_site(&key, t, site);
+        if order == Ordering::Greater && slot.after_last_site.is_none() {
+            let last = self.sites[self.sites.len() - 1];
+            self.counter.comparison();
+            let after = cmp_circle_site(&key, t, last) == Ordering::Greater;
+            self.events[id as usize].after_last_site = Some(after);
+        }
+        order
     }
 
     /// A new Voronoi edge, with the half-edge found at its start (or [`NIL`]).
@@ -614,28 +722,31 @@ fn is_pending(line: &BeachLine, events: &[EventSites], id: u32) -> bool {
     line.is_live(arc) && line.event(arc) == id
 }
 
-/// The walk of [`Sweep::arc_above`]: from the hint's arc (if still live and its site's)
-/// along the line towards the arc whose breakpoints enclose the site, `None` if that takes
-/// more than [`HINT_STEPS`] steps. `right_of(a)`: whether the site is right of the
-/// breakpoint between `a` and the arc after it (true for a prefix of the arcs).
-fn walk_from_hint(
+/// The walk of [`Sweep::arc_above`]: from arc `a` along the line towards the arc whose
+/// breakpoints enclose the site; `None` if `a` is [`NIL`] or the walk would take more than
+/// `steps` steps (each step taken is subtracted from `steps`). `right_of(a)`: whether the
+/// site is right of the breakpoint between `a` and the arc after it (true for a prefix of
+/// the arcs).
+fn walk_from(
     line: &BeachLine,
-    hint: [u32; 2],
+    mut a: u32,
+    steps: &mut usize,
     right_of: &mut impl FnMut(u32) -> bool,
 ) -> Option<u32> {
-    let [mut a, site] = hint;
-    if a == NIL || !line.is_live(a) || line.site(a) != site {
+    if a == NIL {
         return None;
     }
     if line.next(a) != NIL && right_of(a) {
-        for _ in 0..HINT_STEPS {
+        while *steps > 0 {
+            *steps -= 1;
             a = line.next(a);
             if line.next(a) == NIL || !right_of(a) {
                 return Some(a);
             }
         }
     } else {
-        for _ in 0..HINT_STEPS {
+        while *steps > 0 {
+            *steps -= 1;
             let left = line.prev(a);
             if left == NIL || right_of(left) {
                 return Some(a);
@@ -646,8 +757,19 @@ fn walk_from_hint(
     None
 }
 
-/// The most steps the walk from a hint takes before the descent takes over: the walk stays
-/// O(1), so a site costs O(log n) expected whatever the hints are.
+/// The walks' budget before the treap (see [`Sweep::arc_above`]): this many steps to
+/// start with...
+const WALK_BUDGET_START: usize = 4096;
+
+/// ...and this many more per site.
+const WALK_BUDGET_PER_SITE: usize = 16;
+
+/// How many hint buckets on either side [`Sweep::hint_near`] tries when a site's own
+/// bucket has no live hint.
+const HINT_REACH: usize = 2;
+
+/// The most steps a walk from a hint takes, once the line has its treap, before the
+/// descent takes over.
 const HINT_STEPS: usize = 8;
 
 /// The buckets of x for the hints: about 2 √n for n sites, about one per arc of a beach
