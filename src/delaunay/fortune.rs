@@ -292,6 +292,7 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
             predicates = BoxPredicates::over(scaled_box(bounds, shift));
         }
     }
+    let hint_buckets = hint_buckets(&sites);
     let mut sweep = Sweep {
         sites: &sites,
         input: points,
@@ -305,8 +306,8 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
         } else {
             event_queue(&sites)
         },
-        hint_buckets: hint_buckets(&sites),
-        hints: vec![[NIL; 2]; hint_buckets(&sites).count()],
+        hint_buckets,
+        hints: vec![[NIL; 2]; hint_buckets.count()],
         events: Vec::new(),
         free_events: Vec::new(),
         predicates,
@@ -333,16 +334,10 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
 /// What the queue's comparisons need only when the estimates leave them open: arc `arc`
 /// (between the arcs of `sites[0]` and `sites[2]`) vanishes at the top of the circle
 /// through `sites`.
-///
-/// `after_last_site` caches, for an event whose estimate leaves its order with the sites
-/// open, whether it comes after the last site (`None` until first asked): a nearly flat
-/// triple of distant sites has a circle far above every site, and without the cache it
-/// would be compared exactly with every site while it waits first in line.
 #[derive(Debug, Clone, Copy)]
 struct EventSites {
     sites: [u32; 3],
     arc: u32,
-    after_last_site: Option<bool>,
 }
 
 /// The sweep's state over the sites (sorted by y, then x, distinct).
@@ -611,11 +606,7 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         {
             return;
         }
-        let event = EventSites {
-            sites,
-            arc: m,
-            after_last_site: None,
-        };
+        let event = EventSites { sites, arc: m };
         let id = match self.free_events.pop() {
             Some(id) => {
                 self.events[id as usize] = event;
@@ -638,24 +629,10 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         self.push(Event { top, err, id });
     }
 
-    /// The exact order of event `id` and `site` (the estimate left it open). Once the
-    /// event is found after a site, one more comparison (counted) asks whether it is after
-    /// the last site too, and the answer is kept: then later sites need no comparison.
-    fn cmp_event_site(&mut self, id: u32, site: Point2) -> Ordering {
-        let slot = self.events[id as usize];
-        if slot.after_last_site == Some(true) {
-            return Ordering::Greater;
-        }
-        let t = self.points(slot.sites);
-        let key = CircleKey::new(t[0], t[1], t[2]);
-        let order = cmp_circle_site(&key, t, site);
-        if order == Ordering::Greater && slot.after_last_site.is_none() {
-            let last = self.sites[self.sites.len() - 1];
-            self.counter.comparison();
-            let after = cmp_circle_site(&key, t, last) == Ordering::Greater;
-            self.events[id as usize].after_last_site = Some(after);
-        }
-        order
+    /// The exact order of event `id` and `site` (the estimate left it open).
+    fn cmp_event_site(&self, id: u32, site: Point2) -> Ordering {
+        let t = self.points(self.events[id as usize].sites);
+        cmp_circle_site(&CircleKey::new(t[0], t[1], t[2]), t, site)
     }
 
     /// A new Voronoi edge, with the half-edge found at its start (or [`NIL`]).
