@@ -315,6 +315,15 @@ impl EventQueue {
         self.buckets.of(y)
     }
 
+    /// Whether an estimate with the error bound `err` spans more than a bucket's height:
+    /// such an event would meet the events of several buckets in the heap and be compared
+    /// exactly with each, so it is worth a tight estimate first (see
+    /// [`TopEstimate::exact`]). Never for a single bucket.
+    #[inline]
+    pub(super) fn is_wide(&self, err: f32) -> bool {
+        err as f64 * self.buckets.scale > 1.0
+    }
+
     /// Queues `e`: in the heap (O(log q) comparisons by `less`, counted) if its bucket has
     /// been moved already, otherwise parked in O(1).
     #[inline]
@@ -357,6 +366,7 @@ impl EventQueue {
     /// and returns that first near event: compared with the next site, it decides what comes
     /// next. Parked events for which `pending` is false are dropped, their ids appended to
     /// `dropped`.
+    #[inline]
     pub(super) fn settle<C: Counter>(
         &mut self,
         horizon: f64,

@@ -16,6 +16,7 @@ use crate::geometry::sweep_predicates::{
 };
 use crate::geometry::{BoxPredicates, ConstructedPoint, Orientation, Point2, PointSet};
 use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
+use std::cell::Cell;
 use std::cmp::Ordering;
 
 /// This algorithm's [`Declaration`]: its name, bounds, counts, source and measured claims.
@@ -195,7 +196,10 @@ pub fn fortune(points: &[Point2]) -> Result<Triangulation> {
 /// near events' order, and the next site against the first circle event), and every
 /// breakpoint test of the beach-line descent; not the queue's bucket arithmetic, which
 /// decides no order. Orientation tests: one per triple of arcs checked for a circle
-/// event. No in-circle tests: the Delaunay property comes from the sweep itself.
+/// event. No in-circle tests: the Delaunay property comes from the sweep itself. Exact
+/// fallbacks: every comparison of two events, or of an event and a site, that the
+/// floating-point estimates of the events' tops leave open, and every event whose estimate
+/// is wider than a bucket of the queue and is estimated again from the exact stage.
 ///
 /// ```
 /// use compgeo::count::Counts;
@@ -292,7 +296,8 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
             predicates = BoxPredicates::over(scaled_box(bounds, shift));
         }
     }
-    let hint_buckets = hint_buckets(&sites);
+    let ranges = site_ranges(&sites);
+    let hint_buckets = hint_buckets(sites.len(), ranges);
     let mut sweep = Sweep {
         sites: &sites,
         input: points,
@@ -302,14 +307,15 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
         line: BeachLine::new(2 * sites.len(), false),
         walk_budget: WALK_BUDGET_START,
         queue: if small_integer {
-            event_queue(&sites).with_exact_ties()
+            event_queue(sites.len(), ranges[1]).with_exact_ties()
         } else {
-            event_queue(&sites)
+            event_queue(sites.len(), ranges[1])
         },
         hint_buckets,
         hints: vec![[NIL; 2]; hint_buckets.count()],
         events: Vec::new(),
         free_events: Vec::new(),
+        exact_comparisons: Cell::new(0),
         predicates,
         small_integer,
         circles: Vec::new(),
@@ -367,6 +373,10 @@ struct Sweep<'a, C, O> {
     events: Vec<EventSites>,
     /// The free slots of `events` (and `circles`).
     free_events: Vec<u32>,
+    /// Exact comparisons of two events the queue has made since they were last recorded
+    /// as exact fallbacks (before each frame and at the end: the queue's order closures
+    /// cannot reach the counter).
+    exact_comparisons: Cell<u64>,
     /// The orientation filter's bound for the (scaled) sites' box, or plain floating point
     /// for a small-integer set.
     predicates: BoxPredicates,
@@ -400,11 +410,10 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
                 (Some(f), Some(site)) => {
                     self.counter.comparison();
                     // The sites' coordinates only when the estimate leaves it open.
-                    let order = f
-                        .event
-                        .estimate()
-                        .cmp_height(site.y)
-                        .unwrap_or_else(|| self.cmp_event_site(f.event.id, site));
+                    let order = f.event.estimate().cmp_height(site.y).unwrap_or_else(|| {
+                        self.counter.exact_fallback();
+                        self.cmp_event_site(f.event.id, site)
+                    });
                     (order != Ordering::Greater).then_some(f)
                 }
             };
@@ -423,6 +432,7 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
                 }
             }
         }
+        self.record_exact_comparisons();
     }
 
     fn site_event(&mut self, s: u32) {
@@ -453,6 +463,7 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
                 self.check_circle(copy);
             }
         }
+        self.record_exact_comparisons();
         let (input, index, line, triangles) = (self.input, self.index, &self.line, &self.triangles);
         self.obs.step(self.counter, || {
             let site = index[s as usize];
@@ -576,6 +587,7 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         self.line.set_event(right, NIL);
         self.check_circle(left);
         self.check_circle(right);
+        self.record_exact_comparisons();
         let (input, index, line, triangles) = (self.input, self.index, &self.line, &self.triangles);
         self.obs.step(self.counter, || {
             let triangle = e.sites.map(|v| index[v as usize]);
@@ -625,7 +637,14 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
             }
         };
         self.line.set_event(m, id);
-        let TopEstimate { top, err } = TopEstimate::new(a, b, c);
+        let mut estimate = TopEstimate::new(a, b, c);
+        if self.queue.is_wide(estimate.err) {
+            // A loose estimate (a huge circle through a far site) would be compared
+            // exactly with every event it overlaps: one exact evaluation instead.
+            self.counter.exact_fallback();
+            estimate = TopEstimate::exact(a, b, c);
+        }
+        let TopEstimate { top, err } = estimate;
         self.push(Event { top, err, id });
     }
 
@@ -658,11 +677,17 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         t.map(|v| self.sites[v as usize])
     }
 
+    #[inline]
     fn push(&mut self, e: Event) {
-        let (sites, events, circles) = (self.sites, &self.events, &self.circles);
+        let (sites, events, circles, exact) = (
+            self.sites,
+            &self.events,
+            &self.circles,
+            &self.exact_comparisons,
+        );
         self.queue.push(
             e,
-            |x, y| before(sites, events, circles, x, y),
+            |x, y| before(sites, events, circles, exact, x, y),
             &mut *self.counter,
         );
     }
@@ -670,25 +695,49 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
     /// The queue's first event, made the first of all or, if not, one after the site at
     /// height `horizon` with every other event after it too (see [`EventQueue::settle`]);
     /// the false alarms met on the way are dropped and their slots freed.
+    #[inline]
     fn settle(&mut self, horizon: f64) -> Option<Front> {
-        let (sites, events, circles, line) = (self.sites, &self.events, &self.circles, &self.line);
+        let (sites, events, circles, line, exact) = (
+            self.sites,
+            &self.events,
+            &self.circles,
+            &self.line,
+            &self.exact_comparisons,
+        );
         self.queue.settle(
             horizon,
             |id| is_pending(line, events, id),
             &mut self.free_events,
-            |x, y| before(sites, events, circles, x, y),
+            |x, y| before(sites, events, circles, exact, x, y),
             &mut *self.counter,
         )
     }
 
     /// Removes the first event, as [`settle`](Self::settle) returned it.
+    #[inline]
     fn take(&mut self, front: Front) {
-        let (sites, events, circles) = (self.sites, &self.events, &self.circles);
+        let (sites, events, circles, exact) = (
+            self.sites,
+            &self.events,
+            &self.circles,
+            &self.exact_comparisons,
+        );
         self.queue.take(
             front,
-            |x, y| before(sites, events, circles, x, y),
+            |x, y| before(sites, events, circles, exact, x, y),
             &mut *self.counter,
         );
+    }
+
+    /// Records the exact comparisons of the queue's last call as exact fallbacks.
+    #[inline]
+    fn record_exact_comparisons(&mut self) {
+        if C::DISCARDS {
+            return;
+        }
+        for _ in 0..self.exact_comparisons.take() {
+            self.counter.exact_fallback();
+        }
     }
 }
 
@@ -749,27 +798,54 @@ const HINT_REACH: usize = 2;
 /// descent takes over.
 const HINT_STEPS: usize = 8;
 
-/// The buckets of x for the hints: about 2 √n for n sites, about one per arc of a beach
-/// line over uniform sites.
-fn hint_buckets(sites: &[Point2]) -> Buckets {
-    let (low, high) = sites
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-            (lo.min(p.x), hi.max(p.x))
-        });
-    if sites.is_empty() {
-        return Buckets::new(0.0, 0.0, 1);
-    }
-    Buckets::new(low, high, 2 * (sites.len() as f64).sqrt() as usize)
+/// The ranges of x and y of most sites (see [`bucket_range`]): y from the sorted sites,
+/// x from a sample of at most 256 of them (a sort of all the x's would cost a tenth of
+/// the sweep at a thousand sites).
+fn site_ranges(sites: &[Point2]) -> [(f64, f64); 2] {
+    let stride = sites.len().div_ceil(256).max(1);
+    let mut xs: Vec<f64> = sites.iter().step_by(stride).map(|p| p.x).collect();
+    xs.sort_unstable_by(f64::total_cmp);
+    [
+        bucket_range(xs.len(), |i| xs[i]),
+        bucket_range(sites.len(), |i| sites[i].y),
+    ]
 }
 
-/// An empty event queue for the sorted sites: one bucket per two sites between the lowest
-/// and the highest (about 1.75 events each on uniform input, most of them near the sweep
+/// The buckets of x for the hints, about one per arc of the beach line: over uniform
+/// sites in a box `w` wide and `h` high the line has about `√(n w / h)` arcs, so
+/// `2 √(n w / h)` buckets (between 1 and n) over the range `x` of most sites.
+fn hint_buckets(n: usize, [x, y]: [(f64, f64); 2]) -> Buckets {
+    let aspect = (x.1 - x.0) / (y.1 - y.0);
+    let count = 2.0 * (n as f64 * aspect).sqrt();
+    // NaN (a single point) or infinite (a single row) aspects: n buckets.
+    let count = if count.is_finite() { count as usize } else { n };
+    Buckets::new(x.0, x.1, count.clamp(1, n.max(1)))
+}
+
+/// An empty event queue for `n` sorted sites whose heights mostly lie in `y`: one bucket
+/// per two sites (about 1.75 events each on uniform input, most of them near the sweep
 /// line when their bucket is reached).
-fn event_queue(sites: &[Point2]) -> EventQueue {
-    match (sites.first(), sites.last()) {
-        (Some(lo), Some(hi)) => EventQueue::new(lo.y, hi.y, sites.len() / 2),
-        _ => EventQueue::new(0.0, 0.0, 1),
+fn event_queue(n: usize, y: (f64, f64)) -> EventQueue {
+    EventQueue::new(y.0, y.1, n / 2)
+}
+
+/// The range of equal buckets over `len` ascending values, `value(i)` the `i`-th: all of
+/// them, unless the range from the value 1/64 of the way up to the one 1/64 of the way
+/// down is less than half as wide; then that range. A few far values (outliers) would
+/// otherwise stretch the buckets until the rest share one; values outside the range map
+/// to the first or the last bucket, which keeps the map monotone.
+fn bucket_range(len: usize, value: impl Fn(usize) -> f64) -> (f64, f64) {
+    if len == 0 {
+        return (0.0, 0.0);
+    }
+    let trim = len / 64;
+    let (first, last) = (value(0), value(len - 1));
+    let (low, high) = (value(trim), value(len - 1 - trim));
+    // (An infinite full width, past the doubles, counts as wider.)
+    if low < high && last - first > 2.0 * (high - low) {
+        (low, high)
+    } else {
+        (first, last)
     }
 }
 
@@ -796,13 +872,17 @@ fn before(
     sites: &[Point2],
     events: &[EventSites],
     circles: &[IntegerCircle],
+    exact: &Cell<u64>,
     x: &Event,
     y: &Event,
 ) -> bool {
     // The sites' coordinates only when the estimates leave it open.
     match x.estimate().is_below(&y.estimate()) {
         Some(below) => below,
-        None => before_exact(sites, events, circles, x, y),
+        None => {
+            exact.set(exact.get() + 1);
+            before_exact(sites, events, circles, x, y)
+        }
     }
 }
 
@@ -855,4 +935,47 @@ fn sorted_by_y<C: Counter>(
     }
     duplicates.sort_unstable();
     (sites, index, duplicates)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bucket_range_leaves_out_a_few_far_values_only() {
+        let even: Vec<f64> = (0..1000).map(|i| i as f64 / 1000.0).collect();
+        // Spread values: the whole range.
+        assert_eq!(bucket_range(even.len(), |i| even[i]), (0.0, 0.999));
+        // Two far values at each end: the range of the rest, cut at 1/64 of the way.
+        let mut far = even.clone();
+        far[..2].copy_from_slice(&[-1e9, -1e6]);
+        far[998..].copy_from_slice(&[1e6, 1e9]);
+        let (low, high) = bucket_range(far.len(), |i| far[i]);
+        assert_eq!((low, high), (far[1000 / 64], far[999 - 1000 / 64]));
+        assert!(0.0 < low && high < 1.0);
+        // Most values equal: no width left after the cut, so the whole range.
+        let mut flat = vec![0.5; 1000];
+        flat[0] = -1.0;
+        flat[999] = 2.0;
+        assert_eq!(bucket_range(flat.len(), |i| flat[i]), (-1.0, 2.0));
+        // A range wider than the doubles counts as wider.
+        let huge = [-f64::MAX, 0.0, 1.0, f64::MAX];
+        assert_eq!(bucket_range(4, |i| huge[i]), (-f64::MAX, f64::MAX));
+        assert_eq!(bucket_range(0, |_| unreachable!()), (0.0, 0.0));
+    }
+
+    #[test]
+    fn hint_buckets_follow_the_box_shape() {
+        let n = 10_000;
+        let square = hint_buckets(n, [(0.0, 1.0), (0.0, 1.0)]);
+        assert_eq!(square.count(), 200);
+        // A box 1000 times higher than wide: √1000 times fewer buckets.
+        let tall = hint_buckets(n, [(0.0, 1e-3), (0.0, 1.0)]);
+        assert_eq!(tall.count(), 6);
+        // One row: every site is an arc; one column or one site: one bucket.
+        assert_eq!(hint_buckets(n, [(0.0, 1.0), (0.0, 0.0)]).count(), n);
+        assert_eq!(hint_buckets(n, [(0.0, 0.0), (0.0, 1.0)]).count(), 1);
+        assert_eq!(hint_buckets(1, [(0.0, 0.0), (0.0, 0.0)]).count(), 1);
+        assert_eq!(hint_buckets(0, [(0.0, 0.0), (0.0, 0.0)]).count(), 1);
+    }
 }

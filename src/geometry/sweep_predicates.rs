@@ -213,6 +213,53 @@ impl TopEstimate {
         }
     }
 
+    /// The estimate of the top of the circumcircle of `a, b, c` (not collinear) from the
+    /// exact stage: within a relative `2^-48` of the exact top (plus `2^-1073`), however
+    /// flat or spread the triple. It decides nothing only when that bound leaves the range
+    /// of `f32` (a top beyond about `2^176` in magnitude; the sweep scales its sites near 1).
+    ///
+    /// For the few events whose [`new`](Self::new) estimate is loose (a huge circle through
+    /// a far site: its top is a difference of two huge numbers): one exact evaluation, at
+    /// about the cost of one exact comparison, instead of an exact comparison with every
+    /// event its wide interval overlaps.
+    ///
+    /// **Evaluation.** In the integers of [`ExactCircle`] the top is `(p + √q) / d`, `d > 0`,
+    /// `q > 0`. For `p >= 0` the sum has no cancellation; for `p < 0` it is evaluated as
+    /// `(q − p²) / (√q − p)`, the numerator exact and the denominator a sum of two
+    /// positives. Each big integer is rounded once to a double mantissa and an integer
+    /// exponent (relative error `u`); then at most six operations on positive mantissas
+    /// follow (a square root, a sum, two products or quotients, each adding `u`, the root
+    /// halving its argument's error), so the result is within `8u` to first order, and
+    /// `16u |top|` covers the rest. The final scaling by the exponent is exact unless the
+    /// top is subnormal or zero (then `2^-1074` more, or its whole value below `2^-1100`).
+    ///
+    /// # Complexity
+    /// O(1) big-integer products of the coordinates' widths.
+    pub(crate) fn exact(a: Point2, b: Point2, c: Point2) -> TopEstimate {
+        let (v, base) = exact_integers(&[a.x, a.y, b.x, b.y, c.x, c.y]);
+        let circle = ExactCircle::new(&v);
+        let q = Scaled::of(&circle.q);
+        let root_q = q.sqrt();
+        let top = if circle.p.signum() >= 0 {
+            root_q
+                .add_positive(Scaled::of(&circle.p))
+                .div(Scaled::of(&circle.d))
+        } else {
+            let numerator = circle.q.sub(&circle.p.mul(&circle.p));
+            let denominator = root_q.add_positive(Scaled::of(&circle.p.abs()));
+            Scaled::of(&numerator).div(denominator.mul(Scaled::of(&circle.d)))
+        };
+        let top = top.to_f64(base);
+        if !top.is_finite() {
+            return TopEstimate::UNDECIDED;
+        }
+        let err = 16.0 * U * top.abs() + 2.0 * TINY;
+        TopEstimate {
+            top,
+            err: round_up_f32(err * (1.0 + ERR_MARGIN)),
+        }
+    }
+
     /// The order of the two exact tops if the estimates decide it: their intervals are
     /// disjoint. `None` when they overlap (equal tops always do).
     ///
@@ -756,6 +803,75 @@ impl ExactCircle {
     }
 }
 
+/// A real `m · 2^e` with a double mantissa and an unbounded exponent: big integers of any
+/// width rounded once, for [`TopEstimate::exact`].
+#[derive(Debug, Clone, Copy)]
+struct Scaled {
+    m: f64,
+    e: i64,
+}
+
+impl Scaled {
+    /// `v` rounded to nearest (a relative error of at most `u`).
+    fn of(v: &BigInt) -> Scaled {
+        let (negative, top, shift) = v.top_bits();
+        // The sticky bit of `top_bits` makes this one rounding of the whole integer.
+        let m = top as f64;
+        Scaled {
+            m: if negative { -m } else { m },
+            e: i64::from(shift),
+        }
+    }
+
+    fn mul(self, other: Scaled) -> Scaled {
+        Scaled {
+            m: self.m * other.m,
+            e: self.e + other.e,
+        }
+    }
+
+    fn div(self, other: Scaled) -> Scaled {
+        Scaled {
+            m: self.m / other.m,
+            e: self.e - other.e,
+        }
+    }
+
+    /// The square root of a non-negative value.
+    fn sqrt(self) -> Scaled {
+        let (m, e) = if self.e % 2 == 0 {
+            (self.m, self.e)
+        } else {
+            (2.0 * self.m, self.e - 1)
+        };
+        Scaled {
+            m: m.sqrt(),
+            e: e / 2,
+        }
+    }
+
+    /// The sum of two non-negative values: the smaller is aligned to the larger's exponent
+    /// (a term more than 2^1100 times smaller is dropped, a relative change far below `u`).
+    fn add_positive(self, other: Scaled) -> Scaled {
+        let (big, small) = if self.e >= other.e {
+            (self, other)
+        } else {
+            (other, self)
+        };
+        let gap = (small.e - big.e).max(-1100) as i32;
+        Scaled {
+            m: big.m + scale_by_pow2(small.m, gap),
+            e: big.e,
+        }
+    }
+
+    /// The value times `2^base` as a double: infinite if it overflows.
+    fn to_f64(self, base: i32) -> f64 {
+        let e = (self.e + i64::from(base)).clamp(-2000, 2000) as i32;
+        scale_by_pow2(self.m, e)
+    }
+}
+
 /// Bits of the coordinates [`cmp_small_circles`] takes: its largest terms, `D2² Q1`, have
 /// degree 10 and stay below 2^(10 B + 19) <= 2^119.
 const SMALL_BITS: u32 = 10;
@@ -1158,6 +1274,27 @@ mod tests {
         }
 
         #[test]
+        fn exact_top_estimate_is_tight_and_holds_the_exact_top(t in ccw_triple()) {
+            let e = TopEstimate::exact(t[0], t[1], t[2]);
+            let (_, cy, r2) = circle(t);
+            let top_vs = |v: &Q| cmp_root_sum(&(&cy - v), &r2, &Q::zero());
+            if e.err.is_finite() {
+                let (top, err) = (q(e.top), q(e.err as f64));
+                prop_assert_ne!(top_vs(&(&top - &err)), Ordering::Less, "below {:?}", e);
+                prop_assert_ne!(top_vs(&(&top + &err)), Ordering::Greater, "above {:?}", e);
+                // Tight: a few ulps of the top, or the least f32 for the tiniest tops.
+                let least = f32::from_bits(1) as f64;
+                prop_assert!((e.err as f64) <= (2f64.powi(-47) * e.top.abs()).max(least), "{:?}", e);
+            } else {
+                // Only a top whose bound leaves the f32 range decides nothing.
+                let huge = q(2f64.powi(176));
+                prop_assert!(
+                    top_vs(&huge) == Ordering::Greater || top_vs(&-huge) == Ordering::Less
+                );
+            }
+        }
+
+        #[test]
         fn top_estimates_decide_as_the_exact_comparison(
             t1 in ccw_triple(),
             t2 in ccw_triple(),
@@ -1323,6 +1460,56 @@ mod tests {
         assert!(flat.err.is_infinite());
         let spread = TopEstimate::new(p(0.0, 0.0), p(1.0, 0.0), p(0.5, 1e-25));
         assert!(spread.err.is_infinite());
+    }
+
+    #[test]
+    fn exact_top_estimate_is_tight_where_the_plain_one_is_loose() {
+        let p = |x: f64, y: f64| Point2::new(x, y);
+        // A far site and two near ones on a row above it: the centre is about 10^12 below,
+        // so the top is a difference of two numbers near 10^12 and the plain estimate
+        // loses 12 digits.
+        let t = [p(-1e6, 0.5), p(3e-4, 0.9), p(7e-4, 0.9)];
+        let loose = TopEstimate::new(t[0], t[1], t[2]);
+        let tight = TopEstimate::exact(t[0], t[1], t[2]);
+        assert!(loose.err as f64 > 1e-6, "{loose:?}");
+        assert!((tight.err as f64) < 1e-14 * tight.top.abs(), "{tight:?}");
+        // Both hold the exact top, which the bisection pins to one double.
+        let floor = circle_top_floor(t);
+        for e in [loose, tight] {
+            assert!(
+                e.cmp_height(floor) != Some(Ordering::Less),
+                "{e:?} vs {floor}"
+            );
+            assert!(
+                e.cmp_height(floor.next_up()) != Some(Ordering::Greater),
+                "{e:?}"
+            );
+        }
+        // Decided against tops a few ulps away, where the plain one decides nothing.
+        let above = TopEstimate {
+            top: floor + 64.0 * (floor.next_up() - floor),
+            err: 0.0,
+        };
+        assert_eq!(tight.is_below(&above), Some(true));
+        assert_eq!(loose.is_below(&above), None);
+        // A top past the doubles decides nothing; a subnormal one is still held (its
+        // bound is the least f32, far above its size: the sweep scales its sites near 1).
+        let beyond = [p(0.0, 0.0), p(f64::MAX, 1.0), p(-f64::MAX, 1.0)];
+        assert!(TopEstimate::exact(beyond[0], beyond[1], beyond[2])
+            .err
+            .is_infinite());
+        let tiny = [p(-2e-323, -4e-323), p(2e-323, -4e-323), p(0.0, -1e-323)];
+        let e = TopEstimate::exact(tiny[0], tiny[1], tiny[2]);
+        let floor = circle_top_floor(tiny);
+        assert!(e.err.is_finite(), "{e:?}");
+        assert!(
+            e.cmp_height(floor) != Some(Ordering::Less),
+            "{e:?} vs {floor}"
+        );
+        assert!(
+            e.cmp_height(floor.next_up()) != Some(Ordering::Greater),
+            "{e:?}"
+        );
     }
 
     #[test]
