@@ -1,7 +1,7 @@
 //! The fast builder: incremental insertion in a spatial order, with a walk to locate each
 //! point and Lawson flips to restore the Delaunay property.
 
-use super::hilbert::brio_order;
+use super::hilbert::{brio_order, curve_bounds};
 use super::partition::{build_split, SPLIT_MIN};
 use super::triangulation::{find_duplicates, rotate_to_lex_min, Triangulation, EMPTY};
 use crate::complexity::{on, Bound, Declaration};
@@ -165,7 +165,7 @@ pub(super) fn incremental_local<C: Counter>(
     } else {
         build(
             points,
-            brio_order(points, points.bounding_box()),
+            brio_order(points, curve_bounds(points, points.bounding_box())),
             filter,
             counter,
         )

@@ -30,7 +30,7 @@
 //! creates; s is O(n) in the worst case and about √n on uniform input. Both halves' arrays
 //! are one allocation, so the merge copies nothing: O(s) auxiliary space beyond the mesh.
 
-use super::hilbert::{brio_order, brio_order_labelled};
+use super::hilbert::{brio_order, brio_order_labelled, curve_bounds};
 use super::incremental::{
     build, first_triangle, ghost_real_edge, insert_all, mesh_size, next, prev, Ghosted, Part, GHOST,
 };
@@ -65,7 +65,7 @@ pub(super) fn build_split<C: Counter>(
     counter: &mut C,
 ) -> Option<Ghosted> {
     let (left, right) = split_input(points);
-    let bounds = points.bounding_box();
+    let bounds = curve_bounds(points, points.bounding_box());
     let (mut left, mut right) = both(
         || half_order(points, left, bounds),
         || half_order(points, right, bounds),
@@ -620,7 +620,7 @@ mod tests {
     /// triangulations, when both halves have triangles (so the two were stitched).
     fn both_builds(pts: &[Point2]) -> Option<(Triangulation, Triangulation)> {
         let set = PointSet::new(pts).expect("finite points");
-        let bounds = set.bounding_box();
+        let bounds = curve_bounds(&set, set.bounding_box());
         let filter = BoxPredicates::for_set(&set);
         let (left, right) = split_input(&set);
         build(&set, half_order(&set, left, bounds), filter, &mut NoCount)?;

@@ -354,3 +354,40 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn far_points_do_not_lengthen_the_walks() {
+    // The insertion order follows a Hilbert curve over the box of most points: a far point
+    // stretching the bounding box used to put every other point in one cell of the curve's
+    // grid, so each walk crossed O(√n) triangles (150 orientation tests per point at
+    // 20000 points, against 7 now). The walks are counted in orientation tests.
+    let n = 20_000;
+    let mut s = 0x9E37_79B9_7F4A_7C15u64;
+    let mut r = move || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let cluster: Vec<Point2> = std::iter::once(Point2::new(1e8, 1e8))
+        .chain((0..n).map(|_| Point2::new(r() * 1e-6, r() * 1e-6)))
+        .collect();
+    let mut far: Vec<Point2> = vec![
+        Point2::new(0.0, 1e9),
+        Point2::new(0.0, -1e9),
+        Point2::new(1e9, 0.0),
+    ];
+    far.extend((0..n).map(|_| Point2::new(r(), r())));
+    let tall: Vec<Point2> = (0..n).map(|_| Point2::new(r() * 1e-3, r())).collect();
+    for (what, pts) in [("cluster", cluster), ("far", far), ("tall band", tall)] {
+        let t = build_and_check(&pts);
+        let mut c = Counts::default();
+        let counted = incremental_with(&crate::common::set(&pts), &mut c).unwrap();
+        assert_eq!(counted, t, "{what}");
+        assert!(
+            c.orientation_tests < 15 * pts.len() as u64,
+            "{what}: {} orientation tests",
+            c.orientation_tests
+        );
+    }
+}
