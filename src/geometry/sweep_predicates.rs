@@ -1474,8 +1474,8 @@ mod tests {
         assert!(loose.err as f64 > 1e-6, "{loose:?}");
         assert!((tight.err as f64) < 1e-14 * tight.top.abs(), "{tight:?}");
         // Both hold the exact top, which the bisection pins to one double.
-        let floor = circle_top_floor(t);
-        for e in [loose, tight] {
+        let holds = |e: TopEstimate, t: [Point2; 3]| {
+            let floor = circle_top_floor(t);
             assert!(
                 e.cmp_height(floor) != Some(Ordering::Less),
                 "{e:?} vs {floor}"
@@ -1484,7 +1484,10 @@ mod tests {
                 e.cmp_height(floor.next_up()) != Some(Ordering::Greater),
                 "{e:?}"
             );
-        }
+            floor
+        };
+        holds(loose, t);
+        let floor = holds(tight, t);
         // Decided against tops a few ulps away, where the plain one decides nothing.
         let above = TopEstimate {
             top: floor + 64.0 * (floor.next_up() - floor),
@@ -1500,16 +1503,8 @@ mod tests {
             .is_infinite());
         let tiny = [p(-2e-323, -4e-323), p(2e-323, -4e-323), p(0.0, -1e-323)];
         let e = TopEstimate::exact(tiny[0], tiny[1], tiny[2]);
-        let floor = circle_top_floor(tiny);
         assert!(e.err.is_finite(), "{e:?}");
-        assert!(
-            e.cmp_height(floor) != Some(Ordering::Less),
-            "{e:?} vs {floor}"
-        );
-        assert!(
-            e.cmp_height(floor.next_up()) != Some(Ordering::Greater),
-            "{e:?}"
-        );
+        holds(e, tiny);
     }
 
     #[test]
