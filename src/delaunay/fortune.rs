@@ -16,6 +16,7 @@ use crate::geometry::sweep_predicates::{
 };
 use crate::geometry::{BoxPredicates, ConstructedPoint, Orientation, Point2, PointSet};
 use crate::trace::{record, Frame, NoObserver, Observer, TraceSize};
+use crate::util::{range_of_most, sorted_sample};
 use std::cell::Cell;
 use std::cmp::Ordering;
 
@@ -802,9 +803,7 @@ const HINT_STEPS: usize = 8;
 /// x from a sample of at most 256 of them (a sort of all the x's would cost a tenth of
 /// the sweep at a thousand sites).
 fn site_ranges(sites: &[Point2]) -> [(f64, f64); 2] {
-    let stride = sites.len().div_ceil(256).max(1);
-    let mut xs: Vec<f64> = sites.iter().step_by(stride).map(|p| p.x).collect();
-    xs.sort_unstable_by(f64::total_cmp);
+    let xs = sorted_sample(sites, 256, |p| p.x);
     [
         bucket_range(xs.len(), |i| xs[i]),
         bucket_range(sites.len(), |i| sites[i].y),
@@ -831,22 +830,15 @@ fn event_queue(n: usize, y: (f64, f64)) -> EventQueue {
 
 /// The range of equal buckets over `len` ascending values, `value(i)` the `i`-th: all of
 /// them, unless the range from the value 1/64 of the way up to the one 1/64 of the way
-/// down is less than half as wide; then that range. A few far values (outliers) would
-/// otherwise stretch the buckets until the rest share one; values outside the range map
-/// to the first or the last bucket, which keeps the map monotone.
+/// down is less than half as wide ([`range_of_most`]); then that range. A few far values
+/// (outliers) would otherwise stretch the buckets until the rest share one; values outside
+/// the range map to the first or the last bucket, which keeps the map monotone.
 fn bucket_range(len: usize, value: impl Fn(usize) -> f64) -> (f64, f64) {
     if len == 0 {
         return (0.0, 0.0);
     }
-    let trim = len / 64;
-    let (first, last) = (value(0), value(len - 1));
-    let (low, high) = (value(trim), value(len - 1 - trim));
-    // (An infinite full width, past the doubles, counts as wider.)
-    if low < high && last - first > 2.0 * (high - low) {
-        (low, high)
-    } else {
-        (first, last)
-    }
+    let full = (value(0), value(len - 1));
+    range_of_most(len, value, 64, full, 2.0).unwrap_or(full)
 }
 
 /// The input index of the site of every arc of `line`, from left to right.
@@ -953,14 +945,11 @@ mod tests {
         let (low, high) = bucket_range(far.len(), |i| far[i]);
         assert_eq!((low, high), (far[1000 / 64], far[999 - 1000 / 64]));
         assert!(0.0 < low && high < 1.0);
-        // Most values equal: no width left after the cut, so the whole range.
-        let mut flat = vec![0.5; 1000];
-        flat[0] = -1.0;
-        flat[999] = 2.0;
-        assert_eq!(bucket_range(flat.len(), |i| flat[i]), (-1.0, 2.0));
-        // A range wider than the doubles counts as wider.
-        let huge = [-f64::MAX, 0.0, 1.0, f64::MAX];
-        assert_eq!(bucket_range(4, |i| huge[i]), (-f64::MAX, f64::MAX));
+        // Values spread to less than twice the width of most: still the whole range.
+        let mut spread = even.clone();
+        spread[0] = -0.5;
+        spread[999] = 1.4;
+        assert_eq!(bucket_range(spread.len(), |i| spread[i]), (-0.5, 1.4));
         assert_eq!(bucket_range(0, |_| unreachable!()), (0.0, 0.0));
     }
 

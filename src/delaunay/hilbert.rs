@@ -12,6 +12,7 @@
 
 use crate::gen::Rng;
 use crate::geometry::{BoundingBox, Point2};
+use crate::util::{range_of_most, sorted_sample};
 
 /// The seed of the BRIO rounds (any fixed value: the rounds need only be independent of the
 /// input).
@@ -157,34 +158,22 @@ fn par_brio_order(
 /// walks grow to O(√n) steps (3 · 10⁵ points in a box 10⁻⁶ wide beside one point at 10⁸
 /// took 8 s, 50 times as long as uniform points). Points outside the box go to its border
 /// cells. The large sample is only taken when the same range of a sample of 64 points
-/// already spans less than a quarter of the box along an axis (not on uniform or
-/// clustered input).
+/// is not empty and already spans less than a quarter of the box along an axis (not on
+/// uniform or clustered input). Both ranges are [`range_of_most`].
 ///
 /// O(1) time when the 64 points span the box, O(n / s + s log s) for a sample of s points
 /// otherwise; O(s) auxiliary space.
 pub(super) fn curve_bounds(points: &[Point2], bounds: Option<BoundingBox>) -> Option<BoundingBox> {
     let bounds = bounds?;
     let axis = |coordinate: fn(&Point2) -> f64, low: f64, high: f64| {
-        // (A full width past the doubles counts as wider.)
-        let much_wider = |l: f64, h: f64| 0.5 * high - 0.5 * low > 2.0 * (h - l);
-        let trimmed = |size: usize, trim: usize| {
-            let stride = points.len().div_ceil(size).max(1);
-            let mut sample: Vec<f64> = points.iter().step_by(stride).map(coordinate).collect();
-            sample.sort_unstable_by(f64::total_cmp);
-            let trim = sample.len() / trim;
-            (sample[trim], sample[sample.len() - 1 - trim])
+        let most = |size: usize, cut: usize| {
+            let sample = sorted_sample(points, size, coordinate);
+            range_of_most(sample.len(), |i| sample[i], cut, (low, high), 4.0)
         };
         // 64 points without their two extremes at each end first.
-        let (l, h) = trimmed(64, 32);
-        if !much_wider(l, h) {
-            return (low, high);
-        }
-        let (l, h) = trimmed(1024, 64);
-        if l < h && much_wider(l, h) {
-            (l, h)
-        } else {
-            (low, high)
-        }
+        most(64, 32)
+            .and_then(|_| most(1024, 64))
+            .unwrap_or((low, high))
     };
     let (min_x, max_x) = axis(|p| p.x, bounds.min.x, bounds.max.x);
     let (min_y, max_y) = axis(|p| p.y, bounds.min.y, bounds.max.y);

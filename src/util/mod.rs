@@ -1,10 +1,12 @@
 //! Small internals shared by several modules, each written once: the counted binary heap, the
 //! order-preserving integer key of an `f64`, the compressed adjacency lists of an edge list,
-//! a binary search over positions, and the quoting of user text in error messages.
+//! a binary search over positions, the range of most of a set of values (without a few far
+//! ones), and the quoting of user text in error messages.
 
 mod csr;
 mod heap;
 mod quote;
+mod range;
 
 /// Declares an enum of named kinds (generator kinds, report profiles): the variants with
 /// their kebab-case names, `ALL`, `name`, `Display` and `FromStr` (an unknown name gives the
@@ -60,6 +62,7 @@ pub(crate) use named_enum;
 pub(crate) use csr::Csr;
 pub(crate) use heap::Heap;
 pub(crate) use quote::quote;
+pub(crate) use range::{range_of_most, sorted_sample};
 
 /// The `u64` whose integer order is the order of `f64::total_cmp` on `x`: the sign bit set for
 /// non-negative values, every bit flipped for negative ones (a monotone bijection on the bit
