@@ -341,10 +341,53 @@ fn fortune_observed<C: Counter, O: Observer<FortuneStep, C>>(
 /// What the queue's comparisons need only when the estimates leave them open: arc `arc`
 /// (between the arcs of `sites[0]` and `sites[2]`) vanishes at the top of the circle
 /// through `sites`.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 struct EventSites {
     sites: [u32; 3],
     arc: u32,
+    /// The enclosures of the circle's top and centre ([`CircleKey`]), once a comparison
+    /// the plain estimate left open has asked for them.
+    key: Cell<Option<CircleKey>>,
+    /// The top within a few units of its last place ([`TopEstimate::exact`]), once the
+    /// enclosures have left a comparison open too. Nearly cocircular sites (points on a
+    /// circle, two nearly parallel lines) give circles whose plain estimates and
+    /// enclosures overlap while their tops still differ by far more than this: one big
+    /// integer evaluation per event then decides what would otherwise be an exact
+    /// comparison, in big integers, every time the event is compared.
+    tight: Cell<Option<TopEstimate>>,
+}
+
+impl EventSites {
+    /// An event of `sites` whose arc `arc` vanishes, nothing evaluated yet.
+    fn new(sites: [u32; 3], arc: u32) -> EventSites {
+        EventSites {
+            sites,
+            arc,
+            key: Cell::new(None),
+            tight: Cell::new(None),
+        }
+    }
+
+    /// The event's enclosures, evaluated on the first call (`points` are its sites'
+    /// coordinates).
+    fn key(&self, points: [Point2; 3]) -> CircleKey {
+        self.key.get().unwrap_or_else(|| {
+            let [a, b, c] = points;
+            let key = CircleKey::new(a, b, c);
+            self.key.set(Some(key));
+            key
+        })
+    }
+
+    /// The event's tight estimate, evaluated on the first call.
+    fn tight(&self, points: [Point2; 3]) -> TopEstimate {
+        self.tight.get().unwrap_or_else(|| {
+            let [a, b, c] = points;
+            let estimate = TopEstimate::exact(a, b, c);
+            self.tight.set(Some(estimate));
+            estimate
+        })
+    }
 }
 
 /// The sweep's state over the sites (sorted by y, then x, distinct).
@@ -570,20 +613,21 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         if !is_pending(&self.line, &self.events, id) {
             return; // a false alarm: the arc changed neighbours or is gone
         }
-        let e = self.events[id as usize];
+        let e = &self.events[id as usize];
+        let (sites, arc) = (e.sites, e.arc);
         let t = self.triangles.len() as u32;
-        self.triangles.push(e.sites);
+        self.triangles.push(sites);
         self.halfedges.extend([NIL; 3]);
-        let (left, right) = (self.line.prev(e.arc), self.line.next(e.arc));
+        let (left, right) = (self.line.prev(arc), self.line.next(arc));
         // The breakpoints on both sides of the vanishing arc end here, at the Voronoi
         // vertex: their edges are the triangle's sides left -> arc (half-edge 3t) and
         // arc -> right (3t + 1). The new breakpoint between left and right starts here,
         // with the side right -> left (3t + 2).
-        self.end_edge(self.line.edge(e.arc), 3 * t);
+        self.end_edge(self.line.edge(arc), 3 * t);
         self.end_edge(self.line.edge(right), 3 * t + 1);
         let edge = self.new_edge(3 * t + 2);
         self.line.set_edge(right, edge);
-        self.line.remove(e.arc);
+        self.line.remove(arc);
         self.line.set_event(left, NIL);
         self.line.set_event(right, NIL);
         self.check_circle(left);
@@ -591,7 +635,7 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         self.record_exact_comparisons();
         let (input, index, line, triangles) = (self.input, self.index, &self.line, &self.triangles);
         self.obs.step(self.counter, || {
-            let triangle = e.sites.map(|v| index[v as usize]);
+            let triangle = sites.map(|v| index[v as usize]);
             let [a, b, c] = triangle.map(|v| input[v]);
             FortuneStep::Circle {
                 triangle,
@@ -619,7 +663,7 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
         {
             return;
         }
-        let event = EventSites { sites, arc: m };
+        let event = EventSites::new(sites, m);
         let id = match self.free_events.pop() {
             Some(id) => {
                 self.events[id as usize] = event;
@@ -643,7 +687,7 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
             // A loose estimate (a huge circle through a far site) would be compared
             // exactly with every event it overlaps: one exact evaluation instead.
             self.counter.exact_fallback();
-            estimate = TopEstimate::exact(a, b, c);
+            estimate = self.events[id as usize].tight([a, b, c]);
         }
         let TopEstimate { top, err } = estimate;
         self.push(Event { top, err, id });
@@ -651,8 +695,23 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
 
     /// The exact order of event `id` and `site` (the estimate left it open).
     fn cmp_event_site(&self, id: u32, site: Point2) -> Ordering {
-        let t = self.points(self.events[id as usize].sites);
-        cmp_circle_site(&CircleKey::new(t[0], t[1], t[2]), t, site)
+        let event = &self.events[id as usize];
+        let t = self.points(event.sites);
+        let key = event.key(t);
+        // A circle through a point p has its top at p.y or above, at p.y only if p is the
+        // top (the centre's x is p.x): a site of the event at the height of `site` either
+        // puts the top above it or may tie with it, which no estimate decides.
+        let mut may_tie = false;
+        for p in t.iter().filter(|p| p.y == site.y) {
+            if key.centre_x_is_not(p.x) {
+                return Ordering::Greater;
+            }
+            may_tie = true;
+        }
+        (!may_tie)
+            .then(|| event.tight(t).cmp_height(site.y))
+            .flatten()
+            .unwrap_or_else(|| cmp_circle_site(&key, t, site))
     }
 
     /// A new Voronoi edge, with the half-edge found at its start (or [`NIL`]).
@@ -896,8 +955,15 @@ fn before_exact(
     }
     let points = |e: &Event| events[e.id as usize].sites.map(|v| sites[v as usize]);
     let (t1, t2) = (points(x), points(y));
-    let k1 = CircleKey::new(t1[0], t1[1], t1[2]);
-    let k2 = CircleKey::new(t2[0], t2[1], t2[2]);
+    let (e1, e2) = (&events[x.id as usize], &events[y.id as usize]);
+    // The enclosures (no big integers), then the tight estimates, then the big integers;
+    // each event evaluates each stage once.
+    let (k1, k2) = (e1.key(t1), e2.key(t2));
+    if k1.cmp_tops(&k2).is_none() {
+        if let Some(below) = e1.tight(t1).is_below(&e2.tight(t2)) {
+            return below;
+        }
+    }
     cmp_circles(&k1, t1, &k2, t2) == Ordering::Less
 }
 

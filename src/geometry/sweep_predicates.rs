@@ -70,6 +70,18 @@ impl CircleKey {
     }
 }
 
+impl CircleKey {
+    /// The order of the two circles' tops if their enclosures decide it.
+    pub(crate) fn cmp_tops(&self, other: &CircleKey) -> Option<Ordering> {
+        self.top.cmp(other.top)
+    }
+
+    /// Whether the enclosure of the centre's `x` shows that it is not `x`.
+    pub(crate) fn centre_x_is_not(&self, x: f64) -> bool {
+        self.x.cmp(Interval::point(x)).is_some()
+    }
+}
+
 /// A circle event's priority in plain floating point: the top of the circumcircle,
 /// `y = cy + r`, as a double `top` and a bound `err` with `|exact top − top| <= err`.
 ///

@@ -331,3 +331,46 @@ fn far_sites_leave_few_exact_comparisons() {
         );
     }
 }
+
+#[test]
+fn nearly_cocircular_sites() {
+    // Sites rounded from a circle, or from two nearly parallel lines: the circles of
+    // neighbouring triples are nearly one circle, so their floating-point estimates overlap
+    // everywhere, and the events are ordered by their tight estimates or, for tops a few
+    // units of the last place apart (mirror images on the circle), exactly.
+    let n = 1500;
+    let circle: Vec<Point2> = (0..n)
+        .map(|i| {
+            let t = i as f64 / n as f64 * std::f64::consts::TAU;
+            Point2::new(t.cos(), t.sin())
+        })
+        .collect();
+    let mut r = stream(11);
+    let lines: Vec<Point2> = (0..n)
+        .map(|i| {
+            let x = r();
+            let y = if i % 2 == 0 { 0.0 } else { 1.0 + x * 1e-9 };
+            Point2::new(x, y)
+        })
+        .collect();
+    // An ellipse turned by an irrational angle, far from the origin.
+    let ellipse: Vec<Point2> = (0..n)
+        .map(|i| {
+            let t = i as f64 / n as f64 * std::f64::consts::TAU;
+            let (x, y) = (3.0 * t.cos(), t.sin());
+            let (s, c) = 1f64.sin_cos();
+            Point2::new(1e3 + c * x - s * y, -2e3 + s * x + c * y)
+        })
+        .collect();
+    for (what, pts) in [
+        ("a circle", circle),
+        ("two nearly parallel lines", lines),
+        ("a turned ellipse", ellipse),
+    ] {
+        let t = checked_against_incremental(&pts, what);
+        let mut c = Counts::default();
+        assert_eq!(t, fortune_with(&crate::common::set(&pts), &mut c).unwrap());
+        // The plain estimates leave many comparisons open here.
+        assert!(c.exact_fallbacks > n as u64 / 4, "{what}: {c:?}");
+    }
+}
