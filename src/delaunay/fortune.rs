@@ -664,25 +664,28 @@ impl<C: Counter, O: Observer<FortuneStep, C>> Sweep<'_, C, O> {
             return;
         }
         let event = EventSites::new(sites, m);
+        // On a small-integer set the circle's integers give the estimate too.
+        let circle = self
+            .small_integer
+            .then(|| IntegerCircle::new([a, b, c], self.sites[0]));
         let id = match self.free_events.pop() {
             Some(id) => {
                 self.events[id as usize] = event;
-                if self.small_integer {
-                    self.circles[id as usize] = IntegerCircle::new([a, b, c], self.sites[0]);
+                if let Some(circle) = circle {
+                    self.circles[id as usize] = circle;
                 }
                 id
             }
             None => {
                 self.events.push(event);
-                if self.small_integer {
-                    self.circles
-                        .push(IntegerCircle::new([a, b, c], self.sites[0]));
-                }
+                self.circles.extend(circle);
                 (self.events.len() - 1) as u32
             }
         };
         self.line.set_event(m, id);
-        let mut estimate = TopEstimate::new(a, b, c);
+        let mut estimate = circle
+            .and_then(|circle| circle.estimate(self.sites[0]))
+            .unwrap_or_else(|| TopEstimate::new(a, b, c));
         if self.queue.is_wide(estimate.err) {
             // A loose estimate (a huge circle through a far site) would be compared
             // exactly with every event it overlaps: one exact evaluation instead.

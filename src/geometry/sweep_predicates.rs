@@ -1011,6 +1011,34 @@ impl IntegerCircle {
         }
     }
 
+    /// The estimate of the circle's top, `o` being the origin the circle was taken
+    /// relative to, when `q` is exact (`None` otherwise): the same decisions as
+    /// [`TopEstimate::new`] from the integers already computed.
+    ///
+    /// **Error bound.** `p`, `q`, `d > 0` and `o.y` are exact integers. The square root
+    /// `r` errs by at most `u √q`, the sum `s = p + r` adds `u |s|`, the quotient
+    /// `t = s / d` adds `u |t|`, and `top = o.y + t` adds `u |top|` (no value is below the
+    /// normal range: a nonzero `p + √q` is at least `1 / (|p| + √q) > 2^-41`). So
+    /// `|exact top − top| <= u (r' + |s|) / d + u |t| + u |top|` to first order, with
+    /// `r' = r (1 + u)` covering `√q`; the stored bound carries the relative margin
+    /// `2^-20` and is rounded up, which covers the second-order terms and the bound's
+    /// own rounding, as in [`TopEstimate::new`].
+    #[inline]
+    pub(crate) fn estimate(&self, o: Point2) -> Option<TopEstimate> {
+        if !self.small {
+            return None;
+        }
+        let r = self.q.sqrt();
+        let s = self.p + r;
+        let t = s / self.d;
+        let top = o.y + t;
+        let err = U * ((r * (1.0 + U) + s.abs()) / self.d + t.abs() + top.abs()) + TINY;
+        Some(TopEstimate {
+            top,
+            err: round_up_f32(err * (1.0 + ERR_MARGIN)),
+        })
+    }
+
     /// [`cmp_circles`] for the two circles (relative to the same origin) when every
     /// operation is provably exact, `None` otherwise or when the tops' order needs
     /// squaring (as [`cmp_small_circles`]).
@@ -1283,6 +1311,60 @@ mod tests {
                 prop_assert_ne!(top_vs(&(&top - &err)), Ordering::Less, "below {:?}", e);
                 prop_assert_ne!(top_vs(&(&top + &err)), Ordering::Greater, "above {:?}", e);
             }
+        }
+
+        #[test]
+        fn integer_circle_estimate_holds_cancelling_tops(
+            h in 2i32..=256,
+            w in 1i32..=16,
+            skew in 1i32..=16,
+            shift in -4096i32..=4096,
+            origin in 0usize..3,
+        ) {
+            // A large circle through two close sites near its top: the top is a small
+            // difference of two large terms (p + √q with p near −√q, √q irrational).
+            let y = shift as f64;
+            let t = [
+                Point2::new(-w as f64, y),
+                Point2::new(0.0, y - h as f64),
+                Point2::new((w + skew) as f64, y + 1.0),
+            ];
+            prop_assert_eq!(
+                super::super::orient2d(t[0], t[1], t[2]),
+                super::super::Orientation::CounterClockwise
+            );
+            let o = t[origin];
+            let e = IntegerCircle::new(t, o).estimate(o).expect("q is exact here");
+            let (_, cy, r2) = circle(t);
+            let top_vs = |v: &Q| cmp_root_sum(&(&cy - v), &r2, &Q::zero());
+            let (top, err) = (q(e.top), q(e.err as f64));
+            prop_assert_ne!(top_vs(&(&top - &err)), Ordering::Less, "below {:?}", e);
+            prop_assert_ne!(top_vs(&(&top + &err)), Ordering::Greater, "above {:?}", e);
+        }
+
+        #[test]
+        fn integer_circle_estimate_holds_the_exact_top(
+            coords in proptest::array::uniform6(-4096i32..=4096),
+            origin in 0usize..3,
+        ) {
+            let pts: Vec<Point2> =
+                coords.chunks(2).map(|c| Point2::new(c[0] as f64, c[1] as f64)).collect();
+            let t = match super::super::orient2d(pts[0], pts[1], pts[2]) {
+                super::super::Orientation::CounterClockwise => [pts[0], pts[1], pts[2]],
+                super::super::Orientation::Clockwise => [pts[0], pts[2], pts[1]],
+                super::super::Orientation::Collinear => return Ok(()),
+            };
+            let o = t[origin];
+            let Some(e) = IntegerCircle::new(t, o).estimate(o) else {
+                // Only circles whose q could be inexact are left out.
+                return Ok(());
+            };
+            let (_, cy, r2) = circle(t);
+            let top_vs = |v: &Q| cmp_root_sum(&(&cy - v), &r2, &Q::zero());
+            let (top, err) = (q(e.top), q(e.err as f64));
+            prop_assert_ne!(top_vs(&(&top - &err)), Ordering::Less, "below {:?}", e);
+            prop_assert_ne!(top_vs(&(&top + &err)), Ordering::Greater, "above {:?}", e);
+            prop_assert!((e.err as f64) <= 2f64.powi(-48) * (e.top.abs() + 1.0) * 64.0, "{:?}", e);
         }
 
         #[test]
