@@ -370,24 +370,23 @@ impl EventSites {
 
     /// The event's enclosures, evaluated on the first call (`points` are its sites'
     /// coordinates).
-    fn key(&self, points: [Point2; 3]) -> CircleKey {
-        self.key.get().unwrap_or_else(|| {
-            let [a, b, c] = points;
-            let key = CircleKey::new(a, b, c);
-            self.key.set(Some(key));
-            key
-        })
+    fn key(&self, [a, b, c]: [Point2; 3]) -> CircleKey {
+        once(&self.key, || CircleKey::new(a, b, c))
     }
 
     /// The event's tight estimate, evaluated on the first call.
-    fn tight(&self, points: [Point2; 3]) -> TopEstimate {
-        self.tight.get().unwrap_or_else(|| {
-            let [a, b, c] = points;
-            let estimate = TopEstimate::exact(a, b, c);
-            self.tight.set(Some(estimate));
-            estimate
-        })
+    fn tight(&self, [a, b, c]: [Point2; 3]) -> TopEstimate {
+        once(&self.tight, || TopEstimate::exact(a, b, c))
     }
+}
+
+/// The value in `cell`, evaluated by `evaluate` and kept there on the first call.
+fn once<T: Copy>(cell: &Cell<Option<T>>, evaluate: impl FnOnce() -> T) -> T {
+    cell.get().unwrap_or_else(|| {
+        let value = evaluate();
+        cell.set(Some(value));
+        value
+    })
 }
 
 /// The sweep's state over the sites (sorted by y, then x, distinct).

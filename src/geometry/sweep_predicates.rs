@@ -1180,6 +1180,20 @@ mod tests {
         (&a.0 + ux, &a.1 + uy, r2)
     }
 
+    /// The order of the exact top of the circle of `t` (counter-clockwise) and `v`.
+    fn top_vs(t: [Point2; 3]) -> impl Fn(&Q) -> Ordering {
+        let (_, cy, r2) = circle(t);
+        // cy + r vs v  <=>  (cy − v) + √r2 vs √0.
+        move |v: &Q| cmp_root_sum(&(&cy - v), &r2, &Q::zero())
+    }
+
+    /// Whether the interval of `e` holds the exact top of the circle of `t`.
+    fn holds_top(e: TopEstimate, t: [Point2; 3]) -> bool {
+        let top_vs = top_vs(t);
+        let (top, err) = (q(e.top), q(e.err as f64));
+        top_vs(&(&top - &err)) != Ordering::Less && top_vs(&(&top + &err)) != Ordering::Greater
+    }
+
     /// `x + √b` vs `√d` for `b, d >= 0`.
     fn cmp_root_sum(x: &Q, b: &Q, d: &Q) -> Ordering {
         let m = d - x * x - b; // x² + b + 2x√b vs d  <=>  2x√b vs m
@@ -1289,9 +1303,8 @@ mod tests {
         #[test]
         fn circle_top_floor_is_the_largest_double_not_above_the_top(t in ccw_triple()) {
             let y = circle_top_floor(t);
-            let (_, cy, r2) = circle(t);
-            // cy + r vs v  <=>  (cy − v) + √r2 vs √0.
-            let top_vs = |v: f64| cmp_root_sum(&(&cy - q(v)), &r2, &Q::zero());
+            let exact_vs = top_vs(t);
+            let top_vs = |v: f64| exact_vs(&q(v));
             prop_assert_ne!(top_vs(y), Ordering::Less, "{} is above the top", y);
             if y < f64::MAX {
                 let next = f64::from_bits(if y >= 0.0 { y.to_bits() + 1 } else { y.to_bits() - 1 });
@@ -1304,12 +1317,7 @@ mod tests {
         fn top_estimate_holds_the_exact_top(t in ccw_triple()) {
             let e = TopEstimate::new(t[0], t[1], t[2]);
             if e.err.is_finite() {
-                let (_, cy, r2) = circle(t);
-                // cy + r vs v  <=>  (cy − v) + √r2 vs √0.
-                let top_vs = |v: &Q| cmp_root_sum(&(&cy - v), &r2, &Q::zero());
-                let (top, err) = (q(e.top), q(e.err as f64));
-                prop_assert_ne!(top_vs(&(&top - &err)), Ordering::Less, "below {:?}", e);
-                prop_assert_ne!(top_vs(&(&top + &err)), Ordering::Greater, "above {:?}", e);
+                prop_assert!(holds_top(e, t), "{:?}", e);
             }
         }
 
@@ -1335,11 +1343,7 @@ mod tests {
             );
             let o = t[origin];
             let e = IntegerCircle::new(t, o).estimate(o).expect("q is exact here");
-            let (_, cy, r2) = circle(t);
-            let top_vs = |v: &Q| cmp_root_sum(&(&cy - v), &r2, &Q::zero());
-            let (top, err) = (q(e.top), q(e.err as f64));
-            prop_assert_ne!(top_vs(&(&top - &err)), Ordering::Less, "below {:?}", e);
-            prop_assert_ne!(top_vs(&(&top + &err)), Ordering::Greater, "above {:?}", e);
+            prop_assert!(holds_top(e, t), "{:?}", e);
         }
 
         #[test]
@@ -1359,23 +1363,16 @@ mod tests {
                 // Only circles whose q could be inexact are left out.
                 return Ok(());
             };
-            let (_, cy, r2) = circle(t);
-            let top_vs = |v: &Q| cmp_root_sum(&(&cy - v), &r2, &Q::zero());
-            let (top, err) = (q(e.top), q(e.err as f64));
-            prop_assert_ne!(top_vs(&(&top - &err)), Ordering::Less, "below {:?}", e);
-            prop_assert_ne!(top_vs(&(&top + &err)), Ordering::Greater, "above {:?}", e);
+            prop_assert!(holds_top(e, t), "{:?}", e);
             prop_assert!((e.err as f64) <= 2f64.powi(-48) * (e.top.abs() + 1.0) * 64.0, "{:?}", e);
         }
 
         #[test]
         fn exact_top_estimate_is_tight_and_holds_the_exact_top(t in ccw_triple()) {
             let e = TopEstimate::exact(t[0], t[1], t[2]);
-            let (_, cy, r2) = circle(t);
-            let top_vs = |v: &Q| cmp_root_sum(&(&cy - v), &r2, &Q::zero());
+            let top_vs = top_vs(t);
             if e.err.is_finite() {
-                let (top, err) = (q(e.top), q(e.err as f64));
-                prop_assert_ne!(top_vs(&(&top - &err)), Ordering::Less, "below {:?}", e);
-                prop_assert_ne!(top_vs(&(&top + &err)), Ordering::Greater, "above {:?}", e);
+                prop_assert!(holds_top(e, t), "{:?}", e);
                 // Tight: a few ulps of the top, or the least f32 for the tiniest tops.
                 let least = f32::from_bits(1) as f64;
                 prop_assert!((e.err as f64) <= (2f64.powi(-47) * e.top.abs()).max(least), "{:?}", e);
