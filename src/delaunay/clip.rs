@@ -146,6 +146,17 @@ impl Voronoi {
     /// # Ok::<(), compgeo::Error>(())
     /// ```
     pub fn clip_cell(&self, k: usize, bounds: &ClipBox) -> Vec<Point2> {
+        let mut out = Vec::new();
+        if self.clip_or_keep(k, bounds, &mut out) {
+            out.extend(self.cell_vertices(k).iter().map(|&i| self.vertices[i]));
+        }
+        out
+    }
+
+    /// Cell `k` intersected with `bounds`: `true` if that is the cell's own vertex polygon
+    /// (every vertex surely inside, no two consecutive ones equal), else `false` with the
+    /// polygon appended to `out` (nothing for an empty one).
+    fn clip_or_keep(&self, k: usize, bounds: &ClipBox, out: &mut Vec<Point2>) -> bool {
         let cell = self.cell(k);
         let corners = [
             bounds.min,
@@ -154,7 +165,8 @@ impl Voronoi {
             Point2::new(bounds.min.x, bounds.max.y),
         ];
         if self.cell_count() == 1 {
-            return corners.to_vec();
+            out.extend(corners);
+            return false;
         }
         if cell.bounded
             && cell
@@ -162,8 +174,15 @@ impl Voronoi {
                 .iter()
                 .all(|&i| surely_inside(self.vertices[i], bounds))
         {
-            // The box is convex: a cell whose vertices are all in it is its own clip.
-            return merged(cell.vertices.iter().map(|&i| self.vertices[i]));
+            // The box is convex: a cell whose vertices are all in it is its own clip, with
+            // repeated vertices (cocircular sites) merged.
+            let at = |j: usize| self.vertices[cell.vertices[j]];
+            let m = cell.vertices.len();
+            if (0..m).all(|j| at(j) != at((j + 1) % m)) {
+                return true;
+            }
+            merge_into((0..m).map(at), out);
+            return false;
         }
         let (lines, mut poly) = self.cell_polygon(k, bounds);
         for side in 0..4 {
@@ -172,13 +191,18 @@ impl Voronoi {
         // An intersection without area lies on one side's line (the cell and the box
         // touch along it): every vertex is then on that line.
         let flat = (0..4).any(|side| poly.iter().all(|v| lines.sign(v.at, lines.side(side)) == 0));
-        if flat {
-            return Vec::new();
+        if !flat {
+            merge_into(
+                poly.iter().map(|v| match v.at {
+                    Meet::Lines(i, j) => lines.point(i, j),
+                    Meet::Normal(_) => {
+                        unreachable!("the box's sides cut off every point at infinity")
+                    }
+                }),
+                out,
+            );
         }
-        merged(poly.iter().map(|v| match v.at {
-            Meet::Lines(i, j) => lines.point(i, j),
-            Meet::Normal(_) => unreachable!("the box's sides cut off every point at infinity"),
-        }))
+        false
     }
 
     /// The lines of cell `k` and the polygon of its boundary, counter-clockwise, each vertex
@@ -236,8 +260,14 @@ impl Voronoi {
     /// Every cell intersected with `bounds` ([`clip_cell`](Voronoi::clip_cell)), in cell
     /// order.
     ///
+    /// A cell that lies inside the box is its own clip: the result refers to its vertices
+    /// in the diagram rather than copying them, and stores only the polygons cut at the
+    /// box's sides (O(√n) of them for sites spread over the box). So clipping a million
+    /// cells allocates a few arrays, not a million polygons or a copy of every vertex.
+    ///
     /// # Complexity
-    /// O(n) time and space for n sites (the cells' vertex counts sum to less than 6n).
+    /// O(n) time for n sites (the cells' vertex counts sum to less than 6n); O(n) space,
+    /// 4 bytes a cell plus the polygons cut by the box.
     ///
     /// ```
     /// use compgeo::delaunay::{voronoi, ClipBox};
@@ -246,18 +276,159 @@ impl Voronoi {
     /// let pts = [(0.0, 0.0), (2.0, 0.0)].map(Point2::from);
     /// let v = voronoi(&pts)?;
     /// let cells = v.clip(&ClipBox::new(-1.0, -1.0, 3.0, 1.0)?);
+    /// assert_eq!(cells.len(), 2);
     /// // The bisector x = 1 splits the box in two.
-    /// let left = &cells[v.cell_of(0)];
+    /// let left = cells.polygon(v.cell_of(0));
     /// assert_eq!(left.len(), 4);
     /// for corner in [(1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0)] {
-    ///     assert!(left.contains(&Point2::from(corner)));
+    ///     assert!(left.iter().any(|p| p == Point2::from(corner)));
     /// }
     /// # Ok::<(), compgeo::Error>(())
     /// ```
-    pub fn clip(&self, bounds: &ClipBox) -> Vec<Vec<Point2>> {
-        (0..self.cell_count())
-            .map(|k| self.clip_cell(k, bounds))
-            .collect()
+    pub fn clip(&self, bounds: &ClipBox) -> ClippedCells<'_> {
+        let n = self.cell_count();
+        let mut polygon = Vec::with_capacity(n);
+        let (mut points, mut start) = (Vec::new(), vec![0]);
+        for k in 0..n {
+            if self.clip_or_keep(k, bounds, &mut points) {
+                polygon.push(KEPT);
+            } else {
+                // Below 2^32 cut polygons: a diagram has fewer than 2^29 cells.
+                polygon.push((start.len() - 1) as u32);
+                start.push(points.len());
+            }
+        }
+        ClippedCells {
+            diagram: self,
+            polygon,
+            points,
+            start,
+        }
+    }
+}
+
+/// [`ClippedCells::polygon`] of a cell that is its own clip.
+const KEPT: u32 = u32::MAX;
+
+/// The cells of a [`Voronoi`] diagram clipped to a [`ClipBox`] ([`Voronoi::clip`]): one
+/// counter-clockwise [`ClippedPolygon`] per cell, in cell order, empty for a cell outside
+/// the box. It borrows the diagram, whose vertices form the polygons of the cells inside
+/// the box.
+///
+/// ```
+/// use compgeo::delaunay::{voronoi, ClipBox};
+/// use compgeo::geometry::Point2;
+///
+/// let pts = [(0.0, 0.0), (4.0, 0.0), (0.0, 4.0), (9.0, 9.0)].map(Point2::from);
+/// let v = voronoi(&pts)?;
+/// let cells = v.clip(&ClipBox::new(-1.0, -1.0, 1.0, 1.0)?);
+/// // Only the first site's cell reaches the small box about it.
+/// assert_eq!(cells.polygon(v.cell_of(0)).len(), 4);
+/// assert_eq!(cells.iter().filter(|c| c.is_empty()).count(), 3);
+/// # Ok::<(), compgeo::Error>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct ClippedCells<'a> {
+    diagram: &'a Voronoi,
+    /// Per cell: [`KEPT`] for a cell inside the box, else its polygon's number in `start`.
+    polygon: Vec<u32>,
+    /// The cut polygons' points, back to back: number j is `points[start[j]..start[j + 1]]`.
+    points: Vec<Point2>,
+    start: Vec<usize>,
+}
+
+impl<'a> ClippedCells<'a> {
+    /// The number of cells (as [`Voronoi::cell_count`]), empty polygons included.
+    pub fn len(&self) -> usize {
+        self.polygon.len()
+    }
+
+    /// Whether there are no cells (never, for a diagram of at least one site).
+    pub fn is_empty(&self) -> bool {
+        self.polygon.is_empty()
+    }
+
+    /// Cell `k`'s polygon. Panics if `k` is out of range (see [`get`](Self::get)).
+    pub fn polygon(&self, k: usize) -> ClippedPolygon<'_> {
+        match self.polygon[k] {
+            KEPT => ClippedPolygon::Kept {
+                ids: self.diagram.cell_vertices(k),
+                vertices: &self.diagram.vertices,
+            },
+            j => {
+                let j = j as usize;
+                ClippedPolygon::Cut(&self.points[self.start[j]..self.start[j + 1]])
+            }
+        }
+    }
+
+    /// Cell `k`'s polygon, `None` if `k` is out of range.
+    pub fn get(&self, k: usize) -> Option<ClippedPolygon<'_>> {
+        (k < self.len()).then(|| self.polygon(k))
+    }
+
+    /// The polygons in cell order.
+    pub fn iter(
+        &self,
+    ) -> impl ExactSizeIterator<Item = ClippedPolygon<'_>> + DoubleEndedIterator + '_ {
+        (0..self.len()).map(|k| self.polygon(k))
+    }
+
+    /// The polygons as vectors of points, in cell order.
+    pub fn to_vecs(&self) -> Vec<Vec<Point2>> {
+        self.iter().map(|p| p.to_vec()).collect()
+    }
+}
+
+/// One polygon of [`ClippedCells`], counter-clockwise: a view of a cell's vertices when
+/// the cell is inside the box, or of the points of its cut polygon.
+#[derive(Debug, Clone, Copy)]
+pub enum ClippedPolygon<'a> {
+    /// A cell inside the box: its vertices, as indices into the diagram's vertices.
+    Kept {
+        /// The cell's vertex indices ([`Cell::vertices`](super::Cell::vertices)).
+        ids: &'a [usize],
+        /// The diagram's vertices ([`Voronoi::vertices`]).
+        vertices: &'a [Point2],
+    },
+    /// A cell cut by the box (or outside it: then empty): its points.
+    Cut(&'a [Point2]),
+}
+
+impl<'a> ClippedPolygon<'a> {
+    /// The number of points.
+    pub fn len(&self) -> usize {
+        match self {
+            ClippedPolygon::Kept { ids, .. } => ids.len(),
+            ClippedPolygon::Cut(points) => points.len(),
+        }
+    }
+
+    /// Whether the polygon is empty (the cell misses the box, or meets it without area).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The `j`-th point, `None` if `j` is out of range.
+    pub fn get(&self, j: usize) -> Option<Point2> {
+        match *self {
+            ClippedPolygon::Kept { ids, vertices } => ids.get(j).map(|&i| vertices[i]),
+            ClippedPolygon::Cut(points) => points.get(j).copied(),
+        }
+    }
+
+    /// The points, counter-clockwise.
+    pub fn iter(&self) -> impl ExactSizeIterator<Item = Point2> + DoubleEndedIterator + 'a {
+        let polygon = *self;
+        (0..self.len()).map(move |j| match polygon {
+            ClippedPolygon::Kept { ids, vertices } => vertices[ids[j]],
+            ClippedPolygon::Cut(points) => points[j],
+        })
+    }
+
+    /// The points, counter-clockwise, in a vector.
+    pub fn to_vec(&self) -> Vec<Point2> {
+        self.iter().collect()
     }
 }
 
@@ -313,22 +484,21 @@ fn surely_inside(p: Point2, b: &ClipBox) -> bool {
         && clear(b.max.y - p.y)
 }
 
-/// The points with consecutive equal ones merged (first and last too); empty if fewer than
-/// three remain.
-fn merged(points: impl Iterator<Item = Point2>) -> Vec<Point2> {
-    let mut out: Vec<Point2> = Vec::with_capacity(points.size_hint().0);
+/// Appends the points to `out` with consecutive equal ones merged (first and last too);
+/// appends nothing if fewer than three remain.
+fn merge_into(points: impl Iterator<Item = Point2>, out: &mut Vec<Point2>) {
+    let from = out.len();
     for q in points {
-        if out.last() != Some(&q) {
+        if out.len() == from || out.last() != Some(&q) {
             out.push(q);
         }
     }
-    while out.len() > 1 && out.first() == out.last() {
+    while out.len() > from + 1 && out[from] == out[out.len() - 1] {
         out.pop();
     }
-    if out.len() < 3 {
-        out.clear();
+    if out.len() < from + 3 {
+        out.truncate(from);
     }
-    out
 }
 
 #[cfg(test)]
@@ -368,9 +538,44 @@ mod tests {
         let b = ClipBox::new(-1.0, -1.0, 7.0, 1.0).unwrap();
         let cells = v.clip(&b);
         // Bisectors at x = 1 and x = 4.
-        assert_eq!(area(&cells[v.cell_of(1)]), 4.0);
-        assert_eq!(area(&cells[v.cell_of(0)]), 6.0);
-        assert_eq!(area(&cells[v.cell_of(2)]), 6.0);
+        assert_eq!(area(&cells.polygon(v.cell_of(1)).to_vec()), 4.0);
+        assert_eq!(area(&cells.polygon(v.cell_of(0)).to_vec()), 6.0);
+        assert_eq!(area(&cells.polygon(v.cell_of(2)).to_vec()), 6.0);
+    }
+
+    #[test]
+    fn an_inside_cell_is_kept_unless_its_vertices_repeat() {
+        // A 4 by 4 lattice: every square's two triangles share their circumcentre, so an
+        // inner cell lists each corner of its square twice.
+        let lattice: Vec<(f64, f64)> = (0..16).map(|i| ((i % 4) as f64, (i / 4) as f64)).collect();
+        let v = voronoi(&pts(&lattice)).unwrap();
+        let b = ClipBox::new(-1.0, -1.0, 4.0, 4.0).unwrap();
+        let cells = v.clip(&b);
+        let inner = v.cell_of(5); // the site (1, 1)
+        assert!(v.cell(inner).vertices.len() > 4);
+        let square = cells.polygon(inner);
+        assert!(matches!(square, ClippedPolygon::Cut(_)));
+        assert_eq!(square.to_vec(), v.clip_cell(inner, &b));
+        assert_eq!(square.len(), 4);
+        assert_eq!(area(&square.to_vec()), 1.0);
+        // Moved off the lattice, the sites are in general position: the inner cells are
+        // their own clips, read from the diagram.
+        let moved: Vec<(f64, f64)> = lattice
+            .iter()
+            .enumerate()
+            .map(|(i, &(x, y))| (x + 0.01 * (i % 3) as f64, y + 0.013 * (i % 5) as f64))
+            .collect();
+        let v = voronoi(&pts(&moved)).unwrap();
+        let cells = v.clip(&b);
+        let kept = cells
+            .iter()
+            .filter(|c| matches!(c, ClippedPolygon::Kept { .. }));
+        assert_eq!(kept.count(), 4);
+        for (k, polygon) in cells.iter().enumerate().rev() {
+            assert_eq!(polygon.to_vec(), v.clip_cell(k, &b));
+            assert_eq!(polygon.get(polygon.len()), None);
+        }
+        assert!(cells.get(cells.len()).is_none());
     }
 
     #[test]
@@ -385,7 +590,7 @@ mod tests {
         let v = voronoi(&p).unwrap();
         let b = ClipBox::new(8.0, 8.0, 9.0, 9.0).unwrap();
         let cells = v.clip(&b);
-        assert_eq!(area(&cells[v.cell_of(3)]), 1.0);
-        assert!(cells[v.cell_of(0)].is_empty() && cells[v.cell_of(4)].is_empty());
+        assert_eq!(area(&cells.polygon(v.cell_of(3)).to_vec()), 1.0);
+        assert!(cells.polygon(v.cell_of(0)).is_empty() && cells.polygon(v.cell_of(4)).is_empty());
     }
 }

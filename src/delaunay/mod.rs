@@ -37,7 +37,7 @@
 //!
 //! | problem | function | file |
 //! |---|---|---|
-//! | Voronoi diagram: cells with rays, clipping to a box | [`voronoi`], [`dual`], [`ClipBox`] | `voronoi.rs`, `clip.rs` |
+//! | Voronoi diagram: cells with rays, clipping to a box | [`voronoi`], [`dual`], [`ClipBox`], [`ClippedCells`] | `voronoi.rs`, `clip.rs` |
 //!
 //! The proximity problems built on the triangulation (nearest neighbours, closest pair,
 //! Euclidean minimum spanning tree, largest empty circle) are in [`crate::proximity`].
@@ -69,7 +69,7 @@ mod triangulation;
 mod voronoi;
 
 pub use check::{check_delaunay, check_delaunay_with};
-pub use clip::ClipBox;
+pub use clip::{ClipBox, ClippedCells, ClippedPolygon};
 pub use divide_conquer::{divide_and_conquer, divide_and_conquer_with};
 pub use fortune::{fortune, fortune_trace, fortune_with, FortuneStep};
 pub(crate) use hilbert::{curve_order, grid_scale};

@@ -144,10 +144,7 @@ pub fn voronoi(points: &PointSet<'_>, v: &Voronoi, bounds: &ClipBox) -> Result<P
     );
     picture.polygons(
         &Layer::new("cells", Role::Voronoi).legend("Voronoi cells"),
-        cells
-            .iter()
-            .filter(|c| !c.is_empty())
-            .map(|c| c.iter().copied()),
+        cells.iter().filter(|c| !c.is_empty()).map(|c| c.iter()),
     );
     indexed_points(&mut picture, points, "site index");
     Ok(picture)

@@ -407,10 +407,11 @@ fn the_voronoi_cells_are_the_clipped_cells() {
         ClipBox::new(-0.5, -0.5, 0.25, 0.5).unwrap(),
     ] {
         let s = svg(&draw::voronoi(&set, &v, &bounds).unwrap());
-        let expected: Vec<Vec<Point2>> = v
-            .clip(&bounds)
-            .into_iter()
+        let cells = v.clip(&bounds);
+        let expected: Vec<Vec<Point2>> = cells
+            .iter()
             .filter(|c| !c.is_empty())
+            .map(|c| c.to_vec())
             .collect();
         let drawn = s.subpaths("cells");
         assert_eq!(drawn.len(), expected.len());

@@ -233,15 +233,19 @@ fn check_clip(pts: &[Point2], bounds: &ClipBox) {
         .fold(0.0f64, |m, v| m.max(v.abs()));
     let slack = 64.0 * f64::EPSILON * mag;
     let mut total = 0.0;
+    assert_eq!(cells.len(), v.cell_count());
     for (k, poly) in cells.iter().enumerate() {
-        let a = area(poly);
+        // The view on the diagram and the single cell's clip agree, point by point.
+        let poly = poly.to_vec();
+        assert_eq!(poly, v.clip_cell(k, bounds), "cell {k}");
+        let a = area(&poly);
         assert!(
             a >= -(1e-12 * box_area + slack * size),
             "cell {k} is clockwise"
         );
         total += a;
         let site = pts[v.sites[k]];
-        for &q in poly {
+        for &q in &poly {
             assert!(q.x >= bounds.min.x && q.x <= bounds.max.x);
             assert!(q.y >= bounds.min.y && q.y <= bounds.max.y);
             let own = dist(q, site);
