@@ -36,6 +36,23 @@
 //! the machine's load; interleaved runs in one process under heavier load measured 0.9 to
 //! 1.1. The batch sorts its queries along a Hilbert curve, so consecutive walks share cache
 //! lines, and stays at about half of kiddo's time.
+//!
+//! Three runs on 2026-12-06 (quiet machine, load average 1.2 to 1.8, `--features
+//! parallel`, which these single-threaded loops do not use), medians per query, and the
+//! ratio of `delaunay-walk` to kiddo's two trees:
+//!
+//! | run | delaunay-walk | batch | kiddo-kdtree | kiddo-immutable | walk / kdtree | walk / immutable |
+//! |---|---|---|---|---|---|---|
+//! | 1 | 455 ns | 320 ns | 623 ns | 580 ns | 0.73 | 0.78 |
+//! | 2 | 531 ns | 309 ns | 643 ns | 616 ns | 0.83 | 0.86 |
+//! | 3 | 498 ns | 319 ns | 517 ns | 532 ns | 0.96 | 0.94 |
+//!
+//! Spade with its hierarchy took 5.16 µs a query in run 1 (walk / spade 0.088). The same
+//! queries interleaved in one process (7 rounds, the fastest of each; three processes) gave
+//! walk / kiddo-immutable 0.84, 0.85 and 0.87. At the previous stop one run had measured 1.10 and
+//! 1.20: both sides wait on memory, and the ratio moves with the machine from day to day.
+//! (Reading a step's neighbour points before comparing any, to overlap their misses,
+//! measured 1.08–1.18× slower in the interleaved harness, so the walk compares as it reads.)
 
 use compgeo::gen::{points, PointKind};
 use compgeo::geometry::{Point2, PointSet};
