@@ -50,7 +50,11 @@ pub fn chan(points: &[Point2], options: HullOptions) -> Result<Vec<usize>> {
 /// Idea: first drop the points strictly inside the polygon of the extreme points (the
 /// Akl–Toussaint filter over all points, O(n); it stops testing when the first 1024 points
 /// nearly all survive, as in convex position). Then guess m = 2^(2^t) for t = 3, 4, 5
-/// (256, 65 536, 2^32). Split the survivors into groups of m consecutive points and hull each group: the Akl–Toussaint filter inside the
+/// (256, 65 536, 2^32). Order the survivors by their octant about the centre of their
+/// bounding box (a stable pass, so equal points keep their index order; a grouping only,
+/// decided in floating point, as any grouping is correct), so that a group lies along one
+/// part of the boundary and its hull is small. Split them into groups of m consecutive points
+/// and hull each group: the Akl–Toussaint filter inside the
 /// group, then the monotone chain on its survivors (O(m log m) per group). Then run Jarvis's
 /// march from the lexicographically smallest point, but instead of scanning every point, ask
 /// each group for its tangent from the current vertex: the vertex of the group's hull that
@@ -143,10 +147,41 @@ fn strict_hull<C: Counter>(points: &[Point2], counter: &mut C) -> Vec<usize> {
     // The Akl–Toussaint filter over all points first: O(n), and it leaves the rounds only
     // the points outside the polygon of the extreme points. Survivors keep their order, so
     // of equal points the smallest index still comes first.
-    let kept = filter(points, true, counter);
+    let kept = by_octant(points, filter(points, true, counter));
     let survivors: Vec<Point2> = kept.iter().map(|&i| points[i]).collect();
     let hull = rounds(&survivors, counter);
     hull.into_iter().map(|i| kept[i]).collect()
+}
+
+/// `kept` in eight stable buckets by the octant about the centre of their bounding box.
+fn by_octant(points: &[Point2], kept: Vec<usize>) -> Vec<usize> {
+    let half = |i: usize| (0.5 * points[i].x, 0.5 * points[i].y);
+    let (mut lo, mut hi) = ((f64::MAX, f64::MAX), (f64::MIN, f64::MIN));
+    for &i in &kept {
+        let (x, y) = half(i);
+        lo = (lo.0.min(x), lo.1.min(y));
+        hi = (hi.0.max(x), hi.1.max(y));
+    }
+    let (cx, cy) = (0.5 * (lo.0 + hi.0), 0.5 * (lo.1 + hi.1));
+    let octant = |i: usize| {
+        let (x, y) = half(i);
+        let (dx, dy) = (x - cx, y - cy);
+        usize::from(dy < 0.0) * 4 + usize::from(dx < 0.0) * 2 + usize::from(dx.abs() < dy.abs())
+    };
+    let mut start = [0usize; 9];
+    for &i in &kept {
+        start[octant(i) + 1] += 1;
+    }
+    for b in 1..9 {
+        start[b] += start[b - 1];
+    }
+    let mut out = vec![0; kept.len()];
+    for &i in &kept {
+        let b = octant(i);
+        out[start[b]] = i;
+        start[b] += 1;
+    }
+    out
 }
 
 /// Chan's rounds on the finite, non-empty `points`.
